@@ -1,0 +1,24 @@
+#include "hikari/scene/camera.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace hikari {
+
+CameraFrame make_camera_frame(const Camera& camera) {
+    CameraFrame f;
+    f.eye = camera.eye;
+    f.forward = normalize(camera.look_at - camera.eye);
+    f.right = normalize(cross(f.forward, camera.up));
+    f.up = cross(f.right, f.forward);
+    f.tan_half_fov_y =
+        static_cast<float>(std::tan(camera.fov_y_degrees * std::numbers::pi / 360.0));
+    f.aspect = static_cast<float>(camera.width) / static_cast<float>(camera.height);
+    f.width = camera.width;
+    f.height = camera.height;
+    return f;
+}
+
+Mat4 view_matrix(const Camera& camera) { return look_at(camera.eye, camera.look_at, camera.up); }
+
+}  // namespace hikari

@@ -1,0 +1,23 @@
+#pragma once
+// Surface reflectance for the lecture's shading model (Fig 4.29) and Whitted's secondary rays.
+
+#include <string>
+
+#include "hikari/core/vec.h"
+
+namespace hikari {
+
+/// Coefficients of ambient + Lambert diffuse + Phong specular, plus the weights of the mirror
+/// and refracted rays of Whitted ray tracing. Colours are linear RGB.
+struct Material {
+    std::string name;
+    Vec3 ka{0.1f};           ///< ambient reflectance: colour += ka * Ia
+    Vec3 kd{0.8f};           ///< Lambert diffuse reflectance (I_d = I0 kd cos α)
+    Vec3 ks{0.0f};           ///< Phong specular reflectance (I_s = I0 ks cos^n γ)
+    float shininess = 1.0f;  ///< Phong exponent n
+    float reflectivity = 0;  ///< weight of the colour seen along the mirror direction
+    float transparency = 0;  ///< weight of the colour seen along the refracted direction
+    float ior = 1.0f;        ///< index of refraction of the inside (outside is 1)
+};
+
+}  // namespace hikari
