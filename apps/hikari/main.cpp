@@ -1,8 +1,259 @@
-#include <cstdio>
+// The hikari command line: `hikari render [SCENE] [options]`.
 
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <tbb/global_control.h>
+
+#include "hikari/core/error.h"
+#include "hikari/io/atomic_file.h"
+#include "hikari/io/image_write.h"
+#include "hikari/io/scene_json.h"
+#include "hikari/render/methods.h"
 #include "hikari/version.h"
 
-int main() {
-    std::printf("hikari %s\n", hikari::k_version);
+namespace {
+
+using namespace hikari;
+using Clock = std::chrono::steady_clock;
+
+/// Exit statuses: 1 for bad input or a failed render, 2 for command-line usage errors.
+constexpr int k_exit_input_error = 1;
+constexpr int k_exit_usage_error = 2;
+constexpr int k_exit_interrupted = 130;
+
+struct RenderOptions {
+    std::string scene_file;  // empty: the built-in assignment scene
+    std::string output;
+    std::string method = "raytrace";
+    std::string aov = "color";
+    int spp = 1;
+    int width = 0, height = 0;
+    int threads = 0;
+    int max_depth = 5;
+    double max_memory_gib = 0;
+    bool quiet = false;
+};
+
+RenderControl g_control;
+volatile std::sig_atomic_t g_signal_count = 0;
+
+// First signal: ask the render to stop (it then exits without writing). Second: leave at once,
+// removing any half-written temporary file.
+extern "C" void on_interrupt(int sig) {
+    g_control.cancel.store(true);
+    if (++g_signal_count > 1) {
+        remove_pending_temporary_files();
+        _exit(128 + sig);
+    }
+}
+
+void install_signal_handlers() {
+    struct sigaction action {};
+    action.sa_handler = on_interrupt;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+}
+
+/// Prints a progress line on stderr while a render runs, once it has taken a second, when
+/// stderr is a terminal.
+class ProgressReporter {
+public:
+    explicit ProgressReporter(bool enabled) {
+        if (!enabled || !isatty(STDERR_FILENO)) return;
+        m_thread = std::jthread([](std::stop_token stop) {
+            const auto start = Clock::now();
+            bool shown = false;
+            while (!stop.stop_requested()) {
+                std::this_thread::sleep_for(std::chrono::milliseconds(100));
+                const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+                const uint64_t total = g_control.work_total.load();
+                if (elapsed < 1.0 || total == 0) continue;
+                const double done = static_cast<double>(g_control.work_done.load()) / total;
+                const double eta = done > 0 ? elapsed * (1.0 - done) / done : 0.0;
+                fmt::print(stderr, "\rhikari: rendering {:5.1f}%  {:.1f} s elapsed, ~{:.1f} s left ",
+                           100.0 * done, elapsed, eta);
+                shown = true;
+            }
+            if (shown) fmt::print(stderr, "\r\033[K");
+        });
+    }
+
+private:
+    std::jthread m_thread;
+};
+
+Aov parse_aov(const std::string& name) {
+    if (name == "depth") return Aov::depth;
+    if (name == "id") return Aov::id;
+    if (name == "normal") return Aov::normal;
+    return Aov::color;
+}
+
+/// Applies --width / --height; one alone keeps the camera's aspect ratio.
+void resize_camera(Camera& camera, int width, int height) {
+    if (width > 0 && height == 0)
+        height = std::max(1, static_cast<int>(std::lround(static_cast<double>(width) *
+                                                          camera.height / camera.width)));
+    if (height > 0 && width == 0)
+        width = std::max(1, static_cast<int>(std::lround(static_cast<double>(height) *
+                                                         camera.width / camera.height)));
+    if (width > 0) camera.width = width;
+    if (height > 0) camera.height = height;
+}
+
+/// Refuses renders whose buffers would not fit in `limit_bytes`, before allocating any.
+void check_memory(const Camera& camera, double limit_bytes) {
+    const double pixels = static_cast<double>(camera.width) * camera.height;
+    // colour + depth + id + normal in the framebuffer, one more image for the output.
+    const double bytes = pixels * (sizeof(Vec3) * 3 + sizeof(float) + sizeof(uint32_t));
+    if (bytes > limit_bytes)
+        throw InputError(fmt::format(
+            "a {}x{} image needs about {:.1f} GiB, more than the limit of {:.1f} GiB "
+            "(raise it with --max-memory)",
+            camera.width, camera.height, bytes / (1 << 30), limit_bytes / (1 << 30)));
+}
+
+double default_memory_limit() {
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+    return pages > 0 && page > 0 ? 0.5 * static_cast<double>(pages) * page : 4.0 * (1 << 30);
+}
+
+std::string default_output(const RenderOptions& o) {
+    const std::string stem =
+        o.scene_file.empty() ? "assignment" : std::filesystem::path(o.scene_file).stem().string();
+    return stem + (o.aov == "color" ? "" : "-" + o.aov) + ".png";
+}
+
+int run_render(const RenderOptions& o) {
+    const Method* method = find_method(o.method);  // validated by CLI11 already
+    const std::string output = o.output.empty() ? default_output(o) : o.output;
+    if (!is_supported_image_extension(output))
+        throw InputError(fmt::format("{}: unsupported output format (use .png, .ppm, .pfm or .exr)",
+                                     output));
+
+    std::vector<std::string> warnings;
+    Scene scene = o.scene_file.empty() ? load_default_scene()
+                                       : load_scene_file(o.scene_file, warnings);
+    for (const std::string& w : warnings) fmt::print(stderr, "hikari: warning: {}\n", w);
+    resize_camera(scene.camera, o.width, o.height);
+    check_memory(scene.camera,
+                 o.max_memory_gib > 0 ? o.max_memory_gib * (1 << 30) : default_memory_limit());
+
+    RenderSettings settings;
+    settings.samples_per_pixel = o.spp;
+    settings.max_depth = o.max_depth;
+    settings.control = &g_control;
+
+    std::optional<tbb::global_control> thread_limit;
+    if (o.threads > 0)
+        thread_limit.emplace(tbb::global_control::max_allowed_parallelism,
+                             static_cast<size_t>(o.threads));
+    const auto start = Clock::now();
+    Framebuffer fb;
+    {
+        ProgressReporter progress(!o.quiet);
+        fb = method->render(scene, settings);
+    }
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    write_image(output, aov_image(fb, parse_aov(o.aov)));
+    if (!o.quiet)
+        fmt::print(stderr, "hikari: wrote {} ({}x{}, {}, {:.3f} s)\n", output, fb.width(),
+                   fb.height(), method->name, seconds);
+    return 0;
+}
+
+std::string method_list() {
+    std::string text = "Methods:\n";
+    for (const Method& m : methods()) text += fmt::format("  {:<16}{}\n", m.name, m.summary);
+    return text;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"hikari: every classic rendering method of the lecture, in one renderer.",
+                 "hikari"};
+    app.set_version_flag("--version", fmt::format("hikari {}", k_version));
+    app.require_subcommand(1);
+    app.footer("Run `hikari render --help` for the render options.");
+
+    RenderOptions o;
+    CLI::App* render = app.add_subcommand("render", "Render a scene file to an image.");
+    render->add_option("scene", o.scene_file,
+                       "Scene file (JSON, see docs/scene-format.md); default: the lecture's "
+                       "assignment, a Phong-shaded sphere");
+    render->add_option("-o,--output", o.output,
+                       "Output image: .png (8-bit sRGB), .ppm, .pfm or .exr (linear float); "
+                       "default: <scene name>.png in the current directory");
+    std::vector<std::string> names;
+    for (const Method& m : methods()) names.emplace_back(m.name);
+    render->add_option("-m,--method", o.method, "Rendering method")
+        ->check(CLI::IsMember(names))
+        ->capture_default_str();
+    render->add_option("--aov", o.aov,
+                       "Buffer to write: color, depth (eye distance), id (1 + primitive index, "
+                       "0 = background), normal")
+        ->check(CLI::IsMember({"color", "depth", "id", "normal"}))
+        ->capture_default_str();
+    render->add_option("--spp", o.spp, "Samples per pixel (1 = pixel centres; more: stratified)")
+        ->check(CLI::Range(1, 65536))
+        ->capture_default_str();
+    render->add_option("--width", o.width, "Image width in pixels (overrides the scene)")
+        ->check(CLI::Range(1, 65536));
+    render->add_option("--height", o.height, "Image height in pixels (overrides the scene)")
+        ->check(CLI::Range(1, 65536));
+    render->add_option("--threads", o.threads, "Worker threads (default: all cores)")
+        ->check(CLI::Range(1, 1024));
+    render->add_option("--max-depth", o.max_depth,
+                       "Ray segments per path, the primary ray included (Whitted recursion)")
+        ->check(CLI::Range(1, 64))
+        ->capture_default_str();
+    render->add_option("--max-memory", o.max_memory_gib,
+                       "Refuse renders whose buffers need more than this many GiB "
+                       "(default: half the machine's memory)")
+        ->check(CLI::PositiveNumber);
+    render->add_flag("-q,--quiet", o.quiet, "No progress or summary on stderr");
+    render->footer(method_list());
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        fmt::print(stderr, "hikari: error: {}\nRun `hikari --help` for usage.\n", e.what());
+        return k_exit_usage_error;
+    }
+
+    install_signal_handlers();
+    try {
+        if (render->parsed()) return run_render(o);
+    } catch (const Interrupted&) {
+        fmt::print(stderr, "\nhikari: interrupted; no image written\n");
+        return k_exit_interrupted;
+    } catch (const InputError& e) {
+        fmt::print(stderr, "hikari: error: {}\n", e.what());
+        return k_exit_input_error;
+    } catch (const std::bad_alloc&) {
+        fmt::print(stderr, "hikari: error: out of memory\n");
+        return k_exit_input_error;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "hikari: error: {}\n", e.what());
+        return k_exit_input_error;
+    }
     return 0;
 }

@@ -11,8 +11,8 @@ namespace hikari {
 /// and refracted rays of Whitted ray tracing. Colours are linear RGB.
 struct Material {
     std::string name;
-    Vec3 ka{0.1f};           ///< ambient reflectance: colour += ka * Ia
-    Vec3 kd{0.8f};           ///< Lambert diffuse reflectance (I_d = I0 kd cos α)
+    Vec3 ka{0.0f};           ///< ambient reflectance: colour += ka * Ia
+    Vec3 kd{0.0f};           ///< Lambert diffuse reflectance (I_d = I0 kd cos α)
     Vec3 ks{0.0f};           ///< Phong specular reflectance (I_s = I0 ks cos^n γ)
     float shininess = 1.0f;  ///< Phong exponent n
     float reflectivity = 0;  ///< weight of the colour seen along the mirror direction

@@ -1,0 +1,300 @@
+#include "hikari/io/scene_json.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "hikari/core/error.h"
+#include "hikari/core/mat4.h"
+#include "hikari/io/default_scene.h"
+#include "hikari/io/json_reader.h"
+#include "hikari/io/obj_loader.h"
+
+namespace hikari {
+
+namespace {
+
+/// Largest image side accepted; bigger is surely a typo (the memory check comes later).
+constexpr int k_max_image_side = 65536;
+
+/// State while a scene is being built: material names and where mesh files are found.
+struct SceneBuilder {
+    Scene scene;
+    std::map<std::string, uint32_t, std::less<>> material_index;
+    std::filesystem::path base_dir;
+    std::vector<std::string>& warnings;
+};
+
+Camera parse_camera(const JsonNode& node) {
+    node.expect_object({"eye", "look_at", "up", "fov_y", "width", "height"});
+    Camera c;
+    if (node.has("eye")) c.eye = node.at("eye").as_vec3();
+    if (node.has("look_at")) c.look_at = node.at("look_at").as_vec3();
+    if (node.has("up")) c.up = node.at("up").as_direction();
+    if (node.has("fov_y")) {
+        c.fov_y_degrees = node.at("fov_y").as_number();
+        if (!(c.fov_y_degrees > 0 && c.fov_y_degrees < 180))
+            node.at("fov_y").fail("expected an angle in degrees between 0 and 180 (exclusive)");
+    }
+    if (node.has("width")) c.width = node.at("width").as_int(1, k_max_image_side);
+    if (node.has("height")) c.height = node.at("height").as_int(1, k_max_image_side);
+    const Vec3 view = c.look_at - c.eye;
+    if (dot(view, view) == 0.0f) node.fail("eye and look_at are the same point");
+    const Vec3 side = cross(normalize(view), normalize(c.up));
+    if (dot(side, side) < 1e-10f) node.at("up").fail("up is parallel to the view direction");
+    return c;
+}
+
+Material parse_material(const JsonNode& node, std::string name) {
+    node.expect_object({"ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior"});
+    Material m;
+    m.name = std::move(name);
+    if (node.has("ka")) m.ka = node.at("ka").as_colour();
+    if (node.has("kd")) m.kd = node.at("kd").as_colour();
+    if (node.has("ks")) m.ks = node.at("ks").as_colour();
+    if (node.has("shininess")) m.shininess = node.at("shininess").as_non_negative();
+    if (node.has("reflectivity")) m.reflectivity = node.at("reflectivity").as_non_negative();
+    if (node.has("transparency")) m.transparency = node.at("transparency").as_non_negative();
+    if (node.has("ior")) m.ior = node.at("ior").as_positive();
+    return m;
+}
+
+Light parse_light(const JsonNode& node) {
+    const std::string type = node.at("type").as_string();
+    if (type == "point") {
+        node.expect_object({"type", "position", "intensity"});
+        return PointLight{node.at("position").as_vec3(), node.at("intensity").as_colour()};
+    }
+    if (type == "directional") {
+        node.expect_object({"type", "direction", "intensity"});
+        return DirectionalLight{normalize(node.at("direction").as_direction()),
+                                node.at("intensity").as_colour()};
+    }
+    node.at("type").fail(
+        fmt::format("unknown light type \"{}\" (expected \"point\" or \"directional\")", type));
+}
+
+/// The material an object names, or a neutral grey one shared by objects that name none.
+uint32_t resolve_material(SceneBuilder& b, const JsonNode& object) {
+    if (object.has("material")) {
+        const JsonNode node = object.at("material");
+        const std::string name = node.as_string();
+        const auto it = b.material_index.find(name);
+        if (it == b.material_index.end())
+            node.fail(fmt::format("unknown material \"{}\" (not in \"materials\")", name));
+        return it->second;
+    }
+    constexpr std::string_view k_default = "(default)";
+    if (const auto it = b.material_index.find(k_default); it != b.material_index.end())
+        return it->second;
+    Material grey;
+    grey.name = k_default;
+    grey.ka = grey.kd = Vec3(0.7f);
+    b.scene.materials.push_back(grey);
+    return b.material_index[std::string(k_default)] =
+               static_cast<uint32_t>(b.scene.materials.size() - 1);
+}
+
+/// world_from_model for a list of steps applied to the object in order.
+Mat4 parse_transform(const JsonNode& node) {
+    node.expect_array();
+    Mat4 m = Mat4::identity();
+    for (size_t i = 0; i < node.value().size(); ++i) {
+        const JsonNode step = node.at(i);
+        step.expect_object({"scale", "rotate", "translate", "matrix"});
+        if (step.value().size() != 1)
+            step.fail("expected exactly one of \"scale\", \"rotate\", \"translate\", \"matrix\"");
+        Mat4 s;
+        if (step.has("scale")) {
+            const JsonNode v = step.at("scale");
+            s = scale(v.value().is_number() ? Vec3(v.as_number()) : v.as_vec3());
+        } else if (step.has("rotate")) {
+            const JsonNode r = step.at("rotate");
+            r.expect_object({"axis", "degrees"});
+            s = rotate(r.at("axis").as_direction(), r.at("degrees").as_number());
+        } else if (step.has("translate")) {
+            s = translate(step.at("translate").as_vec3());
+        } else {
+            const JsonNode v = step.at("matrix");
+            v.expect_array(16);
+            std::array<float, 16> rows{};
+            for (size_t k = 0; k < 16; ++k) rows[k] = v.at(k).as_number();
+            s = Mat4::from_rows(rows);
+        }
+        m = s * m;
+    }
+    Mat4 inverse;
+    if (!invert(m, inverse)) node.fail("the transform is singular (it flattens the object)");
+    return m;
+}
+
+PrimitiveId next_id(SceneBuilder& b) { return b.scene.primitive_count++; }
+
+/// Appends one triangle with vertex positions `p` and normals `n` to the scene.
+void add_triangle(SceneBuilder& b, const std::array<Vec3, 3>& p, const std::array<Vec3, 3>& n,
+                  uint32_t material, PrimitiveId id) {
+    TriangleSet& t = b.scene.triangles;
+    const auto base = static_cast<uint32_t>(t.positions.size());
+    for (int k = 0; k < 3; ++k) {
+        t.positions.push_back(p[k]);
+        t.normals.push_back(n[k]);
+    }
+    t.indices.push_back({base, base + 1, base + 2});
+    t.material.push_back(material);
+    t.id.push_back(id);
+}
+
+/// The lecture's face normal N = (P2 − P1) × (P3 − P2) (Fig 4.5), not normalized.
+Vec3 face_normal(Vec3 p1, Vec3 p2, Vec3 p3) { return cross(p2 - p1, p3 - p2); }
+
+void parse_triangle(SceneBuilder& b, const JsonNode& node) {
+    node.expect_object({"type", "name", "vertices", "material", "transform"});
+    const JsonNode v = node.at("vertices");
+    v.expect_array(3);
+    std::array<Vec3, 3> p{v.at(size_t{0}).as_vec3(), v.at(1).as_vec3(), v.at(2).as_vec3()};
+    if (node.has("transform")) {
+        const Mat4 m = parse_transform(node.at("transform"));
+        for (Vec3& q : p) q = transform_point(m, q);
+    }
+    const Vec3 n = face_normal(p[0], p[1], p[2]);
+    if (!(dot(n, n) > 0.0f) || !is_finite(n)) v.fail("degenerate triangle (zero area)");
+    const Vec3 unit = normalize(n);
+    add_triangle(b, p, {unit, unit, unit}, resolve_material(b, node), next_id(b));
+}
+
+void parse_mesh(SceneBuilder& b, const JsonNode& node) {
+    node.expect_object({"type", "name", "file", "material", "transform"});
+    const JsonNode file_node = node.at("file");
+    const std::filesystem::path file = b.base_dir / file_node.as_string();
+    MeshData mesh;
+    try {
+        mesh = load_obj(file);
+    } catch (const InputError& e) {
+        file_node.fail(e.what());
+    }
+    for (const std::string& w : mesh.warnings) b.warnings.push_back(w);
+    if (mesh.degenerate_skipped > 0)
+        b.warnings.push_back(fmt::format("{}: skipped {} degenerate triangle(s)", file.string(),
+                                         mesh.degenerate_skipped));
+
+    const Mat4 world_from_model =
+        node.has("transform") ? parse_transform(node.at("transform")) : Mat4::identity();
+    Mat4 model_from_world;
+    invert(world_from_model, model_from_world);
+    const Mat4 normal_matrix = transpose(model_from_world);
+    // A mirroring transform turns counter-clockwise faces clockwise; swap to keep fronts in front.
+    const bool mirrored = determinant(world_from_model) < 0.0f;
+
+    // Materials: the scene's when the object names one, else the OBJ's own MTL materials.
+    std::vector<uint32_t> material_of(mesh.materials.size());
+    const bool named = node.has("material");
+    const bool any_unassigned =
+        std::find(mesh.material.begin(), mesh.material.end(), -1) != mesh.material.end();
+    const uint32_t fallback = named || any_unassigned ? resolve_material(b, node) : 0;
+    if (!named)
+        for (size_t k = 0; k < mesh.materials.size(); ++k) {
+            Material m = mesh.materials[k];
+            m.name = fmt::format("{}:{}", file.filename().string(), m.name);
+            b.scene.materials.push_back(std::move(m));
+            material_of[k] = static_cast<uint32_t>(b.scene.materials.size() - 1);
+        }
+
+    TriangleSet& t = b.scene.triangles;
+    const auto base = static_cast<uint32_t>(t.positions.size());
+    for (size_t k = 0; k < mesh.positions.size(); ++k) {
+        t.positions.push_back(transform_point(world_from_model, mesh.positions[k]));
+        const Vec3 n = transform_normal(normal_matrix, mesh.normals[k]);
+        t.normals.push_back(dot(n, n) > 0.0f ? normalize(n) : mesh.normals[k]);
+    }
+    for (size_t k = 0; k < mesh.indices.size(); ++k) {
+        auto tri = mesh.indices[k];
+        if (mirrored) std::swap(tri[1], tri[2]);
+        t.indices.push_back({base + tri[0], base + tri[1], base + tri[2]});
+        const int32_t own = mesh.material[k];
+        t.material.push_back(named || own < 0 ? fallback : material_of[static_cast<size_t>(own)]);
+        t.id.push_back(next_id(b));
+    }
+}
+
+void parse_object(SceneBuilder& b, const JsonNode& node) {
+    const std::string type = node.at("type").as_string();
+    if (type == "sphere") {
+        node.expect_object({"type", "name", "center", "radius", "material"});
+        b.scene.spheres.push_back({node.at("center").as_vec3(), node.at("radius").as_positive(),
+                                   resolve_material(b, node), next_id(b)});
+    } else if (type == "plane") {
+        node.expect_object({"type", "name", "point", "normal", "material"});
+        b.scene.planes.push_back({node.at("point").as_vec3(),
+                                  normalize(node.at("normal").as_direction()),
+                                  resolve_material(b, node), next_id(b)});
+    } else if (type == "triangle") {
+        parse_triangle(b, node);
+    } else if (type == "mesh") {
+        parse_mesh(b, node);
+    } else {
+        node.at("type").fail(fmt::format(
+            "unknown object type \"{}\" (expected \"sphere\", \"plane\", \"triangle\" or \"mesh\")",
+            type));
+    }
+}
+
+}  // namespace
+
+Scene parse_scene(std::string_view text, const std::string& file,
+                  const std::filesystem::path& base_dir, std::vector<std::string>& warnings) {
+    const nlohmann::json doc = parse_json(text, file);
+    const JsonNode root(doc, file, "");
+    root.expect_object(
+        {"description", "camera", "background", "ambient", "materials", "lights", "objects"});
+    SceneBuilder b{Scene{}, {}, base_dir, warnings};
+    if (root.has("description")) root.at("description").as_string();
+    if (root.has("camera")) b.scene.camera = parse_camera(root.at("camera"));
+    if (root.has("background")) b.scene.background = root.at("background").as_colour();
+    if (root.has("ambient")) b.scene.ambient = root.at("ambient").as_colour();
+    if (root.has("materials")) {
+        const JsonNode materials = root.at("materials");
+        if (!materials.value().is_object()) materials.fail("expected an object: name -> material");
+        for (const auto& [name, value] : materials.value().items()) {
+            b.scene.materials.push_back(
+                parse_material(JsonNode(value, file, "materials." + name), name));
+            b.material_index[name] = static_cast<uint32_t>(b.scene.materials.size() - 1);
+        }
+    }
+    if (root.has("lights")) {
+        const JsonNode lights = root.at("lights");
+        lights.expect_array();
+        for (size_t i = 0; i < lights.value().size(); ++i)
+            b.scene.lights.push_back(parse_light(lights.at(i)));
+    }
+    const JsonNode objects = root.at("objects");
+    objects.expect_array();
+    for (size_t i = 0; i < objects.value().size(); ++i) parse_object(b, objects.at(i));
+    return std::move(b.scene);
+}
+
+Scene load_scene_file(const std::filesystem::path& path, std::vector<std::string>& warnings) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError(fmt::format("{}: is a directory, not a scene file", path.string()));
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw InputError(fmt::format("{}: cannot open scene file: {}", path.string(),
+                                     std::strerror(errno)));
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw InputError(fmt::format("{}: cannot read scene file", path.string()));
+    return parse_scene(text.str(), path.string(), path.parent_path(), warnings);
+}
+
+Scene load_default_scene() {
+    std::vector<std::string> warnings;
+    return parse_scene(default_scene_json(), "scenes/assignment.json (built in)", ".", warnings);
+}
+
+}  // namespace hikari

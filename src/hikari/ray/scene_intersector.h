@@ -1,0 +1,34 @@
+#pragma once
+// Nearest-hit and shadow-ray queries against a whole scene: spheres and planes tested
+// directly, triangles through the BVH. Built once per render, read by all threads.
+
+#include "hikari/core/ray.h"
+#include "hikari/scene/scene.h"
+
+namespace hikari {
+
+/// Where a ray meets a surface, with what the shading of that point needs.
+struct SurfaceHit {
+    float t = k_infinity;          ///< distance along the ray
+    Vec3 position;                 ///< world space
+    Vec3 geometric_normal;         ///< unit, as the primitive defines it (not flipped)
+    Vec3 shading_normal;           ///< unit, interpolated for meshes; same side as geometric
+    uint32_t material = 0;         ///< index into Scene::materials
+    PrimitiveId id = 0;            ///< the primitive hit
+};
+
+class SceneIntersector {
+public:
+    /// Prepares acceleration structures for `scene`, which must outlive this object.
+    explicit SceneIntersector(const Scene& scene);
+
+    /// The nearest hit of `ray` inside `range`, if any (the lecture's 可視点, Alg 4.3).
+    bool closest(const Ray& ray, Interval range, SurfaceHit& hit) const;
+    /// Whether anything blocks `ray` inside `range` (shadow rays stop at the first blocker).
+    bool occluded(const Ray& ray, Interval range) const;
+
+private:
+    const Scene& m_scene;
+};
+
+}  // namespace hikari

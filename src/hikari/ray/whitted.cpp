@@ -1,0 +1,125 @@
+#include "hikari/ray/whitted.h"
+
+#include <cmath>
+
+#include "hikari/core/rng.h"
+#include "hikari/ray/ray_offset.h"
+#include "hikari/ray/scene_intersector.h"
+#include "hikari/render/tiles.h"
+#include "hikari/shading/phong.h"
+#include "hikari/shading/refraction.h"
+
+namespace hikari {
+
+namespace {
+
+struct TraceContext {
+    const Scene& scene;
+    const SceneIntersector& intersector;
+    int max_depth;
+};
+
+/// The local (direct) illumination of a hit: ambient, then each light that a shadow ray
+/// finds unblocked.
+Vec3 shade_local(const TraceContext& ctx, const Material& m, Vec3 p, Vec3 n, Vec3 ng, Vec3 to_eye) {
+    Vec3 colour = shade_ambient(m, ctx.scene.ambient);
+    const Vec3 shadow_origin = offset_ray_origin(p, ng);
+    for (const Light& light : ctx.scene.lights) {
+        const LightSample ls = sample_light(light, p);
+        if (dot(n, ls.to_light) <= 0.0f) continue;
+        if (ctx.intersector.occluded({shadow_origin, ls.to_light}, {0.0f, ls.distance})) continue;
+        colour += shade_direct(m, n, ls.to_light, to_eye, ls.irradiance);
+    }
+    return colour;
+}
+
+/// Colour seen along `ray`, which is segment number `segment` of its path (primary = 1).
+/// Returns the primary hit through `first_hit` when asked (for the AOVs).
+Vec3 trace(const TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* first_hit = nullptr) {
+    SurfaceHit hit;
+    if (!ctx.intersector.closest(ray, {0.0f, k_infinity}, hit)) return ctx.scene.background;
+    if (first_hit) *first_hit = hit;
+
+    // Face the normals toward the incoming ray: planes and triangles are two-sided, and a ray
+    // inside a sphere sees its inner side.
+    const bool entering = dot(hit.geometric_normal, ray.direction) < 0.0f;
+    const Vec3 ng = entering ? hit.geometric_normal : -hit.geometric_normal;
+    Vec3 n = entering ? hit.shading_normal : -hit.shading_normal;
+    if (dot(n, ray.direction) > 0.0f) n = ng;  // interpolated normal turned away: use the true one
+
+    const Material& m = ctx.scene.materials[hit.material];
+    Vec3 colour = shade_local(ctx, m, hit.position, n, ng, -ray.direction);
+    if (segment >= ctx.max_depth) return colour;
+
+    const Vec3 mirror = reflect(ray.direction, n);
+    if (m.reflectivity > 0.0f)
+        colour += m.reflectivity *
+                  trace(ctx, {offset_ray_origin(hit.position, ng), mirror}, segment + 1);
+    if (m.transparency > 0.0f) {
+        const float eta = entering ? 1.0f / m.ior : m.ior;
+        if (const auto refracted = refract(ray.direction, n, eta))
+            colour += m.transparency *
+                      trace(ctx, {offset_ray_origin(hit.position, -ng), *refracted}, segment + 1);
+        else  // total internal reflection: all the transmitted light is reflected instead
+            colour += m.transparency *
+                      trace(ctx, {offset_ray_origin(hit.position, ng), mirror}, segment + 1);
+    }
+    return colour;
+}
+
+/// Strata for `n` jittered samples: the most square grid cols × rows = n.
+void strata(int n, int& cols, int& rows) {
+    cols = static_cast<int>(std::sqrt(static_cast<double>(n)));
+    while (n % cols != 0) --cols;
+    rows = n / cols;
+}
+
+}  // namespace
+
+Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
+    const Camera& cam = scene.camera;
+    Framebuffer fb(cam.width, cam.height, scene.background);
+    const SceneIntersector intersector(scene);
+    const TraceContext ctx{scene, intersector, settings.max_depth};
+    const CameraFrame frame = make_camera_frame(cam);
+    const int spp = settings.samples_per_pixel;
+    int cols = 1, rows = 1;
+    strata(spp, cols, rows);
+
+    for_each_tile(cam.width, cam.height, settings.control, [&](const Tile& tile) {
+        for (int y = tile.y0; y < tile.y1; ++y)
+            for (int x = tile.x0; x < tile.x1; ++x) {
+                const size_t i = static_cast<size_t>(y) * cam.width + x;
+                const auto fx = static_cast<float>(x), fy = static_cast<float>(y);
+                SurfaceHit first;
+                first.t = k_infinity;
+                const Ray centre = camera_ray(frame, fx + 0.5f, fy + 0.5f);
+                Vec3 sum(0.0f);
+                if (spp == 1) {
+                    sum = trace(ctx, centre, 1, &first);
+                } else {
+                    // The AOVs describe the pixel centre; colour averages jittered samples, one
+                    // in each stratum, from a stream seeded by the pixel alone.
+                    intersector.closest(centre, {0.0f, k_infinity}, first);
+                    Pcg32 rng(i, 0x68696b617269ULL);
+                    for (int s = 0; s < spp; ++s) {
+                        const float sx = (static_cast<float>(s % cols) + rng.next_float()) / cols;
+                        const float sy = (static_cast<float>(s / cols) + rng.next_float()) / rows;
+                        sum += trace(ctx, camera_ray(frame, fx + sx, fy + sy), 1);
+                    }
+                    sum = sum / static_cast<float>(spp);
+                }
+                fb.color.pixels[i] = sum;
+                if (first.t < k_infinity) {
+                    fb.depth[i] = first.t;
+                    fb.id[i] = first.id + 1;
+                    fb.normal[i] = dot(first.shading_normal, centre.direction) < 0.0f
+                                       ? first.shading_normal
+                                       : -first.shading_normal;
+                }
+            }
+    });
+    return fb;
+}
+
+}  // namespace hikari

@@ -1,0 +1,37 @@
+#pragma once
+// What a method produces: colour plus auxiliary buffers (AOVs) for comparing methods.
+
+#include <cstdint>
+#include <vector>
+
+#include "hikari/core/image.h"
+#include "hikari/scene/scene.h"
+
+namespace hikari {
+
+/// Primitive id stored for pixels where no primitive is seen.
+inline constexpr uint32_t k_background_id = 0;
+
+/// Linear colour and per-pixel AOVs, all row-major with row 0 at the top.
+struct Framebuffer {
+    Image color;                ///< linear RGB
+    std::vector<float> depth;   ///< eye-space distance to the surface seen at the pixel centre;
+                                ///< infinity for background
+    std::vector<uint32_t> id;   ///< 1 + PrimitiveId seen at the pixel centre, k_background_id for none
+    std::vector<Vec3> normal;   ///< unit world-space shading normal at the pixel centre facing the
+                                ///< eye; zero for background
+
+    Framebuffer() = default;
+    Framebuffer(int width, int height, Vec3 background);
+
+    int width() const { return color.width; }
+    int height() const { return color.height; }
+};
+
+/// Which buffer an image file receives.
+enum class Aov { color, depth, id, normal };
+
+/// The chosen buffer as an RGB image (depth and id repeated in every channel, exactly).
+Image aov_image(const Framebuffer& fb, Aov aov);
+
+}  // namespace hikari

@@ -1,0 +1,24 @@
+#pragma once
+// Options shared by every rendering method, and the channel through which a render reports
+// progress and learns that it should stop.
+
+#include <atomic>
+#include <cstdint>
+
+namespace hikari {
+
+/// Progress and cancellation of one render, shared between the render and its caller.
+struct RenderControl {
+    std::atomic<uint64_t> work_done{0};   ///< units (tiles, primitives) finished so far
+    std::atomic<uint64_t> work_total{0};  ///< units in all, set by the method when it starts
+    std::atomic<bool> cancel{false};      ///< set by the caller (e.g. on SIGINT) to stop early
+};
+
+/// Settings of a render; the scene says what, these say how.
+struct RenderSettings {
+    int samples_per_pixel = 1;  ///< 1: one ray through each pixel centre; more: stratified jitter
+    int max_depth = 5;          ///< ray segments per path, the primary ray included
+    RenderControl* control = nullptr;  ///< optional progress / cancellation
+};
+
+}  // namespace hikari

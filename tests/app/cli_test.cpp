@@ -1,0 +1,117 @@
+// End-to-end checks of the hikari program: exit statuses, messages and files written.
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+    int status;
+    std::string output;  // stdout and stderr together
+};
+
+Result run(const std::string& args) {
+    const std::string command = std::string(HIKARI_CLI_PATH) + " " + args + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    std::string output;
+    char buffer[4096];
+    while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
+    const int raw = pclose(pipe);
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), output};
+}
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        m_dir = fs::temp_directory_path() /
+                ("hikari_cli_" + std::string(::testing::UnitTest::GetInstance()
+                                                 ->current_test_info()
+                                                 ->name()));
+        fs::remove_all(m_dir);
+        fs::create_directories(m_dir);
+    }
+    void TearDown() override { fs::remove_all(m_dir); }
+
+    std::string path(const std::string& name) const { return (m_dir / name).string(); }
+    void write(const std::string& name, const std::string& text) const {
+        std::ofstream(m_dir / name) << text;
+    }
+    size_t file_count() const {
+        return static_cast<size_t>(std::distance(fs::directory_iterator(m_dir), {}));
+    }
+
+    fs::path m_dir;
+};
+
+TEST_F(Cli, VersionAndHelpSucceed) {
+    EXPECT_EQ(run("--version").status, 0);
+    const Result help = run("render --help");
+    EXPECT_EQ(help.status, 0);
+    EXPECT_NE(help.output.find("raytrace"), std::string::npos);
+}
+
+TEST_F(Cli, DefaultSceneRendersToPng) {
+    const Result r = run("render --width 64 -o " + path("sphere.png"));
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_TRUE(fs::exists(path("sphere.png")));
+    EXPECT_GT(fs::file_size(path("sphere.png")), 100u);
+}
+
+TEST_F(Cli, UsageErrorsExitWithTwo) {
+    EXPECT_EQ(run("render --spp 0").status, 2);
+    EXPECT_EQ(run("render --method nonsense").status, 2);
+    EXPECT_EQ(run("render --no-such-flag").status, 2);
+    EXPECT_EQ(run("").status, 2);
+}
+
+TEST_F(Cli, BadSceneExitsWithOneAndWritesNothing) {
+    write("bad.json", "{\"objects\": [ {\"type\": \"sphere\", \"radius\": 1,} ]}");
+    const Result r = run(path("bad.json") + " -o " + path("out.png"));
+    EXPECT_EQ(r.status, 2) << "scene file given without the render subcommand is a usage error";
+    const Result bad = run("render " + path("bad.json") + " -o " + path("out.png"));
+    EXPECT_EQ(bad.status, 1) << bad.output;
+    EXPECT_EQ(bad.output.rfind("hikari: error: ", 0), 0u) << bad.output;
+    EXPECT_NE(bad.output.find("bad.json:1:"), std::string::npos) << bad.output;
+    EXPECT_EQ(file_count(), 1u);  // only bad.json
+}
+
+TEST_F(Cli, MissingSceneFileExitsWithOne) {
+    const Result r = run("render " + path("missing.json") + " -o " + path("out.png"));
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.output.find("missing.json"), std::string::npos);
+    EXPECT_FALSE(fs::exists(path("out.png")));
+}
+
+TEST_F(Cli, UnsupportedOutputFormatIsRefusedBeforeRendering) {
+    const Result r = run("render -o " + path("out.gif"));
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.output.find("out.gif"), std::string::npos);
+    EXPECT_EQ(file_count(), 0u);
+}
+
+TEST_F(Cli, OversizedRenderIsRefused) {
+    const Result r = run("render --width 60000 --height 60000 --max-memory 1 -o " + path("x.png"));
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.output.find("max-memory"), std::string::npos);
+    EXPECT_EQ(file_count(), 0u);
+}
+
+TEST_F(Cli, PfmOutputHoldsLinearFloats) {
+    const Result r = run("render --width 8 --height 8 -o " + path("x.pfm"));
+    ASSERT_EQ(r.status, 0) << r.output;
+    std::ifstream in(path("x.pfm"), std::ios::binary);
+    std::string magic;
+    in >> magic;
+    EXPECT_EQ(magic, "PF");
+    EXPECT_EQ(fs::file_size(path("x.pfm")), std::string("PF\n8 8\n-1.0\n").size() + 8 * 8 * 12);
+}
+
+}  // namespace

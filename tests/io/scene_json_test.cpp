@@ -1,0 +1,119 @@
+#include "hikari/io/scene_json.h"
+
+#include <gtest/gtest.h>
+
+#include "hikari/core/error.h"
+
+namespace hikari {
+namespace {
+
+Scene parse(const std::string& json) {
+    std::vector<std::string> warnings;
+    return parse_scene(json, "s.json", ".", warnings);
+}
+
+/// The InputError message that parsing `json` produces ("" when it parses).
+std::string error_of(const std::string& json) {
+    try {
+        parse(json);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(SceneJson, DefaultSceneIsTheAssignment) {
+    const Scene s = load_default_scene();
+    EXPECT_EQ(s.camera.width, 512);
+    EXPECT_EQ(s.camera.height, 512);
+    EXPECT_FLOAT_EQ(s.camera.fov_y_degrees, 60);
+    ASSERT_EQ(s.spheres.size(), 1u);
+    EXPECT_EQ(s.spheres[0].center, Vec3(0, 0, -3));
+    ASSERT_EQ(s.lights.size(), 1u);
+    const auto& light = std::get<DirectionalLight>(s.lights[0]);
+    EXPECT_NEAR(light.direction.x, 1 / std::sqrt(3.0f), 1e-6);
+    EXPECT_FLOAT_EQ(s.materials[s.spheres[0].material].shininess, 40);
+}
+
+TEST(SceneJson, PrimitiveIdsFollowFileOrder) {
+    const Scene s = parse(R"({"objects": [
+        {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0]},
+        {"type": "sphere", "center": [0, 0, 0], "radius": 1},
+        {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}]})");
+    EXPECT_EQ(s.planes[0].id, 0u);
+    EXPECT_EQ(s.spheres[0].id, 1u);
+    EXPECT_EQ(s.triangles.id[0], 2u);
+    EXPECT_EQ(s.primitive_count, 3u);
+}
+
+TEST(SceneJson, TriangleNormalFollowsLectureWinding) {
+    const Scene s = parse(R"({"objects": [
+        {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}]})");
+    EXPECT_EQ(s.triangles.normals[0], Vec3(0, 0, 1));
+}
+
+TEST(SceneJson, TransformStepsApplyInOrder) {
+    // scale by 2, then translate by (1, 0, 0): (1, 0, 0) -> (2, 0, 0) -> (3, 0, 0).
+    const Scene s = parse(R"({"objects": [
+        {"type": "triangle", "vertices": [[1, 0, 0], [0, 1, 0], [0, 0, 1]],
+         "transform": [{"scale": [2, 2, 2]}, {"translate": [1, 0, 0]}]}]})");
+    EXPECT_EQ(s.triangles.positions[0], Vec3(3, 0, 0));
+    EXPECT_EQ(s.triangles.positions[1], Vec3(1, 2, 0));
+}
+
+TEST(SceneJson, SyntaxErrorGivesLineAndColumn) {
+    const std::string e = error_of("{\n  \"objects\": [\n    {\"type\": \"sphere\",}\n  ]\n}");
+    EXPECT_EQ(e.rfind("s.json:3:", 0), 0u) << e;
+}
+
+TEST(SceneJson, WrongValueGivesJsonPath) {
+    EXPECT_EQ(error_of(R"({"objects": [{"type": "sphere", "center": [0, 0, 0], "radius": -1}]})"),
+              "s.json: objects[0].radius: expected a positive number");
+    EXPECT_EQ(error_of(R"({"objects": [{"type": "sphere", "center": [0, 0], "radius": 1}]})"),
+              "s.json: objects[0].center: expected an array of 3 numbers, got an array");
+    EXPECT_EQ(error_of(R"({"objects": [{"type": "sphere", "center": [0, 0, 0]}]})"),
+              "s.json: objects[0].radius: missing (this key is required)");
+}
+
+TEST(SceneJson, UnknownKeySuggestsTheRightOne) {
+    EXPECT_EQ(error_of(R"({"objects": [{"type": "sphere", "center": [0, 0, 0], "radus": 1}]})"),
+              "s.json: objects[0].radus: unknown key (did you mean \"radius\"?)");
+}
+
+TEST(SceneJson, UnknownNamesAreErrors) {
+    EXPECT_NE(error_of(R"({"objects": [{"type": "cube"}]})").find("unknown object type"),
+              std::string::npos);
+    EXPECT_NE(error_of(R"({"lights": [{"type": "spot"}], "objects": []})").find("lights[0].type"),
+              std::string::npos);
+    EXPECT_EQ(error_of(R"({"objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1,
+                                         "material": "gold"}]})"),
+              "s.json: objects[0].material: unknown material \"gold\" (not in \"materials\")");
+}
+
+TEST(SceneJson, BadCameraIsRefused) {
+    EXPECT_NE(error_of(R"({"camera": {"up": [0, 0, -1]}, "objects": []})")
+                  .find("camera.up: up is parallel"),
+              std::string::npos);
+    EXPECT_NE(error_of(R"({"camera": {"width": 0}, "objects": []})").find("camera.width"),
+              std::string::npos);
+    EXPECT_NE(error_of(R"({"camera": {"fov_y": 180}, "objects": []})").find("camera.fov_y"),
+              std::string::npos);
+}
+
+TEST(SceneJson, NegativeIntensityIsRefused) {
+    EXPECT_EQ(error_of(R"({"lights": [{"type": "point", "position": [0, 0, 0],
+                                       "intensity": [1, -1, 1]}], "objects": []})"),
+              "s.json: lights[0].intensity[1]: expected a number >= 0");
+}
+
+TEST(SceneJson, HugeNumbersAreRefused) {
+    EXPECT_NE(error_of(R"({"ambient": 1e300, "objects": []})").find("ambient"), std::string::npos);
+}
+
+TEST(SceneJson, MissingSceneFileIsAnInputError) {
+    std::vector<std::string> warnings;
+    EXPECT_THROW(load_scene_file("/nonexistent/scene.json", warnings), InputError);
+}
+
+}  // namespace
+}  // namespace hikari
