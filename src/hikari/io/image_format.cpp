@@ -1,0 +1,19 @@
+#include "hikari/io/image_format.h"
+
+#include <cctype>
+#include <string>
+
+namespace hikari {
+
+std::optional<ImageFormat> image_format_from_extension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext == ".png") return ImageFormat::Png;
+    if (ext == ".jpg" || ext == ".jpeg") return ImageFormat::Jpeg;
+    if (ext == ".ppm") return ImageFormat::Ppm;
+    if (ext == ".pfm") return ImageFormat::Pfm;
+    if (ext == ".exr") return ImageFormat::Exr;
+    return std::nullopt;
+}
+
+}  // namespace hikari

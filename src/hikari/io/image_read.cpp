@@ -1,0 +1,322 @@
+#include "hikari/io/image_read.h"
+
+#include <stb_image.h>
+#include <tinyexr.h>
+
+#include <array>
+#include <bit>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "hikari/core/color.h"
+#include "hikari/core/error.h"
+#include "hikari/io/image_format.h"
+#include "hikari/io/read_file.h"
+
+namespace hikari {
+
+namespace {
+
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& reason) {
+    throw InputError(path.string() + ": " + reason);
+}
+
+/// Refuses sizes that are not positive or exceed the limits, before anything is allocated.
+void check_size(const std::filesystem::path& path, long long width, long long height) {
+    if (width <= 0 || height <= 0) {
+        fail(path, "invalid image size " + std::to_string(width) + "x" + std::to_string(height));
+    }
+    if (width > k_max_image_side || height > k_max_image_side ||
+        static_cast<unsigned long long>(width) * static_cast<unsigned long long>(height) >
+            k_max_image_pixels) {
+        fail(path, "image size " + std::to_string(width) + "x" + std::to_string(height) +
+                       " exceeds the limit (65536 per side, 2^28 pixels)");
+    }
+}
+
+/// Linear values of the 256 8-bit sRGB codes, so decoding is a table look-up per sample.
+const std::array<float, 256>& srgb8_to_linear_table() {
+    static const std::array<float, 256> table = [] {
+        std::array<float, 256> t{};
+        for (int i = 0; i < 256; ++i) t[i] = srgb_to_linear(static_cast<float>(i) / 255.0f);
+        return t;
+    }();
+    return table;
+}
+
+// --- PNG / JPEG through stb_image --------------------------------------------------------------
+
+Image read_stb(const std::filesystem::path& path, const std::string& bytes) {
+    const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+    if (bytes.size() > static_cast<size_t>(INT32_MAX)) fail(path, "file too large");
+    const int size = static_cast<int>(bytes.size());
+    int w = 0, h = 0, channels = 0;
+    if (!stbi_info_from_memory(data, size, &w, &h, &channels)) {
+        fail(path, std::string("cannot decode image: ") + stbi_failure_reason());
+    }
+    check_size(path, w, h);
+    Image image(w, h);
+    if (stbi_is_16_bit_from_memory(data, size)) {
+        std::unique_ptr<stbi_us, void (*)(void*)> pixels(
+            stbi_load_16_from_memory(data, size, &w, &h, &channels, 3), &stbi_image_free);
+        if (!pixels) fail(path, std::string("cannot decode image: ") + stbi_failure_reason());
+        for (size_t i = 0; i < image.pixels.size(); ++i) {
+            auto decode = [&](int c) { return srgb_to_linear(pixels.get()[3 * i + c] / 65535.0f); };
+            image.pixels[i] = {decode(0), decode(1), decode(2)};
+        }
+        return image;
+    }
+    std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
+        stbi_load_from_memory(data, size, &w, &h, &channels, 3), &stbi_image_free);
+    if (!pixels) fail(path, std::string("cannot decode image: ") + stbi_failure_reason());
+    const auto& lut = srgb8_to_linear_table();
+    for (size_t i = 0; i < image.pixels.size(); ++i) {
+        const stbi_uc* p = pixels.get() + 3 * i;
+        image.pixels[i] = {lut[p[0]], lut[p[1]], lut[p[2]]};
+    }
+    return image;
+}
+
+// --- Netpbm and PFM headers --------------------------------------------------------------------
+
+/// Reads the whitespace-separated tokens of a Netpbm/PFM header ('#' starts a comment to the end
+/// of the line, as in Netpbm), then hands over the byte offset where binary data begins.
+class HeaderReader {
+  public:
+    HeaderReader(const std::filesystem::path& path, std::string_view bytes)
+        : m_path(path), m_bytes(bytes) {}
+
+    /// The next token; fails (naming `what`) at the end of the file.
+    std::string_view token(const char* what) {
+        skip_space_and_comments();
+        const size_t begin = m_pos;
+        while (m_pos < m_bytes.size() && !is_space(m_bytes[m_pos])) ++m_pos;
+        if (begin == m_pos) fail(m_path, std::string("truncated header: missing ") + what);
+        return m_bytes.substr(begin, m_pos - begin);
+    }
+
+    /// The next token as a non-negative integer.
+    long long integer(const char* what) {
+        const std::string_view t = token(what);
+        long long value = 0;
+        const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+        if (ec != std::errc() || end != t.data() + t.size() || value < 0) {
+            fail(m_path, std::string("invalid ") + what + " '" + std::string(t) + "'");
+        }
+        return value;
+    }
+
+    /// The next token as a finite float.
+    float real(const char* what) {
+        const std::string text(token(what));
+        char* end = nullptr;
+        const float value = std::strtof(text.c_str(), &end);
+        if (end != text.c_str() + text.size() || !std::isfinite(value)) {
+            fail(m_path, std::string("invalid ") + what + " '" + text + "'");
+        }
+        return value;
+    }
+
+    /// Consumes the single whitespace byte that separates the header from binary data.
+    size_t data_offset() {
+        if (m_pos >= m_bytes.size() || !is_space(m_bytes[m_pos])) {
+            fail(m_path, "truncated file: no pixel data after the header");
+        }
+        return m_pos + 1;
+    }
+
+  private:
+    static bool is_space(char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }
+
+    void skip_space_and_comments() {
+        while (m_pos < m_bytes.size()) {
+            if (is_space(m_bytes[m_pos])) {
+                ++m_pos;
+            } else if (m_bytes[m_pos] == '#') {
+                while (m_pos < m_bytes.size() && m_bytes[m_pos] != '\n') ++m_pos;
+            } else {
+                break;
+            }
+        }
+    }
+
+    const std::filesystem::path& m_path;
+    std::string_view m_bytes;
+    size_t m_pos = 0;
+};
+
+void check_data_size(const std::filesystem::path& path, size_t available, size_t needed) {
+    if (available < needed) {
+        fail(path, "truncated file: expected " + std::to_string(needed) +
+                       " bytes of pixel data, found " + std::to_string(available));
+    }
+}
+
+// --- PPM ---------------------------------------------------------------------------------------
+
+/// Netpbm PPM (netpbm.sourceforge.net/doc/ppm.html): P6 binary (1 byte per sample when
+/// maxval < 256, else 2 bytes big-endian) or P3 ASCII; samples are sRGB-encoded, top row first.
+Image read_ppm(const std::filesystem::path& path, std::string_view bytes) {
+    HeaderReader header(path, bytes);
+    const std::string_view magic = header.token("magic number");
+    if (magic != "P6" && magic != "P3") {
+        fail(path, "not a PPM file (expected magic P6 or P3, found '" +
+                       std::string(magic.substr(0, 8)) + "')");
+    }
+    const long long w = header.integer("width");
+    const long long h = header.integer("height");
+    check_size(path, w, h);
+    const long long maxval = header.integer("maxval");
+    if (maxval < 1 || maxval > 65535) fail(path, "invalid maxval " + std::to_string(maxval));
+
+    Image image(static_cast<int>(w), static_cast<int>(h));
+    const size_t samples = image.pixels.size() * 3;
+    const auto to_linear = [&](long long v) {
+        if (v > maxval) fail(path, "sample value " + std::to_string(v) + " exceeds maxval");
+        return srgb_to_linear(static_cast<float>(v) / static_cast<float>(maxval));
+    };
+    auto store = [&](size_t s, float v) { image.pixels[s / 3][static_cast<int>(s % 3)] = v; };
+    if (magic == "P3") {
+        for (size_t s = 0; s < samples; ++s) {
+            store(s, to_linear(header.integer("sample value")));
+        }
+        return image;
+    }
+    const size_t offset = header.data_offset();
+    const size_t width_bytes = maxval < 256 ? 1 : 2;
+    check_data_size(path, bytes.size() - offset, samples * width_bytes);
+    const auto* data = reinterpret_cast<const uint8_t*>(bytes.data() + offset);
+    for (size_t s = 0; s < samples; ++s) {
+        const long long v =
+            width_bytes == 1 ? data[s] : (unsigned{data[2 * s]} << 8) | data[2 * s + 1];
+        store(s, to_linear(v));
+    }
+    return image;
+}
+
+// --- PFM ---------------------------------------------------------------------------------------
+
+float load_float(const uint8_t* p, bool little_endian) {
+    uint32_t bits = 0;
+    for (int i = 0; i < 4; ++i) {
+        const int shift = little_endian ? 8 * i : 8 * (3 - i);
+        bits |= uint32_t{p[i]} << shift;
+    }
+    return std::bit_cast<float>(bits);
+}
+
+/// PFM (Debevec, www.pauldebevec.com/Research/HDR/PFM/): "PF" (RGB) or "Pf" (grey), size,
+/// scale (negative = little-endian), then float rows from the BOTTOM up. Like pbrt-v3's reader
+/// (src/core/imageio.cpp), samples are multiplied by |scale| when it is not 1.
+Image read_pfm(const std::filesystem::path& path, std::string_view bytes) {
+    HeaderReader header(path, bytes);
+    const std::string_view magic = header.token("magic number");
+    if (magic != "PF" && magic != "Pf") {
+        fail(path, "not a PFM file (expected magic PF or Pf, found '" +
+                       std::string(magic.substr(0, 8)) + "')");
+    }
+    const int channels = magic == "PF" ? 3 : 1;
+    const long long w = header.integer("width");
+    const long long h = header.integer("height");
+    check_size(path, w, h);
+    const float scale = header.real("scale");
+    if (scale == 0.0f) fail(path, "invalid scale 0 (its sign must give the byte order)");
+    const bool little_endian = scale < 0.0f;
+    const float factor = std::abs(scale);
+
+    const size_t offset = header.data_offset();
+    Image image(static_cast<int>(w), static_cast<int>(h));
+    check_data_size(path, bytes.size() - offset, image.pixels.size() * channels * 4);
+    const auto* data = reinterpret_cast<const uint8_t*>(bytes.data() + offset);
+    for (int row = 0; row < image.height; ++row) {
+        const int y = image.height - 1 - row;  // stored bottom to top
+        for (int x = 0; x < image.width; ++x) {
+            const uint8_t* p = data + (static_cast<size_t>(row) * image.width + x) * channels * 4;
+            Vec3& out = image.at(x, y);
+            for (int c = 0; c < 3; ++c) out[c] = load_float(p + 4 * (c % channels), little_endian);
+            if (factor != 1.0f) out *= factor;
+        }
+    }
+    return image;
+}
+
+// --- OpenEXR through tinyexr ------------------------------------------------------------------
+
+std::string take_exr_error(const char* err, int code) {
+    std::string reason = err ? err : "error code " + std::to_string(code);
+    if (err) FreeEXRErrorMessage(err);
+    return reason;
+}
+
+/// Checks the data window in the header before tinyexr allocates the pixels.
+void check_exr_header(const std::filesystem::path& path, const std::string& bytes) {
+    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+    EXRVersion version;
+    int code = ParseEXRVersionFromMemory(&version, data, bytes.size());
+    if (code != TINYEXR_SUCCESS) fail(path, "not an OpenEXR file (bad magic number or version)");
+    if (version.multipart || version.non_image) {
+        fail(path, "multi-part and deep OpenEXR files are not supported");
+    }
+    EXRHeader header;
+    InitEXRHeader(&header);
+    const char* err = nullptr;
+    code = ParseEXRHeaderFromMemory(&header, &version, data, bytes.size(), &err);
+    if (code != TINYEXR_SUCCESS) fail(path, "invalid OpenEXR header: " + take_exr_error(err, code));
+    const long long w =
+        static_cast<long long>(header.data_window.max_x) - header.data_window.min_x + 1;
+    const long long h =
+        static_cast<long long>(header.data_window.max_y) - header.data_window.min_y + 1;
+    FreeEXRHeader(&header);
+    check_size(path, w, h);
+}
+
+Image read_exr(const std::filesystem::path& path, const std::string& bytes) {
+    check_exr_header(path, bytes);
+    float* rgba = nullptr;
+    int w = 0, h = 0;
+    const char* err = nullptr;
+    const int code = LoadEXRFromMemory(
+        &rgba, &w, &h, reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), &err);
+    std::unique_ptr<float, void (*)(void*)> owner(rgba, &std::free);
+    if (code != TINYEXR_SUCCESS || !rgba) {
+        fail(path, "cannot decode OpenEXR image: " + take_exr_error(err, code));
+    }
+    check_size(path, w, h);
+    Image image(w, h);
+    for (size_t i = 0; i < image.pixels.size(); ++i) {
+        image.pixels[i] = {rgba[4 * i + 0], rgba[4 * i + 1], rgba[4 * i + 2]};
+    }
+    return image;
+}
+
+}  // namespace
+
+Image read_image(const std::filesystem::path& path) {
+    const auto format = image_format_from_extension(path);
+    if (!format) {
+        fail(path, "unknown image extension '" + path.extension().string() +
+                       "' (supported: .png, .jpg, .jpeg, .ppm, .pfm, .exr)");
+    }
+    const std::string bytes = read_file_bytes(path);
+    if (bytes.empty()) fail(path, "the file is empty");
+    switch (*format) {
+        case ImageFormat::Png:
+        case ImageFormat::Jpeg:
+            return read_stb(path, bytes);
+        case ImageFormat::Ppm:
+            return read_ppm(path, bytes);
+        case ImageFormat::Pfm:
+            return read_pfm(path, bytes);
+        case ImageFormat::Exr:
+            return read_exr(path, bytes);
+    }
+    fail(path, "unsupported image format");
+}
+
+}  // namespace hikari

@@ -1,0 +1,177 @@
+#include "hikari/io/image_write.h"
+
+#include <stb_image_write.h>
+#include <tinyexr.h>
+
+#include <bit>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "hikari/core/color.h"
+#include "hikari/core/error.h"
+#include "hikari/io/atomic_file.h"
+#include "hikari/io/image_format.h"
+
+namespace hikari {
+
+namespace {
+
+using Bytes = std::vector<uint8_t>;
+
+void append(Bytes& out, const std::string& text) {
+    out.insert(out.end(), text.begin(), text.end());
+}
+
+/// The image as packed 8-bit sRGB triples, row 0 (top) first.
+Bytes to_srgb8(const Image& image) {
+    Bytes rgb;
+    rgb.reserve(image.pixels.size() * 3);
+    for (const Vec3& p : image.pixels) {
+        rgb.push_back(linear_to_srgb8(p.x));
+        rgb.push_back(linear_to_srgb8(p.y));
+        rgb.push_back(linear_to_srgb8(p.z));
+    }
+    return rgb;
+}
+
+Bytes encode_png(const std::filesystem::path& path, const Image& image) {
+    const Bytes rgb = to_srgb8(image);
+    Bytes png;
+    auto sink = [](void* context, void* data, int size) {
+        const auto* bytes = static_cast<const uint8_t*>(data);
+        static_cast<Bytes*>(context)->insert(static_cast<Bytes*>(context)->end(), bytes,
+                                             bytes + size);
+    };
+    if (!stbi_write_png_to_func(sink, &png, image.width, image.height, 3, rgb.data(),
+                                image.width * 3)) {
+        throw InputError("cannot write " + path.string() + ": PNG encoding failed");
+    }
+    return png;
+}
+
+/// Netpbm P6 (netpbm.sourceforge.net/doc/ppm.html): maxval 255, one byte per sample, top row first.
+Bytes encode_ppm(const Image& image) {
+    Bytes out;
+    append(out,
+           "P6\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n255\n");
+    const Bytes rgb = to_srgb8(image);
+    out.insert(out.end(), rgb.begin(), rgb.end());
+    return out;
+}
+
+void append_float_le(Bytes& out, float v) {
+    const auto bits = std::bit_cast<uint32_t>(v);
+    for (int shift = 0; shift < 32; shift += 8) out.push_back(static_cast<uint8_t>(bits >> shift));
+}
+
+/// PFM (Debevec, www.pauldebevec.com/Research/HDR/PFM/): "PF", size, then a scale whose sign
+/// gives the byte order (negative = little-endian), then rows from the BOTTOM of the image up.
+Bytes encode_pfm(const Image& image) {
+    Bytes out;
+    append(out,
+           "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n");
+    out.reserve(out.size() + image.pixels.size() * 12);
+    for (int y = image.height - 1; y >= 0; --y) {
+        for (int x = 0; x < image.width; ++x) {
+            const Vec3 p = image.at(x, y);
+            append_float_le(out, p.x);
+            append_float_le(out, p.y);
+            append_float_le(out, p.z);
+        }
+    }
+    return out;
+}
+
+/// OpenEXR through tinyexr's full API. Channels go in B, G, R order: OpenEXR lists channels
+/// sorted by name, and "most of EXR viewers expect this channel order" (tinyexr README, SaveEXR).
+Bytes encode_exr(const std::filesystem::path& path, const Image& image) {
+    const size_t n = image.pixels.size();
+    std::vector<float> planes[3];  // B, G, R
+    for (auto& plane : planes) plane.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        planes[0][i] = image.pixels[i].z;
+        planes[1][i] = image.pixels[i].y;
+        planes[2][i] = image.pixels[i].x;
+    }
+    unsigned char* plane_ptrs[3] = {reinterpret_cast<unsigned char*>(planes[0].data()),
+                                    reinterpret_cast<unsigned char*>(planes[1].data()),
+                                    reinterpret_cast<unsigned char*>(planes[2].data())};
+
+    EXRImage exr_image;
+    InitEXRImage(&exr_image);
+    exr_image.num_channels = 3;
+    exr_image.images = plane_ptrs;
+    exr_image.width = image.width;
+    exr_image.height = image.height;
+
+    EXRHeader header;
+    InitEXRHeader(&header);
+    EXRChannelInfo channels[3] = {};
+    std::strcpy(channels[0].name, "B");
+    std::strcpy(channels[1].name, "G");
+    std::strcpy(channels[2].name, "R");
+    int pixel_types[3] = {TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT,
+                          TINYEXR_PIXELTYPE_FLOAT};
+    int requested_types[3] = {TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT,
+                              TINYEXR_PIXELTYPE_FLOAT};
+    header.num_channels = 3;
+    header.channels = channels;
+    header.pixel_types = pixel_types;
+    header.requested_pixel_types = requested_types;
+    header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
+
+    unsigned char* memory = nullptr;
+    const char* err = nullptr;
+    const size_t size = SaveEXRImageToMemory(&exr_image, &header, &memory, &err);
+    if (size == 0 || memory == nullptr) {
+        const std::string reason = err ? err : "unknown error";
+        if (err) FreeEXRErrorMessage(err);
+        std::free(memory);
+        throw InputError("cannot write " + path.string() + ": EXR encoding failed: " + reason);
+    }
+    Bytes out(memory, memory + size);
+    std::free(memory);  // tinyexr allocates the buffer with malloc
+    return out;
+}
+
+Bytes encode(const std::filesystem::path& path, const Image& image, ImageFormat format) {
+    switch (format) {
+        case ImageFormat::Png:
+            return encode_png(path, image);
+        case ImageFormat::Ppm:
+            return encode_ppm(image);
+        case ImageFormat::Pfm:
+            return encode_pfm(image);
+        case ImageFormat::Exr:
+            return encode_exr(path, image);
+        case ImageFormat::Jpeg:
+            break;
+    }
+    throw InputError("cannot write " + path.string() + ": unsupported image format");
+}
+
+}  // namespace
+
+bool is_supported_image_extension(const std::filesystem::path& path) {
+    const auto format = image_format_from_extension(path);
+    return format && *format != ImageFormat::Jpeg;
+}
+
+void write_image(const std::filesystem::path& path, const Image& image) {
+    if (!is_supported_image_extension(path)) {
+        throw InputError("cannot write " + path.string() + ": unknown image extension '" +
+                         path.extension().string() +
+                         "' (supported: " + k_writable_image_extensions + ")");
+    }
+    if (image.width <= 0 || image.height <= 0 ||
+        image.pixels.size() != static_cast<size_t>(image.width) * image.height) {
+        throw InputError("cannot write " + path.string() + ": the image is empty or malformed");
+    }
+    const Bytes bytes = encode(path, image, *image_format_from_extension(path));
+    write_file_atomically(path, bytes);
+}
+
+}  // namespace hikari

@@ -1,0 +1,108 @@
+#pragma once
+// Ray–triangle intersection, watertight: Woop, Benthin & Wald 2013, "Watertight Ray/Triangle
+// Intersection", JCGT 2(1). A ray through an edge or vertex shared by several triangles hits at
+// least one of them, never none, so ray-cast id buffers have no cracks along mesh edges.
+
+#include <cmath>
+#include <optional>
+#include <utility>
+
+#include "hikari/core/ray.h"
+#include "hikari/core/vec.h"
+
+namespace hikari {
+
+/// Where a ray meets a triangle p0 p1 p2: the hit point is ray.at(t) =
+/// (1 - u - v) p0 + u p1 + v p2 (up to rounding).
+struct TriangleIntersection {
+    float t = 0;  ///< distance along the ray, in units of |ray.direction|
+    float u = 0;  ///< barycentric weight of vertex p1
+    float v = 0;  ///< barycentric weight of vertex p2
+};
+
+/// The per-ray constants of the watertight test (Woop et al. 2013, Sec 3): the ray is mapped to
+/// the +z axis by a permutation of axes and a shear, and triangles are tested in that space.
+/// Computing them once per ray takes one division per axis out of every triangle test.
+struct WatertightRay {
+    Vec3 origin;                 ///< the ray origin, unchanged
+    float Vec3::*kx = &Vec3::x;  ///< the axis that becomes x after the permutation
+    float Vec3::*ky = &Vec3::y;  ///< the axis that becomes y
+    float Vec3::*kz = &Vec3::z;  ///< the axis along which |direction| is largest
+    float sx = 0;                ///< shear of x per unit z: d[kx] / d[kz]
+    float sy = 0;                ///< shear of y per unit z: d[ky] / d[kz]
+    float sz = 0;                ///< scale of z: 1 / d[kz]
+
+    WatertightRay() = default;
+    /// Precomputes the permutation and shear for `ray`. The direction need not be unit length
+    /// but must be finite and non-zero; otherwise every test misses.
+    explicit WatertightRay(const Ray& ray) : origin(ray.origin) {
+        const Vec3 d = ray.direction;
+        const Vec3 a{std::abs(d.x), std::abs(d.y), std::abs(d.z)};
+        // Sec 3: kz is the dominant axis, kx and ky follow it cyclically.
+        if (a.x >= a.y && a.x >= a.z) {
+            kx = &Vec3::y, ky = &Vec3::z, kz = &Vec3::x;
+        } else if (a.y >= a.z) {
+            kx = &Vec3::z, ky = &Vec3::x, kz = &Vec3::y;
+        }
+        // Swapping kx and ky when d[kz] < 0 keeps the winding, so det > 0 means front-facing.
+        if (d.*kz < 0.0f) std::swap(kx, ky);
+        sx = d.*kx / d.*kz;
+        sy = d.*ky / d.*kz;
+        sz = 1.0f / d.*kz;
+    }
+};
+
+/// Intersects a ray (as its precomputed WatertightRay) with triangle p0 p1 p2, both sides
+/// (no culling). Returns the hit when its distance lies inside the open interval `valid`;
+/// degenerate (zero-area) triangles and NaN inputs never hit.
+inline std::optional<TriangleIntersection> intersect_triangle(const WatertightRay& ray,
+                                                              const Vec3& p0, const Vec3& p1,
+                                                              const Vec3& p2, Interval valid) {
+    // Steps 1-2: vertices relative to the origin, sheared so the ray runs along +z.
+    const Vec3& o = ray.origin;
+    const float az = p0.*ray.kz - o.*ray.kz;
+    const float bz = p1.*ray.kz - o.*ray.kz;
+    const float cz = p2.*ray.kz - o.*ray.kz;
+    const float ax = (p0.*ray.kx - o.*ray.kx) - ray.sx * az;
+    const float ay = (p0.*ray.ky - o.*ray.ky) - ray.sy * az;
+    const float bx = (p1.*ray.kx - o.*ray.kx) - ray.sx * bz;
+    const float by = (p1.*ray.ky - o.*ray.ky) - ray.sy * bz;
+    const float cx = (p2.*ray.kx - o.*ray.kx) - ray.sx * cz;
+    const float cy = (p2.*ray.ky - o.*ray.ky) - ray.sy * cz;
+
+    // Step 3: scaled barycentrics = 2D edge functions at the origin of the sheared space.
+    float e0 = cx * by - cy * bx;  // weight of p0
+    float e1 = ax * cy - ay * cx;  // weight of p1
+    float e2 = bx * ay - by * ax;  // weight of p2
+
+    // Sec 4: on an edge, float rounding could give the two neighbours the same sign; redo the
+    // products exactly (a float product is exact in double) so the sign is the true one.
+    if (e0 == 0.0f || e1 == 0.0f || e2 == 0.0f) {
+        e0 = static_cast<float>(double(cx) * by - double(cy) * bx);
+        e1 = static_cast<float>(double(ax) * cy - double(ay) * cx);
+        e2 = static_cast<float>(double(bx) * ay - double(by) * ax);
+    }
+
+    // Step 4: inside when all edge functions share a sign (either sign: double-sided).
+    if ((e0 < 0.0f || e1 < 0.0f || e2 < 0.0f) && (e0 > 0.0f || e1 > 0.0f || e2 > 0.0f)) {
+        return std::nullopt;
+    }
+    const float det = e0 + e1 + e2;
+    if (det == 0.0f) return std::nullopt;
+
+    // Step 5: the hit distance, interpolated from the vertices' scaled z.
+    const float t_scaled = e0 * (ray.sz * az) + e1 * (ray.sz * bz) + e2 * (ray.sz * cz);
+    const float inv_det = 1.0f / det;
+    const float t = t_scaled * inv_det;
+    if (!valid.surrounds(t)) return std::nullopt;
+    return TriangleIntersection{t, e1 * inv_det, e2 * inv_det};
+}
+
+/// Convenience form for a single test: precomputes the WatertightRay for `ray` first.
+inline std::optional<TriangleIntersection> intersect_triangle(const Ray& ray, const Vec3& p0,
+                                                              const Vec3& p1, const Vec3& p2,
+                                                              Interval valid) {
+    return intersect_triangle(WatertightRay(ray), p0, p1, p2, valid);
+}
+
+}  // namespace hikari
