@@ -10,9 +10,9 @@
 #include <string>
 #include <thread>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <tbb/global_control.h>
+#include <CLI/CLI.hpp>
 
 #include "hikari/core/error.h"
 #include "hikari/io/atomic_file.h"
@@ -68,7 +68,7 @@ void install_signal_handlers() {
 /// Prints a progress line on stderr while a render runs, once it has taken a second, when
 /// stderr is a terminal.
 class ProgressReporter {
-public:
+  public:
     explicit ProgressReporter(bool enabled) {
         if (!enabled || !isatty(STDERR_FILENO)) return;
         m_thread = std::jthread([](std::stop_token stop) {
@@ -81,7 +81,8 @@ public:
                 if (elapsed < 1.0 || total == 0) continue;
                 const double done = static_cast<double>(g_control.work_done.load()) / total;
                 const double eta = done > 0 ? elapsed * (1.0 - done) / done : 0.0;
-                fmt::print(stderr, "\rhikari: rendering {:5.1f}%  {:.1f} s elapsed, ~{:.1f} s left ",
+                fmt::print(stderr,
+                           "\rhikari: rendering {:5.1f}%  {:.1f} s elapsed, ~{:.1f} s left ",
                            100.0 * done, elapsed, eta);
                 shown = true;
             }
@@ -89,7 +90,7 @@ public:
         });
     }
 
-private:
+  private:
     std::jthread m_thread;
 };
 
@@ -118,10 +119,10 @@ void check_memory(const Camera& camera, double limit_bytes) {
     // colour + depth + id + normal in the framebuffer, one more image for the output.
     const double bytes = pixels * (sizeof(Vec3) * 3 + sizeof(float) + sizeof(uint32_t));
     if (bytes > limit_bytes)
-        throw InputError(fmt::format(
-            "a {}x{} image needs about {:.1f} GiB, more than the limit of {:.1f} GiB "
-            "(raise it with --max-memory)",
-            camera.width, camera.height, bytes / (1 << 30), limit_bytes / (1 << 30)));
+        throw InputError(
+            fmt::format("a {}x{} image needs about {:.1f} GiB, more than the limit of {:.1f} GiB "
+                        "(raise it with --max-memory)",
+                        camera.width, camera.height, bytes / (1 << 30), limit_bytes / (1 << 30)));
 }
 
 double default_memory_limit() {
@@ -139,12 +140,12 @@ int run_render(const RenderOptions& o) {
     const Method* method = find_method(o.method);  // validated by CLI11 already
     const std::string output = o.output.empty() ? default_output(o) : o.output;
     if (!is_supported_image_extension(output))
-        throw InputError(fmt::format("{}: unsupported output format (use .png, .ppm, .pfm or .exr)",
-                                     output));
+        throw InputError(
+            fmt::format("{}: unsupported output format (use .png, .ppm, .pfm or .exr)", output));
 
     std::vector<std::string> warnings;
-    Scene scene = o.scene_file.empty() ? load_default_scene()
-                                       : load_scene_file(o.scene_file, warnings);
+    Scene scene =
+        o.scene_file.empty() ? load_default_scene() : load_scene_file(o.scene_file, warnings);
     for (const std::string& w : warnings) fmt::print(stderr, "hikari: warning: {}\n", w);
     resize_camera(scene.camera, o.width, o.height);
     check_memory(scene.camera,
@@ -201,9 +202,10 @@ int main(int argc, char** argv) {
     render->add_option("-m,--method", o.method, "Rendering method")
         ->check(CLI::IsMember(names))
         ->capture_default_str();
-    render->add_option("--aov", o.aov,
-                       "Buffer to write: color, depth (eye distance), id (1 + primitive index, "
-                       "0 = background), normal")
+    render
+        ->add_option("--aov", o.aov,
+                     "Buffer to write: color, depth (eye distance), id (1 + primitive index, "
+                     "0 = background), normal")
         ->check(CLI::IsMember({"color", "depth", "id", "normal"}))
         ->capture_default_str();
     render->add_option("--spp", o.spp, "Samples per pixel (1 = pixel centres; more: stratified)")
@@ -215,13 +217,15 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 65536));
     render->add_option("--threads", o.threads, "Worker threads (default: all cores)")
         ->check(CLI::Range(1, 1024));
-    render->add_option("--max-depth", o.max_depth,
-                       "Ray segments per path, the primary ray included (Whitted recursion)")
+    render
+        ->add_option("--max-depth", o.max_depth,
+                     "Ray segments per path, the primary ray included (Whitted recursion)")
         ->check(CLI::Range(1, 64))
         ->capture_default_str();
-    render->add_option("--max-memory", o.max_memory_gib,
-                       "Refuse renders whose buffers need more than this many GiB "
-                       "(default: half the machine's memory)")
+    render
+        ->add_option("--max-memory", o.max_memory_gib,
+                     "Refuse renders whose buffers need more than this many GiB "
+                     "(default: half the machine's memory)")
         ->check(CLI::PositiveNumber);
     render->add_flag("-q,--quiet", o.quiet, "No progress or summary on stderr");
     render->footer(method_list());

@@ -16,8 +16,8 @@ TEST(RaySphere, HitsNearSideFirst) {
 
 TEST(RaySphere, Misses) {
     EXPECT_TRUE(std::isnan(intersect_sphere({{0, 0, 0}, {0, 1, 0}}, {0, 0, -3}, 1, k_forward)));
-    EXPECT_TRUE(std::isnan(
-        intersect_sphere({{0, 1.001f, 0}, {0, 0, -1}}, {0, 0, -3}, 1, k_forward)));
+    EXPECT_TRUE(
+        std::isnan(intersect_sphere({{0, 1.001f, 0}, {0, 0, -1}}, {0, 0, -3}, 1, k_forward)));
 }
 
 TEST(RaySphere, TangentRayTouchesOnce) {
@@ -42,8 +42,8 @@ TEST(RaySphere, FarAwaySphereStaysAccurate) {
     // The naive discriminant B² − 4AC cancels badly here; the stable form does not.
     const float t = intersect_sphere({{0, 0, 0}, {0, 0, -1}}, {0, 0, -10000}, 1, k_forward);
     EXPECT_NEAR(t, 9999.0f, 1e-3f);
-    EXPECT_FALSE(std::isnan(
-        intersect_sphere({{0, 0.999f, 0}, {0, 0, -1}}, {0, 0, -10000}, 1, k_forward)));
+    EXPECT_FALSE(
+        std::isnan(intersect_sphere({{0, 0.999f, 0}, {0, 0, -1}}, {0, 0, -10000}, 1, k_forward)));
 }
 
 TEST(RayPlane, HitsAndMisses) {
@@ -52,8 +52,10 @@ TEST(RayPlane, HitsAndMisses) {
     // From below a two-sided plane is hit too.
     EXPECT_FLOAT_EQ(intersect_plane({{0, -2, 0}, {0, 1, 0}}, {0, 0, 0}, {0, 1, 0}, k_forward),
                     2.0f);
-    EXPECT_TRUE(std::isnan(intersect_plane({{0, 2, 0}, {1, 0, 0}}, {0, 0, 0}, {0, 1, 0}, k_forward)));
-    EXPECT_TRUE(std::isnan(intersect_plane({{0, 2, 0}, {0, 1, 0}}, {0, 0, 0}, {0, 1, 0}, k_forward)));
+    EXPECT_TRUE(
+        std::isnan(intersect_plane({{0, 2, 0}, {1, 0, 0}}, {0, 0, 0}, {0, 1, 0}, k_forward)));
+    EXPECT_TRUE(
+        std::isnan(intersect_plane({{0, 2, 0}, {0, 1, 0}}, {0, 0, 0}, {0, 1, 0}, k_forward)));
 }
 
 }  // namespace

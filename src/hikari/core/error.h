@@ -9,13 +9,13 @@ namespace hikari {
 /// An input the user gave (scene, mesh, image, option) is wrong. The message is complete and
 /// printed as `hikari: error: <message>`; the program exits with status 1.
 class InputError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
 /// The render was stopped by the user (SIGINT / SIGTERM); nothing is written.
 class Interrupted : public std::runtime_error {
-public:
+  public:
     Interrupted() : std::runtime_error("interrupted") {}
 };
 

@@ -122,24 +122,28 @@ Mat4 rotate(Vec3 axis, float degrees) {
     const float c = static_cast<float>(std::cos(theta));
     const float s = static_cast<float>(std::sin(theta));
     const float t = 1.0f - c;
+    // clang-format off
     return Mat4::from_rows({
         t * a.x * a.x + c, t * a.x * a.y - s * a.z, t * a.x * a.z + s * a.y, 0,
         t * a.x * a.y + s * a.z, t * a.y * a.y + c, t * a.y * a.z - s * a.x, 0,
         t * a.x * a.z - s * a.y, t * a.y * a.z + s * a.x, t * a.z * a.z + c, 0,
         0, 0, 0, 1,
     });
+    // clang-format on
 }
 
 Mat4 look_at(Vec3 eye, Vec3 target, Vec3 up) {
     const Vec3 w = normalize(eye - target);  // camera looks down -w
     const Vec3 u = normalize(cross(up, w));
     const Vec3 v = cross(w, u);
+    // clang-format off
     return Mat4::from_rows({
         u.x, u.y, u.z, -dot(u, eye),
         v.x, v.y, v.z, -dot(v, eye),
         w.x, w.y, w.z, -dot(w, eye),
         0, 0, 0, 1,
     });
+    // clang-format on
 }
 
 Mat4 perspective(float fov_y_degrees, float aspect, float near, float far) {
@@ -148,23 +152,27 @@ Mat4 perspective(float fov_y_degrees, float aspect, float near, float far) {
     const float fy = static_cast<float>(f);
     const float a = (far + near) / (near - far);
     const float b = 2.0f * far * near / (near - far);
+    // clang-format off
     return Mat4::from_rows({
         fx, 0, 0, 0,
         0, fy, 0, 0,
         0, 0, a, b,
         0, 0, -1, 0,
     });
+    // clang-format on
 }
 
 Mat4 viewport(int width, int height) {
     const float hw = 0.5f * static_cast<float>(width);
     const float hh = 0.5f * static_cast<float>(height);
+    // clang-format off
     return Mat4::from_rows({
         hw, 0, 0, hw,
         0, -hh, 0, hh,
         0, 0, 0.5f, 0.5f,
         0, 0, 0, 1,
     });
+    // clang-format on
 }
 
 }  // namespace hikari

@@ -8,7 +8,7 @@ namespace hikari {
 
 /// PCG32 (O'Neill 2014, PCG-XSH-RR 64/32): small, fast, statistically good.
 class Pcg32 {
-public:
+  public:
     /// A stream selected by `sequence`, started at `seed` (pcg32_srandom_r).
     constexpr Pcg32(uint64_t seed, uint64_t sequence) : m_inc((sequence << 1u) | 1u) {
         next_u32();
@@ -29,7 +29,7 @@ public:
         return static_cast<float>(next_u32() >> 8) * (1.0f / 16777216.0f);
     }
 
-private:
+  private:
     uint64_t m_state = 0;
     uint64_t m_inc;
 };

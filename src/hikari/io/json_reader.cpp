@@ -40,8 +40,8 @@ size_t edit_distance(std::string_view a, std::string_view b) {
 }  // namespace
 
 void JsonNode::fail(std::string_view message) const {
-    throw InputError(fmt::format("{}: {}: {}", m_file, m_path.empty() ? "(top level)" : m_path,
-                                 message));
+    throw InputError(
+        fmt::format("{}: {}: {}", m_file, m_path.empty() ? "(top level)" : m_path, message));
 }
 
 bool JsonNode::has(std::string_view key) const {
@@ -101,8 +101,7 @@ float JsonNode::as_positive() const {
 }
 
 float JsonNode::as_non_negative() const {
-    if (!m_value.is_number() || !(m_value.get<double>() >= 0))
-        fail("expected a number >= 0");
+    if (!m_value.is_number() || !(m_value.get<double>() >= 0)) fail("expected a number >= 0");
     return as_number();
 }
 
@@ -143,8 +142,10 @@ nlohmann::json parse_json(std::string_view text, const std::string& file) {
         const size_t end = std::min(text.size(), e.byte == 0 ? size_t{0} : e.byte - 1);
         size_t line = 1, column = 1;
         for (size_t i = 0; i < end; ++i) {
-            if (text[i] == '\n') ++line, column = 1;
-            else ++column;
+            if (text[i] == '\n')
+                ++line, column = 1;
+            else
+                ++column;
         }
         std::string_view reason = e.what();
         // Drop nlohmann's "[json.exception.parse_error.101] parse error at line 3, column 5: ".

@@ -14,7 +14,7 @@ namespace hikari {
 
 /// A JSON value together with where it is: the file it came from and its JSON path.
 class JsonNode {
-public:
+  public:
     JsonNode(const nlohmann::json& value, std::string file, std::string path)
         : m_value(value), m_file(std::move(file)), m_path(std::move(path)) {}
 
@@ -53,7 +53,7 @@ public:
     /// An RGB colour: three numbers >= 0, or one number for grey.
     Vec3 as_colour() const;
 
-private:
+  private:
     const nlohmann::json& m_value;
     std::string m_file;
     std::string m_path;

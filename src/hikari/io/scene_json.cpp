@@ -284,8 +284,8 @@ Scene load_scene_file(const std::filesystem::path& path, std::vector<std::string
         throw InputError(fmt::format("{}: is a directory, not a scene file", path.string()));
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        throw InputError(fmt::format("{}: cannot open scene file: {}", path.string(),
-                                     std::strerror(errno)));
+        throw InputError(
+            fmt::format("{}: cannot open scene file: {}", path.string(), std::strerror(errno)));
     std::ostringstream text;
     text << in.rdbuf();
     if (in.bad()) throw InputError(fmt::format("{}: cannot read scene file", path.string()));

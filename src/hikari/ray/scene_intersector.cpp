@@ -2,14 +2,22 @@
 
 #include <cmath>
 
+#include "hikari/ray/bvh_builder.h"
+#include "hikari/ray/bvh_traversal.h"
 #include "hikari/ray/intersect.h"
 
 namespace hikari {
 
-SceneIntersector::SceneIntersector(const Scene& scene) : m_scene(scene) {}
+SceneIntersector::SceneIntersector(const Scene& scene)
+    : m_scene(scene), m_bvh(build_bvh(scene.triangles.positions, scene.triangles.indices)) {}
 
 bool SceneIntersector::closest(const Ray& ray, Interval range, SurfaceHit& hit) const {
-    enum class Kind { none, sphere, plane } kind = Kind::none;
+    enum class Kind { none, sphere, plane, triangle } kind = Kind::none;
+    TriangleHit triangle_hit;
+    if (intersect_closest(m_bvh, ray, range, triangle_hit)) {
+        range.max = triangle_hit.t;
+        kind = Kind::triangle;
+    }
     size_t index = 0;
     for (size_t i = 0; i < m_scene.spheres.size(); ++i) {
         const Sphere& s = m_scene.spheres[i];
@@ -29,17 +37,38 @@ bool SceneIntersector::closest(const Ray& ray, Interval range, SurfaceHit& hit) 
         hit.geometric_normal = (hit.position - s.center) / s.radius;
         hit.material = s.material;
         hit.id = s.id;
-    } else {
+    } else if (kind == Kind::plane) {
         const Plane& p = m_scene.planes[index];
         hit.geometric_normal = p.normal;
         hit.material = p.material;
         hit.id = p.id;
+    } else {
+        set_triangle_hit(triangle_hit, hit);
+        return true;
     }
     hit.shading_normal = hit.geometric_normal;
     return true;
 }
 
+void SceneIntersector::set_triangle_hit(const TriangleHit& th, SurfaceHit& hit) const {
+    const TriangleSet& tris = m_scene.triangles;
+    const auto& [i0, i1, i2] = tris.indices[th.triangle];
+    const Vec3 p0 = tris.positions[i0], p1 = tris.positions[i1], p2 = tris.positions[i2];
+    // The lecture's N = (P2 − P1) × (P3 − P2) (Fig 4.5).
+    hit.geometric_normal = normalize(cross(p1 - p0, p2 - p1));
+    const float w = 1.0f - th.u - th.v;
+    // From the barycentrics rather than origin + t·direction: closer to the surface, which the
+    // ray-offset of secondary rays relies on (Wächter & Binder 2019).
+    hit.position = p0 * w + p1 * th.u + p2 * th.v;
+    const Vec3 n = tris.normals[i0] * w + tris.normals[i1] * th.u + tris.normals[i2] * th.v;
+    const float len2 = dot(n, n);
+    hit.shading_normal = len2 > 0.0f ? n / std::sqrt(len2) : hit.geometric_normal;
+    hit.material = tris.material[th.triangle];
+    hit.id = tris.id[th.triangle];
+}
+
 bool SceneIntersector::occluded(const Ray& ray, Interval range) const {
+    if (intersect_any(m_bvh, ray, range)) return true;
     for (const Sphere& s : m_scene.spheres)
         if (!std::isnan(intersect_sphere(ray, s.center, s.radius, range))) return true;
     for (const Plane& p : m_scene.planes)

@@ -3,22 +3,24 @@
 // directly, triangles through the BVH. Built once per render, read by all threads.
 
 #include "hikari/core/ray.h"
+#include "hikari/ray/bvh.h"
+#include "hikari/ray/bvh_traversal.h"
 #include "hikari/scene/scene.h"
 
 namespace hikari {
 
 /// Where a ray meets a surface, with what the shading of that point needs.
 struct SurfaceHit {
-    float t = k_infinity;          ///< distance along the ray
-    Vec3 position;                 ///< world space
-    Vec3 geometric_normal;         ///< unit, as the primitive defines it (not flipped)
-    Vec3 shading_normal;           ///< unit, interpolated for meshes; same side as geometric
-    uint32_t material = 0;         ///< index into Scene::materials
-    PrimitiveId id = 0;            ///< the primitive hit
+    float t = k_infinity;   ///< distance along the ray
+    Vec3 position;          ///< world space
+    Vec3 geometric_normal;  ///< unit, as the primitive defines it (not flipped)
+    Vec3 shading_normal;    ///< unit, interpolated for meshes; same side as geometric
+    uint32_t material = 0;  ///< index into Scene::materials
+    PrimitiveId id = 0;     ///< the primitive hit
 };
 
 class SceneIntersector {
-public:
+  public:
     /// Prepares acceleration structures for `scene`, which must outlive this object.
     explicit SceneIntersector(const Scene& scene);
 
@@ -27,8 +29,14 @@ public:
     /// Whether anything blocks `ray` inside `range` (shadow rays stop at the first blocker).
     bool occluded(const Ray& ray, Interval range) const;
 
-private:
+    /// The BVH over the scene's triangles.
+    const Bvh& bvh() const { return m_bvh; }
+
+  private:
+    void set_triangle_hit(const TriangleHit& th, SurfaceHit& hit) const;
+
     const Scene& m_scene;
+    Bvh m_bvh;
 };
 
 }  // namespace hikari

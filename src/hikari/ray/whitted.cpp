@@ -53,8 +53,8 @@ Vec3 trace(const TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* fir
 
     const Vec3 mirror = reflect(ray.direction, n);
     if (m.reflectivity > 0.0f)
-        colour += m.reflectivity *
-                  trace(ctx, {offset_ray_origin(hit.position, ng), mirror}, segment + 1);
+        colour +=
+            m.reflectivity * trace(ctx, {offset_ray_origin(hit.position, ng), mirror}, segment + 1);
     if (m.transparency > 0.0f) {
         const float eta = entering ? 1.0f / m.ior : m.ior;
         if (const auto refracted = refract(ray.direction, n, eta))

@@ -15,11 +15,18 @@ Image aov_image(const Framebuffer& fb, Aov aov) {
     Image out(fb.width(), fb.height());
     for (size_t i = 0; i < out.pixels.size(); ++i) {
         switch (aov) {
-            case Aov::depth: out.pixels[i] = Vec3(fb.depth[i]); break;
+            case Aov::depth:
+                out.pixels[i] = Vec3(fb.depth[i]);
+                break;
             // Ids stay exact in float up to 2^24 primitives.
-            case Aov::id: out.pixels[i] = Vec3(static_cast<float>(fb.id[i])); break;
-            case Aov::normal: out.pixels[i] = fb.normal[i]; break;
-            case Aov::color: break;
+            case Aov::id:
+                out.pixels[i] = Vec3(static_cast<float>(fb.id[i]));
+                break;
+            case Aov::normal:
+                out.pixels[i] = fb.normal[i];
+                break;
+            case Aov::color:
+                break;
         }
     }
     return out;

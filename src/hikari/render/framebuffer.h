@@ -14,12 +14,13 @@ inline constexpr uint32_t k_background_id = 0;
 
 /// Linear colour and per-pixel AOVs, all row-major with row 0 at the top.
 struct Framebuffer {
-    Image color;                ///< linear RGB
-    std::vector<float> depth;   ///< eye-space distance to the surface seen at the pixel centre;
-                                ///< infinity for background
-    std::vector<uint32_t> id;   ///< 1 + PrimitiveId seen at the pixel centre, k_background_id for none
-    std::vector<Vec3> normal;   ///< unit world-space shading normal at the pixel centre facing the
-                                ///< eye; zero for background
+    Image color;               ///< linear RGB
+    std::vector<float> depth;  ///< eye-space distance to the surface seen at the pixel centre;
+                               ///< infinity for background
+    std::vector<uint32_t>
+        id;  ///< 1 + PrimitiveId seen at the pixel centre, k_background_id for none
+    std::vector<Vec3> normal;  ///< unit world-space shading normal at the pixel centre facing the
+                               ///< eye; zero for background
 
     Framebuffer() = default;
     Framebuffer(int width, int height, Vec3 background);

@@ -40,7 +40,8 @@ void for_each_tile(int width, int height, RenderControl* control, TileFn&& fn) {
                                               std::min(width, (tx + 1) * k_tile_size),
                                               std::min(height, (ty + 1) * k_tile_size)};
                               fn(tile);
-                              if (control) control->work_done.fetch_add(1, std::memory_order_relaxed);
+                              if (control)
+                                  control->work_done.fetch_add(1, std::memory_order_relaxed);
                           }
                       });
     if (control && control->cancel.load()) throw Interrupted();

@@ -25,9 +25,9 @@ using Light = std::variant<PointLight, DirectionalLight>;
 
 /// What one light delivers to one surface point.
 struct LightSample {
-    Vec3 to_light;     ///< unit direction from the point toward the light (L)
-    float distance;    ///< distance to the light; infinity for directional lights
-    Vec3 irradiance;   ///< I0 at the point, after falloff
+    Vec3 to_light;    ///< unit direction from the point toward the light (L)
+    float distance;   ///< distance to the light; infinity for directional lights
+    Vec3 irradiance;  ///< I0 at the point, after falloff
 };
 
 /// Evaluates `light` at world-space point `p`.
