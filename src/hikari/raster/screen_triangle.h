@@ -1,0 +1,44 @@
+#pragma once
+// What the vertex stage hands to every hidden-surface method: triangles after p_s = V P M p_w,
+// clipping and culling, in screen space (the lecture's Fig 4.2, 透視投影 → 隠面消去).
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "hikari/core/vec.h"
+#include "hikari/scene/scene.h"
+
+namespace hikari {
+
+/// One vertex after projection.
+struct ScreenVertex {
+    /// x, y in pixels with (0, 0) the top-left corner of the image (pixel (i, j) has its centre at
+    /// (i + 0.5, j + 0.5)); z = NDC depth mapped to [0, 1], 0 at the near plane. A perspective
+    /// projection keeps planes planar, so z is an affine function of (x, y) across a triangle:
+    /// depth comparisons and plane tests may be done in this space directly.
+    Vec3 position;
+    /// 1 / w_clip (= 1 / view-space depth), for perspective-correct interpolation.
+    float inv_w = 1;
+};
+
+/// A projected triangle. Several may come from one scene triangle (clipping at the near plane
+/// splits it); all of them name that source triangle, whose attributes the shading stage reads.
+struct ScreenTriangle {
+    std::array<ScreenVertex, 3> v;
+    uint32_t source = 0;  ///< index into the tessellated scene triangles (RasterScene::triangles)
+};
+
+/// Index stored in a visibility buffer where no triangle covers the pixel centre.
+inline constexpr uint32_t k_no_triangle = std::numeric_limits<uint32_t>::max();
+
+/// The result of hidden-surface removal: for each pixel centre, the ScreenTriangle seen there.
+/// Row-major, row 0 at the top.
+struct VisibilityBuffer {
+    int width = 0;
+    int height = 0;
+    std::vector<uint32_t> triangle;  ///< index into the ScreenTriangle list, or k_no_triangle
+};
+
+}  // namespace hikari
