@@ -14,7 +14,7 @@
 namespace hikari {
 namespace {
 
-constexpr uint32_t k_max_bins = 64;
+constexpr uint32_t k_max_bins = 32;
 
 /// Bounds of a range of triangles and of their centroids (the SAH bins by centroid).
 struct RangeBounds {
