@@ -121,6 +121,23 @@ TEST(BvhBuilder, CoincidentTrianglesStillSplit) {
     for (const BvhNode& node : bvh.nodes) EXPECT_LE(node.triangle_count, 8);
 }
 
+TEST(BvhBuilder, ExtremeCoordinatesBuild) {
+    // Centroids a denormal apart (bin scale K / extent overflows) and a huge mesh (areas
+    // overflow): both must still give valid trees.
+    TestMesh tiny;
+    for (uint32_t i = 0; i < 100; ++i) {
+        const float dx = float(i) * 1e-40f;
+        const auto base = static_cast<uint32_t>(tiny.positions.size());
+        tiny.positions.insert(tiny.positions.end(), {{dx, 0, 0}, {1 + dx, 0, 0}, {dx, 1, 0}});
+        tiny.indices.push_back({base, base + 1, base + 2});
+    }
+    check_tree(build(tiny), tiny);
+
+    TestMesh huge = testing::random_soup(500, 0.5f, 13);
+    for (Vec3& p : huge.positions) p = p * 1e37f;
+    check_tree(build(huge), huge);
+}
+
 TEST(BvhBuilder, MemoryWithinSixtyFourBytesPerTriangle) {
     const TestMesh mesh = testing::uv_sphere(128, 64, 1.0f);
     const Bvh bvh = build(mesh);

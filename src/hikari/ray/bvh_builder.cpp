@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -14,7 +15,7 @@
 namespace hikari {
 namespace {
 
-constexpr uint32_t k_max_bins = 64;
+constexpr uint32_t k_max_bins = 32;
 
 /// Bounds of a range of triangles and of their centroids (the SAH bins by centroid).
 struct RangeBounds {
@@ -57,12 +58,14 @@ struct BinMapping {
     BinMapping(const Aabb& centroids, uint32_t bins) : origin(centroids.min), bin_count(bins) {
         const Vec3 extent = centroids.extent();
         for (int a = 0; a < 3; ++a) {
-            scale[a] = extent[a] > 0.0f ? float(bins) * (1.0f - 1e-6f) / extent[a] : 0.0f;
+            const float k1 = float(bins) * (1.0f - 1e-6f) / extent[a];
+            scale[a] = extent[a] > 0.0f && std::isfinite(k1) ? k1 : 0.0f;  // 0: a flat axis
         }
     }
     uint32_t operator()(Vec3 c, int axis) const {
         const float f = (c[axis] - origin[axis]) * scale[axis];
-        return std::min(static_cast<uint32_t>(std::max(f, 0.0f)), bin_count - 1);
+        if (!(f > 0.0f)) return 0;
+        return f < float(bin_count - 1) ? static_cast<uint32_t>(f) : bin_count - 1;
     }
 };
 

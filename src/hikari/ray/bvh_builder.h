@@ -14,7 +14,7 @@ namespace hikari {
 /// Knobs of the BVH build; the defaults suit primary and shadow rays on ordinary meshes.
 struct BvhBuildSettings {
     /// Bins per axis; the SAH is evaluated at the bin_count - 1 planes between them
-    /// (clamped to [2, 64]; Wald 2007 finds 16 to 32 as good as a full sweep).
+    /// (clamped to [2, 32]; Wald 2007 finds 16 to 32 as good as a full sweep).
     uint32_t bin_count = 16;
     /// Ranges of at most this many triangles always become leaves (at least 1).
     uint32_t min_leaf_size = 1;
