@@ -46,12 +46,14 @@ struct RenderOptions {
 
 RenderControl g_control;
 volatile std::sig_atomic_t g_signal_count = 0;
+volatile std::sig_atomic_t g_writing = 0;
 
-// First signal: ask the render to stop (it then exits without writing). Second: leave at once,
-// removing any half-written temporary file.
+// While rendering, the first signal asks the render to stop (it then exits writing nothing).
+// While the output is being written, or on a second signal, leave at once, removing any
+// half-written temporary file.
 extern "C" void on_interrupt(int sig) {
     g_control.cancel.store(true);
-    if (++g_signal_count > 1) {
+    if (g_writing || ++g_signal_count > 1) {
         remove_pending_temporary_files();
         _exit(128 + sig);
     }
@@ -167,7 +169,11 @@ int run_render(const RenderOptions& o) {
         fb = method->render(scene, settings);
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    write_image(output, aov_image(fb, parse_aov(o.aov)));
+    const Image image = aov_image(fb, parse_aov(o.aov));
+    g_writing = 1;
+    if (g_control.cancel.load()) throw Interrupted();
+    write_image(output, image);
+    g_writing = 0;
     if (!o.quiet)
         fmt::print(stderr, "hikari: wrote {} ({}x{}, {}, {:.3f} s)\n", output, fb.width(),
                    fb.height(), method->name, seconds);
