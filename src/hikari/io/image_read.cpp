@@ -254,8 +254,82 @@ std::string take_exr_error(const char* err, int code) {
     return reason;
 }
 
-/// Checks the data window in the header before tinyexr allocates the pixels.
-void check_exr_header(const std::filesystem::path& path, const std::string& bytes) {
+/// Frees a parsed header and its image on every path out. We use tinyexr's full API rather than
+/// LoadEXRFromMemory, which in tinyexr 1.0.1 leaks the header when the pixel data is bad.
+struct ExrFile {
+    EXRHeader header;
+    EXRImage image;
+    ExrFile() {
+        InitEXRHeader(&header);
+        InitEXRImage(&image);
+    }
+    ~ExrFile() {
+        FreeEXRImage(&image);
+        FreeEXRHeader(&header);
+    }
+    ExrFile(const ExrFile&) = delete;
+    ExrFile& operator=(const ExrFile&) = delete;
+};
+
+/// Sample `i` of channel plane `plane`, stored as `type` (FLOAT or UINT after loading).
+float exr_sample(const unsigned char* plane, int type, size_t i) {
+    if (type == TINYEXR_PIXELTYPE_UINT)
+        return static_cast<float>(reinterpret_cast<const unsigned int*>(plane)[i]);
+    return reinterpret_cast<const float*>(plane)[i];
+}
+
+/// Index of the channel named `name`, or -1.
+int find_channel(const EXRHeader& header, const char* name) {
+    for (int c = 0; c < header.num_channels; ++c) {
+        if (std::strcmp(header.channels[c].name, name) == 0) return c;
+    }
+    return -1;
+}
+
+/// Which channels become R, G and B: R/G/B by name, else a single (grey) channel three times.
+std::array<int, 3> exr_rgb_channels(const std::filesystem::path& path, const EXRHeader& header) {
+    const std::array<int, 3> rgb = {find_channel(header, "R"), find_channel(header, "G"),
+                                    find_channel(header, "B")};
+    if (rgb[0] >= 0 && rgb[1] >= 0 && rgb[2] >= 0) return rgb;
+    int grey = find_channel(header, "Y");
+    if (grey < 0 && header.num_channels == 1) grey = 0;
+    if (grey >= 0) return {grey, grey, grey};
+    std::string names;
+    for (int c = 0; c < header.num_channels; ++c) {
+        names += (c ? ", " : "") + std::string(header.channels[c].name);
+    }
+    fail(path, "OpenEXR file has no R, G, B or single grey channel (channels: " + names + ")");
+}
+
+/// Copies channel `plane_of[c]` of a scanline image or of every tile into `out`.
+void copy_exr_pixels(const EXRHeader& header, const EXRImage& exr,
+                     const std::array<int, 3>& plane_of, Image& out) {
+    auto copy_block = [&](unsigned char** planes, int block_w, int block_h, int x0, int y0) {
+        for (int j = 0; j < block_h; ++j) {
+            for (int i = 0; i < block_w; ++i) {
+                const int x = x0 + i, y = y0 + j;
+                if (x >= out.width || y >= out.height) continue;  // edge tiles are padded
+                const size_t src = static_cast<size_t>(j) * block_w + i;
+                for (int c = 0; c < 3; ++c) {
+                    out.at(x, y)[c] = exr_sample(planes[plane_of[c]],
+                                                 header.requested_pixel_types[plane_of[c]], src);
+                }
+            }
+        }
+    };
+    if (!header.tiled) {
+        copy_block(exr.images, out.width, out.height, 0, 0);
+        return;
+    }
+    // Tiles of the first level only (tinyexr README, "Load tiled EXR").
+    for (int t = 0; t < exr.num_tiles; ++t) {
+        const EXRTile& tile = exr.tiles[t];
+        copy_block(tile.images, header.tile_size_x, header.tile_size_y,
+                   tile.offset_x * header.tile_size_x, tile.offset_y * header.tile_size_y);
+    }
+}
+
+Image read_exr(const std::filesystem::path& path, const std::string& bytes) {
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
     EXRVersion version;
     int code = ParseEXRVersionFromMemory(&version, data, bytes.size());
@@ -263,35 +337,32 @@ void check_exr_header(const std::filesystem::path& path, const std::string& byte
     if (version.multipart || version.non_image) {
         fail(path, "multi-part and deep OpenEXR files are not supported");
     }
-    EXRHeader header;
-    InitEXRHeader(&header);
+    ExrFile exr;
     const char* err = nullptr;
-    code = ParseEXRHeaderFromMemory(&header, &version, data, bytes.size(), &err);
+    code = ParseEXRHeaderFromMemory(&exr.header, &version, data, bytes.size(), &err);
     if (code != TINYEXR_SUCCESS) fail(path, "invalid OpenEXR header: " + take_exr_error(err, code));
-    const long long w =
-        static_cast<long long>(header.data_window.max_x) - header.data_window.min_x + 1;
-    const long long h =
-        static_cast<long long>(header.data_window.max_y) - header.data_window.min_y + 1;
-    FreeEXRHeader(&header);
-    check_size(path, w, h);
-}
-
-Image read_exr(const std::filesystem::path& path, const std::string& bytes) {
-    check_exr_header(path, bytes);
-    float* rgba = nullptr;
-    int w = 0, h = 0;
-    const char* err = nullptr;
-    const int code = LoadEXRFromMemory(
-        &rgba, &w, &h, reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), &err);
-    std::unique_ptr<float, void (*)(void*)> owner(rgba, &std::free);
-    if (code != TINYEXR_SUCCESS || !rgba) {
+    // Size check before tinyexr allocates the pixels.
+    const EXRBox2i& window = exr.header.data_window;
+    check_size(path, static_cast<long long>(window.max_x) - window.min_x + 1,
+               static_cast<long long>(window.max_y) - window.min_y + 1);
+    const std::array<int, 3> plane_of = exr_rgb_channels(path, exr.header);
+    for (int c = 0; c < exr.header.num_channels; ++c) {
+        if (exr.header.pixel_types[c] == TINYEXR_PIXELTYPE_HALF) {
+            exr.header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;
+        }
+    }
+    code = LoadEXRImageFromMemory(&exr.image, &exr.header, data, bytes.size(), &err);
+    if (code != TINYEXR_SUCCESS) {
+        // tinyexr 1.0.1 has already freed the image's buffers but left the pointers dangling.
+        InitEXRImage(&exr.image);
         fail(path, "cannot decode OpenEXR image: " + take_exr_error(err, code));
     }
-    check_size(path, w, h);
-    Image image(w, h);
-    for (size_t i = 0; i < image.pixels.size(); ++i) {
-        image.pixels[i] = {rgba[4 * i + 0], rgba[4 * i + 1], rgba[4 * i + 2]};
+    check_size(path, exr.image.width, exr.image.height);
+    if (!exr.header.tiled ? exr.image.images == nullptr : exr.image.tiles == nullptr) {
+        fail(path, "cannot decode OpenEXR image: no pixel data");
     }
+    Image image(exr.image.width, exr.image.height);
+    copy_exr_pixels(exr.header, exr.image, plane_of, image);
     return image;
 }
 

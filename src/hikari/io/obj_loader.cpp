@@ -1,0 +1,393 @@
+#include "hikari/io/obj_loader.h"
+
+#include <tiny_obj_loader.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <regex>
+#include <sstream>
+#include <string_view>
+#include <unordered_map>
+
+#include "hikari/core/error.h"
+#include "hikari/io/read_file.h"
+
+namespace hikari {
+
+namespace {
+
+/// The error prefix "FILE:LINE: " (or "FILE: " when `line` is 0, i.e. unknown).
+std::string where(const std::filesystem::path& file, size_t line) {
+    return line > 0 ? fmt::format("{}:{}: ", file.string(), line)
+                    : fmt::format("{}: ", file.string());
+}
+
+[[noreturn]] void fail(const std::filesystem::path& file, size_t line, const std::string& what) {
+    throw InputError(where(file, line) + what);
+}
+
+// --- Pass 1: our own scan of the text ----------------------------------------------------------
+// tinyobjloader 2.0.0rc10 reads a malformed number as 0 without a word, accepts faces with
+// indices out of range (only a warning for the largest one), and keeps no line numbers. This scan
+// checks every number strictly and records the line of each v, vt and face, so later checks can
+// point at the line. It splits lines and tokens exactly as tinyobjloader does.
+
+/// Line numbers (1-based) of each `v`, `vt` and `f` statement, in order.
+struct LineTable {
+    std::vector<uint32_t> v, vt, f;
+};
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+/// The whitespace-separated tokens of `rest`.
+std::vector<std::string_view> split_tokens(std::string_view rest) {
+    std::vector<std::string_view> tokens;
+    size_t i = 0;
+    while (i < rest.size()) {
+        while (i < rest.size() && is_blank(rest[i])) ++i;
+        const size_t begin = i;
+        while (i < rest.size() && !is_blank(rest[i])) ++i;
+        if (i > begin) tokens.push_back(rest.substr(begin, i - begin));
+    }
+    return tokens;
+}
+
+/// Checks that `tokens` are at least `min_count` finite numbers.
+void check_numbers(const std::filesystem::path& file, size_t line, const char* statement,
+                   const std::vector<std::string_view>& tokens, size_t min_count) {
+    if (tokens.size() < min_count) {
+        fail(file, line,
+             fmt::format("'{}' needs {} numbers, found {}", statement, min_count, tokens.size()));
+    }
+    for (std::string_view t : tokens) {
+        std::string_view digits = t.starts_with('+') ? t.substr(1) : t;
+        double value = 0;
+        const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+        // tinyobjloader stores floats: a finite double beyond FLT_MAX would become infinite.
+        if (ec != std::errc() || end != digits.data() + digits.size() || !std::isfinite(value) ||
+            std::abs(value) > std::numeric_limits<float>::max()) {
+            fail(file, line, fmt::format("'{}': '{}' is not a finite number", statement, t));
+        }
+    }
+}
+
+LineTable scan_obj_text(const std::filesystem::path& file, std::string_view text) {
+    LineTable table;
+    size_t pos = 0;
+    for (uint32_t line = 1; pos < text.size(); ++line) {
+        // Lines end at \n, \r\n or a lone \r, as in tinyobjloader's safeGetline.
+        size_t end = text.find_first_of("\r\n", pos);
+        if (end == std::string_view::npos) end = text.size();
+        std::string_view s = text.substr(pos, end - pos);
+        pos = end + ((end + 1 < text.size() && text[end] == '\r' && text[end + 1] == '\n') ? 2 : 1);
+
+        s = s.substr(0, s.find('\0'));  // tinyobjloader parses C strings
+        const size_t first = s.find_first_not_of(" \t");
+        if (first == std::string_view::npos) continue;
+        s.remove_prefix(first);
+        if (s.size() < 2) continue;
+        const bool blank1 = s[1] == ' ' || s[1] == '\t';
+        const bool blank2 = s.size() > 2 && (s[2] == ' ' || s[2] == '\t');
+        if (s[0] == 'v' && blank1) {
+            check_numbers(file, line, "v", split_tokens(s.substr(2)), 3);
+            table.v.push_back(line);
+        } else if (s[0] == 'v' && s[1] == 'n' && blank2) {
+            check_numbers(file, line, "vn", split_tokens(s.substr(3)), 3);
+        } else if (s[0] == 'v' && s[1] == 't' && blank2) {
+            check_numbers(file, line, "vt", split_tokens(s.substr(3)), 1);
+            table.vt.push_back(line);
+        } else if (s[0] == 'f' && blank1) {
+            const size_t corners = split_tokens(s.substr(2)).size();
+            if (corners < 3 || corners > 255) {
+                fail(file, line,
+                     "a face needs 3 to 255 corners, this one has " + std::to_string(corners));
+            }
+            table.f.push_back(line);
+        }
+    }
+    return table;
+}
+
+// --- Pass 2: tinyobjloader ---------------------------------------------------------------------
+
+/// Opens MTL libraries relative to the OBJ's directory. tinyobjloader's own MaterialFileReader
+/// splits its base directory at ':' (a search path), which breaks directories containing ':'.
+class MtlReader : public tinyobj::MaterialReader {
+  public:
+    explicit MtlReader(std::filesystem::path dir) : m_dir(std::move(dir)) {}
+
+    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                    std::map<std::string, int>* material_map, std::string* warn,
+                    std::string* err) override {
+        const std::filesystem::path mtl = m_dir / name;
+        std::ifstream stream(mtl, std::ios::binary);
+        if (!stream) {
+            *warn += "cannot open material library " + mtl.string() + "\n";
+            return false;
+        }
+        tinyobj::LoadMtl(material_map, materials, &stream, warn, err);
+        return true;
+    }
+
+  private:
+    std::filesystem::path m_dir;
+};
+
+/// tinyobjloader's messages, one per line, as "FILE:LINE: message" (its "(line N.)" moved to the
+/// front). Lines that are only punctuation (it writes "Degenerated face found\n.") are dropped.
+std::vector<std::string> clean_messages(const std::filesystem::path& file,
+                                        const std::string& text) {
+    static const std::regex line_number(R"(\.?\s*\(?line:?\s*(\d+)\.?\)?)", std::regex::icase);
+    std::vector<std::string> out;
+    std::istringstream lines(text);
+    std::string message;
+    while (std::getline(lines, message)) {
+        size_t line = 0;
+        std::smatch match;
+        if (std::regex_search(message, match, line_number)) {
+            line = std::stoul(match[1].str());
+            message = match.prefix().str() + match.suffix().str();
+            if (std::count(message.begin(), message.end(), '(') >
+                std::count(message.begin(), message.end(), ')')) {
+                message += ')';
+            }
+        }
+        const size_t b = message.find_first_not_of(" \t\r.");
+        if (b == std::string::npos) continue;
+        const size_t e = message.find_last_not_of(" \t\r");
+        out.push_back(where(file, line) + message.substr(b, e - b + 1));
+    }
+    return out;
+}
+
+struct ParsedObj {
+    tinyobj::attrib_t attrib;
+    std::vector<tinyobj::shape_t> shapes;
+    std::vector<tinyobj::material_t> materials;
+    std::vector<std::string> warnings;
+};
+
+ParsedObj parse_with_tinyobj(const std::filesystem::path& file, const std::string& text) {
+    ParsedObj parsed;
+    std::istringstream stream(text);
+    MtlReader mtl_reader(file.parent_path());
+    std::string warn, err;
+    // triangulate = false: rc10 splits quads along the shorter diagonal and ear-clips larger
+    // polygons; we fan-triangulate ourselves so triangle order and shape are predictable.
+    const bool ok = tinyobj::LoadObj(&parsed.attrib, &parsed.shapes, &parsed.materials, &warn, &err,
+                                     &stream, &mtl_reader, /*triangulate=*/false,
+                                     /*default_vcols_fallback=*/false);
+    if (!ok) {
+        const std::vector<std::string> errors = clean_messages(file, err);
+        throw InputError(errors.empty() ? where(file, 0) + "cannot parse OBJ" : errors.front());
+    }
+    // With ok == true, `err` holds only MTL problems: the mesh is still usable.
+    parsed.warnings = clean_messages(file, warn + err);
+    return parsed;
+}
+
+// --- Pass 3: checks and flattening -------------------------------------------------------------
+
+Vec3 vec3_at(const std::vector<tinyobj::real_t>& a, int i) {
+    const size_t k = 3 * static_cast<size_t>(i);
+    return {static_cast<float>(a[k]), static_cast<float>(a[k + 1]), static_cast<float>(a[k + 2])};
+}
+
+Vec3 to_vec3(const tinyobj::real_t c[3]) {
+    return {static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2])};
+}
+
+Material to_material(const std::filesystem::path& file, const tinyobj::material_t& m) {
+    Material out;
+    out.name = m.name;
+    out.ka = to_vec3(m.ambient);
+    out.kd = to_vec3(m.diffuse);
+    out.ks = to_vec3(m.specular);
+    out.shininess = static_cast<float>(m.shininess);
+    out.ior = static_cast<float>(m.ior);
+    out.transparency = std::clamp(1.0f - static_cast<float>(m.dissolve), 0.0f, 1.0f);
+    out.reflectivity = 0;
+    if (!is_finite(out.ka) || !is_finite(out.kd) || !is_finite(out.ks) ||
+        !std::isfinite(out.shininess) || !std::isfinite(out.ior) ||
+        !std::isfinite(static_cast<float>(m.dissolve))) {
+        fail(file, 0, "material '" + m.name + "' has a non-finite coefficient");
+    }
+    return out;
+}
+
+/// One face corner, resolved to 0-based indices (-1 = absent).
+struct Corner {
+    int v = -1, vn = -1, vt = -1;
+    bool operator==(const Corner&) const = default;
+};
+
+struct CornerHash {
+    size_t operator()(const Corner& c) const {
+        size_t h = std::hash<int>()(c.v);
+        h = h * 0x9E3779B97F4A7C15ull + std::hash<int>()(c.vn);
+        return h * 0x9E3779B97F4A7C15ull + std::hash<int>()(c.vt);
+    }
+};
+
+/// A triangle kept for output, before corners are merged into vertices.
+struct PendingTriangle {
+    Corner c[3];
+    int32_t material;
+};
+
+/// Checks a corner's indices against the attribute counts; `line` is 0 when unknown.
+void check_corner(const std::filesystem::path& file, size_t line, const tinyobj::index_t& idx,
+                  const tinyobj::attrib_t& attrib) {
+    auto check = [&](int i, size_t count, const char* kind) {
+        if (i >= 0 && static_cast<size_t>(i) < count) return;
+        if (i < 0) {
+            fail(file, line,
+                 std::string("a relative ") + kind + " index points before the first " + kind);
+        }
+        fail(file, line,
+             std::string("face refers to ") + kind + " " + std::to_string(i + 1) +
+                 ", but the file defines only " + std::to_string(count));
+    };
+    check(idx.vertex_index, attrib.vertices.size() / 3, "vertex");
+    if (idx.normal_index != -1) check(idx.normal_index, attrib.normals.size() / 3, "normal");
+    if (idx.texcoord_index != -1) {
+        check(idx.texcoord_index, attrib.texcoords.size() / 2, "texture coordinate");
+    }
+}
+
+/// The file's normal for a corner, or -1 when it has none or it cannot be normalized.
+int usable_normal(const tinyobj::attrib_t& attrib, int vn) {
+    if (vn < 0) return -1;
+    const Vec3 n = vec3_at(attrib.normals, vn);
+    const float len = length(n);
+    return std::isfinite(len) && len > 0.0f ? vn : -1;
+}
+
+/// Fans every face into triangles in file order, checking indices and dropping degenerate ones.
+std::vector<PendingTriangle> triangulate(const std::filesystem::path& file, const ParsedObj& parsed,
+                                         const LineTable& lines, MeshData& mesh) {
+    size_t face_count = 0;
+    for (const auto& shape : parsed.shapes) face_count += shape.mesh.num_face_vertices.size();
+    const bool know_lines = face_count == lines.f.size();
+
+    std::vector<PendingTriangle> triangles;
+    size_t face = 0;
+    for (const auto& shape : parsed.shapes) {
+        size_t offset = 0;
+        for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++face) {
+            const size_t n = shape.mesh.num_face_vertices[f];
+            const size_t line = know_lines ? lines.f[face] : 0;
+            Corner corners[255];
+            for (size_t k = 0; k < n; ++k) {
+                const tinyobj::index_t& idx = shape.mesh.indices[offset + k];
+                check_corner(file, line, idx, parsed.attrib);
+                corners[k] = {idx.vertex_index, usable_normal(parsed.attrib, idx.normal_index),
+                              idx.texcoord_index};
+            }
+            offset += n;
+            int32_t material = shape.mesh.material_ids[f];
+            if (material < -1 || material >= static_cast<int32_t>(parsed.materials.size())) {
+                material = -1;
+            }
+            for (size_t k = 1; k + 1 < n; ++k) {
+                const PendingTriangle t{{corners[0], corners[k], corners[k + 1]}, material};
+                const Vec3 p1 = vec3_at(parsed.attrib.vertices, t.c[0].v);
+                const Vec3 p2 = vec3_at(parsed.attrib.vertices, t.c[1].v);
+                const Vec3 p3 = vec3_at(parsed.attrib.vertices, t.c[2].v);
+                const float area2 = length(cross(p2 - p1, p3 - p2));
+                if (!(area2 > 0.0f) || !std::isfinite(area2)) {
+                    ++mesh.degenerate_skipped;
+                    continue;
+                }
+                triangles.push_back(t);
+            }
+        }
+    }
+    return triangles;
+}
+
+/// Area-weighted vertex normals per position: the sum of the unnormalized face normals
+/// N = (P2 - P1) x (P3 - P2) (lecture, Fig 4.3), whose length is twice the triangle's area.
+/// Seam corners that differ only in vt share a position and so share the normal.
+std::vector<Vec3> smooth_normals(const tinyobj::attrib_t& attrib,
+                                 const std::vector<PendingTriangle>& triangles) {
+    std::vector<Vec3> sum(attrib.vertices.size() / 3, Vec3(0.0f));
+    std::vector<Vec3> fallback(sum.size(), Vec3(0.0f));
+    for (const PendingTriangle& t : triangles) {
+        const Vec3 p1 = vec3_at(attrib.vertices, t.c[0].v);
+        const Vec3 p2 = vec3_at(attrib.vertices, t.c[1].v);
+        const Vec3 p3 = vec3_at(attrib.vertices, t.c[2].v);
+        const Vec3 n = cross(p2 - p1, p3 - p2);
+        for (const Corner& c : t.c) {
+            sum[c.v] += n;
+            if (fallback[c.v] == Vec3(0.0f)) fallback[c.v] = normalize(n);
+        }
+    }
+    for (size_t i = 0; i < sum.size(); ++i) {
+        // Opposite faces can cancel (a two-sided sheet): fall back to the first face's normal.
+        const float len = length(sum[i]);
+        sum[i] = len > 0.0f && std::isfinite(len) ? sum[i] / len : fallback[i];
+    }
+    return sum;
+}
+
+/// Merges corners with equal (v, vn, vt) into output vertices and fills the mesh arrays.
+void flatten(const tinyobj::attrib_t& attrib, const std::vector<PendingTriangle>& triangles,
+             MeshData& mesh) {
+    const std::vector<Vec3> smooth = smooth_normals(attrib, triangles);
+    bool has_uvs = false;
+    for (const PendingTriangle& t : triangles) {
+        for (const Corner& c : t.c) has_uvs |= c.vt >= 0;
+    }
+    std::unordered_map<Corner, uint32_t, CornerHash> vertex_of;
+    mesh.indices.reserve(triangles.size());
+    mesh.material.reserve(triangles.size());
+    for (const PendingTriangle& t : triangles) {
+        std::array<uint32_t, 3> tri{};
+        for (int k = 0; k < 3; ++k) {
+            const Corner& c = t.c[k];
+            const auto [it, inserted] =
+                vertex_of.try_emplace(c, static_cast<uint32_t>(mesh.positions.size()));
+            tri[k] = it->second;
+            if (!inserted) continue;
+            mesh.positions.push_back(vec3_at(attrib.vertices, c.v));
+            mesh.normals.push_back(c.vn >= 0 ? normalize(vec3_at(attrib.normals, c.vn))
+                                             : smooth[c.v]);
+            if (!has_uvs) continue;
+            mesh.uvs.push_back(c.vt >= 0 ? Vec2{static_cast<float>(attrib.texcoords[2 * c.vt]),
+                                                static_cast<float>(attrib.texcoords[2 * c.vt + 1])}
+                                         : Vec2{});
+        }
+        mesh.indices.push_back(tri);
+        mesh.material.push_back(t.material);
+    }
+}
+
+}  // namespace
+
+MeshData load_obj(const std::filesystem::path& file) {
+    const std::string text = read_file_bytes(file);
+    const LineTable lines = scan_obj_text(file, text);
+    const ParsedObj parsed = parse_with_tinyobj(file, text);
+
+    MeshData mesh;
+    mesh.warnings = parsed.warnings;
+    for (const auto& m : parsed.materials) mesh.materials.push_back(to_material(file, m));
+    const std::vector<PendingTriangle> triangles = triangulate(file, parsed, lines, mesh);
+    if (triangles.empty()) {
+        fail(file, 0,
+             mesh.degenerate_skipped > 0 ? fmt::format("no usable triangles: all {} are degenerate",
+                                                       mesh.degenerate_skipped)
+                                         : "no faces: the file defines no triangles or polygons");
+    }
+    if (triangles.size() * 3 > UINT32_MAX) fail(file, 0, "too many triangles");
+    flatten(parsed.attrib, triangles, mesh);
+    return mesh;
+}
+
+}  // namespace hikari

@@ -1,0 +1,239 @@
+#include "hikari/io/obj_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "hikari/core/error.h"
+#include "temp_dir.h"
+
+namespace hikari {
+namespace {
+
+using testing::TempDir;
+using testing::write_text;
+
+void expect_near(Vec3 a, Vec3 b, float tol = 1e-6f) {
+    EXPECT_NEAR(a.x, b.x, tol);
+    EXPECT_NEAR(a.y, b.y, tol);
+    EXPECT_NEAR(a.z, b.z, tol);
+}
+
+/// The message of the InputError that load_obj(path) throws, or "" when it throws none.
+std::string load_error(const std::filesystem::path& path) {
+    try {
+        load_obj(path);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+/// A unit quad in the z = 0 plane, counter-clockwise seen from +z.
+const char* k_quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+
+TEST(ObjLoader, QuadBecomesTwoTrianglesInOrder) {
+    TempDir dir;
+    write_text(dir / "quad.obj", std::string(k_quad) + "f 1 2 3 4\n");
+    const MeshData mesh = load_obj(dir / "quad.obj");
+    ASSERT_EQ(mesh.indices.size(), 2u);
+    ASSERT_EQ(mesh.positions.size(), 4u);
+    // Fan from the first corner: (1 2 3), (1 3 4).
+    auto position = [&](size_t t, int k) { return mesh.positions[mesh.indices[t][k]]; };
+    expect_near(position(0, 0), {0, 0, 0});
+    expect_near(position(0, 1), {1, 0, 0});
+    expect_near(position(0, 2), {1, 1, 0});
+    expect_near(position(1, 0), {0, 0, 0});
+    expect_near(position(1, 1), {1, 1, 0});
+    expect_near(position(1, 2), {0, 1, 0});
+    EXPECT_TRUE(mesh.uvs.empty());
+    EXPECT_EQ(mesh.degenerate_skipped, 0u);
+}
+
+TEST(ObjLoader, FlatQuadNormalsEqualFaceNormal) {
+    TempDir dir;
+    write_text(dir / "quad.obj", std::string(k_quad) + "f 1 2 3 4\n");
+    const MeshData mesh = load_obj(dir / "quad.obj");
+    ASSERT_EQ(mesh.normals.size(), mesh.positions.size());
+    for (const Vec3& n : mesh.normals) expect_near(n, {0, 0, 1});  // CCW from +z faces +z
+}
+
+TEST(ObjLoader, ClockwiseWindingFacesTheOtherWay) {
+    TempDir dir;
+    write_text(dir / "quad.obj", std::string(k_quad) + "f 4 3 2 1\n");
+    for (const Vec3& n : load_obj(dir / "quad.obj").normals) expect_near(n, {0, 0, -1});
+}
+
+TEST(ObjLoader, SmoothNormalsAverageAroundSharedPosition) {
+    TempDir dir;
+    // Two faces folded 90 degrees along the edge v1-v2, equal areas, face normals +z and +x:
+    // the normal on the shared edge bisects them.
+    write_text(dir / "fold.obj",
+               "v 0 0 0\nv 0 1 0\nv 1 0 0\nv 0 0 1\n"
+               "f 1 3 2\nf 1 2 4\n");
+    const MeshData mesh = load_obj(dir / "fold.obj");
+    ASSERT_EQ(mesh.indices.size(), 2u);
+    const Vec3 n_shared = mesh.normals[mesh.indices[0][0]];
+    expect_near(n_shared, normalize(Vec3(1, 0, 1)), 1e-6f);
+    expect_near(mesh.normals[mesh.indices[0][1]], {0, 0, 1});  // v3 only touches the first face
+}
+
+TEST(ObjLoader, SeamCornersShareSmoothNormal) {
+    TempDir dir;
+    // Same fold, but vertex 1 has different vt in the two faces: two output vertices, one normal.
+    write_text(dir / "seam.obj",
+               "v 0 0 0\nv 0 1 0\nv 1 0 0\nv 0 0 1\n"
+               "vt 0 0\nvt 1 0\nvt 0 1\n"
+               "f 1/1 3/2 2/3\nf 1/2 2/3 4/1\n");
+    const MeshData mesh = load_obj(dir / "seam.obj");
+    ASSERT_EQ(mesh.uvs.size(), mesh.positions.size());
+    const uint32_t a = mesh.indices[0][0];
+    const uint32_t b = mesh.indices[1][0];
+    EXPECT_NE(a, b);
+    EXPECT_EQ(mesh.positions[a], mesh.positions[b]);
+    expect_near(mesh.normals[a], mesh.normals[b]);
+    EXPECT_FLOAT_EQ(mesh.uvs[a].x, 0.0f);
+    EXPECT_FLOAT_EQ(mesh.uvs[b].x, 1.0f);
+}
+
+TEST(ObjLoader, GivenNormalsAreUsedAndNormalized) {
+    TempDir dir;
+    write_text(dir / "n.obj", std::string(k_quad) +
+                                  "vn 0 0 2\nvn 0 3 0\nvn 0 0 0\n"
+                                  "f 1//1 2//2 3//3\n");
+    const MeshData mesh = load_obj(dir / "n.obj");
+    ASSERT_EQ(mesh.indices.size(), 1u);
+    expect_near(mesh.normals[mesh.indices[0][0]], {0, 0, 1});
+    expect_near(mesh.normals[mesh.indices[0][1]], {0, 1, 0});
+    expect_near(mesh.normals[mesh.indices[0][2]], {0, 0, 1});  // zero normal: computed instead
+}
+
+TEST(ObjLoader, UsemtlMapsToMaterials) {
+    TempDir dir;
+    write_text(dir / "m.mtl",
+               "newmtl red\nKa 0.1 0 0\nKd 0.8 0 0\nKs 0.5 0.5 0.5\nNs 32\n"
+               "newmtl blue\nKd 0 0 0.7\nNi 1.5\nd 0.25\n");
+    write_text(dir / "m.obj", std::string("mtllib m.mtl\n") + k_quad +
+                                  "f 1 2 3\n"
+                                  "usemtl blue\nf 1 3 4\n"
+                                  "usemtl red\nf 2 3 4 1\n");
+    const MeshData mesh = load_obj(dir / "m.obj");
+    ASSERT_EQ(mesh.materials.size(), 2u);
+    ASSERT_EQ(mesh.material.size(), 4u);
+    EXPECT_EQ(mesh.material[0], -1);
+    const Material& blue = mesh.materials[mesh.material[1]];
+    const Material& red = mesh.materials[mesh.material[2]];
+    EXPECT_EQ(mesh.material[3], mesh.material[2]);
+    EXPECT_EQ(red.name, "red");
+    expect_near(red.ka, {0.1f, 0, 0});
+    expect_near(red.kd, {0.8f, 0, 0});
+    expect_near(red.ks, {0.5f, 0.5f, 0.5f});
+    EXPECT_FLOAT_EQ(red.shininess, 32.0f);
+    EXPECT_EQ(blue.name, "blue");
+    expect_near(blue.kd, {0, 0, 0.7f});
+    EXPECT_FLOAT_EQ(blue.ior, 1.5f);
+    EXPECT_FLOAT_EQ(blue.transparency, 0.75f);
+    EXPECT_EQ(blue.reflectivity, 0.0f);
+    EXPECT_TRUE(mesh.warnings.empty());
+}
+
+TEST(ObjLoader, MtlInSubdirectoryIsRelativeToObj) {
+    TempDir dir;
+    std::filesystem::create_directories(dir / "models");
+    write_text(dir / "models" / "m.mtl", "newmtl gold\nKd 1 0.8 0\n");
+    write_text(dir / "models" / "m.obj",
+               std::string("mtllib m.mtl\nusemtl gold\n") + k_quad + "f 1 2 3\n");
+    const MeshData mesh = load_obj(dir / "models" / "m.obj");
+    ASSERT_EQ(mesh.materials.size(), 1u);
+    EXPECT_EQ(mesh.material[0], 0);
+}
+
+TEST(ObjLoader, MissingMtlIsAWarning) {
+    TempDir dir;
+    write_text(dir / "m.obj", std::string("mtllib nowhere.mtl\nusemtl x\n") + k_quad + "f 1 2 3\n");
+    const MeshData mesh = load_obj(dir / "m.obj");
+    EXPECT_EQ(mesh.material[0], -1);
+    ASSERT_FALSE(mesh.warnings.empty());
+    bool mentions_mtl = false;
+    for (const std::string& w : mesh.warnings) {
+        EXPECT_EQ(w.rfind((dir / "m.obj").string(), 0), 0u) << w;
+        mentions_mtl |= w.find("nowhere.mtl") != std::string::npos;
+    }
+    EXPECT_TRUE(mentions_mtl);
+}
+
+TEST(ObjLoader, OutOfRangeIndexNamesFileAndLine) {
+    TempDir dir;
+    write_text(dir / "bad.obj", std::string(k_quad) + "f 1 2 3\nf 1 2 9\n");
+    const std::string message = load_error(dir / "bad.obj");
+    EXPECT_EQ(message.rfind((dir / "bad.obj").string() + ":6: ", 0), 0u) << message;
+    EXPECT_NE(message.find("vertex 9"), std::string::npos) << message;
+}
+
+TEST(ObjLoader, OutOfRangeRelativeAndNormalIndices) {
+    TempDir dir;
+    write_text(dir / "rel.obj", std::string(k_quad) + "f -1 -2 -5\n");
+    write_text(dir / "vn.obj", std::string(k_quad) + "vn 0 0 1\nf 1//1 2//1 3//2\n");
+    write_text(dir / "zero.obj", std::string(k_quad) + "f 0 1 2\n");
+    EXPECT_NE(load_error(dir / "rel.obj").find("rel.obj:5: "), std::string::npos);
+    EXPECT_NE(load_error(dir / "vn.obj").find("vn.obj:6: face refers to normal 2"),
+              std::string::npos)
+        << load_error(dir / "vn.obj");
+    EXPECT_NE(load_error(dir / "zero.obj").find("zero.obj:5: "), std::string::npos)
+        << load_error(dir / "zero.obj");
+}
+
+TEST(ObjLoader, MissingFileIsAnError) {
+    TempDir dir;
+    const std::string message = load_error(dir / "missing.obj");
+    EXPECT_EQ(message.rfind((dir / "missing.obj").string(), 0), 0u) << message;
+    EXPECT_NE(message.find("No such file or directory"), std::string::npos) << message;
+}
+
+TEST(ObjLoader, GarbageIsAnError) {
+    TempDir dir;
+    write_text(dir / "text.obj", "Lorem ipsum dolor sit amet\nconsectetur adipiscing elit\n");
+    write_text(dir / "badnum.obj", "v 0 0 0\nv 1 zero 0\nv 0 1 0\nf 1 2 3\n");
+    write_text(dir / "nan.obj", "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n");
+    write_text(dir / "short.obj", std::string(k_quad) + "f 1 2\n");
+    write_text(dir / "big.obj", "v 0 0 0\nv 1 0 0\nv 0 1e39 0\nf 1 2 3\n");  // float overflow
+    EXPECT_NE(load_error(dir / "text.obj").find("no faces"), std::string::npos);
+    EXPECT_NE(load_error(dir / "badnum.obj").find("badnum.obj:2: "), std::string::npos);
+    EXPECT_NE(load_error(dir / "nan.obj").find("nan.obj:3: "), std::string::npos);
+    EXPECT_NE(load_error(dir / "short.obj").find("short.obj:5: "), std::string::npos);
+    EXPECT_NE(load_error(dir / "big.obj").find("big.obj:3: "), std::string::npos);
+}
+
+TEST(ObjLoader, DegenerateTrianglesAreSkippedAndCounted) {
+    TempDir dir;
+    write_text(dir / "d.obj", std::string(k_quad) +
+                                  "v 2 0 0\n"
+                                  "f 1 2 3\n"
+                                  "f 1 2 5\n"  // collinear: zero area
+                                  "f 1 1 3\n"  // repeated corner
+                                  "f 1 3 4\n");
+    const MeshData mesh = load_obj(dir / "d.obj");
+    EXPECT_EQ(mesh.degenerate_skipped, 2u);
+    ASSERT_EQ(mesh.indices.size(), 2u);
+    EXPECT_EQ(mesh.positions[mesh.indices[1][2]], Vec3(0, 1, 0));  // the last face, now second
+    EXPECT_EQ(mesh.material.size(), 2u);
+}
+
+TEST(ObjLoader, OnlyDegenerateTrianglesIsAnError) {
+    TempDir dir;
+    write_text(dir / "d.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
+    EXPECT_NE(load_error(dir / "d.obj").find("no usable triangles"), std::string::npos);
+}
+
+TEST(ObjLoader, GroupsKeepFileOrder) {
+    TempDir dir;
+    write_text(dir / "g.obj", std::string(k_quad) + "g a\nf 1 2 3\no b\nf 1 3 4\ng c\nf 2 3 4\n");
+    const MeshData mesh = load_obj(dir / "g.obj");
+    ASSERT_EQ(mesh.indices.size(), 3u);
+    EXPECT_EQ(mesh.positions[mesh.indices[0][1]], Vec3(1, 0, 0));
+    EXPECT_EQ(mesh.positions[mesh.indices[1][2]], Vec3(0, 1, 0));
+    EXPECT_EQ(mesh.positions[mesh.indices[2][0]], Vec3(1, 0, 0));
+}
+
+}  // namespace
+}  // namespace hikari
