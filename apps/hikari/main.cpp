@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -45,15 +46,16 @@ struct RenderOptions {
 };
 
 RenderControl g_control;
-volatile std::sig_atomic_t g_signal_count = 0;
-volatile std::sig_atomic_t g_writing = 0;
+// Lock-free atomics are safe to touch from a signal handler.
+std::atomic<int> g_signal_count{0};
+std::atomic<bool> g_writing{false};
 
 // While rendering, the first signal asks the render to stop (it then exits writing nothing).
 // While the output is being written, or on a second signal, leave at once, removing any
 // half-written temporary file.
 extern "C" void on_interrupt(int sig) {
     g_control.cancel.store(true);
-    if (g_writing || ++g_signal_count > 1) {
+    if (g_writing.load() || g_signal_count.fetch_add(1) > 0) {
         remove_pending_temporary_files();
         _exit(128 + sig);
     }
@@ -170,10 +172,10 @@ int run_render(const RenderOptions& o) {
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     const Image image = aov_image(fb, parse_aov(o.aov));
-    g_writing = 1;
+    g_writing = true;
     if (g_control.cancel.load()) throw Interrupted();
     write_image(output, image);
-    g_writing = 0;
+    g_writing = false;
     if (!o.quiet)
         fmt::print(stderr, "hikari: wrote {} ({}x{}, {}, {:.3f} s)\n", output, fb.width(),
                    fb.height(), method->name, seconds);

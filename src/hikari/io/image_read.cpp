@@ -61,11 +61,14 @@ Image read_stb(const std::filesystem::path& path, const std::string& bytes) {
         fail(path, std::string("cannot decode image: ") + stbi_failure_reason());
     }
     check_size(path, w, h);
-    Image image(w, h);
+    // Size the image from what the decoder returns, not from stbi_info: the two can disagree
+    // on malformed files (found by fuzz/image_fuzz.cpp).
     if (stbi_is_16_bit_from_memory(data, size)) {
         std::unique_ptr<stbi_us, void (*)(void*)> pixels(
             stbi_load_16_from_memory(data, size, &w, &h, &channels, 3), &stbi_image_free);
         if (!pixels) fail(path, std::string("cannot decode image: ") + stbi_failure_reason());
+        check_size(path, w, h);
+        Image image(w, h);
         for (size_t i = 0; i < image.pixels.size(); ++i) {
             auto decode = [&](int c) { return srgb_to_linear(pixels.get()[3 * i + c] / 65535.0f); };
             image.pixels[i] = {decode(0), decode(1), decode(2)};
@@ -75,6 +78,8 @@ Image read_stb(const std::filesystem::path& path, const std::string& bytes) {
     std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
         stbi_load_from_memory(data, size, &w, &h, &channels, 3), &stbi_image_free);
     if (!pixels) fail(path, std::string("cannot decode image: ") + stbi_failure_reason());
+    check_size(path, w, h);
+    Image image(w, h);
     const auto& lut = srgb8_to_linear_table();
     for (size_t i = 0; i < image.pixels.size(); ++i) {
         const stbi_uc* p = pixels.get() + 3 * i;
