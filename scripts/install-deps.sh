@@ -7,6 +7,10 @@ packages=(
     nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libfmt-dev libtbb-dev
     libstb-dev libtinyexr-dev libgtest-dev
 )
+# CI also checks formatting, runs clang-tidy and builds with sanitizers.
+if [ "${1:-}" = "--ci" ]; then
+    packages+=(clang clang-format clang-tidy libclang-rt-14-dev git)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

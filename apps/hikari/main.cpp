@@ -75,7 +75,7 @@ class ProgressReporter {
   public:
     explicit ProgressReporter(bool enabled) {
         if (!enabled || !isatty(STDERR_FILENO)) return;
-        m_thread = std::jthread([](std::stop_token stop) {
+        m_thread = std::jthread([](const std::stop_token& stop) {
             const auto start = Clock::now();
             bool shown = false;
             while (!stop.stop_requested()) {

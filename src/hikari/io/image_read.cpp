@@ -56,6 +56,11 @@ Image read_stb(const std::filesystem::path& path, const std::string& bytes) {
     const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
     if (bytes.size() > static_cast<size_t>(INT32_MAX)) fail(path, "file too large");
     const int size = static_cast<int>(bytes.size());
+    // Only PNG and JPEG go to stb_image: it also sniffs other formats, and its 16-bit PNM path
+    // writes past its buffer (found by fuzz/image_fuzz.cpp).
+    const bool png = bytes.starts_with("\x89PNG\r\n\x1a\n");
+    const bool jpeg = bytes.starts_with("\xFF\xD8\xFF");
+    if (!png && !jpeg) fail(path, "not a PNG or JPEG file (wrong signature)");
     int w = 0, h = 0, channels = 0;
     if (!stbi_info_from_memory(data, size, &w, &h, &channels)) {
         fail(path, std::string("cannot decode image: ") + stbi_failure_reason());

@@ -293,8 +293,8 @@ std::vector<BvhNode> compact(std::span<const BvhNode> slots) {
         nodes[index].index = first;
         nodes.push_back(slots[node.index]);
         nodes.push_back(slots[node.index + 1]);
-        todo.push_back({node.index + 1, first + 1});
-        todo.push_back({node.index, first});
+        todo.emplace_back(node.index + 1, first + 1);
+        todo.emplace_back(node.index, first);
     }
     nodes.shrink_to_fit();
     return nodes;

@@ -103,8 +103,9 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
                     intersector.closest(centre, {0.0f, k_infinity}, first);
                     Pcg32 rng(i, 0x68696b617269ULL);
                     for (int s = 0; s < spp; ++s) {
-                        const float sx = (static_cast<float>(s % cols) + rng.next_float()) / cols;
-                        const float sy = (static_cast<float>(s / cols) + rng.next_float()) / rows;
+                        const int column = s % cols, row = s / cols;
+                        const float sx = (static_cast<float>(column) + rng.next_float()) / cols;
+                        const float sy = (static_cast<float>(row) + rng.next_float()) / rows;
                         sum += trace(ctx, camera_ray(frame, fx + sx, fy + sy), 1);
                     }
                     sum = sum / static_cast<float>(spp);

@@ -37,8 +37,8 @@ struct TriangleSet {
     std::vector<Vec3> normals;                     ///< unit shading normal per vertex
     std::vector<std::array<uint32_t, 3>> indices;  ///< vertex indices per triangle,
                                                    ///< counter-clockwise seen from the front
-    std::vector<uint32_t> material;  ///< material index per triangle
-    std::vector<PrimitiveId> id;     ///< primitive id per triangle
+    std::vector<uint32_t> material;                ///< material index per triangle
+    std::vector<PrimitiveId> id;                   ///< primitive id per triangle
 
     size_t size() const { return indices.size(); }
 };
