@@ -31,7 +31,8 @@ void clip_against(const ClipPolygon& in, int plane, ClipPolygon& out) {
         if (a_in) out.v[out.count++] = a;
         if (a_in != b_in) {
             // Interpolate from the inside end so both triangles sharing the edge agree exactly.
-            out.v[out.count++] = a_in ? a + (b - a) * (da / (da - db)) : b + (a - b) * (db / (db - da));
+            out.v[out.count++] =
+                a_in ? a + (b - a) * (da / (da - db)) : b + (a - b) * (db / (db - da));
         }
         if (out.count >= k_max_clip_vertices) break;  // unreachable for convex input
     }

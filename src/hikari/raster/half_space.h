@@ -19,11 +19,11 @@ inline constexpr int64_t k_subpixel_one = int64_t{1} << k_subpixel_bits;
 /// A screen triangle ready for edge-function traversal. Vertices are reordered so that the
 /// signed area is positive; edge i runs between the two vertices other than i.
 struct HalfSpaceTriangle {
-    std::array<int64_t, 3> x, y;   ///< snapped vertex positions, in 1/256 pixel
-    std::array<float, 3> inv_w;    ///< 1 / w of each (reordered) vertex
-    std::array<float, 3> z;        ///< ScreenVertex::position.z of each (reordered) vertex
-    std::array<int64_t, 3> bias;   ///< 0 for top-left edges (a centre on them is in), −1 else
-    int64_t area = 0;              ///< twice the signed area, in 1/256² pixel², > 0
+    std::array<int64_t, 3> x, y;  ///< snapped vertex positions, in 1/256 pixel
+    std::array<float, 3> inv_w;   ///< 1 / w of each (reordered) vertex
+    std::array<float, 3> z;       ///< ScreenVertex::position.z of each (reordered) vertex
+    std::array<int64_t, 3> bias;  ///< 0 for top-left edges (a centre on them is in), −1 else
+    int64_t area = 0;             ///< twice the signed area, in 1/256² pixel², > 0
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  ///< pixels whose centres the bounding box holds,
                                          ///< [x0, x1) × [y0, y1), clipped to the viewport
 };

@@ -113,8 +113,8 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
                         break;
                     }
                     case Interpolation::phong:  // interpolate the normal, shade the pixel
-                        colour = shade_point(ctx, m, p, facing(n_interp, entering, ng_front, dir),
-                                             -dir);
+                        colour =
+                            shade_point(ctx, m, p, facing(n_interp, entering, ng_front, dir), -dir);
                         break;
                 }
                 fb.color.pixels[pixel] = colour;

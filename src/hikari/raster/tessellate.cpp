@@ -133,8 +133,10 @@ RasterScene tessellate_scene(const Scene& scene) {
         uint32_t index;
     };
     std::vector<Item> items;
-    for (uint32_t i = 0; i < scene.spheres.size(); ++i) items.push_back({scene.spheres[i].id, false, i});
-    for (uint32_t i = 0; i < scene.planes.size(); ++i) items.push_back({scene.planes[i].id, true, i});
+    for (uint32_t i = 0; i < scene.spheres.size(); ++i)
+        items.push_back({scene.spheres[i].id, false, i});
+    for (uint32_t i = 0; i < scene.planes.size(); ++i)
+        items.push_back({scene.planes[i].id, true, i});
     std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.id < b.id; });
 
     const float half_extent = scene.planes.empty() ? 0.0f : plane_half_extent(scene);

@@ -70,7 +70,8 @@ RasterView make_raster_view(const Camera& camera, const RasterScene& scene) {
     // A point at distance d inside the frustum has view depth at least d cos(half diagonal).
     const float aspect = static_cast<float>(camera.width) / static_cast<float>(camera.height);
     const float tan_half_y = std::tan(camera.fov_y_degrees * std::numbers::pi_v<float> / 360.0f);
-    const float cos_half_diag = 1.0f / std::sqrt(1.0f + tan_half_y * tan_half_y * (1 + aspect * aspect));
+    const float cos_half_diag =
+        1.0f / std::sqrt(1.0f + tan_half_y * tan_half_y * (1 + aspect * aspect));
     const float nearest = bounds.empty() ? 0.0f : distance_to_box(camera.eye, bounds);
     v.near_plane = std::max(0.9f * nearest * cos_half_diag, 1e-6f * v.far_plane);
     v.view_from_world = view_matrix(camera);
@@ -95,7 +96,8 @@ ProjectedScene project_triangles(RasterScene scene, const RasterView& view, bool
     const size_t n = ps.scene.triangles.size();
     std::vector<uint32_t> offset(n + 1, 0);
     tbb::parallel_for(size_t{0}, n, [&](size_t t) {
-        offset[t + 1] = static_cast<uint32_t>(project_one(ps, static_cast<uint32_t>(t), cull_back_faces, nullptr));
+        offset[t + 1] = static_cast<uint32_t>(
+            project_one(ps, static_cast<uint32_t>(t), cull_back_faces, nullptr));
     });
     for (size_t t = 0; t < n; ++t) offset[t + 1] += offset[t];
     ps.triangles.resize(offset[n]);

@@ -33,9 +33,9 @@ RasterView make_raster_view(const Camera& camera, const RasterScene& scene);
 
 /// A scene after the vertex stage.
 struct ProjectedScene {
-    RasterScene scene;                  ///< the world-space triangles (attributes for shading)
-    RasterView view;                    ///< the transforms used
-    std::vector<Vec4> clip_positions;   ///< clip_from_world · p for every vertex of `scene`
+    RasterScene scene;                      ///< the world-space triangles (attributes for shading)
+    RasterView view;                        ///< the transforms used
+    std::vector<Vec4> clip_positions;       ///< clip_from_world · p for every vertex of `scene`
     std::vector<ScreenTriangle> triangles;  ///< in scene order; a clipped source triangle's
                                             ///< pieces follow one another
 };

@@ -21,8 +21,8 @@ struct TileBins {
     std::vector<uint32_t> triangle;
 };
 
-TileBins bin_triangles(const std::vector<HalfSpaceTriangle>& setup, const std::vector<uint8_t>& valid,
-                       int width, int height) {
+TileBins bin_triangles(const std::vector<HalfSpaceTriangle>& setup,
+                       const std::vector<uint8_t>& valid, int width, int height) {
     TileBins bins;
     bins.tiles_x = (width + k_tile_size - 1) / k_tile_size;
     bins.tiles_y = (height + k_tile_size - 1) / k_tile_size;

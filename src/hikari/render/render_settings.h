@@ -27,7 +27,7 @@ struct RenderSettings {
     int samples_per_pixel = 1;  ///< 1: one ray through each pixel centre; more: stratified jitter
     int max_depth = 5;          ///< ray segments per path, the primary ray included
     Interpolation interp = Interpolation::phong;  ///< raster methods' shading interpolation
-    bool cull_back_faces = false;  ///< raster methods drop triangles facing away (Fig 4.3)
+    bool cull_back_faces = false;      ///< raster methods drop triangles facing away (Fig 4.3)
     RenderControl* control = nullptr;  ///< optional progress / cancellation
 };
 
