@@ -37,6 +37,8 @@ struct RenderOptions {
     std::string output;
     std::string method = "raytrace";
     std::string aov = "color";
+    std::string interp = "phong";
+    std::string cull = "none";
     int spp = 1;
     int width = 0, height = 0;
     int threads = 0;
@@ -158,6 +160,10 @@ int run_render(const RenderOptions& o) {
     RenderSettings settings;
     settings.samples_per_pixel = o.spp;
     settings.max_depth = o.max_depth;
+    settings.interp = o.interp == "flat"      ? Interpolation::flat
+                      : o.interp == "gouraud" ? Interpolation::gouraud
+                                              : Interpolation::phong;
+    settings.cull_back_faces = o.cull == "back";
     settings.control = &g_control;
 
     std::optional<tbb::global_control> thread_limit;
@@ -215,6 +221,18 @@ int main(int argc, char** argv) {
                      "Buffer to write: color, depth (eye distance), id (1 + primitive index, "
                      "0 = background), normal")
         ->check(CLI::IsMember({"color", "depth", "id", "normal"}))
+        ->capture_default_str();
+    render
+        ->add_option("--interp", o.interp,
+                     "Raster shading interpolation: flat (one colour per polygon), gouraud "
+                     "(vertex colours blended), phong (normals interpolated, shaded per pixel)")
+        ->check(CLI::IsMember({"flat", "gouraud", "phong"}))
+        ->capture_default_str();
+    render
+        ->add_option("--cull", o.cull,
+                     "Raster back-face culling (Fig 4.3): back drops triangles whose front "
+                     "(counter-clockwise) side faces away from the eye; none keeps all")
+        ->check(CLI::IsMember({"back", "none"}))
         ->capture_default_str();
     render->add_option("--spp", o.spp, "Samples per pixel (1 = pixel centres; more: stratified)")
         ->check(CLI::Range(1, 65536))

@@ -114,3 +114,17 @@ TEST_F(Cli, PfmOutputHoldsLinearFloats) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(Cli, RasterOptionsRenderAndRejectBadValues) {
+    const Result ok = run("render --method zbuffer --interp gouraud --cull back --width 32 -q -o " +
+                          path("z.png"));
+    EXPECT_EQ(ok.status, 0) << ok.output;
+    EXPECT_TRUE(fs::exists(path("z.png")));
+    EXPECT_EQ(run("render --method zbuffer --interp smooth -o " + path("a.png")).status, 2);
+    EXPECT_EQ(run("render --method zbuffer --cull front -o " + path("b.png")).status, 2);
+    EXPECT_EQ(file_count(), 1u);
+}
+
+}  // namespace

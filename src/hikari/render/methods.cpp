@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "hikari/raster/zbuffer.h"
 #include "hikari/ray/whitted.h"
 
 namespace hikari {
@@ -12,6 +13,8 @@ constexpr std::array k_methods = {
     Method{"raytrace",
            "Whitted ray tracing (Alg 4.3): nearest hit, shadow rays, reflection, refraction",
            &render_whitted},
+    Method{"zbuffer", "Z-buffer (Alg 4.2): rasterize every triangle, keep the nearest per pixel",
+           &render_zbuffer},
 };
 
 }  // namespace

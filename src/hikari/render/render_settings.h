@@ -14,10 +14,20 @@ struct RenderControl {
     std::atomic<bool> cancel{false};      ///< set by the caller (e.g. on SIGINT) to stop early
 };
 
+/// How the raster methods interpolate shading across a triangle (the lecture's flat, Gouraud and
+/// Phong shading).
+enum class Interpolation {
+    flat,     ///< one face normal per triangle
+    gouraud,  ///< shade at the vertices, interpolate the colours
+    phong,    ///< interpolate the normal, shade every pixel
+};
+
 /// Settings of a render; the scene says what, these say how.
 struct RenderSettings {
     int samples_per_pixel = 1;  ///< 1: one ray through each pixel centre; more: stratified jitter
     int max_depth = 5;          ///< ray segments per path, the primary ray included
+    Interpolation interp = Interpolation::phong;  ///< raster methods' shading interpolation
+    bool cull_back_faces = false;      ///< raster methods drop triangles facing away (Fig 4.3)
     RenderControl* control = nullptr;  ///< optional progress / cancellation
 };
 

@@ -1,0 +1,49 @@
+#include "hikari/raster/half_space.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace hikari {
+
+bool setup_half_space(const ScreenTriangle& t, int width, int height, HalfSpaceTriangle& out) {
+    // Far beyond the guard band (raster/clip.h): products of differences stay below 2^63.
+    constexpr double k_limit = 1 << 28;
+    std::array<int, 3> order{0, 1, 2};
+    for (int i = 0; i < 3; ++i) {
+        const Vec3 p = t.v[i].position;
+        if (!(std::abs(p.x) < k_limit && std::abs(p.y) < k_limit)) return false;
+        out.x[i] = std::llround(static_cast<double>(p.x) * k_subpixel_one);
+        out.y[i] = std::llround(static_cast<double>(p.y) * k_subpixel_one);
+    }
+    int64_t area = (out.x[1] - out.x[0]) * (out.y[2] - out.y[0]) -
+                   (out.y[1] - out.y[0]) * (out.x[2] - out.x[0]);
+    if (area == 0) return false;
+    if (area < 0) {  // make the area positive so that "inside" is E ≥ 0 on every edge
+        std::swap(out.x[1], out.x[2]);
+        std::swap(out.y[1], out.y[2]);
+        std::swap(order[1], order[2]);
+        area = -area;
+    }
+    out.area = area;
+    for (int i = 0; i < 3; ++i) {
+        out.inv_w[i] = t.v[order[i]].inv_w;
+        out.z[i] = t.v[order[i]].position.z;
+        const int a = (i + 1) % 3, b = (i + 2) % 3;
+        const int64_t dx = out.x[b] - out.x[a], dy = out.y[b] - out.y[a];
+        // With y down and positive area, an edge going up (dy < 0) is a left edge, a horizontal
+        // edge going right is a top edge.
+        const bool top_left = dy < 0 || (dy == 0 && dx > 0);
+        out.bias[i] = top_left ? 0 : -1;
+    }
+    // Pixels i with centre (i + 1/2) inside [min, max].
+    const auto [xmin, xmax] = std::minmax({out.x[0], out.x[1], out.x[2]});
+    const auto [ymin, ymax] = std::minmax({out.y[0], out.y[1], out.y[2]});
+    const double s = static_cast<double>(k_subpixel_one);
+    out.x0 = static_cast<int>(std::clamp(std::ceil(xmin / s - 0.5), 0.0, double(width)));
+    out.x1 = static_cast<int>(std::clamp(std::floor(xmax / s - 0.5) + 1, 0.0, double(width)));
+    out.y0 = static_cast<int>(std::clamp(std::ceil(ymin / s - 0.5), 0.0, double(height)));
+    out.y1 = static_cast<int>(std::clamp(std::floor(ymax / s - 0.5) + 1, 0.0, double(height)));
+    return out.x0 < out.x1 && out.y0 < out.y1;
+}
+
+}  // namespace hikari

@@ -1,0 +1,71 @@
+#pragma once
+// Half-space (edge function) rasterization (Pineda 1988): a pixel centre is inside a triangle
+// when it is on the inner side of all three edges. Vertices are snapped to 1/256 pixel and the
+// edge functions evaluated exactly in 64-bit integers, so the top-left fill rule (as in Direct3D
+// and OpenGL) gives every pixel centre on a shared edge to exactly one of the two triangles.
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+#include "hikari/raster/screen_triangle.h"
+
+namespace hikari {
+
+/// Fractional bits of the snapped vertex coordinates.
+inline constexpr int k_subpixel_bits = 8;
+inline constexpr int64_t k_subpixel_one = int64_t{1} << k_subpixel_bits;
+
+/// A screen triangle ready for edge-function traversal. Vertices are reordered so that the
+/// signed area is positive; edge i runs between the two vertices other than i.
+struct HalfSpaceTriangle {
+    std::array<int64_t, 3> x, y;  ///< snapped vertex positions, in 1/256 pixel
+    std::array<float, 3> inv_w;   ///< 1 / w of each (reordered) vertex
+    std::array<float, 3> z;       ///< ScreenVertex::position.z of each (reordered) vertex
+    std::array<int64_t, 3> bias;  ///< 0 for top-left edges (a centre on them is in), −1 else
+    int64_t area = 0;             ///< twice the signed area, in 1/256² pixel², > 0
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  ///< pixels whose centres the bounding box holds,
+                                         ///< [x0, x1) × [y0, y1), clipped to the viewport
+};
+
+/// Prepares `t` for rasterization in a width × height viewport. Returns false when the triangle
+/// covers no pixel centre for sure: zero area, off screen, or coordinates that are not finite
+/// or beyond the guard band's range.
+bool setup_half_space(const ScreenTriangle& t, int width, int height, HalfSpaceTriangle& out);
+
+/// Calls `fn(x, y, b0, b1, b2)` for every pixel (x, y) of [x0, x1) × [y0, y1) whose centre the
+/// triangle covers under the top-left rule, with the screen-space barycentric weights of the
+/// (reordered) vertices. The edge functions step incrementally: one add per edge and pixel.
+template <class Fn>
+void for_each_covered_pixel(const HalfSpaceTriangle& t, int x0, int y0, int x1, int y1, Fn&& fn) {
+    x0 = std::max(x0, t.x0);
+    y0 = std::max(y0, t.y0);
+    x1 = std::min(x1, t.x1);
+    y1 = std::min(y1, t.y1);
+    if (x0 >= x1 || y0 >= y1) return;
+    const int64_t px = int64_t{x0} * k_subpixel_one + k_subpixel_one / 2;
+    const int64_t py = int64_t{y0} * k_subpixel_one + k_subpixel_one / 2;
+    std::array<int64_t, 3> row, step_x, step_y;
+    for (int e = 0; e < 3; ++e) {
+        const int a = (e + 1) % 3, b = (e + 2) % 3;
+        const int64_t dx = t.x[b] - t.x[a], dy = t.y[b] - t.y[a];
+        // E(p) = dx (p.y − a.y) − dy (p.x − a.x), positive inside.
+        row[e] = dx * (py - t.y[a]) - dy * (px - t.x[a]) + t.bias[e];
+        step_x[e] = -dy * k_subpixel_one;
+        step_y[e] = dx * k_subpixel_one;
+    }
+    const float inv_area = 1.0f / static_cast<float>(t.area);
+    for (int y = y0; y < y1; ++y) {
+        std::array<int64_t, 3> e = row;
+        for (int x = x0; x < x1; ++x) {
+            if ((e[0] | e[1] | e[2]) >= 0)
+                fn(x, y, static_cast<float>(e[0] - t.bias[0]) * inv_area,
+                   static_cast<float>(e[1] - t.bias[1]) * inv_area,
+                   static_cast<float>(e[2] - t.bias[2]) * inv_area);
+            for (int k = 0; k < 3; ++k) e[k] += step_x[k];
+        }
+        for (int k = 0; k < 3; ++k) row[k] += step_y[k];
+    }
+}
+
+}  // namespace hikari

@@ -1,0 +1,31 @@
+#pragma once
+// Deferred shading shared by every raster method: once hidden-surface removal has decided which
+// triangle each pixel centre sees, this pass interpolates that triangle's attributes and applies
+// the lecture's one shading model (shading/phong.h, Fig 4.29).
+
+#include "hikari/raster/screen_triangle.h"
+#include "hikari/raster/vertex_pipeline.h"
+#include "hikari/render/framebuffer.h"
+#include "hikari/render/render_settings.h"
+#include "hikari/scene/scene.h"
+
+namespace hikari {
+
+/// Perspective-correct barycentric weights of the point of triangle (c0, c1, c2), given in clip
+/// space, that projects to NDC point (ndc_x, ndc_y). Uses 2D homogeneous coordinates (Olano &
+/// Greer 1997): the weights are the inverse of [x; y; w] applied to (ndc_x, ndc_y, 1),
+/// normalized to sum 1 — the same as interpolating attribute / w and 1 / w linearly in screen
+/// space, but valid for any source triangle, clipped or not. Returns false for a triangle seen
+/// edge-on.
+bool perspective_barycentrics(Vec4 c0, Vec4 c1, Vec4 c2, double ndc_x, double ndc_y,
+                              std::array<float, 3>& weights);
+
+/// Fills colour, depth (eye distance |p − eye|), id (1 + PrimitiveId) and normal (unit, facing
+/// the eye) for every pixel whose centre `visibility` names a triangle of `projected`; other
+/// pixels keep the scene background. Colour is ambient + Lambert + Phong for every light, without
+/// shadows, interpolated as `settings.interp` says; normals are turned toward the eye as the ray
+/// tracer turns them, so both pipelines shade a surface alike. Parallel over tiles.
+Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& projected,
+                             const VisibilityBuffer& visibility, const RenderSettings& settings);
+
+}  // namespace hikari

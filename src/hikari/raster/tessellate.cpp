@@ -1,0 +1,162 @@
+#include "hikari/raster/tessellate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <utility>
+
+#include "hikari/core/aabb.h"
+
+namespace hikari {
+
+namespace {
+
+constexpr float k_pi = std::numbers::pi_v<float>;
+
+/// Appends triangle (a, b, c) of vertex indices, turned so that its front (counter-clockwise,
+/// N = (P2 − P1) × (P3 − P2)) faces along `outward`.
+void push_triangle(TriangleSet& out, uint32_t a, uint32_t b, uint32_t c, Vec3 outward,
+                   uint32_t material, PrimitiveId id) {
+    const Vec3& p1 = out.positions[a];
+    const Vec3& p2 = out.positions[b];
+    const Vec3& p3 = out.positions[c];
+    if (dot(cross(p2 - p1, p3 - p2), outward) < 0.0f) std::swap(b, c);
+    out.indices.push_back({a, b, c});
+    out.material.push_back(material);
+    out.id.push_back(id);
+}
+
+uint32_t push_vertex(TriangleSet& out, Vec3 p, Vec3 n) {
+    out.positions.push_back(p);
+    out.normals.push_back(n);
+    return static_cast<uint32_t>(out.positions.size() - 1);
+}
+
+/// Projected radius in pixels of `s` seen by `camera`; infinity when the eye is (nearly) inside.
+float projected_radius(const Sphere& s, const Camera& camera) {
+    const float dist = length(s.center - camera.eye);
+    if (dist <= 1.05f * s.radius) return std::numeric_limits<float>::infinity();
+    const float tan_angular = s.radius / std::sqrt(dist * dist - s.radius * s.radius);
+    const float tan_half_fov = std::tan(camera.fov_y_degrees * k_pi / 360.0f);
+    return tan_angular / tan_half_fov * 0.5f * static_cast<float>(camera.height);
+}
+
+/// Two unit tangents completing `n` to a right-handed frame (u, v, n).
+std::pair<Vec3, Vec3> tangent_frame(Vec3 n) {
+    const Vec3 a = std::abs(n.x) < 0.9f ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+    const Vec3 u = normalize(cross(a, n));
+    return {u, cross(n, u)};
+}
+
+}  // namespace
+
+uint32_t sphere_segments(float radius_px) {
+    // Sagitta r (1 − cos π/n) ≈ r π² / (2 n²) ≤ 0.05 px  ⇔  n ≥ π √(10 r).
+    if (!(radius_px < 1e6f)) return 512;
+    const float n = std::ceil(k_pi * std::sqrt(10.0f * std::max(radius_px, 0.0f)));
+    return static_cast<uint32_t>(std::clamp(n, 16.0f, 512.0f));
+}
+
+void tessellate_sphere(const Sphere& s, uint32_t lon, TriangleSet& out) {
+    const uint32_t lat = std::max(8u, lon / 2);
+    auto vertex = [&](float theta, float phi) {
+        const Vec3 n{std::sin(theta) * std::cos(phi), std::cos(theta),
+                     std::sin(theta) * std::sin(phi)};
+        return push_vertex(out, s.center + s.radius * n, n);
+    };
+    const uint32_t top = push_vertex(out, s.center + Vec3(0, s.radius, 0), {0, 1, 0});
+    const uint32_t first_ring = static_cast<uint32_t>(out.positions.size());
+    for (uint32_t k = 1; k < lat; ++k)
+        for (uint32_t m = 0; m < lon; ++m)
+            vertex(k_pi * float(k) / float(lat), 2 * k_pi * float(m) / float(lon));
+    const uint32_t bottom = push_vertex(out, s.center - Vec3(0, s.radius, 0), {0, -1, 0});
+    auto ring = [&](uint32_t k, uint32_t m) { return first_ring + (k - 1) * lon + m % lon; };
+    auto tri = [&](uint32_t a, uint32_t b, uint32_t c) {
+        const Vec3 centroid = (out.positions[a] + out.positions[b] + out.positions[c]) / 3.0f;
+        push_triangle(out, a, b, c, centroid - s.center, s.material, s.id);
+    };
+    for (uint32_t m = 0; m < lon; ++m) tri(top, ring(1, m), ring(1, m + 1));
+    for (uint32_t k = 1; k + 1 < lat; ++k)
+        for (uint32_t m = 0; m < lon; ++m) {
+            tri(ring(k, m), ring(k + 1, m), ring(k + 1, m + 1));
+            tri(ring(k, m), ring(k + 1, m + 1), ring(k, m + 1));
+        }
+    for (uint32_t m = 0; m < lon; ++m) tri(bottom, ring(lat - 1, m + 1), ring(lat - 1, m));
+}
+
+void tessellate_plane(const Plane& plane, Vec3 eye, float half_extent, TriangleSet& out) {
+    constexpr int k_steps = 32;  // grid lines on each side of the foot point
+    const auto [u, v] = tangent_frame(plane.normal);
+    const Vec3 foot = eye - dot(eye - plane.point, plane.normal) * plane.normal;
+    float coord[2 * k_steps + 1];
+    for (int k = -k_steps; k <= k_steps; ++k) {
+        const float t = float(std::abs(k)) / float(k_steps);
+        coord[k + k_steps] = (k < 0 ? -1.0f : 1.0f) * half_extent * t * t * t;
+    }
+    const auto base = static_cast<uint32_t>(out.positions.size());
+    constexpr int n = 2 * k_steps + 1;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+            push_vertex(out, foot + coord[i] * u + coord[j] * v, plane.normal);
+    for (int j = 0; j + 1 < n; ++j)
+        for (int i = 0; i + 1 < n; ++i) {
+            const uint32_t a = base + j * n + i, b = a + 1, c = a + n, d = c + 1;
+            push_triangle(out, a, b, d, plane.normal, plane.material, plane.id);
+            push_triangle(out, a, d, c, plane.normal, plane.material, plane.id);
+        }
+}
+
+float plane_half_extent(const Scene& scene) {
+    Aabb bounds;
+    for (const Sphere& s : scene.spheres) {
+        bounds.extend(s.center - Vec3(s.radius));
+        bounds.extend(s.center + Vec3(s.radius));
+    }
+    for (const Vec3& p : scene.triangles.positions) bounds.extend(p);
+    float size = bounds.empty() ? 1.0f : length(bounds.extent());
+    for (const Plane& p : scene.planes)
+        size = std::max(size, std::abs(dot(scene.camera.eye - p.point, p.normal)));
+    return 1e4f * std::max(size, 1e-3f);
+}
+
+RasterScene tessellate_scene(const Scene& scene) {
+    RasterScene rs;
+    TriangleSet& out = rs.triangles;
+    const TriangleSet& in = scene.triangles;
+    out.positions = in.positions;
+    out.normals = in.normals;
+
+    // Spheres and planes by id, to be merged with the (id-ordered) mesh triangles.
+    struct Item {
+        PrimitiveId id;
+        bool is_plane;
+        uint32_t index;
+    };
+    std::vector<Item> items;
+    for (uint32_t i = 0; i < scene.spheres.size(); ++i)
+        items.push_back({scene.spheres[i].id, false, i});
+    for (uint32_t i = 0; i < scene.planes.size(); ++i)
+        items.push_back({scene.planes[i].id, true, i});
+    std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.id < b.id; });
+
+    const float half_extent = scene.planes.empty() ? 0.0f : plane_half_extent(scene);
+    auto emit = [&](const Item& item) {
+        if (item.is_plane)
+            tessellate_plane(scene.planes[item.index], scene.camera.eye, half_extent, out);
+        else {
+            const Sphere& s = scene.spheres[item.index];
+            tessellate_sphere(s, sphere_segments(projected_radius(s, scene.camera)), out);
+        }
+    };
+    size_t next = 0;
+    for (size_t t = 0; t < in.size(); ++t) {
+        while (next < items.size() && items[next].id < in.id[t]) emit(items[next++]);
+        out.indices.push_back(in.indices[t]);
+        out.material.push_back(in.material[t]);
+        out.id.push_back(in.id[t]);
+    }
+    while (next < items.size()) emit(items[next++]);
+    return rs;
+}
+
+}  // namespace hikari

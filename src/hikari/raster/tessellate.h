@@ -1,0 +1,32 @@
+#pragma once
+// Spheres and planes as triangles for the rasterizer (the lecture's pipeline only draws polygons).
+
+#include <cstdint>
+
+#include "hikari/raster/raster_scene.h"
+#include "hikari/scene/scene.h"
+
+namespace hikari {
+
+/// Longitude segments of a sphere whose silhouette spans `radius_px` pixels: enough that the
+/// polygon's deviation from the circle (its sagitta r (1 − cos π/n)) stays below 0.05 pixel,
+/// clamped to [16, 512].
+uint32_t sphere_segments(float radius_px);
+
+/// Appends a UV sphere (`lon` segments, `lon / 2` bands, exact vertex normals) to `out`; every
+/// triangle carries `material` and `id`.
+void tessellate_sphere(const Sphere& sphere, uint32_t lon, TriangleSet& out);
+
+/// Appends a square grid of `half_extent` around the foot of `eye` on the plane: cells grow
+/// cubically with distance from the foot, so they are small near the camera and few overall.
+void tessellate_plane(const Plane& plane, Vec3 eye, float half_extent, TriangleSet& out);
+
+/// The half extent given to planes: far enough that the gap between the grid's edge and the true
+/// horizon is well under a pixel (10^4 times the larger of the eye's height and the scene size).
+float plane_half_extent(const Scene& scene);
+
+/// Every primitive of `scene` as triangles, in scene order. Sphere resolutions follow each
+/// sphere's projected size through `scene.camera`.
+RasterScene tessellate_scene(const Scene& scene);
+
+}  // namespace hikari

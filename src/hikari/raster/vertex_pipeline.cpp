@@ -1,0 +1,117 @@
+#include "hikari/raster/vertex_pipeline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <tbb/parallel_for.h>
+
+#include "hikari/core/aabb.h"
+#include "hikari/raster/clip.h"
+#include "hikari/raster/cull.h"
+#include "hikari/raster/tessellate.h"
+
+namespace hikari {
+
+namespace {
+
+/// Distance from `p` to the box `b` (0 inside).
+float distance_to_box(Vec3 p, const Aabb& b) {
+    const Vec3 d = max(max(b.min - p, p - b.max), Vec3(0.0f));
+    return length(d);
+}
+
+bool finite(Vec4 p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
+}
+
+/// Clips triangle t and writes its screen-space pieces to `out` (when not null); returns how
+/// many pieces there are.
+int project_one(const ProjectedScene& ps, uint32_t t, bool cull, ScreenTriangle* out) {
+    const auto& idx = ps.scene.triangles.indices[t];
+    const auto& pos = ps.scene.triangles.positions;
+    if (cull && is_back_face(pos[idx[0]], pos[idx[1]], pos[idx[2]], ps.view.eye)) return 0;
+    const Vec4 a = ps.clip_positions[idx[0]], b = ps.clip_positions[idx[1]],
+               c = ps.clip_positions[idx[2]];
+    if (!finite(a) || !finite(b) || !finite(c)) return 0;
+    const ClipPolygon poly = clip_triangle(a, b, c);
+    if (poly.count < 3) return 0;
+    if (out) {
+        // The perspective divide, then the viewport (pixel centres at +0.5, y down).
+        std::array<ScreenVertex, k_max_clip_vertices> sv;
+        for (int i = 0; i < poly.count; ++i) {
+            const float inv_w = 1.0f / poly.v[i].w;
+            const Vec3 ndc = poly.v[i].xyz() * inv_w;
+            sv[i] = {transform_point(ps.view.screen_from_clip, ndc), inv_w};
+        }
+        for (int i = 1; i + 1 < poly.count; ++i) out[i - 1] = {{sv[0], sv[i], sv[i + 1]}, t};
+    }
+    return poly.count - 2;
+}
+
+}  // namespace
+
+RasterView make_raster_view(const Camera& camera, const RasterScene& scene) {
+    RasterView v;
+    v.eye = camera.eye;
+    v.width = camera.width;
+    v.height = camera.height;
+    Aabb bounds;
+    for (const Vec3& p : scene.triangles.positions) bounds.extend(p);
+    float far_dist = 1.0f;
+    if (!bounds.empty())
+        for (int corner = 0; corner < 8; ++corner) {
+            const Vec3 p{(corner & 1) ? bounds.max.x : bounds.min.x,
+                         (corner & 2) ? bounds.max.y : bounds.min.y,
+                         (corner & 4) ? bounds.max.z : bounds.min.z};
+            far_dist = std::max(far_dist, length(p - camera.eye));
+        }
+    v.far_plane = 1.01f * far_dist;
+    // A point at distance d inside the frustum has view depth at least d cos(half diagonal).
+    const float aspect = static_cast<float>(camera.width) / static_cast<float>(camera.height);
+    const float tan_half_y = std::tan(camera.fov_y_degrees * std::numbers::pi_v<float> / 360.0f);
+    const float cos_half_diag =
+        1.0f / std::sqrt(1.0f + tan_half_y * tan_half_y * (1 + aspect * aspect));
+    const float nearest = bounds.empty() ? 0.0f : distance_to_box(camera.eye, bounds);
+    v.near_plane = std::max(0.9f * nearest * cos_half_diag, 1e-6f * v.far_plane);
+    v.view_from_world = view_matrix(camera);
+    v.clip_from_view = perspective(camera.fov_y_degrees, aspect, v.near_plane, v.far_plane);
+    v.screen_from_clip = viewport(camera.width, camera.height);
+    v.clip_from_world = v.clip_from_view * v.view_from_world;
+    return v;
+}
+
+ProjectedScene project_triangles(RasterScene scene, const RasterView& view, bool cull_back_faces) {
+    ProjectedScene ps;
+    ps.scene = std::move(scene);
+    ps.view = view;
+    const auto& positions = ps.scene.triangles.positions;
+    ps.clip_positions.resize(positions.size());
+    tbb::parallel_for(size_t{0}, positions.size(), [&](size_t i) {
+        ps.clip_positions[i] = view.clip_from_world * Vec4(positions[i], 1.0f);
+    });
+
+    // Count the pieces of every triangle, place them by a prefix sum, then write them: the
+    // output is in scene order whatever the thread count.
+    const size_t n = ps.scene.triangles.size();
+    std::vector<uint32_t> offset(n + 1, 0);
+    tbb::parallel_for(size_t{0}, n, [&](size_t t) {
+        offset[t + 1] = static_cast<uint32_t>(
+            project_one(ps, static_cast<uint32_t>(t), cull_back_faces, nullptr));
+    });
+    for (size_t t = 0; t < n; ++t) offset[t + 1] += offset[t];
+    ps.triangles.resize(offset[n]);
+    tbb::parallel_for(size_t{0}, n, [&](size_t t) {
+        if (offset[t + 1] > offset[t])
+            project_one(ps, static_cast<uint32_t>(t), cull_back_faces, &ps.triangles[offset[t]]);
+    });
+    return ps;
+}
+
+ProjectedScene project_scene(const Scene& scene, const RenderSettings& settings) {
+    RasterScene rs = tessellate_scene(scene);
+    const RasterView view = make_raster_view(scene.camera, rs);
+    return project_triangles(std::move(rs), view, settings.cull_back_faces);
+}
+
+}  // namespace hikari

@@ -1,0 +1,51 @@
+#pragma once
+// The vertex stage of the lecture's pipeline (Fig 4.2): p_s = V P M p_w, then back-face culling
+// (Fig 4.3), clipping in homogeneous clip space and the perspective divide. Its output, a list of
+// ScreenTriangles, is what every hidden-surface method (zbuffer, scanline, depth sort) consumes.
+
+#include <vector>
+
+#include "hikari/core/mat4.h"
+#include "hikari/raster/raster_scene.h"
+#include "hikari/raster/screen_triangle.h"
+#include "hikari/render/render_settings.h"
+#include "hikari/scene/scene.h"
+
+namespace hikari {
+
+/// The camera as a chain of matrices, with near and far planes fitted to the scene.
+struct RasterView {
+    Vec3 eye;
+    float near_plane = 0;  ///< view-space distance of the near clipping plane, > 0
+    float far_plane = 0;   ///< beyond every vertex: nothing is clipped at the far plane
+    int width = 0, height = 0;
+    Mat4 view_from_world;   ///< look_at of the camera
+    Mat4 clip_from_view;    ///< perspective(fov, aspect, near, far)
+    Mat4 screen_from_clip;  ///< viewport(width, height), applied after the divide by w
+    Mat4 clip_from_world;   ///< clip_from_view * view_from_world
+};
+
+/// Fits the view to `scene`'s bounds: far just beyond the farthest vertex; near at 0.9 times the
+/// smallest view depth the bounding box can have inside the frustum, but at least 10⁻⁶ far. Depth
+/// tests should compare view depth 1 / inv_w, whose float precision is relative, rather than
+/// ScreenVertex::position.z, which degrades with far / near.
+RasterView make_raster_view(const Camera& camera, const RasterScene& scene);
+
+/// A scene after the vertex stage.
+struct ProjectedScene {
+    RasterScene scene;                      ///< the world-space triangles (attributes for shading)
+    RasterView view;                        ///< the transforms used
+    std::vector<Vec4> clip_positions;       ///< clip_from_world · p for every vertex of `scene`
+    std::vector<ScreenTriangle> triangles;  ///< in scene order; a clipped source triangle's
+                                            ///< pieces follow one another
+};
+
+/// Projects every triangle of `scene` through `view`: culls back faces when `cull_back_faces`
+/// (D = V·N > 0, raster/cull.h), clips in clip space (raster/clip.h), divides by w and maps to
+/// pixels. Runs in parallel over triangles; the output order does not depend on the threads.
+ProjectedScene project_triangles(RasterScene scene, const RasterView& view, bool cull_back_faces);
+
+/// tessellate_scene, make_raster_view and project_triangles with `settings.cull_back_faces`.
+ProjectedScene project_scene(const Scene& scene, const RenderSettings& settings);
+
+}  // namespace hikari

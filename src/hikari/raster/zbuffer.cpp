@@ -1,0 +1,100 @@
+#include "hikari/raster/zbuffer.h"
+
+#include <vector>
+
+#include <tbb/parallel_for.h>
+
+#include "hikari/core/ray.h"
+#include "hikari/raster/half_space.h"
+#include "hikari/raster/shade_visibility.h"
+#include "hikari/raster/vertex_pipeline.h"
+#include "hikari/render/tiles.h"
+
+namespace hikari {
+
+namespace {
+
+/// Triangle indices per tile in a flat array (compressed rows), each tile's in ascending order.
+struct TileBins {
+    int tiles_x = 0, tiles_y = 0;
+    std::vector<uint32_t> begin;  ///< tiles_x · tiles_y + 1 offsets into `triangle`
+    std::vector<uint32_t> triangle;
+};
+
+TileBins bin_triangles(const std::vector<HalfSpaceTriangle>& setup,
+                       const std::vector<uint8_t>& valid, int width, int height) {
+    TileBins bins;
+    bins.tiles_x = (width + k_tile_size - 1) / k_tile_size;
+    bins.tiles_y = (height + k_tile_size - 1) / k_tile_size;
+    bins.begin.assign(static_cast<size_t>(bins.tiles_x) * bins.tiles_y + 1, 0);
+    auto for_tiles = [&](const HalfSpaceTriangle& t, auto&& fn) {
+        for (int ty = t.y0 / k_tile_size; ty <= (t.y1 - 1) / k_tile_size; ++ty)
+            for (int tx = t.x0 / k_tile_size; tx <= (t.x1 - 1) / k_tile_size; ++tx)
+                fn(static_cast<size_t>(ty) * bins.tiles_x + tx);
+    };
+    for (size_t i = 0; i < setup.size(); ++i)
+        if (valid[i]) for_tiles(setup[i], [&](size_t tile) { ++bins.begin[tile + 1]; });
+    for (size_t k = 1; k < bins.begin.size(); ++k) bins.begin[k] += bins.begin[k - 1];
+    bins.triangle.resize(bins.begin.back());
+    std::vector<uint32_t> fill(bins.begin.begin(), bins.begin.end() - 1);
+    for (size_t i = 0; i < setup.size(); ++i)
+        if (valid[i])
+            for_tiles(setup[i],
+                      [&](size_t tile) { bins.triangle[fill[tile]++] = static_cast<uint32_t>(i); });
+    return bins;
+}
+
+}  // namespace
+
+VisibilityBuffer zbuffer_visibility(std::span<const ScreenTriangle> triangles, int width,
+                                    int height, RenderControl* control) {
+    VisibilityBuffer vis{width, height,
+                         std::vector<uint32_t>(static_cast<size_t>(width) * height, k_no_triangle)};
+    std::vector<HalfSpaceTriangle> setup(triangles.size());
+    std::vector<uint8_t> valid(triangles.size());
+    tbb::parallel_for(size_t{0}, triangles.size(), [&](size_t i) {
+        valid[i] = setup_half_space(triangles[i], width, height, setup[i]) ? 1 : 0;
+    });
+    const TileBins bins = bin_triangles(setup, valid, width, height);
+
+    for_each_tile(width, height, control, [&](const Tile& tile) {
+        // Alg 4.2: Z(i, j) = ∞ for every pixel of the tile.
+        std::array<float, k_tile_size * k_tile_size> depth;
+        std::array<uint32_t, k_tile_size * k_tile_size> nearest;
+        depth.fill(k_infinity);
+        nearest.fill(k_no_triangle);
+        const size_t tile_index =
+            static_cast<size_t>(tile.y0 / k_tile_size) * bins.tiles_x + tile.x0 / k_tile_size;
+        for (uint32_t k = bins.begin[tile_index]; k < bins.begin[tile_index + 1]; ++k) {
+            const uint32_t t = bins.triangle[k];
+            const HalfSpaceTriangle& h = setup[t];
+            for_each_covered_pixel(h, tile.x0, tile.y0, tile.x1, tile.y1,
+                                   [&](int x, int y, float b0, float b1, float b2) {
+                                       // 1/w is affine in screen space: interpolate it, invert.
+                                       const float inv_w =
+                                           b0 * h.inv_w[0] + b1 * h.inv_w[1] + b2 * h.inv_w[2];
+                                       const float z = 1.0f / inv_w;
+                                       const int i = (y - tile.y0) * k_tile_size + (x - tile.x0);
+                                       // Alg 4.2: the depth test; nearer fragments replace.
+                                       if (z < depth[i]) {
+                                           depth[i] = z;
+                                           nearest[i] = t;
+                                       }
+                                   });
+        }
+        for (int y = tile.y0; y < tile.y1; ++y)
+            for (int x = tile.x0; x < tile.x1; ++x)
+                vis.triangle[static_cast<size_t>(y) * width + x] =
+                    nearest[(y - tile.y0) * k_tile_size + (x - tile.x0)];
+    });
+    return vis;
+}
+
+Framebuffer render_zbuffer(const Scene& scene, const RenderSettings& settings) {
+    const ProjectedScene ps = project_scene(scene, settings);
+    const VisibilityBuffer vis =
+        zbuffer_visibility(ps.triangles, scene.camera.width, scene.camera.height, settings.control);
+    return shade_visibility(scene, ps, vis, settings);
+}
+
+}  // namespace hikari

@@ -1,0 +1,40 @@
+#pragma once
+// Helpers shared by the raster/ tests: scenes from JSON text and image comparisons.
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "hikari/io/scene_json.h"
+#include "hikari/render/framebuffer.h"
+
+namespace hikari::testing {
+
+/// A scene parsed from JSON text, meshes resolved against the repository root.
+inline Scene raster_scene_from(const std::string& json) {
+    std::vector<std::string> warnings;
+    return parse_scene(json, "test.json", HIKARI_SOURCE_DIR, warnings);
+}
+
+/// Fraction of pixels whose id buffers agree.
+inline double id_agreement(const Framebuffer& a, const Framebuffer& b) {
+    size_t same = 0;
+    for (size_t i = 0; i < a.id.size(); ++i) same += a.id[i] == b.id[i];
+    return static_cast<double>(same) / static_cast<double>(a.id.size());
+}
+
+/// PSNR in dB of two colour buffers with peak 1 (colours clamped to [0, 1] as an 8-bit image
+/// would show them).
+inline double psnr(const Framebuffer& a, const Framebuffer& b) {
+    double sum = 0;
+    for (size_t i = 0; i < a.color.pixels.size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+            const double d = std::clamp(a.color.pixels[i][k], 0.0f, 1.0f) -
+                             std::clamp(b.color.pixels[i][k], 0.0f, 1.0f);
+            sum += d * d;
+        }
+    const double mse = sum / (3.0 * static_cast<double>(a.color.pixels.size()));
+    return mse > 0 ? 10 * std::log10(1.0 / mse) : 1000.0;
+}
+
+}  // namespace hikari::testing
