@@ -142,12 +142,27 @@ std::string default_output(const RenderOptions& o) {
     return stem + (o.aov == "color" ? "" : "-" + o.aov) + ".png";
 }
 
+/// Refuses, before any work is done, an output the render could not be written to.
+void check_output_path(const std::filesystem::path& output) {
+    if (!is_supported_image_extension(output))
+        throw InputError(fmt::format("{}: unsupported output format (use .png, .ppm, .pfm or .exr)",
+                                     output.string()));
+    const std::filesystem::path dir = output.has_parent_path() ? output.parent_path() : ".";
+    std::error_code ec;
+    if (!std::filesystem::is_directory(dir, ec))
+        throw InputError(fmt::format("{}: cannot write: the directory {} does not exist",
+                                     output.string(), dir.string()));
+    if (::access(dir.c_str(), W_OK) != 0)
+        throw InputError(fmt::format("{}: cannot write: the directory {} is not writable",
+                                     output.string(), dir.string()));
+    if (std::filesystem::is_directory(output, ec))
+        throw InputError(fmt::format("{}: cannot write: it is a directory", output.string()));
+}
+
 int run_render(const RenderOptions& o) {
     const Method* method = find_method(o.method);  // validated by CLI11 already
     const std::string output = o.output.empty() ? default_output(o) : o.output;
-    if (!is_supported_image_extension(output))
-        throw InputError(
-            fmt::format("{}: unsupported output format (use .png, .ppm, .pfm or .exr)", output));
+    check_output_path(output);
 
     std::vector<std::string> warnings;
     Scene scene =

@@ -1,11 +1,15 @@
 // End-to-end checks of the hikari program: exit statuses, messages and files written.
 
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -111,6 +115,39 @@ TEST_F(Cli, PfmOutputHoldsLinearFloats) {
     in >> magic;
     EXPECT_EQ(magic, "PF");
     EXPECT_EQ(fs::file_size(path("x.pfm")), std::string("PF\n8 8\n-1.0\n").size() + 8 * 8 * 12);
+}
+
+TEST_F(Cli, OutputIntoMissingDirectoryIsRefusedBeforeRendering) {
+    const Result r = run("render -o " + path("no/such/dir/x.png"));
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.output.find("does not exist"), std::string::npos) << r.output;
+}
+
+TEST_F(Cli, InterruptStopsTheRenderAndWritesNothing) {
+    const std::string output = path("long.png");
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        // A render that would take minutes.
+        execl(HIKARI_CLI_PATH, HIKARI_CLI_PATH, "render", "--spp", "4096", "--width", "1024", "-q",
+              "-o", output.c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1000));
+    kill(child, SIGINT);
+    int raw = 0;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (waitpid(child, &raw, WNOHANG) == 0) {
+        if (std::chrono::steady_clock::now() > deadline) {
+            kill(child, SIGKILL);
+            waitpid(child, &raw, 0);
+            FAIL() << "the render did not stop within 20 s of SIGINT";
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    ASSERT_TRUE(WIFEXITED(raw)) << "killed by signal " << WTERMSIG(raw);
+    EXPECT_EQ(WEXITSTATUS(raw), 130);
+    EXPECT_EQ(file_count(), 0u) << "no output and no temporary file may be left";
 }
 
 }  // namespace
