@@ -44,7 +44,7 @@ TEST(DepthSort, ResolvesPiercingTrianglesBySplitting) {
 
 TEST(DepthSortNaive, FailsOnCyclicOverlap) {
     // Fig 4.9a: whatever order the centroids give, one crossing of the three comes out wrong
-    EXPECT_GT(naive_errors(testing::three_bars()), 300);
+    EXPECT_GT(naive_errors(testing::three_bars()), 150);
 }
 
 TEST(DepthSortNaive, FailsOnPiercingTriangles) {

@@ -116,7 +116,7 @@ inline std::vector<ScreenTriangle> three_bars() {
         const Vec2 s = corner[i], e = corner[(i + 1) % 3];
         const float dx = e.x - s.x, dy = e.y - s.y, len = std::sqrt(dx * dx + dy * dy);
         const float ext = 24 / len;  // reach past the corners so the crossings are whole squares
-        add_bar(out, {s.x - ext * dx, s.y - ext * dy}, {e.x + ext * dx, e.y + ext * dy}, 13, 0.2f,
+        add_bar(out, {s.x - ext * dx, s.y - ext * dy}, {e.x + ext * dx, e.y + ext * dy}, 16, 0.2f,
                 0.8f);
     }
     return out;

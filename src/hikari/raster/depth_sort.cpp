@@ -151,7 +151,7 @@ bool DepthSorter::separated_by_edges_of(const Polygon& p, const Polygon& q) cons
             q_lo = std::min(q_lo, t), q_hi = std::max(q_hi, t);
         }
         const double tolerance =
-            k_side_epsilon * (std::abs(nx) + std::abs(ny)) * (1 + std::abs(p_lo) + std::abs(p_hi));
+            k_side_epsilon * (std::abs(nx) + std::abs(ny) + std::abs(p_lo) + std::abs(p_hi));
         if (p_hi <= q_lo + tolerance || q_hi <= p_lo + tolerance) return true;
     }
     return false;
