@@ -61,6 +61,7 @@ class DepthSorter {
     std::vector<uint32_t> m_order;  ///< painting order
     std::vector<PolygonVertex> m_front, m_back;  ///< split scratch
     size_t m_head = 0;                           ///< m_list before m_head is all retired
+    size_t m_alive = 0;                          ///< polygons neither painted nor split
     int64_t m_split_budget = 0;
 };
 
@@ -89,8 +90,10 @@ DepthSorter::DepthSorter(std::span<const ScreenTriangle> triangles) {
     std::sort(m_list.begin(), m_list.end(), [&](uint32_t p, uint32_t q) {
         return list_before(m_polygons[p], p, m_polygons[q], q);
     });
-    // cyclic overlap can need many splits; beyond this budget the order is accepted as it is
-    m_split_budget = 64 * static_cast<int64_t>(m_polygons.size()) + 1024;
+    // every interpenetrating pair needs a cut and pieces can be cut again; past this budget the
+    // order is accepted as it is, so the sort always ends
+    const auto n = static_cast<int64_t>(m_polygons.size());
+    m_split_budget = std::min<int64_t>(8 * n * n, int64_t{1} << 22) + 1024;
 }
 
 /// Makes a polygon of the pooled vertices from `first` to the end of the pool.
@@ -110,6 +113,7 @@ void DepthSorter::add_polygon(uint32_t first, uint32_t source, double a, double 
         p.z_min = std::min(p.z_min, v.z), p.z_max = std::max(p.z_max, v.z);
     }
     m_polygons.push_back(p);
+    ++m_alive;
     m_retired.push_back(0);
     m_marked.push_back(0);
 }
@@ -196,6 +200,7 @@ Step DepthSorter::examine(uint32_t p_id, uint32_t& q_out) const {
 
 void DepthSorter::retire(uint32_t id) {
     m_retired[id] = 1;
+    --m_alive;
     m_marked[id] = 0;
     std::erase(m_chain, id);
 }
@@ -251,6 +256,11 @@ void DepthSorter::split(uint32_t id, OffsetFn&& offset) {
 
 void DepthSorter::sort() {
     for (;;) {
+        // drop retired entries once they are most of the list, so scans stay short
+        if (m_list.size() - m_head > 2 * m_alive + 64) {
+            std::erase_if(m_list, [&](uint32_t id) { return m_retired[id] != 0; });
+            m_head = 0;
+        }
         if (m_chain.empty()) {
             while (m_head < m_list.size() && m_retired[m_list[m_head]]) ++m_head;
             if (m_head == m_list.size()) return;
