@@ -51,6 +51,7 @@ class DepthSorter {
     template <class OffsetFn>
     void split(uint32_t id, OffsetFn&& offset);
     void retire(uint32_t id);
+    bool find_cycle_cut(uint32_t q, uint32_t& cut, uint32_t& by) const;
 
     std::vector<PolygonVertex> m_vertices;
     std::vector<Polygon> m_polygons;
@@ -198,6 +199,25 @@ Step DepthSorter::examine(uint32_t p_id, uint32_t& q_out) const {
     return Step::paint;
 }
 
+/// A member of the cycle from marked Q up the chain to P that straddles the plane of another
+/// member whose projection it overlaps.
+bool DepthSorter::find_cycle_cut(uint32_t q, uint32_t& cut, uint32_t& by) const {
+    const auto from = std::find(m_chain.begin(), m_chain.end(), q);
+    for (auto x = from; x != m_chain.end(); ++x)
+        for (auto y = from; y != m_chain.end(); ++y) {
+            if (x == y) continue;
+            const Polygon& px = m_polygons[*x];
+            const Polygon& py = m_polygons[*y];
+            if (px.x_max <= py.x_min || py.x_max <= px.x_min) continue;
+            if (px.y_max <= py.y_min || py.y_max <= px.y_min) continue;
+            if (sides(px, py) != k_straddles || !projections_overlap(px, py)) continue;
+            cut = *y;
+            by = *x;
+            return true;
+        }
+    return false;
+}
+
 void DepthSorter::retire(uint32_t id) {
     m_retired[id] = 1;
     --m_alive;
@@ -291,8 +311,17 @@ void DepthSorter::sort() {
                 });
                 break;
             case Step::bisect_p: {
-                // neither plane cuts the other polygon: halve P across its longer extent instead,
-                // so that each half overlaps fewer polygons of the cycle
+                // neither plane of P and Q cuts the other polygon: cut the cycle where another of
+                // its members straddles the plane of one it overlaps
+                uint32_t cut = 0, by = 0;
+                if (find_cycle_cut(q, cut, by)) {
+                    split(cut, [&](const PolygonVertex& v, double& tol) {
+                        return plane_offset(m_polygons[by], v, tol);
+                    });
+                    break;
+                }
+                // no plane cuts it: halve P across its longer extent, so that each half takes
+                // part in fewer overlaps of the cycle
                 const Polygon& pp = m_polygons[p];
                 const bool along_x = pp.x_max - pp.x_min >= pp.y_max - pp.y_min;
                 const double mid =
