@@ -1,5 +1,8 @@
 #include "hikari/raster/depth_sort.h"
 
+#include "hikari/raster/shade_visibility.h"
+#include "hikari/raster/vertex_pipeline.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -394,6 +397,20 @@ VisibilityBuffer depth_sort_naive_visibility(std::span<const ScreenTriangle> tri
             [&](int i, int j) { out.triangle[static_cast<size_t>(j) * out.width + i] = t; });
     }
     return out;
+}
+
+Framebuffer render_depth_sort(const Scene& scene, const RenderSettings& settings) {
+    const ProjectedScene ps = project_scene(scene, settings);
+    const VisibilityBuffer vis =
+        depth_sort_visibility(ps.triangles, scene.camera.width, scene.camera.height);
+    return shade_visibility(scene, ps, vis, settings);
+}
+
+Framebuffer render_depth_sort_naive(const Scene& scene, const RenderSettings& settings) {
+    const ProjectedScene ps = project_scene(scene, settings);
+    const VisibilityBuffer vis =
+        depth_sort_naive_visibility(ps.triangles, scene.camera.width, scene.camera.height);
+    return shade_visibility(scene, ps, vis, settings);
 }
 
 }  // namespace hikari

@@ -5,6 +5,9 @@
 #include <span>
 
 #include "hikari/raster/screen_triangle.h"
+#include "hikari/render/framebuffer.h"
+#include "hikari/render/render_settings.h"
+#include "hikari/scene/scene.h"
 
 namespace hikari {
 
@@ -22,5 +25,11 @@ VisibilityBuffer depth_sort_visibility(std::span<const ScreenTriangle> triangles
 /// cyclic overlap Fig 4.9a, interpenetration Fig 4.9b); kept to show those failures.
 VisibilityBuffer depth_sort_naive_visibility(std::span<const ScreenTriangle> triangles, int width,
                                              int height);
+
+/// The `depthsort` method: vertex stage, depth_sort_visibility, shared shading pass.
+Framebuffer render_depth_sort(const Scene& scene, const RenderSettings& settings);
+
+/// The `depthsort-naive` method: vertex stage, depth_sort_naive_visibility, shared shading pass.
+Framebuffer render_depth_sort_naive(const Scene& scene, const RenderSettings& settings);
 
 }  // namespace hikari

@@ -1,5 +1,8 @@
 #include "hikari/raster/scanline.h"
 
+#include "hikari/raster/shade_visibility.h"
+#include "hikari/raster/vertex_pipeline.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -264,6 +267,13 @@ VisibilityBuffer scanline_visibility(std::span<const ScreenTriangle> triangles, 
                       std::min(out.height, (b + 1) * k_band_rows), s, out.triangle.data());
     });
     return out;
+}
+
+Framebuffer render_scanline(const Scene& scene, const RenderSettings& settings) {
+    const ProjectedScene ps = project_scene(scene, settings);
+    const VisibilityBuffer vis =
+        scanline_visibility(ps.triangles, scene.camera.width, scene.camera.height);
+    return shade_visibility(scene, ps, vis, settings);
 }
 
 }  // namespace hikari

@@ -5,6 +5,9 @@
 #include <span>
 
 #include "hikari/raster/screen_triangle.h"
+#include "hikari/render/framebuffer.h"
+#include "hikari/render/render_settings.h"
+#include "hikari/scene/scene.h"
 
 namespace hikari {
 
@@ -16,5 +19,9 @@ namespace hikari {
 /// non-finite triangles are ignored; nothing is culled. Deterministic for any thread count.
 VisibilityBuffer scanline_visibility(std::span<const ScreenTriangle> triangles, int width,
                                      int height);
+
+/// The `scanline` method: vertex stage (raster/vertex_pipeline.h), scanline_visibility, then the
+/// shared deferred shading pass (raster/shade_visibility.h).
+Framebuffer render_scanline(const Scene& scene, const RenderSettings& settings);
 
 }  // namespace hikari
