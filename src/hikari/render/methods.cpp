@@ -2,6 +2,8 @@
 
 #include <array>
 
+#include "hikari/raster/depth_sort.h"
+#include "hikari/raster/scanline.h"
 #include "hikari/raster/zbuffer.h"
 #include "hikari/ray/whitted.h"
 
@@ -15,6 +17,15 @@ constexpr std::array k_methods = {
            &render_whitted},
     Method{"zbuffer", "Z-buffer (Alg 4.2): rasterize every triangle, keep the nearest per pixel",
            &render_zbuffer},
+    Method{"scanline",
+           "scanline (Alg 4.1): edge table, active edges, nearest segment per sample span",
+           &render_scanline},
+    Method{"depthsort",
+           "depth sort (Newell et al. 1972): sort, overlap tests, reorder, split cycles",
+           &render_depth_sort},
+    Method{"depthsort-naive",
+           "painter's algorithm by centroid depth (Fig 4.7): fails on overlap cycles",
+           &render_depth_sort_naive},
 };
 
 }  // namespace

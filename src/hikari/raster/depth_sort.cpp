@@ -1,0 +1,416 @@
+#include "hikari/raster/depth_sort.h"
+
+#include "hikari/raster/shade_visibility.h"
+#include "hikari/raster/vertex_pipeline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "hikari/raster/polygon_fill.h"
+
+namespace hikari {
+namespace {
+
+/// Relative tolerance of the plane-side and projection tests: a vertex this close to a plane counts
+/// as on it, so neighbours sharing an edge or a vertex never count as straddling each other.
+constexpr double k_side_epsilon = 1e-9;
+/// Polygons with less area (in pixels squared) are dropped after a split: they hold no pixel
+/// centre.
+constexpr double k_min_area2 = 1e-12;
+
+/// Where a polygon's vertices lie relative to a plane (bit set).
+enum SideBits : int { k_on_plane = 0, k_behind = 1, k_in_front = 2, k_straddles = 3 };
+
+/// A convex polygon of the depth sort: a triangle or a piece of one, on the triangle's plane.
+struct Polygon {
+    uint32_t first = 0, count = 0;  ///< vertices [first, first + count) of the vertex pool
+    uint32_t source = 0;            ///< the ScreenTriangle it came from: every piece keeps it
+    double a = 0, b = 0, c = 0;     ///< plane z = a x + b y + c (z grows away from the viewer)
+    double x_min = 0, x_max = 0, y_min = 0, y_max = 0, z_min = 0, z_max = 0;
+};
+
+/// What the overlap tests decide for the current polygon P.
+enum class Step { paint, move_q, split_q_by_p, split_p_by_q, bisect_p };
+
+/// Newell, Newell & Sancha 1972, over convex polygons kept in a flat vertex pool.
+class DepthSorter {
+  public:
+    explicit DepthSorter(std::span<const ScreenTriangle> triangles);
+    /// The polygons in painting order, back to front.
+    void sort();
+    void paint(VisibilityBuffer& out) const;
+
+  private:
+    std::span<const PolygonVertex> vertices(const Polygon& p) const {
+        return {m_vertices.data() + p.first, p.count};
+    }
+    int sides(const Polygon& plane, const Polygon& poly) const;
+    bool projections_overlap(const Polygon& p, const Polygon& q) const;
+    bool separated_by_edges_of(const Polygon& p, const Polygon& q) const;
+    Step examine(uint32_t p, uint32_t& q_out) const;
+    void add_polygon(uint32_t first, uint32_t source, double a, double b, double c);
+    template <class OffsetFn>
+    void split(uint32_t id, OffsetFn&& offset);
+    void retire(uint32_t id);
+    bool find_cycle_cut(uint32_t q, uint32_t& cut, uint32_t& by) const;
+
+    std::vector<PolygonVertex> m_vertices;
+    std::vector<Polygon> m_polygons;
+    std::vector<uint32_t> m_list;  ///< polygon ids by descending z_max (retired ones stay, flagged)
+    std::vector<uint8_t> m_retired;
+    std::vector<uint8_t> m_marked;  ///< on m_chain: moved ahead of the polygon below it
+    std::vector<uint32_t> m_chain;  ///< the current P on top; each waits for the one above it
+    std::vector<uint32_t> m_order;  ///< painting order
+    std::vector<PolygonVertex> m_front, m_back;  ///< split scratch
+    size_t m_head = 0;                           ///< m_list before m_head is all retired
+    size_t m_alive = 0;                          ///< polygons neither painted nor split
+    int64_t m_split_budget = 0;
+};
+
+bool list_before(const Polygon& p, uint32_t p_id, const Polygon& q, uint32_t q_id) {
+    return p.z_max != q.z_max ? p.z_max > q.z_max : p_id < q_id;
+}
+
+DepthSorter::DepthSorter(std::span<const ScreenTriangle> triangles) {
+    for (size_t t = 0; t < triangles.size(); ++t) {
+        const auto& v = triangles[t].v;
+        const PolygonVertex p0{v[0].position.x, v[0].position.y, v[0].position.z};
+        const PolygonVertex p1{v[1].position.x, v[1].position.y, v[1].position.z};
+        const PolygonVertex p2{v[2].position.x, v[2].position.y, v[2].position.z};
+        const double area2 = signed_area2(p0, p1, p2);
+        if (!std::isfinite(area2) || area2 == 0 || !std::isfinite(p0.z + p1.z + p2.z)) continue;
+        // the triangle's plane, z affine in (x, y) after projection
+        const double a = ((p1.z - p0.z) * (p2.y - p0.y) - (p2.z - p0.z) * (p1.y - p0.y)) / area2;
+        const double b = ((p2.z - p0.z) * (p1.x - p0.x) - (p1.z - p0.z) * (p2.x - p0.x)) / area2;
+        const auto first = static_cast<uint32_t>(m_vertices.size());
+        m_vertices.insert(m_vertices.end(), {p0, p1, p2});
+        add_polygon(first, static_cast<uint32_t>(t), a, b, p0.z - a * p0.x - b * p0.y);
+    }
+    m_list.resize(m_polygons.size());
+    for (uint32_t i = 0; i < m_list.size(); ++i) m_list[i] = i;
+    // sort by farthest depth (Fig 4.6)
+    std::sort(m_list.begin(), m_list.end(), [&](uint32_t p, uint32_t q) {
+        return list_before(m_polygons[p], p, m_polygons[q], q);
+    });
+    // every interpenetrating pair needs a cut and pieces can be cut again; past this budget the
+    // order is accepted as it is, so the sort always ends
+    const auto n = static_cast<int64_t>(m_polygons.size());
+    m_split_budget = std::min<int64_t>(8 * n * n, int64_t{1} << 22) + 1024;
+}
+
+/// Makes a polygon of the pooled vertices from `first` to the end of the pool.
+void DepthSorter::add_polygon(uint32_t first, uint32_t source, double a, double b, double c) {
+    Polygon p;
+    p.first = first;
+    p.count = static_cast<uint32_t>(m_vertices.size()) - p.first;
+    p.source = source;
+    p.a = a;
+    p.b = b;
+    p.c = c;
+    p.x_min = p.y_min = p.z_min = INFINITY;
+    p.x_max = p.y_max = p.z_max = -INFINITY;
+    for (const PolygonVertex& v : vertices(p)) {
+        p.x_min = std::min(p.x_min, v.x), p.x_max = std::max(p.x_max, v.x);
+        p.y_min = std::min(p.y_min, v.y), p.y_max = std::max(p.y_max, v.y);
+        p.z_min = std::min(p.z_min, v.z), p.z_max = std::max(p.z_max, v.z);
+    }
+    m_polygons.push_back(p);
+    ++m_alive;
+    m_retired.push_back(0);
+    m_marked.push_back(0);
+}
+
+/// Signed depth of `v` behind `plane` (> 0: farther from the viewer), with its tolerance.
+double plane_offset(const Polygon& plane, const PolygonVertex& v, double& tolerance) {
+    const double ax = plane.a * v.x, by = plane.b * v.y;
+    tolerance = k_side_epsilon * (1 + std::abs(ax) + std::abs(by) + std::abs(plane.c));
+    return v.z - (ax + by + plane.c);
+}
+
+int DepthSorter::sides(const Polygon& plane, const Polygon& poly) const {
+    int bits = k_on_plane;
+    for (const PolygonVertex& v : vertices(poly)) {
+        double tolerance = 0;
+        const double d = plane_offset(plane, v, tolerance);
+        if (d > tolerance) bits |= k_behind;
+        if (d < -tolerance) bits |= k_in_front;
+    }
+    return bits;
+}
+
+/// Separating axis test along the edge normals of `p` (touching counts as separated: a pixel
+/// centre on a shared boundary is covered by one polygon only, so their order does not matter).
+bool DepthSorter::separated_by_edges_of(const Polygon& p, const Polygon& q) const {
+    const auto pv = vertices(p), qv = vertices(q);
+    for (size_t k = 0; k < pv.size(); ++k) {
+        const PolygonVertex& s = pv[k];
+        const PolygonVertex& e = pv[(k + 1) % pv.size()];
+        const double nx = s.y - e.y, ny = e.x - s.x;
+        if (nx == 0 && ny == 0) continue;
+        double p_lo = INFINITY, p_hi = -INFINITY, q_lo = INFINITY, q_hi = -INFINITY;
+        for (const PolygonVertex& v : pv) {
+            const double t = nx * v.x + ny * v.y;
+            p_lo = std::min(p_lo, t), p_hi = std::max(p_hi, t);
+        }
+        for (const PolygonVertex& v : qv) {
+            const double t = nx * v.x + ny * v.y;
+            q_lo = std::min(q_lo, t), q_hi = std::max(q_hi, t);
+        }
+        const double tolerance =
+            k_side_epsilon * (std::abs(nx) + std::abs(ny) + std::abs(p_lo) + std::abs(p_hi));
+        if (p_hi <= q_lo + tolerance || q_hi <= p_lo + tolerance) return true;
+    }
+    return false;
+}
+
+bool DepthSorter::projections_overlap(const Polygon& p, const Polygon& q) const {
+    return !separated_by_edges_of(p, q) && !separated_by_edges_of(q, p);
+}
+
+/// Newell, Newell & Sancha 1972: may P be painted now, before every Q it shares depths with?
+Step DepthSorter::examine(uint32_t p_id, uint32_t& q_out) const {
+    const Polygon& p = m_polygons[p_id];
+    for (size_t k = m_head; k < m_list.size(); ++k) {
+        const uint32_t q_id = m_list[k];
+        const Polygon& q = m_polygons[q_id];
+        // the list is sorted by z_max: from here on every Q lies entirely in front of P
+        if (q.z_max <= p.z_min) break;
+        if (q_id == p_id || m_retired[q_id]) continue;
+        // test 1, 2: the x or the y extents do not overlap
+        if (p.x_max <= q.x_min || q.x_max <= p.x_min) continue;
+        if (p.y_max <= q.y_min || q.y_max <= p.y_min) continue;
+        // test 3: P entirely behind Q's plane (on the far side from the viewer)
+        const int p_wrt_q = sides(q, p);
+        if (!(p_wrt_q & k_in_front)) continue;
+        // test 4: Q entirely in front of P's plane
+        const int q_wrt_p = sides(p, q);
+        if (!(q_wrt_p & k_behind)) continue;
+        // test 5: the projections do not overlap
+        if (!projections_overlap(p, q)) continue;
+        // Q may hide part of P. Can Q go first (tests 3, 4 with P and Q swapped)?
+        q_out = q_id;
+        const bool q_first = !(q_wrt_p & k_in_front) || !(p_wrt_q & k_behind);
+        if (!q_first) return Step::split_q_by_p;  // interpenetration (Fig 4.9b): they straddle
+        if (!m_marked[q_id]) return Step::move_q;
+        // Q already waits above P: cyclic overlap (Fig 4.9a); cut the cycle
+        if (q_wrt_p == k_straddles) return Step::split_q_by_p;
+        if (p_wrt_q == k_straddles) return Step::split_p_by_q;
+        return Step::bisect_p;
+    }
+    return Step::paint;
+}
+
+/// A member of the cycle from marked Q up the chain to P that straddles the plane of another
+/// member whose projection it overlaps.
+bool DepthSorter::find_cycle_cut(uint32_t q, uint32_t& cut, uint32_t& by) const {
+    const auto from = std::find(m_chain.begin(), m_chain.end(), q);
+    for (auto x = from; x != m_chain.end(); ++x)
+        for (auto y = from; y != m_chain.end(); ++y) {
+            if (x == y) continue;
+            const Polygon& px = m_polygons[*x];
+            const Polygon& py = m_polygons[*y];
+            if (px.x_max <= py.x_min || py.x_max <= px.x_min) continue;
+            if (px.y_max <= py.y_min || py.y_max <= px.y_min) continue;
+            if (sides(px, py) != k_straddles || !projections_overlap(px, py)) continue;
+            cut = *y;
+            by = *x;
+            return true;
+        }
+    return false;
+}
+
+void DepthSorter::retire(uint32_t id) {
+    m_retired[id] = 1;
+    --m_alive;
+    m_marked[id] = 0;
+    std::erase(m_chain, id);
+}
+
+/// Cuts polygon `id` where `offset` changes sign (Sutherland-Hodgman against both half-spaces),
+/// retires it and inserts the pieces into the list. Cut vertices are computed once and shared,
+/// so the pieces meet without cracks.
+template <class OffsetFn>
+void DepthSorter::split(uint32_t id, OffsetFn&& offset) {
+    --m_split_budget;
+    const Polygon parent = m_polygons[id];
+    m_front.clear();
+    m_back.clear();
+    const auto pv = vertices(parent);
+    auto side = [&](const PolygonVertex& v, double& d) {
+        double tolerance = 0;
+        d = offset(v, tolerance);
+        return d > tolerance ? 1 : (d < -tolerance ? -1 : 0);
+    };
+    for (size_t k = 0; k < pv.size(); ++k) {
+        const PolygonVertex v = pv[k], w = pv[(k + 1) % pv.size()];
+        double dv = 0, dw = 0;
+        const int sv = side(v, dv), sw = side(w, dw);
+        if (sv >= 0) m_back.push_back(v);
+        if (sv <= 0) m_front.push_back(v);
+        if (sv * sw < 0) {
+            const double t = dv / (dv - dw);
+            const PolygonVertex cut{v.x + t * (w.x - v.x), v.y + t * (w.y - v.y),
+                                    v.z + t * (w.z - v.z)};
+            m_back.push_back(cut);
+            m_front.push_back(cut);
+        }
+    }
+    retire(id);
+    for (const std::vector<PolygonVertex>* piece : {&m_back, &m_front}) {
+        if (piece->size() < 3) continue;
+        double area2 = 0;
+        for (size_t k = 1; k + 1 < piece->size(); ++k)
+            area2 += signed_area2((*piece)[0], (*piece)[k], (*piece)[k + 1]);
+        if (std::abs(area2) < k_min_area2) continue;
+        const auto first = static_cast<uint32_t>(m_vertices.size());
+        m_vertices.insert(m_vertices.end(), piece->begin(), piece->end());
+        add_polygon(first, parent.source, parent.a, parent.b, parent.c);
+        // re-insert by farthest depth
+        const uint32_t new_id = static_cast<uint32_t>(m_polygons.size() - 1);
+        const auto at = std::upper_bound(m_list.begin() + static_cast<std::ptrdiff_t>(m_head),
+                                         m_list.end(), new_id, [&](uint32_t n, uint32_t e) {
+                                             return list_before(m_polygons[n], n, m_polygons[e], e);
+                                         });
+        m_list.insert(at, new_id);
+    }
+}
+
+void DepthSorter::sort() {
+    for (;;) {
+        // drop retired entries once they are most of the list, so scans stay short
+        if (m_list.size() - m_head > 2 * m_alive + 64) {
+            std::erase_if(m_list, [&](uint32_t id) { return m_retired[id] != 0; });
+            m_head = 0;
+        }
+        if (m_chain.empty()) {
+            while (m_head < m_list.size() && m_retired[m_list[m_head]]) ++m_head;
+            if (m_head == m_list.size()) return;
+            m_chain.push_back(m_list[m_head]);
+            m_marked[m_list[m_head]] = 1;
+        }
+        const uint32_t p = m_chain.back();
+        uint32_t q = 0;
+        Step step = examine(p, q);
+        if (step != Step::paint && step != Step::move_q && m_split_budget <= 0) step = Step::paint;
+        switch (step) {
+            case Step::paint:
+                m_order.push_back(p);
+                retire(p);
+                break;
+            case Step::move_q:  // reorder: Q is painted before P
+                m_chain.push_back(q);
+                m_marked[q] = 1;
+                break;
+            case Step::split_q_by_p:
+                split(q, [&](const PolygonVertex& v, double& tol) {
+                    return plane_offset(m_polygons[p], v, tol);
+                });
+                break;
+            case Step::split_p_by_q:
+                split(p, [&](const PolygonVertex& v, double& tol) {
+                    return plane_offset(m_polygons[q], v, tol);
+                });
+                break;
+            case Step::bisect_p: {
+                // neither plane of P and Q cuts the other polygon: cut the cycle where another of
+                // its members straddles the plane of one it overlaps
+                uint32_t cut = 0, by = 0;
+                if (find_cycle_cut(q, cut, by)) {
+                    split(cut, [&](const PolygonVertex& v, double& tol) {
+                        return plane_offset(m_polygons[by], v, tol);
+                    });
+                    break;
+                }
+                // no plane cuts it: halve P across its longer extent, so that each half takes
+                // part in fewer overlaps of the cycle
+                const Polygon& pp = m_polygons[p];
+                const bool along_x = pp.x_max - pp.x_min >= pp.y_max - pp.y_min;
+                const double mid =
+                    along_x ? 0.5 * (pp.x_min + pp.x_max) : 0.5 * (pp.y_min + pp.y_max);
+                split(p, [&](const PolygonVertex& v, double& tol) {
+                    tol = 0;
+                    return (along_x ? v.x : v.y) - mid;
+                });
+                break;
+            }
+        }
+    }
+}
+
+void DepthSorter::paint(VisibilityBuffer& out) const {
+    // painter's algorithm: later (nearer) polygons overwrite
+    for (const uint32_t id : m_order) {
+        const Polygon& p = m_polygons[id];
+        fill_convex_polygon(vertices(p), out.width, out.height, [&](int i, int j) {
+            out.triangle[static_cast<size_t>(j) * out.width + i] = p.source;
+        });
+    }
+}
+
+VisibilityBuffer empty_buffer(int width, int height) {
+    VisibilityBuffer out;
+    out.width = std::max(width, 0);
+    out.height = std::max(height, 0);
+    out.triangle.assign(static_cast<size_t>(out.width) * out.height, k_no_triangle);
+    return out;
+}
+
+}  // namespace
+
+VisibilityBuffer depth_sort_visibility(std::span<const ScreenTriangle> triangles, int width,
+                                       int height) {
+    VisibilityBuffer out = empty_buffer(width, height);
+    if (out.triangle.empty()) return out;
+    DepthSorter sorter(triangles);
+    sorter.sort();
+    sorter.paint(out);
+    return out;
+}
+
+VisibilityBuffer depth_sort_naive_visibility(std::span<const ScreenTriangle> triangles, int width,
+                                             int height) {
+    VisibilityBuffer out = empty_buffer(width, height);
+    if (out.triangle.empty()) return out;
+    // Fig 4.7: priority by centroid depth alone, farthest first
+    std::vector<std::pair<double, uint32_t>> order;
+    order.reserve(triangles.size());
+    for (uint32_t t = 0; t < triangles.size(); ++t) {
+        const auto& v = triangles[t].v;
+        const double centroid_z =
+            (double{v[0].position.z} + v[1].position.z + v[2].position.z) / 3.0;
+        if (std::isfinite(centroid_z)) order.push_back({centroid_z, t});
+    }
+    std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+        return a.first != b.first ? a.first > b.first : a.second < b.second;
+    });
+    for (const auto& [z, t] : order) {
+        PolygonVertex tri[3];
+        for (int k = 0; k < 3; ++k) {
+            const Vec3 p = triangles[t].v[k].position;
+            tri[k] = {p.x, p.y, p.z};
+        }
+        if (signed_area2(tri[0], tri[1], tri[2]) == 0) continue;
+        fill_convex_polygon(
+            std::span<const PolygonVertex>(tri, 3), out.width, out.height,
+            [&](int i, int j) { out.triangle[static_cast<size_t>(j) * out.width + i] = t; });
+    }
+    return out;
+}
+
+Framebuffer render_depth_sort(const Scene& scene, const RenderSettings& settings) {
+    const ProjectedScene ps = project_scene(scene, settings);
+    const VisibilityBuffer vis =
+        depth_sort_visibility(ps.triangles, scene.camera.width, scene.camera.height);
+    return shade_visibility(scene, ps, vis, settings);
+}
+
+Framebuffer render_depth_sort_naive(const Scene& scene, const RenderSettings& settings) {
+    const ProjectedScene ps = project_scene(scene, settings);
+    const VisibilityBuffer vis =
+        depth_sort_naive_visibility(ps.triangles, scene.camera.width, scene.camera.height);
+    return shade_visibility(scene, ps, vis, settings);
+}
+
+}  // namespace hikari
