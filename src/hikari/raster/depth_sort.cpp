@@ -1,14 +1,13 @@
 #include "hikari/raster/depth_sort.h"
 
-#include "hikari/raster/shade_visibility.h"
-#include "hikari/raster/vertex_pipeline.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include "hikari/raster/polygon_fill.h"
+#include "hikari/raster/shade_visibility.h"
+#include "hikari/raster/vertex_pipeline.h"
 
 namespace hikari {
 namespace {

@@ -1,18 +1,17 @@
 #include "hikari/raster/scanline.h"
 
-#include "hikari/raster/shade_visibility.h"
-#include "hikari/raster/vertex_pipeline.h"
-
-#include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+
+#include "hikari/core/parallel.h"
 #include "hikari/raster/polygon_fill.h"
+#include "hikari/raster/shade_visibility.h"
+#include "hikari/raster/vertex_pipeline.h"
 
 namespace hikari {
 namespace {
@@ -260,12 +259,13 @@ VisibilityBuffer scanline_visibility(std::span<const ScreenTriangle> triangles, 
         return s;
     });
     const int bands = (out.height + k_band_rows - 1) / k_band_rows;
-    tbb::parallel_for(tbb::blocked_range<int>(0, bands, 1), [&](const tbb::blocked_range<int>& r) {
-        Scratch& s = scratch.local();
-        for (int b = r.begin(); b != r.end(); ++b)
-            scan_band(table, out.width, b * k_band_rows,
-                      std::min(out.height, (b + 1) * k_band_rows), s, out.triangle.data());
-    });
+    hikari::parallel_for(
+        tbb::blocked_range<int>(0, bands, 1), [&](const tbb::blocked_range<int>& r) {
+            Scratch& s = scratch.local();
+            for (int b = r.begin(); b != r.end(); ++b)
+                scan_band(table, out.width, b * k_band_rows,
+                          std::min(out.height, (b + 1) * k_band_rows), s, out.triangle.data());
+        });
     return out;
 }
 

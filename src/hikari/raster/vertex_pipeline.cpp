@@ -4,9 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include <tbb/parallel_for.h>
-
 #include "hikari/core/aabb.h"
+#include "hikari/core/parallel.h"
 #include "hikari/raster/clip.h"
 #include "hikari/raster/cull.h"
 #include "hikari/raster/tessellate.h"
@@ -87,7 +86,7 @@ ProjectedScene project_triangles(RasterScene scene, const RasterView& view, bool
     ps.view = view;
     const auto& positions = ps.scene.triangles.positions;
     ps.clip_positions.resize(positions.size());
-    tbb::parallel_for(size_t{0}, positions.size(), [&](size_t i) {
+    hikari::parallel_for(size_t{0}, positions.size(), [&](size_t i) {
         ps.clip_positions[i] = view.clip_from_world * Vec4(positions[i], 1.0f);
     });
 
@@ -95,13 +94,13 @@ ProjectedScene project_triangles(RasterScene scene, const RasterView& view, bool
     // output is in scene order whatever the thread count.
     const size_t n = ps.scene.triangles.size();
     std::vector<uint32_t> offset(n + 1, 0);
-    tbb::parallel_for(size_t{0}, n, [&](size_t t) {
+    hikari::parallel_for(size_t{0}, n, [&](size_t t) {
         offset[t + 1] = static_cast<uint32_t>(
             project_one(ps, static_cast<uint32_t>(t), cull_back_faces, nullptr));
     });
     for (size_t t = 0; t < n; ++t) offset[t + 1] += offset[t];
     ps.triangles.resize(offset[n]);
-    tbb::parallel_for(size_t{0}, n, [&](size_t t) {
+    hikari::parallel_for(size_t{0}, n, [&](size_t t) {
         if (offset[t + 1] > offset[t])
             project_one(ps, static_cast<uint32_t>(t), cull_back_faces, &ps.triangles[offset[t]]);
     });

@@ -2,8 +2,7 @@
 
 #include <vector>
 
-#include <tbb/parallel_for.h>
-
+#include "hikari/core/parallel.h"
 #include "hikari/core/ray.h"
 #include "hikari/raster/half_space.h"
 #include "hikari/raster/shade_visibility.h"
@@ -52,7 +51,7 @@ VisibilityBuffer zbuffer_visibility(std::span<const ScreenTriangle> triangles, i
                          std::vector<uint32_t>(static_cast<size_t>(width) * height, k_no_triangle)};
     std::vector<HalfSpaceTriangle> setup(triangles.size());
     std::vector<uint8_t> valid(triangles.size());
-    tbb::parallel_for(size_t{0}, triangles.size(), [&](size_t i) {
+    hikari::parallel_for(size_t{0}, triangles.size(), [&](size_t i) {
         valid[i] = setup_half_space(triangles[i], width, height, setup[i]) ? 1 : 0;
     });
     const TileBins bins = bin_triangles(setup, valid, width, height);

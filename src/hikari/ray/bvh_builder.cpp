@@ -1,16 +1,15 @@
 #include "hikari/ray/bvh_builder.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
-#include <tbb/parallel_reduce.h>
-
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <vector>
+
+#include <tbb/blocked_range.h>
+
+#include "hikari/core/parallel.h"
 
 namespace hikari {
 namespace {
@@ -129,7 +128,7 @@ class BinnedSahBuilder {
             build(region + 1, region + 2 * left_count, mid, end, depth + 1);
         };
         if (n > m_parallel_threshold) {
-            tbb::parallel_invoke(build_left, build_right);
+            hikari::parallel_invoke(build_left, build_right);
         } else {
             build_left();
             build_right();
@@ -152,7 +151,7 @@ class BinnedSahBuilder {
         };
         if (end - begin <= m_parallel_threshold) return accumulate(begin, end, {});
         // min and max are exact in any order, so the reduction is deterministic.
-        return tbb::parallel_reduce(
+        return hikari::parallel_reduce(
             tbb::blocked_range<uint32_t>(begin, end, 1024), RangeBounds{},
             [&](const tbb::blocked_range<uint32_t>& r, RangeBounds acc) {
                 return accumulate(r.begin(), r.end(), acc);
@@ -181,7 +180,7 @@ class BinnedSahBuilder {
         }
         // Counts add exactly and bounds merge exactly, so any split of the work gives the same
         // bins.
-        return tbb::parallel_reduce(
+        return hikari::parallel_reduce(
             tbb::blocked_range<uint32_t>(begin, end, 4096), Bins{},
             [&](const tbb::blocked_range<uint32_t>& r, Bins bins) {
                 accumulate(r.begin(), r.end(), bins);
@@ -313,7 +312,7 @@ Bvh build_bvh(std::span<const Vec3> positions, std::span<const std::array<uint32
     std::vector<Aabb> bounds(input_count);
     std::vector<Vec3> centroids(input_count);
     std::vector<uint8_t> usable(input_count);
-    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, input_count, 4096), [&](const auto& r) {
+    hikari::parallel_for(tbb::blocked_range<uint32_t>(0, input_count, 4096), [&](const auto& r) {
         for (uint32_t i = r.begin(); i < r.end(); ++i) {
             usable[i] = is_usable(positions, indices[i]);
             if (!usable[i]) continue;

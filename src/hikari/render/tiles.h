@@ -6,9 +6,9 @@
 #include <cstdint>
 
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include "hikari/core/error.h"
+#include "hikari/core/parallel.h"
 #include "hikari/render/render_settings.h"
 
 namespace hikari {
@@ -29,21 +29,21 @@ void for_each_tile(int width, int height, RenderControl* control, TileFn&& fn) {
     const int tiles_y = (height + k_tile_size - 1) / k_tile_size;
     const int64_t tile_count = int64_t{tiles_x} * tiles_y;
     if (control) control->work_total = static_cast<uint64_t>(tile_count);
-    tbb::parallel_for(tbb::blocked_range<int64_t>(0, tile_count, 1),
-                      [&](const tbb::blocked_range<int64_t>& range) {
-                          for (int64_t t = range.begin(); t != range.end(); ++t) {
-                              if (control && control->cancel.load(std::memory_order_relaxed))
-                                  return;
-                              const int tx = static_cast<int>(t % tiles_x);
-                              const int ty = static_cast<int>(t / tiles_x);
-                              const Tile tile{tx * k_tile_size, ty * k_tile_size,
-                                              std::min(width, (tx + 1) * k_tile_size),
-                                              std::min(height, (ty + 1) * k_tile_size)};
-                              fn(tile);
-                              if (control)
-                                  control->work_done.fetch_add(1, std::memory_order_relaxed);
-                          }
-                      });
+    hikari::parallel_for(tbb::blocked_range<int64_t>(0, tile_count, 1),
+                         [&](const tbb::blocked_range<int64_t>& range) {
+                             for (int64_t t = range.begin(); t != range.end(); ++t) {
+                                 if (control && control->cancel.load(std::memory_order_relaxed))
+                                     return;
+                                 const int tx = static_cast<int>(t % tiles_x);
+                                 const int ty = static_cast<int>(t / tiles_x);
+                                 const Tile tile{tx * k_tile_size, ty * k_tile_size,
+                                                 std::min(width, (tx + 1) * k_tile_size),
+                                                 std::min(height, (ty + 1) * k_tile_size)};
+                                 fn(tile);
+                                 if (control)
+                                     control->work_done.fetch_add(1, std::memory_order_relaxed);
+                             }
+                         });
     if (control && control->cancel.load()) throw Interrupted();
 }
 
