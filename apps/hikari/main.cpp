@@ -52,15 +52,19 @@ RenderControl g_control;
 std::atomic<int> g_signal_count{0};
 std::atomic<bool> g_writing{false};
 
-// While rendering, the first signal asks the render to stop (it then exits writing nothing).
-// While the output is being written, or on a second signal, leave at once, removing any
-// half-written temporary file.
+// While rendering, the first signal asks the render to stop (it then exits writing nothing), and
+// arms a one-second alarm in case the running stage does not poll for cancellation. While the
+// output is being written, on a second signal, or when the alarm rings, leave at once, removing
+// any half-written temporary file.
+extern "C" void exit_now(int sig) {
+    remove_pending_temporary_files();
+    _exit(128 + (sig == SIGALRM ? SIGINT : sig));
+}
+
 extern "C" void on_interrupt(int sig) {
     g_control.cancel.store(true);
-    if (g_writing.load() || g_signal_count.fetch_add(1) > 0) {
-        remove_pending_temporary_files();
-        _exit(128 + sig);
-    }
+    if (g_writing.load() || g_signal_count.fetch_add(1) > 0) exit_now(sig);
+    alarm(1);
 }
 
 void install_signal_handlers() {
@@ -69,6 +73,8 @@ void install_signal_handlers() {
     sigemptyset(&action.sa_mask);
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
+    action.sa_handler = exit_now;
+    sigaction(SIGALRM, &action, nullptr);
 }
 
 /// Prints a progress line on stderr while a render runs, once it has taken a second, when

@@ -26,8 +26,10 @@ TEST(VertexPipeline, ProjectsOntoPixelsWithYDown) {
     EXPECT_NEAR(t.v[2].position.y, 25.0f, 1e-3f);
     EXPECT_NEAR(t.v[0].inv_w, 0.5f, 1e-6f);
     for (const ScreenVertex& v : t.v) {
-        EXPECT_GT(v.position.z, 0.0f);
-        EXPECT_LT(v.position.z, 1.0f);
+        // the depth key −near/w: in [−1, 0), equal to −near · inv_w
+        EXPECT_LT(v.position.z, 0.0f);
+        EXPECT_GE(v.position.z, -1.0f);
+        EXPECT_NEAR(v.position.z, -ps.view.near_plane * v.inv_w, 1e-6f);
     }
 }
 
@@ -39,7 +41,8 @@ TEST(VertexPipeline, TriangleThroughTheEyePlaneIsClippedNotDropped) {
             ++pieces;
             for (const ScreenVertex& v : t.v) {
                 EXPECT_GT(v.inv_w, 0.0f);
-                EXPECT_GE(v.position.z, -1e-5f);
+                // clipped at the near plane: no point nearer than it (z >= −1)
+                EXPECT_GE(v.position.z, -1.0f - 1e-5f);
                 EXPECT_TRUE(std::isfinite(v.position.x) && std::isfinite(v.position.y));
             }
         }

@@ -54,6 +54,9 @@ class DepthSorter {
     void split(uint32_t id, OffsetFn&& offset);
     void retire(uint32_t id);
     bool find_cycle_cut(uint32_t q, uint32_t& cut, uint32_t& by) const;
+    /// Cuts polygon `id` along the line of the first edge of `by` whose line crosses it;
+    /// false when none does.
+    bool split_by_edge_line(uint32_t id, uint32_t by);
 
     std::vector<PolygonVertex> m_vertices;
     std::vector<Polygon> m_polygons;
@@ -220,6 +223,32 @@ bool DepthSorter::find_cycle_cut(uint32_t q, uint32_t& cut, uint32_t& by) const 
     return false;
 }
 
+bool DepthSorter::split_by_edge_line(uint32_t id, uint32_t by) {
+    const auto bv = vertices(m_polygons[by]);
+    for (size_t k = 0; k < bv.size(); ++k) {
+        const PolygonVertex u = bv[k], w = bv[(k + 1) % bv.size()];
+        // signed distance (times the edge length) of v from the line through u and w
+        auto offset = [u, w](const PolygonVertex& v, double& tolerance) {
+            const double ex = w.x - u.x, ey = w.y - u.y;
+            tolerance = k_side_epsilon * (1 + std::abs(ex) + std::abs(ey)) *
+                        (1 + std::abs(v.x - u.x) + std::abs(v.y - u.y));
+            return ex * (v.y - u.y) - ey * (v.x - u.x);
+        };
+        bool below = false, above = false;
+        for (const PolygonVertex& v : vertices(m_polygons[id])) {
+            double tolerance = 0;
+            const double d = offset(v, tolerance);
+            below |= d < -tolerance;
+            above |= d > tolerance;
+        }
+        if (below && above) {
+            split(id, offset);
+            return true;
+        }
+    }
+    return false;
+}
+
 void DepthSorter::retire(uint32_t id) {
     m_retired[id] = 1;
     --m_alive;
@@ -322,8 +351,12 @@ void DepthSorter::sort() {
                     });
                     break;
                 }
-                // no plane cuts it: halve P across its longer extent, so that each half takes
-                // part in fewer overlaps of the cycle
+                // No plane cuts it: cut P (or Q) along the screen-space line of an edge of the
+                // other. The pieces outside the other's projection no longer overlap it, and
+                // the piece inside lies wholly in front of or behind it, so the cycle breaks.
+                // (Halving instead keeps a piece on the other's boundary forever.)
+                if (split_by_edge_line(p, q) || split_by_edge_line(q, p)) break;
+                // last resort: halve P across its longer extent
                 const Polygon& pp = m_polygons[p];
                 const bool along_x = pp.x_max - pp.x_min >= pp.y_max - pp.y_min;
                 const double mid =

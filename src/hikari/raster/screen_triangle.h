@@ -15,9 +15,10 @@ namespace hikari {
 /// One vertex after projection.
 struct ScreenVertex {
     /// x, y in pixels with (0, 0) the top-left corner of the image (pixel (i, j) has its centre at
-    /// (i + 0.5, j + 0.5)); z = NDC depth mapped to [0, 1], 0 at the near plane. A perspective
-    /// projection keeps planes planar, so z is an affine function of (x, y) across a triangle:
-    /// depth comparisons and plane tests may be done in this space directly.
+    /// (i + 0.5, j + 0.5)); z = −near / w_clip, a depth key in [−1, 0) that is smaller for nearer
+    /// points. 1/w is an affine function of (x, y) across a projected triangle (perspective keeps
+    /// planes planar), so depth comparisons and plane tests may be done in this space directly;
+    /// unlike NDC z, which crowds toward 1 when far/near is large, it keeps full float precision.
     Vec3 position;
     /// 1 / w_clip (= 1 / view-space depth), for perspective-correct interpolation.
     float inv_w = 1;

@@ -41,7 +41,11 @@ int project_one(const ProjectedScene& ps, uint32_t t, bool cull, ScreenTriangle*
         for (int i = 0; i < poly.count; ++i) {
             const float inv_w = 1.0f / poly.v[i].w;
             const Vec3 ndc = poly.v[i].xyz() * inv_w;
-            sv[i] = {transform_point(ps.view.screen_from_clip, ndc), inv_w};
+            Vec3 screen = transform_point(ps.view.screen_from_clip, ndc);
+            // Depth key −near/w rather than NDC z: both are affine across the triangle, but
+            // NDC z crowds toward 1 (float spacing 6e-8) when far/near is large.
+            screen.z = -ps.view.near_plane * inv_w;
+            sv[i] = {screen, inv_w};
         }
         for (int i = 1; i + 1 < poly.count; ++i) out[i - 1] = {{sv[0], sv[i], sv[i + 1]}, t};
     }
