@@ -38,8 +38,8 @@ Scene random_triangles(unsigned seed, int count, float spread = 1.2f) {
         for (int k = 0; k < 3; ++k)
             vertices += fmt::format("{}[{}, {}, {}]", k ? ", " : "", cx + jitter(rng),
                                     cy + jitter(rng), cz + 2 * jitter(rng));
-        objects += fmt::format("{}{{\"type\": \"triangle\", \"vertices\": [{}]}}",
-                               i ? ", " : "", vertices);
+        objects += fmt::format("{}{{\"type\": \"triangle\", \"vertices\": [{}]}}", i ? ", " : "",
+                               vertices);
     }
     const std::string json = fmt::format(
         R"({{"camera": {{"fov_y": 60, "width": 256, "height": 256}}, "ambient": 1,

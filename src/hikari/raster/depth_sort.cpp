@@ -412,12 +412,13 @@ VisibilityBuffer depth_sort_naive_visibility(std::span<const ScreenTriangle> tri
         const auto& v = triangles[t].v;
         const double centroid_z =
             (double{v[0].position.z} + v[1].position.z + v[2].position.z) / 3.0;
-        if (std::isfinite(centroid_z)) order.push_back({centroid_z, t});
+        if (std::isfinite(centroid_z)) order.emplace_back(centroid_z, t);
     }
     std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
         return a.first != b.first ? a.first > b.first : a.second < b.second;
     });
-    for (const auto& [z, t] : order) {
+    for (const auto& entry : order) {
+        const uint32_t t = entry.second;
         PolygonVertex tri[3];
         for (int k = 0; k < 3; ++k) {
             const Vec3 p = triangles[t].v[k].position;

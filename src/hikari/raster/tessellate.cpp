@@ -95,9 +95,8 @@ void tessellate_plane(const Plane& plane, Vec3 eye, float half_extent, TriangleS
     }
     const auto base = static_cast<uint32_t>(out.positions.size());
     constexpr int n = 2 * k_steps + 1;
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i)
-            push_vertex(out, foot + coord[i] * u + coord[j] * v, plane.normal);
+    for (const float cj : coord)
+        for (const float ci : coord) push_vertex(out, foot + ci * u + cj * v, plane.normal);
     for (int j = 0; j + 1 < n; ++j)
         for (int i = 0; i + 1 < n; ++i) {
             const uint32_t a = base + j * n + i, b = a + 1, c = a + n, d = c + 1;
