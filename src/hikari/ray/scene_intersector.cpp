@@ -1,15 +1,20 @@
 #include "hikari/ray/scene_intersector.h"
 
+#include <chrono>
 #include <cmath>
 
-#include "hikari/ray/bvh_builder.h"
-#include "hikari/ray/bvh_traversal.h"
 #include "hikari/ray/intersect.h"
+#include "hikari/ray/wide_bvh_builder.h"
+#include "hikari/ray/wide_bvh_traversal.h"
 
 namespace hikari {
 
-SceneIntersector::SceneIntersector(const Scene& scene)
-    : m_scene(scene), m_bvh(build_bvh(scene.triangles.positions, scene.triangles.indices)) {}
+SceneIntersector::SceneIntersector(const Scene& scene) : m_scene(scene) {
+    const auto start = std::chrono::steady_clock::now();
+    m_bvh = build_wide_bvh(scene.triangles.positions, scene.triangles.indices);
+    m_build_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
 
 bool SceneIntersector::closest(const Ray& ray, Interval range, SurfaceHit& hit) const {
     enum class Kind { none, sphere, plane, triangle } kind = Kind::none;
