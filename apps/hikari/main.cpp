@@ -1,4 +1,4 @@
-// The hikari command line: `hikari render [SCENE] [options]`.
+// The hikari command line: `hikari render [SCENE] [options]`, `hikari bench B1|B2 --mesh FILE`.
 
 #include <unistd.h>
 
@@ -15,6 +15,7 @@
 #include <tbb/global_control.h>
 #include <CLI/CLI.hpp>
 
+#include "hikari/bench/bench_runner.h"
 #include "hikari/core/error.h"
 #include "hikari/io/atomic_file.h"
 #include "hikari/io/image_write.h"
@@ -188,6 +189,34 @@ int run_render(const RenderOptions& o) {
     return 0;
 }
 
+struct BenchOptions {
+    std::string bench;
+    std::string mesh;
+    std::string simd = "auto";
+    int threads = 1;
+    int repetitions = 5;
+};
+
+/// `hikari bench`: one JSON object on stdout (SPEC's B1 or B2 on one mesh).
+int run_bench_command(const BenchOptions& o) {
+    BenchSettings settings;
+    settings.bench = o.bench;
+    settings.threads = o.threads;
+    settings.repetitions = o.repetitions;
+    if (o.simd != "auto") {
+        settings.simd = o.simd == "avx512" ? SimdLevel::avx512
+                        : o.simd == "avx2" ? SimdLevel::avx2
+                                           : SimdLevel::portable;
+        if (!simd_level_supported(settings.simd))
+            throw InputError(fmt::format("this CPU cannot run --simd {}", o.simd));
+    }
+    const BenchMesh mesh = load_bench_mesh(o.mesh);
+    const BenchResult result =
+        run_bench(mesh, std::filesystem::path(o.mesh).stem().string(), settings);
+    fmt::print("{}\n", result.to_json());
+    return 0;
+}
+
 std::string method_list() {
     std::string text = "Methods:\n";
     for (const Method& m : methods()) text += fmt::format("  {:<16}{}\n", m.name, m.summary);
@@ -256,6 +285,25 @@ int main(int argc, char** argv) {
     render->add_flag("-q,--quiet", o.quiet, "No progress or summary on stderr");
     render->footer(method_list());
 
+    BenchOptions b;
+    CLI::App* bench = app.add_subcommand(
+        "bench", "Run a peer benchmark (bench/SPEC.md) and print one JSON object on stdout.");
+    bench->add_option("name", b.bench, "B1 (primary rays, closest hit) or B2 (occlusion rays)")
+        ->required()
+        ->check(CLI::IsMember({"B1", "B2"}));
+    bench->add_option("--mesh", b.mesh, "OBJ mesh (positions and faces are read)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    bench->add_option("--threads", b.threads, "Threads for build and trace")
+        ->check(CLI::Range(1, 1024))
+        ->capture_default_str();
+    bench->add_option("--reps", b.repetitions, "Timed repetitions after one warm-up")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
+    bench->add_option("--simd", b.simd, "Traversal kernel: auto (best), portable, avx2, avx512")
+        ->check(CLI::IsMember({"auto", "portable", "avx2", "avx512"}))
+        ->capture_default_str();
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -272,6 +320,7 @@ int main(int argc, char** argv) {
     install_signal_handlers();
     try {
         if (render->parsed()) return run_render(o);
+        if (bench->parsed()) return run_bench_command(b);
     } catch (const Interrupted&) {
         fmt::print(stderr, "\nhikari: interrupted; no image written\n");
         return k_exit_interrupted;
