@@ -27,7 +27,8 @@ class SceneIntersector {
 
     /// The nearest hit of `ray` inside `range`, if any (the lecture's 可視点, Alg 4.3).
     bool closest(const Ray& ray, Interval range, SurfaceHit& hit) const;
-    /// Whether anything blocks `ray` inside `range` (shadow rays stop at the first blocker).
+    /// Whether anything that casts shadows blocks `ray` inside `range` (shadow rays stop at the
+    /// first blocker; objects with casts_shadow false are ignored).
     bool occluded(const Ray& ray, Interval range) const;
 
     /// The wide BVH over the scene's triangles.
@@ -40,6 +41,8 @@ class SceneIntersector {
 
     const Scene& m_scene;
     WideBvh m_bvh;
+    WideBvh m_shadow_bvh;      ///< the shadow-casting triangles, when some do not cast
+    bool m_all_cast = true;    ///< every triangle casts: shadow rays use m_bvh
     double m_build_ms = 0;
 };
 

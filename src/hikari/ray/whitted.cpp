@@ -1,6 +1,7 @@
 #include "hikari/ray/whitted.h"
 
 #include <cmath>
+#include <optional>
 
 #include "hikari/core/rng.h"
 #include "hikari/ray/ray_offset.h"
@@ -33,11 +34,27 @@ Vec3 shade_local(const TraceContext& ctx, const Material& m, Vec3 p, Vec3 n, Vec
     return colour;
 }
 
+/// The material at a textured point: ka and kd scaled by the texture's colour there. A copy
+/// without the name (an empty string allocates nothing).
+Material textured(const Material& m, Vec3 p) {
+    Material out;
+    const Vec3 c = m.texture->at(p);
+    out.ka = m.ka * c;
+    out.kd = m.kd * c;
+    out.ks = m.ks;
+    out.shininess = m.shininess;
+    out.reflectivity = m.reflectivity;
+    out.transparency = m.transparency;
+    out.ior = m.ior;
+    return out;
+}
+
 /// Colour seen along `ray`, which is segment number `segment` of its path (primary = 1).
 /// Returns the primary hit through `first_hit` when asked (for the AOVs).
 Vec3 trace(const TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* first_hit = nullptr) {
     SurfaceHit hit;
-    if (!ctx.intersector.closest(ray, {0.0f, k_infinity}, hit)) return ctx.scene.background;
+    if (!ctx.intersector.closest(ray, {0.0f, k_infinity}, hit))
+        return ctx.scene.sky.colour(ray.direction, ctx.scene.background);
     if (first_hit) *first_hit = hit;
 
     // Face the normals toward the incoming ray: planes and triangles are two-sided, and a ray
@@ -47,23 +64,26 @@ Vec3 trace(const TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* fir
     Vec3 n = entering ? hit.shading_normal : -hit.shading_normal;
     if (dot(n, ray.direction) > 0.0f) n = ng;  // interpolated normal turned away: use the true one
 
-    const Material& m = ctx.scene.materials[hit.material];
+    const Material& material = ctx.scene.materials[hit.material];
+    Material local;
+    const Material* textured_material = &material;
+    if (material.texture) textured_material = &(local = textured(material, hit.position));
+    const Material& m = *textured_material;
     Vec3 colour = shade_local(ctx, m, hit.position, n, ng, -ray.direction);
     if (segment >= ctx.max_depth) return colour;
 
     const Vec3 mirror = reflect(ray.direction, n);
-    if (m.reflectivity > 0.0f)
-        colour +=
-            m.reflectivity * trace(ctx, {offset_ray_origin(hit.position, ng), mirror}, segment + 1);
-    if (m.transparency > 0.0f) {
-        const float eta = entering ? 1.0f / m.ior : m.ior;
-        if (const auto refracted = refract(ray.direction, n, eta))
-            colour += m.transparency *
-                      trace(ctx, {offset_ray_origin(hit.position, -ng), *refracted}, segment + 1);
-        else  // total internal reflection: all the transmitted light is reflected instead
-            colour += m.transparency *
-                      trace(ctx, {offset_ray_origin(hit.position, ng), mirror}, segment + 1);
-    }
+    std::optional<Vec3> refracted;
+    if (m.transparency > 0.0f) refracted = refract(ray.direction, n, entering ? 1.0f / m.ior : m.ior);
+    // On total internal reflection the mirror ray takes the transmitted weight and the
+    // reflectivity term is dropped (POV-Ray's rule), so the mirror ray is traced once.
+    const bool total_internal = m.transparency > 0.0f && !refracted;
+    const float mirror_weight = total_internal ? m.transparency : m.reflectivity;
+    if (mirror_weight > 0.0f)
+        colour += mirror_weight * trace(ctx, {offset_ray_origin(hit.position, ng), mirror}, segment + 1);
+    if (refracted)
+        colour += m.transparency *
+                  trace(ctx, {offset_ray_origin(hit.position, -ng), *refracted}, segment + 1);
     return colour;
 }
 
