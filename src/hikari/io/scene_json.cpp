@@ -54,7 +54,8 @@ Camera parse_camera(const JsonNode& node) {
 CheckerTexture parse_texture(const JsonNode& node) {
     const std::string type = node.at("type").as_string();
     if (type != "checker")
-        node.at("type").fail(fmt::format("unknown texture type \"{}\" (expected \"checker\")", type));
+        node.at("type").fail(
+            fmt::format("unknown texture type \"{}\" (expected \"checker\")", type));
     node.expect_object({"type", "size", "color_a", "color_b", "offset"});
     CheckerTexture t;
     if (node.has("size")) t.size = node.at("size").as_positive();
@@ -291,8 +292,8 @@ Scene parse_scene(std::string_view text, const std::string& file,
                   const std::filesystem::path& base_dir, std::vector<std::string>& warnings) {
     const nlohmann::json doc = parse_json(text, file);
     const JsonNode root(doc, file, "");
-    root.expect_object(
-        {"description", "camera", "background", "sky", "ambient", "materials", "lights", "objects"});
+    root.expect_object({"description", "camera", "background", "sky", "ambient", "materials",
+                        "lights", "objects"});
     SceneBuilder b{Scene{}, {}, base_dir, warnings};
     if (root.has("description")) root.at("description").as_string();
     if (root.has("camera")) b.scene.camera = parse_camera(root.at("camera"));

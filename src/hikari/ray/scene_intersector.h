@@ -41,8 +41,8 @@ class SceneIntersector {
 
     const Scene& m_scene;
     WideBvh m_bvh;
-    WideBvh m_shadow_bvh;      ///< the shadow-casting triangles, when some do not cast
-    bool m_all_cast = true;    ///< every triangle casts: shadow rays use m_bvh
+    WideBvh m_shadow_bvh;    ///< the shadow-casting triangles, when some do not cast
+    bool m_all_cast = true;  ///< every triangle casts: shadow rays use m_bvh
     double m_build_ms = 0;
 };
 

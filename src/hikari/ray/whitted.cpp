@@ -74,13 +74,15 @@ Vec3 trace(const TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* fir
 
     const Vec3 mirror = reflect(ray.direction, n);
     std::optional<Vec3> refracted;
-    if (m.transparency > 0.0f) refracted = refract(ray.direction, n, entering ? 1.0f / m.ior : m.ior);
+    if (m.transparency > 0.0f)
+        refracted = refract(ray.direction, n, entering ? 1.0f / m.ior : m.ior);
     // On total internal reflection the mirror ray takes the transmitted weight and the
     // reflectivity term is dropped (POV-Ray's rule), so the mirror ray is traced once.
     const bool total_internal = m.transparency > 0.0f && !refracted;
     const float mirror_weight = total_internal ? m.transparency : m.reflectivity;
     if (mirror_weight > 0.0f)
-        colour += mirror_weight * trace(ctx, {offset_ray_origin(hit.position, ng), mirror}, segment + 1);
+        colour +=
+            mirror_weight * trace(ctx, {offset_ray_origin(hit.position, ng), mirror}, segment + 1);
     if (refracted)
         colour += m.transparency *
                   trace(ctx, {offset_ray_origin(hit.position, -ng), *refracted}, segment + 1);
