@@ -3,6 +3,7 @@
 #include <tbb/task_arena.h>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -147,11 +148,13 @@ std::string BenchResult::to_json() const {
         R"({{"bench": "{}", "mesh": "{}", "threads": {}, "triangles": {}, "rays": {}, )"
         R"("mrays_per_s": {:.3f}, "mrays_min": {:.3f}, "mrays_max": {:.3f}, "trace_ms": {:.3f}, )"
         R"("build_ms": {:.3f}, "build_ms_min": {:.3f}, "build_ms_max": {:.3f}, )"
-        R"("bvh_bytes_per_triangle": {:.2f}, "simd": "{}", )",
+        R"("bvh_bytes_per_triangle": {:.2f}, "simd": "{}", "build_samples_ms": [{:.3f}], )"
+        R"("trace_samples_ms": [{:.3f}], )",
         bench, mesh, threads, triangles, rays, mrays(med), trace_ms.empty() ? 0.0 : mrays(*slow),
         trace_ms.empty() ? 0.0 : mrays(*fast), med, median(build_ms),
         build_ms.empty() ? 0.0 : *bmin, build_ms.empty() ? 0.0 : *bmax,
-        triangles ? bvh_bytes / double(triangles) : 0.0, simd);
+        triangles ? bvh_bytes / double(triangles) : 0.0, simd, fmt::join(build_ms, ", "),
+        fmt::join(trace_ms, ", "));
     if (bench == "B1")
         s += fmt::format(R"("hits": {}, "mean_t": {:.6f}}})", hits, mean_t);
     else
