@@ -21,7 +21,8 @@ int main(int argc, char** argv) {
         }
     }
     if (w[0] != w[1] || h[0] != h[1]) {
-        std::fprintf(stderr, "hikari_psnr: sizes differ (%dx%d vs %dx%d)\n", w[0], h[0], w[1], h[1]);
+        std::fprintf(stderr, "hikari_psnr: sizes differ (%dx%d vs %dx%d)\n", w[0], h[0], w[1],
+                     h[1]);
         return 1;
     }
     const size_t count = size_t(w[0]) * h[0] * 3;
