@@ -46,6 +46,7 @@ struct RenderOptions {
     int max_depth = 5;
     double max_memory_gib = 0;
     bool quiet = false;
+    bool stats = false;
 };
 
 RenderControl g_control;
@@ -143,6 +144,24 @@ std::string default_output(const RenderOptions& o) {
     return stem + (o.aov == "color" ? "" : "-" + o.aov) + ".png";
 }
 
+/// `--stats`: render time, rays per second and the BVH's figures, on stderr.
+void print_stats(double seconds) {
+    const uint64_t rays = g_control.rays_traced.load();
+    fmt::print(stderr, "hikari: stats: render {:.3f} s", seconds);
+    if (rays > 0)
+        fmt::print(stderr, ", {} rays, {:.2f} Mrays/s", rays, 1e-6 * double(rays) / seconds);
+    fmt::print(stderr, "\n");
+    const uint64_t triangles = g_control.bvh_triangles.load();
+    if (triangles > 0)
+        fmt::print(stderr,
+                   "hikari: stats: BVH {} triangles, {} nodes (8-wide), {:.1f} bytes/triangle, "
+                   "built in {:.1f} ms, {} kernels\n",
+                   triangles, g_control.bvh_nodes.load(),
+                   double(g_control.bvh_bytes.load()) / double(triangles),
+                   1e-3 * double(g_control.bvh_build_us.load()),
+                   simd_level_name(best_simd_level()));
+}
+
 int run_render(const RenderOptions& o) {
     const Method* method = find_method(o.method);  // validated by CLI11 already
     const std::string output = o.output.empty() ? default_output(o) : o.output;
@@ -186,6 +205,7 @@ int run_render(const RenderOptions& o) {
     if (!o.quiet)
         fmt::print(stderr, "hikari: wrote {} ({}x{}, {}, {:.3f} s)\n", output, fb.width(),
                    fb.height(), method->name, seconds);
+    if (o.stats) print_stats(seconds);
     return 0;
 }
 
@@ -283,6 +303,8 @@ int main(int argc, char** argv) {
                      "(default: half the machine's memory)")
         ->check(CLI::PositiveNumber);
     render->add_flag("-q,--quiet", o.quiet, "No progress or summary on stderr");
+    render->add_flag("--stats", o.stats,
+                     "Print render time, rays per second and BVH figures on stderr");
     render->footer(method_list());
 
     BenchOptions b;

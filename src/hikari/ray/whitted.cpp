@@ -14,20 +14,24 @@ namespace hikari {
 
 namespace {
 
+/// What every ray of a render reads, plus the ray count of the tile being rendered (each tile
+/// works on its own copy, so counting needs no atomics per ray).
 struct TraceContext {
     const Scene& scene;
     const SceneIntersector& intersector;
     int max_depth;
+    uint64_t rays = 0;
 };
 
 /// The local (direct) illumination of a hit: ambient, then each light that a shadow ray
 /// finds unblocked.
-Vec3 shade_local(const TraceContext& ctx, const Material& m, Vec3 p, Vec3 n, Vec3 ng, Vec3 to_eye) {
+Vec3 shade_local(TraceContext& ctx, const Material& m, Vec3 p, Vec3 n, Vec3 ng, Vec3 to_eye) {
     Vec3 colour = shade_ambient(m, ctx.scene.ambient);
     const Vec3 shadow_origin = offset_ray_origin(p, ng);
     for (const Light& light : ctx.scene.lights) {
         const LightSample ls = sample_light(light, p);
         if (dot(n, ls.to_light) <= 0.0f) continue;
+        ++ctx.rays;
         if (ctx.intersector.occluded({shadow_origin, ls.to_light}, {0.0f, ls.distance})) continue;
         colour += shade_direct(m, n, ls.to_light, to_eye, ls.irradiance);
     }
@@ -51,7 +55,8 @@ Material textured(const Material& m, Vec3 p) {
 
 /// Colour seen along `ray`, which is segment number `segment` of its path (primary = 1).
 /// Returns the primary hit through `first_hit` when asked (for the AOVs).
-Vec3 trace(const TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* first_hit = nullptr) {
+Vec3 trace(TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* first_hit = nullptr) {
+    ++ctx.rays;
     SurfaceHit hit;
     if (!ctx.intersector.closest(ray, {0.0f, k_infinity}, hit))
         return ctx.scene.sky.colour(ray.direction, ctx.scene.background);
@@ -102,13 +107,21 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
     const Camera& cam = scene.camera;
     Framebuffer fb(cam.width, cam.height, scene.background);
     const SceneIntersector intersector(scene);
-    const TraceContext ctx{scene, intersector, settings.max_depth};
+    const TraceContext shared{scene, intersector, settings.max_depth};
+    if (RenderControl* control = settings.control) {
+        const WideBvh& bvh = intersector.bvh();
+        control->bvh_triangles = bvh.triangle_count();
+        control->bvh_nodes = bvh.nodes.size();
+        control->bvh_bytes = bvh.memory_bytes();
+        control->bvh_build_us = static_cast<uint64_t>(intersector.build_ms() * 1000.0);
+    }
     const CameraFrame frame = make_camera_frame(cam);
     const int spp = settings.samples_per_pixel;
     int cols = 1, rows = 1;
     strata(spp, cols, rows);
 
     for_each_tile(cam.width, cam.height, settings.control, [&](const Tile& tile) {
+        TraceContext ctx = shared;
         for (int y = tile.y0; y < tile.y1; ++y)
             for (int x = tile.x0; x < tile.x1; ++x) {
                 const size_t i = static_cast<size_t>(y) * cam.width + x;
@@ -123,6 +136,7 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
                     // The AOVs describe the pixel centre; colour averages jittered samples, one
                     // in each stratum, from a stream seeded by the pixel alone.
                     intersector.closest(centre, {0.0f, k_infinity}, first);
+                    ++ctx.rays;
                     Pcg32 rng(i, 0x68696b617269ULL);
                     for (int s = 0; s < spp; ++s) {
                         const int column = s % cols, row = s / cols;
@@ -141,6 +155,7 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
                                        : -first.shading_normal;
                 }
             }
+        if (settings.control) settings.control->rays_traced += ctx.rays;
     });
     return fb;
 }
