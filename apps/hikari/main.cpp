@@ -1,4 +1,4 @@
-// The hikari command line: `hikari render [SCENE] [options]`.
+// The hikari command line: `hikari render [SCENE] [options]`, `hikari bench B1|B2 --mesh FILE`.
 
 #include <unistd.h>
 
@@ -15,6 +15,7 @@
 #include <tbb/global_control.h>
 #include <CLI/CLI.hpp>
 
+#include "hikari/bench/bench_runner.h"
 #include "hikari/core/error.h"
 #include "hikari/io/atomic_file.h"
 #include "hikari/io/image_write.h"
@@ -45,6 +46,7 @@ struct RenderOptions {
     int max_depth = 5;
     double max_memory_gib = 0;
     bool quiet = false;
+    bool stats = false;
 };
 
 RenderControl g_control;
@@ -165,6 +167,24 @@ void check_output_path(const std::filesystem::path& output) {
         throw InputError(fmt::format("{}: cannot write: it is a directory", output.string()));
 }
 
+/// `--stats`: render time, rays per second and the BVH's figures, on stderr.
+void print_stats(double seconds) {
+    const uint64_t rays = g_control.rays_traced.load();
+    fmt::print(stderr, "hikari: stats: render {:.3f} s", seconds);
+    if (rays > 0)
+        fmt::print(stderr, ", {} rays, {:.2f} Mrays/s", rays, 1e-6 * double(rays) / seconds);
+    fmt::print(stderr, "\n");
+    const uint64_t triangles = g_control.bvh_triangles.load();
+    if (triangles > 0)
+        fmt::print(stderr,
+                   "hikari: stats: BVH {} triangles, {} nodes (8-wide), {:.1f} bytes/triangle, "
+                   "built in {:.1f} ms, {} kernels\n",
+                   triangles, g_control.bvh_nodes.load(),
+                   double(g_control.bvh_bytes.load()) / double(triangles),
+                   1e-3 * double(g_control.bvh_build_us.load()),
+                   simd_level_name(best_simd_level()));
+}
+
 int run_render(const RenderOptions& o) {
     const Method* method = find_method(o.method);  // validated by CLI11 already
     const std::string output = o.output.empty() ? default_output(o) : o.output;
@@ -206,6 +226,35 @@ int run_render(const RenderOptions& o) {
     if (!o.quiet)
         fmt::print(stderr, "hikari: wrote {} ({}x{}, {}, {:.3f} s)\n", output, fb.width(),
                    fb.height(), method->name, seconds);
+    if (o.stats) print_stats(seconds);
+    return 0;
+}
+
+struct BenchOptions {
+    std::string bench;
+    std::string mesh;
+    std::string simd = "auto";
+    int threads = 1;
+    int repetitions = 5;
+};
+
+/// `hikari bench`: one JSON object on stdout (SPEC's B1 or B2 on one mesh).
+int run_bench_command(const BenchOptions& o) {
+    BenchSettings settings;
+    settings.bench = o.bench;
+    settings.threads = o.threads;
+    settings.repetitions = o.repetitions;
+    if (o.simd != "auto") {
+        settings.simd = o.simd == "avx512" ? SimdLevel::avx512
+                        : o.simd == "avx2" ? SimdLevel::avx2
+                                           : SimdLevel::portable;
+        if (!simd_level_supported(settings.simd))
+            throw InputError(fmt::format("this CPU cannot run --simd {}", o.simd));
+    }
+    const BenchMesh mesh = load_bench_mesh(o.mesh);
+    const BenchResult result =
+        run_bench(mesh, std::filesystem::path(o.mesh).stem().string(), settings);
+    fmt::print("{}\n", result.to_json());
     return 0;
 }
 
@@ -275,7 +324,28 @@ int main(int argc, char** argv) {
                      "(default: half the machine's memory)")
         ->check(CLI::PositiveNumber);
     render->add_flag("-q,--quiet", o.quiet, "No progress or summary on stderr");
+    render->add_flag("--stats", o.stats,
+                     "Print render time, rays per second and BVH figures on stderr");
     render->footer(method_list());
+
+    BenchOptions b;
+    CLI::App* bench = app.add_subcommand(
+        "bench", "Run a peer benchmark (bench/SPEC.md) and print one JSON object on stdout.");
+    bench->add_option("name", b.bench, "B1 (primary rays, closest hit) or B2 (occlusion rays)")
+        ->required()
+        ->check(CLI::IsMember({"B1", "B2"}));
+    bench->add_option("--mesh", b.mesh, "OBJ mesh (positions and faces are read)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    bench->add_option("--threads", b.threads, "Threads for build and trace")
+        ->check(CLI::Range(1, 1024))
+        ->capture_default_str();
+    bench->add_option("--reps", b.repetitions, "Timed repetitions after one warm-up")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
+    bench->add_option("--simd", b.simd, "Traversal kernel: auto (best), portable, avx2, avx512")
+        ->check(CLI::IsMember({"auto", "portable", "avx2", "avx512"}))
+        ->capture_default_str();
 
     try {
         app.parse(argc, argv);
@@ -293,6 +363,7 @@ int main(int argc, char** argv) {
     install_signal_handlers();
     try {
         if (render->parsed()) return run_render(o);
+        if (bench->parsed()) return run_bench_command(b);
     } catch (const Interrupted&) {
         fmt::print(stderr, "\nhikari: interrupted; no image written\n");
         return k_exit_interrupted;

@@ -164,4 +164,34 @@ TEST_F(Cli, RasterOptionsRenderAndRejectBadValues) {
     EXPECT_EQ(file_count(), 1u);
 }
 
+TEST_F(Cli, StatsReportRaysAndBvh) {
+    write("tri.json", R"({"camera": {"width": 8, "height": 8}, "objects": [
+        {"type": "triangle", "vertices": [[-1, -1, -2], [1, -1, -2], [0, 1, -2]]}]})");
+    const Result r = run("render " + path("tri.json") + " --stats -o " + path("t.png"));
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("Mrays/s"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("BVH 1 triangles"), std::string::npos) << r.output;
+}
+
+TEST_F(Cli, BenchPrintsOneJsonObject) {
+    write("quad.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n");
+    const Result r =
+        run("bench B1 --mesh " + path("quad.obj") + " --threads 2 --reps 1 2>/dev/null");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(r.output.front(), '{');
+    for (const char* key : {"\"bench\": \"B1\"", "\"mesh\": \"quad\"", "\"threads\": 2",
+                            "\"mrays_per_s\"", "\"build_ms\"", "\"hits\"", "\"mean_t\""})
+        EXPECT_NE(r.output.find(key), std::string::npos) << key << " in " << r.output;
+    const Result b2 = run("bench B2 --mesh " + path("quad.obj") + " --reps 1 2>/dev/null");
+    EXPECT_NE(b2.output.find("\"occluded_fraction\""), std::string::npos) << b2.output;
+}
+
+TEST_F(Cli, BenchUsageErrorsExitTwo) {
+    EXPECT_EQ(run("bench B9 --mesh x.obj").status, 2);
+    EXPECT_EQ(run("bench B1").status, 2);
+    EXPECT_EQ(run("bench B1 --mesh " + path("missing.obj")).status, 2);
+    write("quad.obj", "v 0 0 0\n");
+    EXPECT_EQ(run("bench B1 --mesh " + path("quad.obj") + " --threads 0").status, 2);
+}
+
 }  // namespace

@@ -100,6 +100,11 @@ float JsonNode::as_positive() const {
     return as_number();
 }
 
+bool JsonNode::as_bool() const {
+    if (!m_value.is_boolean()) fail("expected true or false");
+    return m_value.get<bool>();
+}
+
 float JsonNode::as_non_negative() const {
     if (!m_value.is_number() || !(m_value.get<double>() >= 0)) fail("expected a number >= 0");
     return as_number();

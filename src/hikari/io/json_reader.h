@@ -38,6 +38,8 @@ class JsonNode {
     void expect_array(size_t size = 0) const;
 
     std::string as_string() const;
+    /// true or false.
+    bool as_bool() const;
     /// A finite number.
     float as_number() const;
     /// A finite number > 0.

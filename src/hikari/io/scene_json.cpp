@@ -51,8 +51,36 @@ Camera parse_camera(const JsonNode& node) {
     return c;
 }
 
+CheckerTexture parse_texture(const JsonNode& node) {
+    const std::string type = node.at("type").as_string();
+    if (type != "checker")
+        node.at("type").fail(
+            fmt::format("unknown texture type \"{}\" (expected \"checker\")", type));
+    node.expect_object({"type", "size", "color_a", "color_b", "offset"});
+    CheckerTexture t;
+    if (node.has("size")) t.size = node.at("size").as_positive();
+    if (node.has("color_a")) t.color_a = node.at("color_a").as_colour();
+    if (node.has("color_b")) t.color_b = node.at("color_b").as_colour();
+    if (node.has("offset")) t.offset = node.at("offset").as_vec3();
+    return t;
+}
+
+Sky parse_sky(const JsonNode& node) {
+    const std::string type = node.at("type").as_string();
+    if (type != "gradient")
+        node.at("type").fail(fmt::format("unknown sky type \"{}\" (expected \"gradient\")", type));
+    node.expect_object({"type", "horizon", "zenith"});
+    return {true, node.at("horizon").as_colour(), node.at("zenith").as_colour()};
+}
+
+/// An object's optional "casts_shadow" (default true).
+bool casts_shadow(const JsonNode& object) {
+    return !object.has("casts_shadow") || object.at("casts_shadow").as_bool();
+}
+
 Material parse_material(const JsonNode& node, std::string name) {
-    node.expect_object({"ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior"});
+    node.expect_object(
+        {"ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior", "texture"});
     Material m;
     m.name = std::move(name);
     if (node.has("ka")) m.ka = node.at("ka").as_colour();
@@ -62,14 +90,24 @@ Material parse_material(const JsonNode& node, std::string name) {
     if (node.has("reflectivity")) m.reflectivity = node.at("reflectivity").as_non_negative();
     if (node.has("transparency")) m.transparency = node.at("transparency").as_non_negative();
     if (node.has("ior")) m.ior = node.at("ior").as_positive();
+    if (node.has("texture")) m.texture = parse_texture(node.at("texture"));
     return m;
 }
 
 Light parse_light(const JsonNode& node) {
     const std::string type = node.at("type").as_string();
     if (type == "point") {
-        node.expect_object({"type", "position", "intensity"});
-        return PointLight{node.at("position").as_vec3(), node.at("intensity").as_colour()};
+        node.expect_object({"type", "position", "intensity", "falloff"});
+        bool inverse_square = true;
+        if (node.has("falloff")) {
+            const std::string f = node.at("falloff").as_string();
+            if (f != "inverse_square" && f != "none")
+                node.at("falloff").fail(fmt::format(
+                    "unknown falloff \"{}\" (expected \"inverse_square\" or \"none\")", f));
+            inverse_square = f == "inverse_square";
+        }
+        return PointLight{node.at("position").as_vec3(), node.at("intensity").as_colour(),
+                          inverse_square};
     }
     if (type == "directional") {
         node.expect_object({"type", "direction", "intensity"});
@@ -138,7 +176,7 @@ PrimitiveId next_id(SceneBuilder& b) { return b.scene.primitive_count++; }
 
 /// Appends one triangle with vertex positions `p` and normals `n` to the scene.
 void add_triangle(SceneBuilder& b, const std::array<Vec3, 3>& p, const std::array<Vec3, 3>& n,
-                  uint32_t material, PrimitiveId id) {
+                  uint32_t material, PrimitiveId id, bool shadow) {
     TriangleSet& t = b.scene.triangles;
     const auto base = static_cast<uint32_t>(t.positions.size());
     for (int k = 0; k < 3; ++k) {
@@ -148,13 +186,14 @@ void add_triangle(SceneBuilder& b, const std::array<Vec3, 3>& p, const std::arra
     t.indices.push_back({base, base + 1, base + 2});
     t.material.push_back(material);
     t.id.push_back(id);
+    t.casts_shadow.push_back(shadow ? 1 : 0);
 }
 
 /// The lecture's face normal N = (P2 − P1) × (P3 − P2) (Fig 4.5), not normalized.
 Vec3 face_normal(Vec3 p1, Vec3 p2, Vec3 p3) { return cross(p2 - p1, p3 - p2); }
 
 void parse_triangle(SceneBuilder& b, const JsonNode& node) {
-    node.expect_object({"type", "name", "vertices", "material", "transform"});
+    node.expect_object({"type", "name", "vertices", "material", "transform", "casts_shadow"});
     const JsonNode v = node.at("vertices");
     v.expect_array(3);
     std::array<Vec3, 3> p{v.at(size_t{0}).as_vec3(), v.at(1).as_vec3(), v.at(2).as_vec3()};
@@ -165,11 +204,13 @@ void parse_triangle(SceneBuilder& b, const JsonNode& node) {
     const Vec3 n = face_normal(p[0], p[1], p[2]);
     if (!(dot(n, n) > 0.0f) || !is_finite(n)) v.fail("degenerate triangle (zero area)");
     const Vec3 unit = normalize(n);
-    add_triangle(b, p, {unit, unit, unit}, resolve_material(b, node), next_id(b));
+    add_triangle(b, p, {unit, unit, unit}, resolve_material(b, node), next_id(b),
+                 casts_shadow(node));
 }
 
 void parse_mesh(SceneBuilder& b, const JsonNode& node) {
-    node.expect_object({"type", "name", "file", "material", "transform"});
+    node.expect_object({"type", "name", "file", "material", "transform", "casts_shadow"});
+    const bool shadow = casts_shadow(node);
     const JsonNode file_node = node.at("file");
     const std::filesystem::path file = b.base_dir / file_node.as_string();
     MeshData mesh;
@@ -219,20 +260,21 @@ void parse_mesh(SceneBuilder& b, const JsonNode& node) {
         const int32_t own = mesh.material[k];
         t.material.push_back(named || own < 0 ? fallback : material_of[static_cast<size_t>(own)]);
         t.id.push_back(next_id(b));
+        t.casts_shadow.push_back(shadow ? 1 : 0);
     }
 }
 
 void parse_object(SceneBuilder& b, const JsonNode& node) {
     const std::string type = node.at("type").as_string();
     if (type == "sphere") {
-        node.expect_object({"type", "name", "center", "radius", "material"});
+        node.expect_object({"type", "name", "center", "radius", "material", "casts_shadow"});
         b.scene.spheres.push_back({node.at("center").as_vec3(), node.at("radius").as_positive(),
-                                   resolve_material(b, node), next_id(b)});
+                                   resolve_material(b, node), next_id(b), casts_shadow(node)});
     } else if (type == "plane") {
-        node.expect_object({"type", "name", "point", "normal", "material"});
+        node.expect_object({"type", "name", "point", "normal", "material", "casts_shadow"});
         b.scene.planes.push_back({node.at("point").as_vec3(),
                                   normalize(node.at("normal").as_direction()),
-                                  resolve_material(b, node), next_id(b)});
+                                  resolve_material(b, node), next_id(b), casts_shadow(node)});
     } else if (type == "triangle") {
         parse_triangle(b, node);
     } else if (type == "mesh") {
@@ -250,12 +292,13 @@ Scene parse_scene(std::string_view text, const std::string& file,
                   const std::filesystem::path& base_dir, std::vector<std::string>& warnings) {
     const nlohmann::json doc = parse_json(text, file);
     const JsonNode root(doc, file, "");
-    root.expect_object(
-        {"description", "camera", "background", "ambient", "materials", "lights", "objects"});
+    root.expect_object({"description", "camera", "background", "sky", "ambient", "materials",
+                        "lights", "objects"});
     SceneBuilder b{Scene{}, {}, base_dir, warnings};
     if (root.has("description")) root.at("description").as_string();
     if (root.has("camera")) b.scene.camera = parse_camera(root.at("camera"));
     if (root.has("background")) b.scene.background = root.at("background").as_colour();
+    if (root.has("sky")) b.scene.sky = parse_sky(root.at("sky"));
     if (root.has("ambient")) b.scene.ambient = root.at("ambient").as_colour();
     if (root.has("materials")) {
         const JsonNode materials = root.at("materials");

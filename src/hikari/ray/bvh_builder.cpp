@@ -16,6 +16,16 @@ namespace {
 
 constexpr uint32_t k_max_bins = 32;
 
+/// A triangle as the builder moves it around: its bounds and its input index together, so every
+/// pass over a range reads memory sequentially (Embree's PrimRef; Wald 2007 Sec 3.1).
+struct PrimRef {
+    Aabb bounds;
+    uint32_t id = 0;
+
+    /// The centre of the bounds, as in Wald 2007.
+    Vec3 centroid() const { return bounds.center(); }
+};
+
 /// Bounds of a range of triangles and of their centroids (the SAH bins by centroid).
 struct RangeBounds {
     Aabb bounds;
@@ -86,10 +96,9 @@ Vec3 canonical_zero(Vec3 v) { return v + Vec3(0.0f); }
 /// tree, do not depend on which thread builds which subtree.
 class BinnedSahBuilder {
   public:
-    BinnedSahBuilder(const BvhBuildSettings& settings, std::span<const Aabb> bounds,
-                     std::span<const Vec3> centroids, std::span<uint32_t> ids,
+    BinnedSahBuilder(const BvhBuildSettings& settings, std::span<PrimRef> refs,
                      std::span<BvhNode> slots)
-        : m_bounds(bounds), m_centroids(centroids), m_ids(ids), m_slots(slots) {
+        : m_refs(refs), m_slots(slots) {
         m_bin_count = std::clamp(settings.bin_count, 2u, k_max_bins);
         m_min_leaf = std::max(settings.min_leaf_size, 1u);
         m_max_leaf = std::clamp(settings.max_leaf_size, m_min_leaf, 255u);
@@ -144,8 +153,8 @@ class BinnedSahBuilder {
     RangeBounds range_bounds(uint32_t begin, uint32_t end) const {
         const auto accumulate = [this](uint32_t b, uint32_t e, RangeBounds acc) {
             for (uint32_t i = b; i < e; ++i) {
-                acc.bounds.extend(m_bounds[m_ids[i]]);
-                acc.centroids.extend(m_centroids[m_ids[i]]);
+                acc.bounds.extend(m_refs[i].bounds);
+                acc.centroids.extend(m_refs[i].centroid());
             }
             return acc;
         };
@@ -165,10 +174,11 @@ class BinnedSahBuilder {
     Bins fill_bins(uint32_t begin, uint32_t end, const BinMapping& mapping) const {
         const auto accumulate = [&](uint32_t b, uint32_t e, Bins& bins) {
             for (uint32_t i = b; i < e; ++i) {
-                const uint32_t id = m_ids[i];
+                const PrimRef& ref = m_refs[i];
+                const Vec3 c = ref.centroid();
                 for (int a = 0; a < 3; ++a) {
-                    Bin& bin = bins.axis[a][mapping(m_centroids[id], a)];
-                    bin.bounds.extend(m_bounds[id]);
+                    Bin& bin = bins.axis[a][mapping(c, a)];
+                    bin.bounds.extend(ref.bounds);
                     ++bin.count;
                 }
             }
@@ -234,9 +244,9 @@ class BinnedSahBuilder {
     uint32_t partition(uint32_t begin, uint32_t end, const RangeBounds& range,
                        const Split& split) const {
         const BinMapping mapping(range.centroids, m_bin_count);
-        const auto first = m_ids.begin();
-        const auto mid = std::partition(first + begin, first + end, [&](uint32_t id) {
-            return mapping(m_centroids[id], split.axis) < split.bin;
+        const auto first = m_refs.begin();
+        const auto mid = std::partition(first + begin, first + end, [&](const PrimRef& ref) {
+            return mapping(ref.centroid(), split.axis) < split.bin;
         });
         return static_cast<uint32_t>(mid - first);
     }
@@ -244,19 +254,18 @@ class BinnedSahBuilder {
     /// The fallback when the SAH finds no split: halves the range at the median centroid,
     /// ties broken by id so the result is deterministic.
     uint32_t median_split(uint32_t begin, uint32_t end, int axis) const {
-        const auto first = m_ids.begin();
+        const auto first = m_refs.begin();
         const uint32_t mid = begin + (end - begin) / 2;
-        std::nth_element(first + begin, first + mid, first + end, [&](uint32_t a, uint32_t b) {
-            const float ca = m_centroids[a][axis];
-            const float cb = m_centroids[b][axis];
-            return ca < cb || (ca == cb && a < b);
-        });
+        std::nth_element(first + begin, first + mid, first + end,
+                         [&](const PrimRef& a, const PrimRef& b) {
+                             const float ca = a.centroid()[axis];
+                             const float cb = b.centroid()[axis];
+                             return ca < cb || (ca == cb && a.id < b.id);
+                         });
         return mid;
     }
 
-    std::span<const Aabb> m_bounds;
-    std::span<const Vec3> m_centroids;
-    std::span<uint32_t> m_ids;
+    std::span<PrimRef> m_refs;
     std::span<BvhNode> m_slots;
     uint32_t m_bin_count = 16;
     uint32_t m_min_leaf = 1;
@@ -308,28 +317,29 @@ Bvh build_bvh(std::span<const Vec3> positions, std::span<const std::array<uint32
     }
     const auto input_count = static_cast<uint32_t>(indices.size());
 
-    // Per-triangle bounds and centroids (the centre of the bounds, as in Wald 2007).
+    // Per-triangle bounds (their centres are the centroids, as in Wald 2007).
     std::vector<Aabb> bounds(input_count);
-    std::vector<Vec3> centroids(input_count);
     std::vector<uint8_t> usable(input_count);
     hikari::parallel_for(tbb::blocked_range<uint32_t>(0, input_count, 4096), [&](const auto& r) {
         for (uint32_t i = r.begin(); i < r.end(); ++i) {
             usable[i] = is_usable(positions, indices[i]);
             if (!usable[i]) continue;
             for (uint32_t k : indices[i]) bounds[i].extend(positions[k]);
-            centroids[i] = bounds[i].center();
         }
     });
-    std::vector<uint32_t> ids;
+    std::vector<PrimRef> refs;
+    refs.reserve(input_count);
     for (uint32_t i = 0; i < input_count; ++i) {
-        if (usable[i]) ids.push_back(i);
+        if (usable[i]) refs.push_back({bounds[i], i});
     }
-    if (ids.empty()) return {};
+    if (refs.empty()) return {};
 
     // Build into fixed slots, then lay the tree out depth-first.
-    const auto count = static_cast<uint32_t>(ids.size());
+    const auto count = static_cast<uint32_t>(refs.size());
     std::vector<BvhNode> slots(2 * size_t(count) - 1);
-    BinnedSahBuilder(settings, bounds, centroids, ids, slots).build(0, 1, 0, count, 0);
+    BinnedSahBuilder(settings, refs, slots).build(0, 1, 0, count, 0);
+    std::vector<uint32_t> ids(count);
+    for (uint32_t i = 0; i < count; ++i) ids[i] = refs[i].id;
 
     Bvh bvh;
     bvh.nodes = compact(slots);

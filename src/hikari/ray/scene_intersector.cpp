@@ -1,15 +1,32 @@
 #include "hikari/ray/scene_intersector.h"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 
-#include "hikari/ray/bvh_builder.h"
-#include "hikari/ray/bvh_traversal.h"
 #include "hikari/ray/intersect.h"
+#include "hikari/ray/wide_bvh_builder.h"
+#include "hikari/ray/wide_bvh_traversal.h"
 
 namespace hikari {
 
-SceneIntersector::SceneIntersector(const Scene& scene)
-    : m_scene(scene), m_bvh(build_bvh(scene.triangles.positions, scene.triangles.indices)) {}
+SceneIntersector::SceneIntersector(const Scene& scene) : m_scene(scene) {
+    const auto start = std::chrono::steady_clock::now();
+    const TriangleSet& tris = scene.triangles;
+    m_bvh = build_wide_bvh(tris.positions, tris.indices);
+    if (tris.casts_shadow.size() == tris.size() &&
+        std::find(tris.casts_shadow.begin(), tris.casts_shadow.end(), 0) !=
+            tris.casts_shadow.end()) {
+        // A second tree over the casters only, so shadow rays never test the others.
+        std::vector<std::array<uint32_t, 3>> casters;
+        for (size_t i = 0; i < tris.size(); ++i)
+            if (tris.casts_shadow[i]) casters.push_back(tris.indices[i]);
+        m_shadow_bvh = build_wide_bvh(tris.positions, casters);
+        m_all_cast = false;
+    }
+    m_build_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
 
 bool SceneIntersector::closest(const Ray& ray, Interval range, SurfaceHit& hit) const {
     enum class Kind { none, sphere, plane, triangle } kind = Kind::none;
@@ -68,11 +85,13 @@ void SceneIntersector::set_triangle_hit(const TriangleHit& th, SurfaceHit& hit) 
 }
 
 bool SceneIntersector::occluded(const Ray& ray, Interval range) const {
-    if (intersect_any(m_bvh, ray, range)) return true;
+    if (intersect_any(m_all_cast ? m_bvh : m_shadow_bvh, ray, range)) return true;
     for (const Sphere& s : m_scene.spheres)
-        if (!std::isnan(intersect_sphere(ray, s.center, s.radius, range))) return true;
+        if (s.casts_shadow && !std::isnan(intersect_sphere(ray, s.center, s.radius, range)))
+            return true;
     for (const Plane& p : m_scene.planes)
-        if (!std::isnan(intersect_plane(ray, p.point, p.normal, range))) return true;
+        if (p.casts_shadow && !std::isnan(intersect_plane(ray, p.point, p.normal, range)))
+            return true;
     return false;
 }
 

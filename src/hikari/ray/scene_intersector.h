@@ -1,10 +1,11 @@
 #pragma once
 // Nearest-hit and shadow-ray queries against a whole scene: spheres and planes tested
-// directly, triangles through the BVH. Built once per render, read by all threads.
+// directly, triangles through the wide
+// (8-child, SIMD) BVH. Built once per render, read by all threads.
 
 #include "hikari/core/ray.h"
-#include "hikari/ray/bvh.h"
 #include "hikari/ray/bvh_traversal.h"
+#include "hikari/ray/wide_bvh.h"
 #include "hikari/scene/scene.h"
 
 namespace hikari {
@@ -26,17 +27,23 @@ class SceneIntersector {
 
     /// The nearest hit of `ray` inside `range`, if any (the lecture's 可視点, Alg 4.3).
     bool closest(const Ray& ray, Interval range, SurfaceHit& hit) const;
-    /// Whether anything blocks `ray` inside `range` (shadow rays stop at the first blocker).
+    /// Whether anything that casts shadows blocks `ray` inside `range` (shadow rays stop at the
+    /// first blocker; objects with casts_shadow false are ignored).
     bool occluded(const Ray& ray, Interval range) const;
 
-    /// The BVH over the scene's triangles.
-    const Bvh& bvh() const { return m_bvh; }
+    /// The wide BVH over the scene's triangles.
+    const WideBvh& bvh() const { return m_bvh; }
+    /// Wall time the BVH build took, in milliseconds.
+    double build_ms() const { return m_build_ms; }
 
   private:
     void set_triangle_hit(const TriangleHit& th, SurfaceHit& hit) const;
 
     const Scene& m_scene;
-    Bvh m_bvh;
+    WideBvh m_bvh;
+    WideBvh m_shadow_bvh;    ///< the shadow-casting triangles, when some do not cast
+    bool m_all_cast = true;  ///< every triangle casts: shadow rays use m_bvh
+    double m_build_ms = 0;
 };
 
 }  // namespace hikari

@@ -1,6 +1,7 @@
 #include "hikari/ray/whitted.h"
 
 #include <cmath>
+#include <optional>
 
 #include "hikari/core/rng.h"
 #include "hikari/ray/ray_offset.h"
@@ -13,31 +14,52 @@ namespace hikari {
 
 namespace {
 
+/// What every ray of a render reads, plus the ray count of the tile being rendered (each tile
+/// works on its own copy, so counting needs no atomics per ray).
 struct TraceContext {
     const Scene& scene;
     const SceneIntersector& intersector;
     int max_depth;
+    uint64_t rays = 0;
 };
 
 /// The local (direct) illumination of a hit: ambient, then each light that a shadow ray
 /// finds unblocked.
-Vec3 shade_local(const TraceContext& ctx, const Material& m, Vec3 p, Vec3 n, Vec3 ng, Vec3 to_eye) {
+Vec3 shade_local(TraceContext& ctx, const Material& m, Vec3 p, Vec3 n, Vec3 ng, Vec3 to_eye) {
     Vec3 colour = shade_ambient(m, ctx.scene.ambient);
     const Vec3 shadow_origin = offset_ray_origin(p, ng);
     for (const Light& light : ctx.scene.lights) {
         const LightSample ls = sample_light(light, p);
         if (dot(n, ls.to_light) <= 0.0f) continue;
+        ++ctx.rays;
         if (ctx.intersector.occluded({shadow_origin, ls.to_light}, {0.0f, ls.distance})) continue;
         colour += shade_direct(m, n, ls.to_light, to_eye, ls.irradiance);
     }
     return colour;
 }
 
+/// The material at a textured point: ka and kd scaled by the texture's colour there. A copy
+/// without the name (an empty string allocates nothing).
+Material textured(const Material& m, Vec3 p) {
+    Material out;
+    const Vec3 c = m.texture->at(p);
+    out.ka = m.ka * c;
+    out.kd = m.kd * c;
+    out.ks = m.ks;
+    out.shininess = m.shininess;
+    out.reflectivity = m.reflectivity;
+    out.transparency = m.transparency;
+    out.ior = m.ior;
+    return out;
+}
+
 /// Colour seen along `ray`, which is segment number `segment` of its path (primary = 1).
 /// Returns the primary hit through `first_hit` when asked (for the AOVs).
-Vec3 trace(const TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* first_hit = nullptr) {
+Vec3 trace(TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* first_hit = nullptr) {
+    ++ctx.rays;
     SurfaceHit hit;
-    if (!ctx.intersector.closest(ray, {0.0f, k_infinity}, hit)) return ctx.scene.background;
+    if (!ctx.intersector.closest(ray, {0.0f, k_infinity}, hit))
+        return ctx.scene.sky.colour(ray.direction, ctx.scene.background);
     if (first_hit) *first_hit = hit;
 
     // Face the normals toward the incoming ray: planes and triangles are two-sided, and a ray
@@ -47,23 +69,28 @@ Vec3 trace(const TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* fir
     Vec3 n = entering ? hit.shading_normal : -hit.shading_normal;
     if (dot(n, ray.direction) > 0.0f) n = ng;  // interpolated normal turned away: use the true one
 
-    const Material& m = ctx.scene.materials[hit.material];
+    const Material& material = ctx.scene.materials[hit.material];
+    Material local;
+    const Material* textured_material = &material;
+    if (material.texture) textured_material = &(local = textured(material, hit.position));
+    const Material& m = *textured_material;
     Vec3 colour = shade_local(ctx, m, hit.position, n, ng, -ray.direction);
     if (segment >= ctx.max_depth) return colour;
 
     const Vec3 mirror = reflect(ray.direction, n);
-    if (m.reflectivity > 0.0f)
+    std::optional<Vec3> refracted;
+    if (m.transparency > 0.0f)
+        refracted = refract(ray.direction, n, entering ? 1.0f / m.ior : m.ior);
+    // On total internal reflection the mirror ray takes the transmitted weight and the
+    // reflectivity term is dropped (POV-Ray's rule), so the mirror ray is traced once.
+    const bool total_internal = m.transparency > 0.0f && !refracted;
+    const float mirror_weight = total_internal ? m.transparency : m.reflectivity;
+    if (mirror_weight > 0.0f)
         colour +=
-            m.reflectivity * trace(ctx, {offset_ray_origin(hit.position, ng), mirror}, segment + 1);
-    if (m.transparency > 0.0f) {
-        const float eta = entering ? 1.0f / m.ior : m.ior;
-        if (const auto refracted = refract(ray.direction, n, eta))
-            colour += m.transparency *
-                      trace(ctx, {offset_ray_origin(hit.position, -ng), *refracted}, segment + 1);
-        else  // total internal reflection: all the transmitted light is reflected instead
-            colour += m.transparency *
-                      trace(ctx, {offset_ray_origin(hit.position, ng), mirror}, segment + 1);
-    }
+            mirror_weight * trace(ctx, {offset_ray_origin(hit.position, ng), mirror}, segment + 1);
+    if (refracted)
+        colour += m.transparency *
+                  trace(ctx, {offset_ray_origin(hit.position, -ng), *refracted}, segment + 1);
     return colour;
 }
 
@@ -80,13 +107,21 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
     const Camera& cam = scene.camera;
     Framebuffer fb(cam.width, cam.height, scene.background);
     const SceneIntersector intersector(scene);
-    const TraceContext ctx{scene, intersector, settings.max_depth};
+    const TraceContext shared{scene, intersector, settings.max_depth};
+    if (RenderControl* control = settings.control) {
+        const WideBvh& bvh = intersector.bvh();
+        control->bvh_triangles = bvh.triangle_count();
+        control->bvh_nodes = bvh.nodes.size();
+        control->bvh_bytes = bvh.memory_bytes();
+        control->bvh_build_us = static_cast<uint64_t>(intersector.build_ms() * 1000.0);
+    }
     const CameraFrame frame = make_camera_frame(cam);
     const int spp = settings.samples_per_pixel;
     int cols = 1, rows = 1;
     strata(spp, cols, rows);
 
     for_each_tile(cam.width, cam.height, settings.control, [&](const Tile& tile) {
+        TraceContext ctx = shared;
         for (int y = tile.y0; y < tile.y1; ++y)
             for (int x = tile.x0; x < tile.x1; ++x) {
                 const size_t i = static_cast<size_t>(y) * cam.width + x;
@@ -101,6 +136,7 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
                     // The AOVs describe the pixel centre; colour averages jittered samples, one
                     // in each stratum, from a stream seeded by the pixel alone.
                     intersector.closest(centre, {0.0f, k_infinity}, first);
+                    ++ctx.rays;
                     Pcg32 rng(i, 0x68696b617269ULL);
                     for (int s = 0; s < spp; ++s) {
                         const int column = s % cols, row = s / cols;
@@ -119,6 +155,7 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
                                        : -first.shading_normal;
                 }
             }
+        if (settings.control) settings.control->rays_traced += ctx.rays;
     });
     return fb;
 }

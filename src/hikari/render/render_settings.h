@@ -12,6 +12,12 @@ struct RenderControl {
     std::atomic<uint64_t> work_done{0};   ///< units (tiles, primitives) finished so far
     std::atomic<uint64_t> work_total{0};  ///< units in all, set by the method when it starts
     std::atomic<bool> cancel{false};      ///< set by the caller (e.g. on SIGINT) to stop early
+    // Statistics the ray-tracing methods report (`hikari render --stats`).
+    std::atomic<uint64_t> rays_traced{0};    ///< camera, secondary and shadow rays
+    std::atomic<uint64_t> bvh_triangles{0};  ///< triangles in the BVH
+    std::atomic<uint64_t> bvh_nodes{0};      ///< wide BVH nodes
+    std::atomic<uint64_t> bvh_bytes{0};      ///< BVH nodes + triangle data + ids
+    std::atomic<uint64_t> bvh_build_us{0};   ///< BVH build wall time, microseconds
 };
 
 /// How the raster methods interpolate shading across a triangle (the lecture's flat, Gouraud and

@@ -9,10 +9,12 @@
 
 namespace hikari {
 
-/// Light from one point; irradiance falls off as intensity / d².
+/// Light from one point; irradiance falls off as intensity / d² (or not at all, as POV-Ray's
+/// default light without fade).
 struct PointLight {
     Vec3 position;
     Vec3 intensity;
+    bool inverse_square = true;  ///< false: irradiance = intensity at any distance
 };
 
 /// Light from infinitely far away (the sun); no falloff.
@@ -36,7 +38,7 @@ inline LightSample sample_light(const Light& light, Vec3 p) {
         const Vec3 d = point->position - p;
         const float d2 = dot(d, d);
         const float dist = std::sqrt(d2);
-        return {d / dist, dist, point->intensity / d2};
+        return {d / dist, dist, point->inverse_square ? point->intensity / d2 : point->intensity};
     }
     const auto& dir = std::get<DirectionalLight>(light);
     return {-dir.direction, std::numeric_limits<float>::infinity(), dir.intensity};

@@ -1,11 +1,32 @@
 #pragma once
 // Surface reflectance for the lecture's shading model (Fig 4.29) and Whitted's secondary rays.
 
+#include <cmath>
+#include <optional>
 #include <string>
 
 #include "hikari/core/vec.h"
 
 namespace hikari {
+
+/// A solid checker (POV-Ray's `checker` pattern): colour_a where
+/// floor((x + offset.x) / size) + floor((y + offset.y) / size) + floor((z + offset.z) / size) is
+/// even, colour_b where it is odd. Linear RGB.
+struct CheckerTexture {
+    float size = 1.0f;  ///< edge of one cube, world units (> 0)
+    Vec3 color_a{1.0f};
+    Vec3 color_b{0.0f};
+    Vec3 offset{0.0f};  ///< added to the point first (moves the pattern by -offset)
+
+    /// The colour at world-space point p.
+    Vec3 at(Vec3 p) const {
+        const Vec3 q = (p + offset) / size;
+        const auto cell = static_cast<long long>(std::floor(q.x)) +
+                          static_cast<long long>(std::floor(q.y)) +
+                          static_cast<long long>(std::floor(q.z));
+        return (cell & 1) == 0 ? color_a : color_b;
+    }
+};
 
 /// Coefficients of ambient + Lambert diffuse + Phong specular, plus the weights of the mirror
 /// and refracted rays of Whitted ray tracing. Colours are linear RGB.
@@ -18,6 +39,8 @@ struct Material {
     float reflectivity = 0;  ///< weight of the colour seen along the mirror direction
     float transparency = 0;  ///< weight of the colour seen along the refracted direction
     float ior = 1.0f;        ///< index of refraction of the inside (outside is 1)
+    /// When set (ray tracing), ka and kd are multiplied by the texture's colour at the hit point.
+    std::optional<CheckerTexture> texture;
 };
 
 }  // namespace hikari

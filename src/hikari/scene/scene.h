@@ -21,6 +21,7 @@ struct Sphere {
     float radius = 1;
     uint32_t material = 0;  ///< index into Scene::materials
     PrimitiveId id = 0;
+    bool casts_shadow = true;  ///< false: shadow rays pass through it
 };
 
 /// An infinite, two-sided plane through `point` with unit `normal`.
@@ -29,6 +30,7 @@ struct Plane {
     Vec3 normal{0, 1, 0};
     uint32_t material = 0;
     PrimitiveId id = 0;
+    bool casts_shadow = true;  ///< false: shadow rays pass through it
 };
 
 /// Every triangle of the scene in one flat indexed array, world space.
@@ -39,8 +41,25 @@ struct TriangleSet {
                                                    ///< counter-clockwise seen from the front
     std::vector<uint32_t> material;                ///< material index per triangle
     std::vector<PrimitiveId> id;                   ///< primitive id per triangle
+    /// Per triangle, 0 where shadow rays pass through it; empty means every triangle casts.
+    std::vector<uint8_t> casts_shadow;
 
     size_t size() const { return indices.size(); }
+};
+
+/// What rays that hit nothing see, by direction (ray tracing; raster methods use the
+/// background colour).
+struct Sky {
+    bool gradient = false;  ///< false: the scene's background colour
+    Vec3 horizon{0.0f};     ///< colour for directions with y <= 0
+    Vec3 zenith{0.0f};      ///< colour straight up; linear in between (POV-Ray's `gradient y`)
+
+    /// The colour seen along unit direction `dir`, or `background` without a gradient.
+    Vec3 colour(Vec3 dir, Vec3 background) const {
+        if (!gradient) return background;
+        const float t = dir.y < 0.0f ? 0.0f : (dir.y > 1.0f ? 1.0f : dir.y);
+        return horizon * (1.0f - t) + zenith * t;
+    }
 };
 
 /// A whole scene: camera, lights, materials and geometry.
@@ -48,6 +67,7 @@ struct Scene {
     Camera camera;
     Vec3 background{0.0f};  ///< colour of rays that hit nothing
     Vec3 ambient{0.0f};     ///< ambient light intensity Ia
+    Sky sky;                ///< colour of escaping rays in ray tracing
     std::vector<Material> materials;
     std::vector<Light> lights;
     std::vector<Sphere> spheres;

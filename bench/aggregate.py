@@ -1,0 +1,61 @@
+#!/usr/bin/env python3
+"""Pools the samples of a bench/run.sh log folder (hikari.jsonl, embree.log, pov_*.log) and prints
+a markdown table: medians (and min-max) for hikari and the peer, and hikari / peer ratios
+(throughput: higher is better for hikari; times: peer / hikari, so > 1 means hikari is faster)."""
+import json, os, re, statistics, sys
+
+log = sys.argv[1]
+hik, emb, pov = [], [], {}
+p = os.path.join(log, "hikari.jsonl")
+if os.path.exists(p):
+    hik = [json.loads(l) for l in open(p) if l.strip()]
+p = os.path.join(log, "embree.log")
+if os.path.exists(p):
+    emb = [dict(re.findall(r"(\w+)=(\S+)", l)) for l in open(p) if l.startswith("RESULT")]
+for f in sorted(os.listdir(log)):
+    m = re.match(r"pov_t(\d)_r\d+\.log", f)
+    if m:
+        s = open(os.path.join(log, f)).read()
+        t = re.search(r"Trace Time:.*?\(([\d.]+) seconds\)", s)
+        w = re.search(r"WALL_S ([\d.]+)", s)
+        d = pov.setdefault(int(m.group(1)), {"trace": [], "wall": []})
+        if t: d["trace"].append(1000 * float(t.group(1)))
+        if w: d["wall"].append(1000 * float(w.group(1)))
+
+def med(v): return statistics.median(v) if v else float("nan")
+def samples(s): return [float(x) for x in s.split(",") if x]
+
+print("| bench | mesh | T | metric | hikari median (min-max) | peer median | hikari/peer | validation hikari / peer |")
+print("|---|---|---|---|---|---|---|---|")
+for bench in ("B1", "B2"):
+    for mesh in ("bunny", "bumpy1m"):
+        for t in (1, 2):
+            H = [r for r in hik if r.get("bench") == bench and r.get("mesh") == mesh and r.get("threads") == t]
+            E = [r for r in emb if r.get("bench") == bench and r.get("mesh") == mesh and int(r.get("threads", 0)) == t]
+            if not H: continue
+            rays = H[0]["rays"]
+            ht = [x for r in H for x in r["trace_samples_ms"]]
+            et = [x for r in E for x in samples(r.get("samples_ms", ""))]
+            hm, em = rays / med(ht) / 1e3, (E[0] and float(E[0]["rays"]) / med(et) / 1e3) if et else float("nan")
+            if bench == "B1":
+                hv = f'{H[0]["hits"]} / {H[0]["mean_t"]:.6f}'
+                ev = f'{E[0]["hits"]} / {E[0]["mean_t"]}' if E else "-"
+            else:
+                hv = f'{H[0]["occluded"]}'
+                ev = f'{round(float(E[0]["frac_occluded"]) * float(E[0]["rays"]))}' if E else "-"
+            print(f"| {bench} | {mesh} | {t} | Mrays/s | {hm:.2f} ({rays / max(ht) / 1e3:.2f}-{rays / min(ht) / 1e3:.2f}) | "
+                  f"{em:.2f} | {hm / em:.2f} | {hv} vs {ev} |")
+            if bench == "B1":
+                hb = [x for r in H for x in r["build_samples_ms"]]
+                eb = [x for r in E for x in samples(r.get("build_samples_ms", ""))]
+                print(f"| build | {mesh} | {t} | ms | {med(hb):.1f} ({min(hb):.1f}-{max(hb):.1f}) | {med(eb):.1f} | "
+                      f"{med(eb) / med(hb):.2f} (peer/hikari) | {H[0]['bvh_bytes_per_triangle']} B/tri |")
+for t in (1, 2):
+    H = [r["wall_ms"] for r in hik if r.get("bench") == "B3" and r.get("threads") == t]
+    if not H: continue
+    P = pov.get(t, {"trace": [], "wall": []})
+    print(f"| B3 | whitted | {t} | hikari process wall vs POV trace, ms | {med(H):.0f} ({min(H)}-{max(H)}) | "
+          f"{med(P['trace']):.0f} (wall {med(P['wall']):.0f}) | {med(P['trace']) / med(H):.2f} (peer/hikari) | |")
+p = os.path.join(log, "psnr.txt")
+if os.path.exists(p):
+    print("\n" + open(p).read().strip())

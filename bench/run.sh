@@ -1,0 +1,58 @@
+#!/bin/bash
+# The one command for hikari's benchmarks beside the peers' (../bench/SPEC.md, B1-B3):
+#   bench/run.sh                 RUNS=3 interleaved process runs per configuration
+#   RUNS=1 bench/run.sh          quick
+#   ONLY="B1" bench/run.sh       B1 and B2 only (B3: POV-Ray scene)
+# Builds hikari (Release), generates bumpy1m into build/bench/data, runs `hikari bench` and,
+# when the peers are built and installed (make -C $PEERS; Embree, POV-Ray), the peers'
+# programs interleaved with ours, then prints medians and ratios (bench/aggregate.py).
+set -u
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+PEERS=${PEERS:-/work/shared/bench/peers}
+BUILD=${BUILD:-$ROOT/build}
+RUNS=${RUNS:-3}
+ONLY=${ONLY:-"B1 B3"}
+OUT=$BUILD/bench
+LOG=${LOG:-$OUT/logs/$(date +%Y%m%d-%H%M%S)}
+has() { [[ " $ONLY " == *" $1 "* ]]; }
+
+cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null || exit 1
+cmake --build "$BUILD" --target hikari_cli hikari_psnr > /dev/null || exit 1
+HIKARI=$BUILD/hikari
+mkdir -p "$OUT/data" "$OUT/out" "$LOG"
+BUNNY=$ROOT/scenes/models/stanford-bunny.obj
+BUMPY=$OUT/data/bumpy1m.obj
+[ -s "$BUMPY" ] || python3 "$PEERS/gen_bumpy.py" "$BUMPY" >&2 || exit 1
+EMBREE=$PEERS/build/embree_bench
+[ -x "$EMBREE" ] || EMBREE=""
+POVRAY=$(command -v povray || true)
+{ date -Is; grep -m1 "model name" /proc/cpuinfo; nproc; uname -r; git -C "$ROOT" rev-parse --short HEAD; } > "$LOG/machine.txt"
+
+now_ms() { date +%s%3N; }
+for r in $(seq "$RUNS"); do
+  echo "== run $r/$RUNS" >&2
+  if has B1; then
+    for mesh in bunny bumpy1m; do for t in 1 2; do
+      file=$BUNNY; [ $mesh = bumpy1m ] && file=$BUMPY
+      for b in B1 B2; do "$HIKARI" bench $b --mesh "$file" --threads $t | sed "s/\"mesh\": \"[^\"]*\"/\"mesh\": \"$mesh\"/" >> "$LOG/hikari.jsonl"; done
+      [ -n "$EMBREE" ] && "$EMBREE" "$file" $t 5 | sed "s/mesh=[^ ]*/mesh=$mesh/" >> "$LOG/embree.log" 2>> "$LOG/embree.err"
+    done; done
+  fi
+  if has B3; then
+    for t in 1 2; do
+      t0=$(now_ms)
+      "$HIKARI" render "$ROOT/scenes/bench/whitted.json" --threads $t -q -o "$OUT/out/whitted_hikari.png"
+      echo "{\"bench\": \"B3\", \"threads\": $t, \"wall_ms\": $(( $(now_ms) - t0 ))}" >> "$LOG/hikari.jsonl"
+      if [ -n "$POVRAY" ]; then
+        (cd "$OUT" && /usr/bin/time -f "WALL_S %e" "$POVRAY" "$PEERS/whitted.pov" +W1920 +H1080 -A +WT$t -D +FN \
+          +Oout/whitted_pov.png > /dev/null 2> "$LOG/pov.tmp")
+        tr '\r' '\n' < "$LOG/pov.tmp" | grep -E "Trace Time|WALL_S" > "$LOG/pov_t${t}_r$r.log"
+        rm -f "$LOG/pov.tmp"
+      fi
+    done
+  fi
+done
+if has B3 && [ -s "$OUT/out/whitted_pov.png" ]; then
+  echo "B3 PSNR hikari vs POV-Ray (dB): $("$BUILD/bench/hikari_psnr" "$OUT/out/whitted_hikari.png" "$OUT/out/whitted_pov.png")" > "$LOG/psnr.txt"
+fi
+python3 "$ROOT/bench/aggregate.py" "$LOG" | tee "$LOG/table.md"

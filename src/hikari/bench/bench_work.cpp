@@ -1,0 +1,121 @@
+#include "hikari/bench/bench_work.h"
+
+#include <tiny_obj_loader.h>
+
+#include <fmt/format.h>
+#include <algorithm>
+#include <cmath>
+
+#include "hikari/core/error.h"
+#include "hikari/core/rng.h"
+
+namespace hikari {
+
+BenchMesh load_bench_mesh(const std::filesystem::path& file) {
+    tinyobj::ObjReader reader;
+    tinyobj::ObjReaderConfig config;
+    config.triangulate = true;
+    config.vertex_color = false;
+    if (!reader.ParseFromFile(file.string(), config))
+        throw InputError(fmt::format("{}: {}", file.string(), reader.Error()));
+    const auto& attrib = reader.GetAttrib();
+    BenchMesh mesh;
+    mesh.positions.resize(attrib.vertices.size() / 3);
+    for (size_t i = 0; i < mesh.positions.size(); ++i)
+        mesh.positions[i] = {attrib.vertices[3 * i], attrib.vertices[3 * i + 1],
+                             attrib.vertices[3 * i + 2]};
+    for (const auto& shape : reader.GetShapes()) {
+        const auto& idx = shape.mesh.indices;
+        for (size_t f = 0; f + 2 < idx.size(); f += 3)
+            mesh.indices.push_back({static_cast<uint32_t>(idx[f].vertex_index),
+                                    static_cast<uint32_t>(idx[f + 1].vertex_index),
+                                    static_cast<uint32_t>(idx[f + 2].vertex_index)});
+    }
+    if (mesh.indices.empty()) throw InputError(fmt::format("{}: no triangles", file.string()));
+    set_bench_bounds(mesh);
+    return mesh;
+}
+
+void set_bench_bounds(BenchMesh& mesh) {
+    Vec3 lo(k_infinity), hi(-k_infinity);
+    for (const Vec3& p : mesh.positions) {
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    }
+    double d2 = 0;
+    for (int a = 0; a < 3; ++a) {
+        mesh.center[a] = 0.5 * (double(lo[a]) + double(hi[a]));
+        const double e = double(hi[a]) - double(lo[a]);
+        d2 += e * e;
+    }
+    mesh.diagonal = std::sqrt(d2);
+}
+
+BenchRays make_b1_rays(const BenchMesh& mesh, int width, int height) {
+    // The view direction is -z, so right = +x and up = +y exactly (SPEC §2).
+    const double tan_half = std::tan(45.0 * M_PI / 360.0);
+    const Vec3 eye{float(mesh.center[0]), float(mesh.center[1]),
+                   float(mesh.center[2] + 1.1 * mesh.diagonal)};
+    BenchRays out;
+    out.rays.resize(size_t(width) * size_t(height));
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const double sx = (2.0 * (x + 0.5) / width - 1.0) * tan_half * (double(width) / height);
+            const double sy = (1.0 - 2.0 * (y + 0.5) / height) * tan_half;
+            const double length = std::sqrt(sx * sx + sy * sy + 1.0);
+            out.rays[size_t(y) * width + x] = {
+                eye, {float(sx / length), float(sy / length), float(-1.0 / length)}};
+        }
+    return out;
+}
+
+namespace {
+
+/// The unit geometric normal n = normalize(cross(v1 - v0, v2 - v0)), in double, then float.
+Vec3 geometric_normal(const BenchMesh& mesh, uint32_t triangle) {
+    const auto& tri = mesh.indices[triangle];
+    double e1[3], e2[3];
+    for (int a = 0; a < 3; ++a) {
+        e1[a] = double(mesh.positions[tri[1]][a]) - mesh.positions[tri[0]][a];
+        e2[a] = double(mesh.positions[tri[2]][a]) - mesh.positions[tri[0]][a];
+    }
+    const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                         e1[0] * e2[1] - e1[1] * e2[0]};
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    return {float(n[0] / length), float(n[1] / length), float(n[2] / length)};
+}
+
+}  // namespace
+
+BenchRays make_b2_rays(const BenchMesh& mesh, const BenchRays& b1, const std::vector<float>& hit_t,
+                       const std::vector<uint32_t>& hit_triangle) {
+    const auto eps = float(1e-4 * mesh.diagonal);
+    BenchRays out;
+    out.t_far = float(0.3 * mesh.diagonal);
+    for (size_t i = 0; i < b1.rays.size(); ++i) {
+        if (!(hit_t[i] < k_infinity)) continue;
+        const Ray& primary = b1.rays[i];
+        Vec3 n = geometric_normal(mesh, hit_triangle[i]);
+        if (dot(n, primary.direction) > 0.0f) n = -n;
+        const float t = hit_t[i];
+        const Vec3 p = primary.origin + t * primary.direction;
+        const Vec3 origin = p + eps * n;
+        // Duff et al. 2017, "Building an orthonormal basis, revisited".
+        const float sign = std::copysign(1.0f, n.z);
+        const float a = -1.0f / (sign + n.z);
+        const float b = n.x * n.y * a;
+        const Vec3 tangent{1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x};
+        const Vec3 bitangent{b, sign + n.y * n.y * a, -n.y};
+        Pcg32 rng(i, 0xB2);
+        for (int s = 0; s < 4; ++s) {
+            const float u1 = rng.next_float(), u2 = rng.next_float();
+            const float r = std::sqrt(u1), phi = 6.2831853071795864769f * u2;
+            const float lx = r * std::cos(phi), ly = r * std::sin(phi);
+            const float lz = std::sqrt(std::max(0.0f, 1.0f - u1));
+            out.rays.push_back({origin, lx * tangent + ly * bitangent + lz * n});
+        }
+    }
+    return out;
+}
+
+}  // namespace hikari

@@ -1,0 +1,20 @@
+#pragma once
+// Which SIMD instruction set the hot loops use, chosen at run time: the binary runs on any
+// x86-64 (or other) CPU and uses AVX2 or AVX-512 where the CPU and OS support them.
+
+namespace hikari {
+
+/// The instruction sets the traversal kernels are compiled for. Every level gives bit-identical
+/// answers; they differ only in speed.
+enum class SimdLevel { portable, avx2, avx512 };
+
+/// The best level this CPU supports (checked once, cached).
+SimdLevel best_simd_level();
+
+/// True when this CPU can run `level`.
+bool simd_level_supported(SimdLevel level);
+
+/// A short name: "portable", "avx2" or "avx512".
+const char* simd_level_name(SimdLevel level);
+
+}  // namespace hikari

@@ -1,0 +1,200 @@
+#pragma once
+// The wide-BVH traversal loop, written once as a template over the SIMD operations (`Ops`):
+// the portable, AVX2 and AVX-512 kernels each instantiate it in their own translation unit,
+// compiled for their instruction set. Internal to wide_bvh_traversal*.cpp.
+//
+// Ops provides, all bit-identical across implementations:
+//   static uint32_t test_node(const WideBvhNode&, const NodeRay&, float t_min, float t_max,
+//                             float* entry)  -> mask of children whose box the ray meets in
+//                             [t_min, t_max]; entry[i] = where it enters child i
+//   template <bool k_any_hit> static bool test_leaf(const LeafRay&, const float* block,
+//                             uint32_t count, uint32_t first, Interval& valid, LeafHit& hit)
+//                             -> nearest (or any) triangle of the leaf inside valid; shrinks
+//                             valid.max and fills hit for the nearest
+
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "hikari/core/ray.h"
+#include "hikari/ray/bvh_traversal.h"
+#include "hikari/ray/triangle_intersect.h"
+#include "hikari/ray/wide_bvh.h"
+
+namespace hikari::wide_kernel {
+// Internal linkage: each kernel translation unit compiles its own copy for its instruction set,
+// and the linker must never merge them.
+namespace {
+
+/// Bound on the relative rounding error of n float operations (Higham; pbrt's gamma(n)).
+constexpr float gamma(int n) {
+    constexpr float e = std::numeric_limits<float>::epsilon() * 0.5f;
+    return float(n) * e / (1.0f - float(n) * e);
+}
+
+/// Ize 2013, "Robust BVH Ray Traversal": widening the exit distance by 1 + 2 gamma(3) makes the
+/// slab test conservative, so a box the exact ray touches is never culled.
+constexpr float k_exit_scale = 1.0f + 2.0f * gamma(3);
+
+/// Per-ray constants of the slab test against a node's SoA boxes.
+struct NodeRay {
+    std::array<float, 3> origin;
+    std::array<float, 3> inv_dir;  ///< 1 / direction; +-inf where a component is +-0
+    std::array<int, 3> near_row;   ///< row of WideBvhNode::bounds the ray enters by, per axis
+    std::array<int, 3> far_row;    ///< row it leaves by
+
+    explicit NodeRay(const Ray& ray) {
+        for (int a = 0; a < 3; ++a) {
+            origin[a] = ray.origin[a];
+            inv_dir[a] = 1.0f / ray.direction[a];
+            // The sign bit, not `< 0`: 1 / -0 is -inf, and the faces must agree with that sign.
+            const int negative = std::signbit(ray.direction[a]) ? 1 : 0;
+            near_row[a] = 2 * a + negative;
+            far_row[a] = 2 * a + 1 - negative;
+        }
+    }
+};
+
+/// Per-ray constants of the watertight triangle test, with the axis permutation as indices
+/// (rows of a leaf block) rather than member pointers.
+struct LeafRay {
+    WatertightRay shear;
+    int kx = 0, ky = 1, kz = 2;    ///< axes that become x, y, z in the sheared space
+    float ox = 0, oy = 0, oz = 0;  ///< origin components along kx, ky, kz
+
+    explicit LeafRay(const Ray& ray) : shear(ray) {
+        const auto axis = [](float Vec3::*k) { return k == &Vec3::x ? 0 : k == &Vec3::y ? 1 : 2; };
+        kx = axis(shear.kx), ky = axis(shear.ky), kz = axis(shear.kz);
+        ox = shear.origin.*shear.kx, oy = shear.origin.*shear.ky, oz = shear.origin.*shear.kz;
+    }
+};
+
+/// The nearest triangle found so far.
+struct LeafHit {
+    float t = 0, u = 0, v = 0;
+    uint32_t slot = 0;  ///< triangle slot (index into WideBvh::triangle_ids)
+};
+
+/// Triangle i of a leaf block with `count` triangles.
+inline void load_triangle(const float* block, uint32_t count, uint32_t i, Vec3& p0, Vec3& p1,
+                          Vec3& p2) {
+    p0 = {block[0 * count + i], block[1 * count + i], block[2 * count + i]};
+    p1 = {block[3 * count + i], block[4 * count + i], block[5 * count + i]};
+    p2 = {block[6 * count + i], block[7 * count + i], block[8 * count + i]};
+}
+
+/// The reference leaf test: one watertight test per triangle, in slot order; the SIMD kernels
+/// fall back to it when an edge function is exactly zero (a ray through an edge or vertex).
+template <bool k_any_hit>
+bool test_leaf_scalar(const LeafRay& ray, const float* block, uint32_t count, uint32_t first,
+                      uint32_t begin, uint32_t end, Interval& valid, LeafHit& hit) {
+    bool found = false;
+    for (uint32_t i = begin; i < end; ++i) {
+        Vec3 p0, p1, p2;
+        load_triangle(block, count, i, p0, p1, p2);
+        if (const auto h = intersect_triangle(ray.shear, p0, p1, p2, valid)) {
+            if constexpr (k_any_hit) return true;
+            hit = {h->t, h->u, h->v, first + i};
+            valid.max = h->t;
+            found = true;
+        }
+    }
+    return found;
+}
+
+/// Rays the traversal can handle: finite origin, finite non-zero direction.
+inline bool is_traceable(const Ray& ray) {
+    return is_finite(ray.origin) && is_finite(ray.direction) && !(ray.direction == Vec3(0.0f));
+}
+
+/// The traversal loop: a stack of (reference, entry distance); at an inner node all eight
+/// boxes are tested at once and the hit children visited nearest first (closest hit) or in
+/// slot order (any hit).
+template <typename Ops, bool k_any_hit>
+bool traverse(const WideBvh& bvh, const Ray& ray, Interval valid, LeafHit& hit) {
+    if (bvh.empty() || !is_traceable(ray)) return false;
+    const NodeRay node_ray(ray);
+    const LeafRay leaf_ray(ray);
+    const WideBvhNode* nodes = bvh.nodes.data();
+    const float* triangle_data = bvh.triangle_data.data();
+
+    struct StackEntry {
+        uint32_t ref;
+        float entry;  ///< where the ray enters it: skip it once a hit is nearer
+    };
+    constexpr uint32_t k_stack_size = (k_wide_bvh_width - 1) * k_bvh_max_depth + 1;
+    std::array<StackEntry, k_stack_size> stack;
+    uint32_t stack_size = 0;
+    alignas(32) std::array<float, k_wide_bvh_width> entry;
+
+    uint32_t current = bvh.root;
+    bool found = false;
+    for (;;) {
+        if (!WideBvhRef::is_leaf(current)) {
+            /* inner node: test eight boxes, go to the nearest hit child, defer the others */
+            const WideBvhNode& node = nodes[current];
+            uint32_t mask = Ops::test_node(node, node_ray, valid.min, valid.max, entry.data());
+            if (mask != 0) {
+                uint32_t first = static_cast<uint32_t>(std::countr_zero(mask));
+                mask &= mask - 1;
+                if (mask == 0) {
+                    current = node.child[first];
+                    continue;
+                }
+                if constexpr (k_any_hit) {
+                    for (; mask != 0; mask &= mask - 1) {
+                        const auto i = static_cast<uint32_t>(std::countr_zero(mask));
+                        stack[stack_size++] = {node.child[i], entry[i]};
+                    }
+                    current = node.child[first];
+                    continue;
+                } else {
+                    // Insertion sort by entry distance (ties keep slot order), then push
+                    // farthest first so the nearest is popped first.
+                    std::array<StackEntry, k_wide_bvh_width> hits;
+                    uint32_t n = 0;
+                    hits[n++] = {node.child[first], entry[first]};
+                    for (; mask != 0; mask &= mask - 1) {
+                        const auto i = static_cast<uint32_t>(std::countr_zero(mask));
+                        const StackEntry e{node.child[i], entry[i]};
+                        uint32_t k = n++;
+                        for (; k > 0 && hits[k - 1].entry > e.entry; --k) hits[k] = hits[k - 1];
+                        hits[k] = e;
+                    }
+                    for (uint32_t k = n - 1; k > 0; --k) stack[stack_size++] = hits[k];
+                    current = hits[0].ref;
+                    continue;
+                }
+            }
+        } else {
+            /* leaf: test its triangles; a nearest hit shrinks valid.max */
+            const uint32_t first = WideBvhRef::leaf_first(current);
+            const uint32_t count = WideBvhRef::leaf_count(current);
+            const float* block = triangle_data + 9 * size_t(first);
+            if (Ops::template test_leaf<k_any_hit>(leaf_ray, block, count, first, valid, hit)) {
+                if constexpr (k_any_hit) return true;
+                found = true;
+            }
+        }
+
+        /* pop the next node that starts before the nearest hit so far */
+        bool popped = false;
+        const float limit = valid.max * k_exit_scale;
+        while (stack_size > 0 && !popped) {
+            const StackEntry next = stack[--stack_size];
+            popped = next.entry <= limit;
+            current = next.ref;
+        }
+        if (!popped) return found;
+    }
+}
+
+/// The hit as the public API reports it.
+inline TriangleHit to_triangle_hit(const WideBvh& bvh, const LeafHit& h) {
+    return {h.t, h.u, h.v, bvh.triangle_ids[h.slot]};
+}
+
+}  // namespace
+}  // namespace hikari::wide_kernel

@@ -1,0 +1,138 @@
+#pragma once
+// The 8-wide SIMD operations of the wide-BVH kernel (see wide_bvh_kernel.h), for AVX2 and, with
+// AVX-512VL mask compares, AVX-512. Include only after `#pragma GCC target` in the kernel's own
+// translation unit, inside an anonymous namespace's reach (see wide_bvh_traversal_avx2.cpp).
+// Every operation is an IEEE-exact add, sub, mul, div, min or max in the same order as the
+// portable code, and no FMA is used, so the answers are bit-identical to it.
+
+#include <immintrin.h>
+
+#include "hikari/ray/wide_bvh_kernel.h"
+
+namespace hikari::wide_kernel {
+namespace {
+
+/// 8 lanes of a comparison as a bit mask.
+#if defined(__AVX512VL__)
+#define HIKARI_CMP_MASK(a, b, op) static_cast<uint32_t>(_mm256_cmp_ps_mask(a, b, op))
+#else
+#define HIKARI_CMP_MASK(a, b, op) static_cast<uint32_t>(_mm256_movemask_ps(_mm256_cmp_ps(a, b, op)))
+#endif
+
+struct Simd8Ops {
+    static uint32_t test_node(const WideBvhNode& node, const NodeRay& ray, float t_min, float t_max,
+                              float* entry) {
+        const auto slab = [&](int a, const std::array<int, 3>& rows) {
+            const __m256 b = _mm256_load_ps(node.bounds[rows[a]].data());
+            return _mm256_mul_ps(_mm256_sub_ps(b, _mm256_set1_ps(ray.origin[a])),
+                                 _mm256_set1_ps(ray.inv_dir[a]));
+        };
+        // max_ps(x, t) is x > t ? x : t, so a NaN slab distance loses, as in the portable code.
+        __m256 t0 = _mm256_max_ps(slab(0, ray.near_row), _mm256_set1_ps(t_min));
+        t0 = _mm256_max_ps(slab(1, ray.near_row), t0);
+        t0 = _mm256_max_ps(slab(2, ray.near_row), t0);
+        __m256 t1 = _mm256_min_ps(slab(0, ray.far_row), _mm256_set1_ps(t_max));
+        t1 = _mm256_min_ps(slab(1, ray.far_row), t1);
+        t1 = _mm256_min_ps(slab(2, ray.far_row), t1);
+        _mm256_store_ps(entry, t0);
+        return HIKARI_CMP_MASK(t0, _mm256_mul_ps(t1, _mm256_set1_ps(k_exit_scale)), _CMP_LE_OQ);
+    }
+
+    /// Woop et al. 2013 on eight triangles of a leaf at once (the steps as in
+    /// triangle_intersect.h).
+    template <bool k_any_hit>
+    static bool test_leaf(const LeafRay& ray, const float* block, uint32_t count, uint32_t first,
+                          Interval& valid, LeafHit& hit) {
+        bool found = false;
+        const __m256 zero = _mm256_setzero_ps();
+        for (uint32_t base = 0; base < count; base += 8) {
+            const uint32_t lanes = count - base < 8 ? count - base : 8;
+            const uint32_t lane_mask = (1u << lanes) - 1;
+            const auto row = [&](int vertex, int axis) {
+                return _mm256_loadu_ps(block + (3 * vertex + axis) * count + base);
+            };
+            /* steps 1-2: vertices relative to the origin, sheared so the ray runs along +z */
+            const __m256 ox = _mm256_set1_ps(ray.ox), oy = _mm256_set1_ps(ray.oy),
+                         oz = _mm256_set1_ps(ray.oz);
+            const __m256 sx = _mm256_set1_ps(ray.shear.sx), sy = _mm256_set1_ps(ray.shear.sy),
+                         sz = _mm256_set1_ps(ray.shear.sz);
+            const __m256 az = _mm256_sub_ps(row(0, ray.kz), oz);
+            const __m256 bz = _mm256_sub_ps(row(1, ray.kz), oz);
+            const __m256 cz = _mm256_sub_ps(row(2, ray.kz), oz);
+            const __m256 ax =
+                _mm256_sub_ps(_mm256_sub_ps(row(0, ray.kx), ox), _mm256_mul_ps(sx, az));
+            const __m256 ay =
+                _mm256_sub_ps(_mm256_sub_ps(row(0, ray.ky), oy), _mm256_mul_ps(sy, az));
+            const __m256 bx =
+                _mm256_sub_ps(_mm256_sub_ps(row(1, ray.kx), ox), _mm256_mul_ps(sx, bz));
+            const __m256 by =
+                _mm256_sub_ps(_mm256_sub_ps(row(1, ray.ky), oy), _mm256_mul_ps(sy, bz));
+            const __m256 cx =
+                _mm256_sub_ps(_mm256_sub_ps(row(2, ray.kx), ox), _mm256_mul_ps(sx, cz));
+            const __m256 cy =
+                _mm256_sub_ps(_mm256_sub_ps(row(2, ray.ky), oy), _mm256_mul_ps(sy, cz));
+            /* step 3: scaled barycentrics */
+            const __m256 e0 = _mm256_sub_ps(_mm256_mul_ps(cx, by), _mm256_mul_ps(cy, bx));
+            const __m256 e1 = _mm256_sub_ps(_mm256_mul_ps(ax, cy), _mm256_mul_ps(ay, cx));
+            const __m256 e2 = _mm256_sub_ps(_mm256_mul_ps(bx, ay), _mm256_mul_ps(by, ax));
+            const uint32_t on_edge =
+                (HIKARI_CMP_MASK(e0, zero, _CMP_EQ_OQ) | HIKARI_CMP_MASK(e1, zero, _CMP_EQ_OQ) |
+                 HIKARI_CMP_MASK(e2, zero, _CMP_EQ_OQ)) &
+                lane_mask;
+            if (on_edge != 0) {
+                // Sec 4's exact fallback is rare: run the reference test on these lanes.
+                if (test_leaf_scalar<k_any_hit>(ray, block, count, first, base, base + lanes, valid,
+                                                hit)) {
+                    if constexpr (k_any_hit) return true;
+                    found = true;
+                }
+                continue;
+            }
+            /* step 4: inside when all edge functions share a sign */
+            const uint32_t negative = HIKARI_CMP_MASK(e0, zero, _CMP_LT_OQ) |
+                                      HIKARI_CMP_MASK(e1, zero, _CMP_LT_OQ) |
+                                      HIKARI_CMP_MASK(e2, zero, _CMP_LT_OQ);
+            const uint32_t positive = HIKARI_CMP_MASK(e0, zero, _CMP_GT_OQ) |
+                                      HIKARI_CMP_MASK(e1, zero, _CMP_GT_OQ) |
+                                      HIKARI_CMP_MASK(e2, zero, _CMP_GT_OQ);
+            uint32_t inside = ~(negative & positive) & lane_mask;
+            if (inside == 0) continue;
+            const __m256 det = _mm256_add_ps(_mm256_add_ps(e0, e1), e2);
+            inside &= HIKARI_CMP_MASK(det, zero, _CMP_NEQ_UQ);
+            /* step 5: the hit distance */
+            const __m256 t_scaled =
+                _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(e0, _mm256_mul_ps(sz, az)),
+                                            _mm256_mul_ps(e1, _mm256_mul_ps(sz, bz))),
+                              _mm256_mul_ps(e2, _mm256_mul_ps(sz, cz)));
+            const __m256 inv_det = _mm256_div_ps(_mm256_set1_ps(1.0f), det);
+            const __m256 t = _mm256_mul_ps(t_scaled, inv_det);
+            inside &= HIKARI_CMP_MASK(_mm256_set1_ps(valid.min), t, _CMP_LT_OQ) &
+                      HIKARI_CMP_MASK(t, _mm256_set1_ps(valid.max), _CMP_LT_OQ);
+            if (inside == 0) continue;
+            if constexpr (k_any_hit) {
+                return true;
+            } else {
+                /* the nearest lane; the lowest of equal ones, as the slot-order scalar loop */
+                alignas(32) float ts[8];
+                _mm256_store_ps(ts, t);
+                uint32_t best = static_cast<uint32_t>(std::countr_zero(inside));
+                for (uint32_t m = inside & (inside - 1); m != 0; m &= m - 1) {
+                    const auto i = static_cast<uint32_t>(std::countr_zero(m));
+                    if (ts[i] < ts[best]) best = i;
+                }
+                alignas(32) float us[8], vs[8];
+                _mm256_store_ps(us, _mm256_mul_ps(e1, inv_det));
+                _mm256_store_ps(vs, _mm256_mul_ps(e2, inv_det));
+                hit = {ts[best], us[best], vs[best], first + base + best};
+                valid.max = ts[best];
+                found = true;
+            }
+        }
+        return found;
+    }
+};
+
+#undef HIKARI_CMP_MASK
+
+}  // namespace
+}  // namespace hikari::wide_kernel

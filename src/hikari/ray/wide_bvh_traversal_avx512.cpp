@@ -1,0 +1,37 @@
+// The wide-BVH kernel compiled for AVX-512 (chosen at run time by wide_bvh_traversal.cpp).
+// Everything the kernel includes comes first, compiled for the baseline; the kernel itself
+// follows the target pragma and has internal linkage, so no AVX-512 code leaks into shared
+// inline functions.
+#include <immintrin.h>
+
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "hikari/core/ray.h"
+#include "hikari/ray/bvh_traversal.h"
+#include "hikari/ray/triangle_intersect.h"
+#include "hikari/ray/wide_bvh.h"
+
+#if defined(__x86_64__)
+#pragma GCC target("avx2,avx512f,avx512vl,avx512dq,avx512bw,popcnt,bmi,bmi2,lzcnt")
+#include "hikari/ray/wide_bvh_simd8.h"
+
+namespace hikari::detail {
+
+bool wide_closest_avx512(const WideBvh& bvh, const Ray& ray, Interval valid, TriangleHit& hit) {
+    wide_kernel::LeafHit h;
+    if (!wide_kernel::traverse<wide_kernel::Simd8Ops, false>(bvh, ray, valid, h)) return false;
+    hit = wide_kernel::to_triangle_hit(bvh, h);
+    return true;
+}
+
+bool wide_any_avx512(const WideBvh& bvh, const Ray& ray, Interval valid) {
+    wide_kernel::LeafHit h;
+    return wide_kernel::traverse<wide_kernel::Simd8Ops, true>(bvh, ray, valid, h);
+}
+
+}  // namespace hikari::detail
+#endif
