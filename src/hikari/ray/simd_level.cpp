@@ -3,7 +3,7 @@
 namespace hikari {
 
 bool simd_level_supported(SimdLevel level) {
-#if defined(__x86_64__) || defined(__i386__)
+#if HIKARI_SIMD_KERNELS
     switch (level) {
         case SimdLevel::portable:
             return true;

@@ -2,6 +2,14 @@
 // Which SIMD instruction set the hot loops use, chosen at run time: the binary runs on any
 // x86-64 (or other) CPU and uses AVX2 or AVX-512 where the CPU and OS support them.
 
+/// 1 where the AVX2 / AVX-512 kernels are compiled in: x86-64 with GCC, whose
+/// `#pragma GCC target` they use (clang, e.g. in the fuzzing build, gets the portable path only).
+#if defined(__x86_64__) && !defined(__clang__)
+#define HIKARI_SIMD_KERNELS 1
+#else
+#define HIKARI_SIMD_KERNELS 0
+#endif
+
 namespace hikari {
 
 /// The instruction sets the traversal kernels are compiled for. Every level gives bit-identical

@@ -64,7 +64,7 @@ bool any_portable(const WideBvh& bvh, const Ray& ray, Interval valid) {
 
 bool intersect_closest(const WideBvh& bvh, const Ray& ray, Interval valid, TriangleHit& hit,
                        SimdLevel level) {
-#if defined(__x86_64__)
+#if HIKARI_SIMD_KERNELS
     switch (level) {
         case SimdLevel::avx512:
             return detail::wide_closest_avx512(bvh, ray, valid, hit);
@@ -78,7 +78,7 @@ bool intersect_closest(const WideBvh& bvh, const Ray& ray, Interval valid, Trian
 }
 
 bool intersect_any(const WideBvh& bvh, const Ray& ray, Interval valid, SimdLevel level) {
-#if defined(__x86_64__)
+#if HIKARI_SIMD_KERNELS
     switch (level) {
         case SimdLevel::avx512:
             return detail::wide_any_avx512(bvh, ray, valid);

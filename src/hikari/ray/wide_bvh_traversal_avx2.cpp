@@ -12,10 +12,11 @@
 
 #include "hikari/core/ray.h"
 #include "hikari/ray/bvh_traversal.h"
+#include "hikari/ray/simd_level.h"
 #include "hikari/ray/triangle_intersect.h"
 #include "hikari/ray/wide_bvh.h"
 
-#if defined(__x86_64__)
+#if HIKARI_SIMD_KERNELS
 #pragma GCC target("avx2,popcnt,bmi,bmi2,lzcnt")
 #include "hikari/ray/wide_bvh_simd8.h"
 
