@@ -339,6 +339,35 @@ void copy_exr_pixels(const EXRHeader& header, const EXRImage& exr,
     }
 }
 
+/// tinyexr 1.0.1 asserts (aborts) on some malformed header attributes instead of returning an
+/// error (found by fuzz/image_fuzz.cpp): a "tiles" attribute not 9 bytes long, or a "type" that
+/// is unknown or contradicts the tiled flag. Walk the attribute list first and refuse those.
+void check_exr_attributes(const std::filesystem::path& path, std::string_view bytes, bool tiled) {
+    size_t pos = 8;  // magic number and version field
+    auto c_string = [&]() -> std::string_view {
+        const size_t end = bytes.find('\0', pos);
+        if (end == std::string_view::npos) fail(path, "truncated OpenEXR header");
+        const std::string_view s = bytes.substr(pos, end - pos);
+        pos = end + 1;
+        return s;
+    };
+    for (;;) {
+        const std::string_view name = c_string();
+        if (name.empty()) return;  // end of the header
+        c_string();                // attribute type
+        if (pos + 4 > bytes.size()) fail(path, "truncated OpenEXR header");
+        uint32_t size = 0;
+        for (int k = 3; k >= 0; --k) size = size << 8 | static_cast<unsigned char>(bytes[pos + k]);
+        pos += 4;
+        if (size > bytes.size() - pos) fail(path, "truncated OpenEXR header");
+        const std::string_view value = bytes.substr(pos, size);
+        pos += size;
+        if (name == "tiles" && size != 9) fail(path, "malformed OpenEXR \"tiles\" attribute");
+        if (name == "type" && !(value == (tiled ? "tiledimage" : "scanlineimage")))
+            fail(path, "unsupported OpenEXR image type (only flat scanline or tiled images)");
+    }
+}
+
 Image read_exr(const std::filesystem::path& path, const std::string& bytes) {
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
     EXRVersion version;
@@ -347,6 +376,7 @@ Image read_exr(const std::filesystem::path& path, const std::string& bytes) {
     if (version.multipart || version.non_image) {
         fail(path, "multi-part and deep OpenEXR files are not supported");
     }
+    check_exr_attributes(path, bytes, version.tiled != 0);
     ExrFile exr;
     const char* err = nullptr;
     code = ParseEXRHeaderFromMemory(&exr.header, &version, data, bytes.size(), &err);
