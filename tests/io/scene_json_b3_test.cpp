@@ -4,23 +4,13 @@
 
 #include "hikari/core/error.h"
 #include "hikari/io/scene_json.h"
+#include "scene_test_util.h"
 
 namespace hikari {
 namespace {
 
-Scene parse(const std::string& json) {
-    std::vector<std::string> warnings;
-    return parse_scene(json, "s.json", ".", warnings);
-}
-
-std::string error_of(const std::string& json) {
-    try {
-        parse(json);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
+using testing::error_of;
+using testing::parse;
 
 TEST(SceneJsonB3, CheckerTextureParsesAndAlternates) {
     const Scene s = parse(R"({"materials": {"floor": {"ka": 0.1, "kd": 0.8, "texture":

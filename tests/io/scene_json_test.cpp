@@ -1,4 +1,5 @@
 #include "hikari/io/scene_json.h"
+#include "scene_test_util.h"
 
 #include <gtest/gtest.h>
 
@@ -7,20 +8,8 @@
 namespace hikari {
 namespace {
 
-Scene parse(const std::string& json) {
-    std::vector<std::string> warnings;
-    return parse_scene(json, "s.json", ".", warnings);
-}
-
-/// The InputError message that parsing `json` produces ("" when it parses).
-std::string error_of(const std::string& json) {
-    try {
-        parse(json);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
+using testing::error_of;
+using testing::parse;
 
 TEST(SceneJson, DefaultSceneIsTheAssignment) {
     const Scene s = load_default_scene();

@@ -7,7 +7,6 @@
 
 #include "hikari/raster/polygon_fill.h"
 #include "hikari/raster/shade_visibility.h"
-#include "hikari/raster/vertex_pipeline.h"
 
 namespace hikari {
 namespace {
@@ -433,17 +432,11 @@ VisibilityBuffer depth_sort_naive_visibility(std::span<const ScreenTriangle> tri
 }
 
 Framebuffer render_depth_sort(const Scene& scene, const RenderSettings& settings) {
-    const ProjectedScene ps = project_scene(scene, settings);
-    const VisibilityBuffer vis =
-        depth_sort_visibility(ps.triangles, scene.camera.width, scene.camera.height);
-    return shade_visibility(scene, ps, vis, settings);
+    return render_raster(scene, settings, depth_sort_visibility);
 }
 
 Framebuffer render_depth_sort_naive(const Scene& scene, const RenderSettings& settings) {
-    const ProjectedScene ps = project_scene(scene, settings);
-    const VisibilityBuffer vis =
-        depth_sort_naive_visibility(ps.triangles, scene.camera.width, scene.camera.height);
-    return shade_visibility(scene, ps, vis, settings);
+    return render_raster(scene, settings, depth_sort_naive_visibility);
 }
 
 }  // namespace hikari

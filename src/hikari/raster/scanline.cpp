@@ -11,7 +11,6 @@
 #include "hikari/core/parallel.h"
 #include "hikari/raster/polygon_fill.h"
 #include "hikari/raster/shade_visibility.h"
-#include "hikari/raster/vertex_pipeline.h"
 
 namespace hikari {
 namespace {
@@ -270,10 +269,7 @@ VisibilityBuffer scanline_visibility(std::span<const ScreenTriangle> triangles, 
 }
 
 Framebuffer render_scanline(const Scene& scene, const RenderSettings& settings) {
-    const ProjectedScene ps = project_scene(scene, settings);
-    const VisibilityBuffer vis =
-        scanline_visibility(ps.triangles, scene.camera.width, scene.camera.height);
-    return shade_visibility(scene, ps, vis, settings);
+    return render_raster(scene, settings, scanline_visibility);
 }
 
 }  // namespace hikari

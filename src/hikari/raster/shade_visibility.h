@@ -3,6 +3,8 @@
 // triangle each pixel centre sees, this pass interpolates that triangle's attributes and applies
 // the lecture's one shading model (shading/phong.h, Fig 4.29).
 
+#include <span>
+
 #include "hikari/raster/screen_triangle.h"
 #include "hikari/raster/vertex_pipeline.h"
 #include "hikari/render/framebuffer.h"
@@ -27,5 +29,16 @@ bool perspective_barycentrics(Vec4 c0, Vec4 c1, Vec4 c2, double ndc_x, double nd
 /// tracer turns them, so both pipelines shade a surface alike. Parallel over tiles.
 Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& projected,
                              const VisibilityBuffer& visibility, const RenderSettings& settings);
+
+/// One raster method end to end (Fig 4.2): the shared vertex stage, the method's own hidden-surface
+/// removal `visible(screen_triangles, width, height) -> VisibilityBuffer`, the shared shading pass.
+template <class VisibilityFn>
+Framebuffer render_raster(const Scene& scene, const RenderSettings& settings,
+                          VisibilityFn&& visible) {
+    const ProjectedScene ps = project_scene(scene, settings);
+    const VisibilityBuffer vis = visible(std::span<const ScreenTriangle>(ps.triangles),
+                                         scene.camera.width, scene.camera.height);
+    return shade_visibility(scene, ps, vis, settings);
+}
 
 }  // namespace hikari

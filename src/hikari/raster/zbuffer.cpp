@@ -90,10 +90,9 @@ VisibilityBuffer zbuffer_visibility(std::span<const ScreenTriangle> triangles, i
 }
 
 Framebuffer render_zbuffer(const Scene& scene, const RenderSettings& settings) {
-    const ProjectedScene ps = project_scene(scene, settings);
-    const VisibilityBuffer vis =
-        zbuffer_visibility(ps.triangles, scene.camera.width, scene.camera.height, settings.control);
-    return shade_visibility(scene, ps, vis, settings);
+    return render_raster(scene, settings, [&](auto triangles, int width, int height) {
+        return zbuffer_visibility(triangles, width, height, settings.control);
+    });
 }
 
 }  // namespace hikari
