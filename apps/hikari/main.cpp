@@ -236,6 +236,7 @@ struct BenchOptions {
     std::string simd = "auto";
     int threads = 1;
     int repetitions = 5;
+    bool packets = false;
 };
 
 /// `hikari bench`: one JSON object on stdout (SPEC's B1 or B2 on one mesh).
@@ -244,6 +245,8 @@ int run_bench_command(const BenchOptions& o) {
     settings.bench = o.bench;
     settings.threads = o.threads;
     settings.repetitions = o.repetitions;
+    settings.packets = o.packets;
+    if (o.packets && o.bench != "B1") throw InputError("--packets is for B1 only");
     if (o.simd != "auto") {
         settings.simd = o.simd == "avx512" ? SimdLevel::avx512
                         : o.simd == "avx2" ? SimdLevel::avx2
@@ -346,6 +349,8 @@ int main(int argc, char** argv) {
     bench->add_option("--simd", b.simd, "Traversal kernel: auto (best), portable, avx2, avx512")
         ->check(CLI::IsMember({"auto", "portable", "avx2", "avx512"}))
         ->capture_default_str();
+    bench->add_flag("--packets", b.packets,
+                    "B1 as 4x4 pixel packets (coherent packet traversal); reported as B1p16");
 
     try {
         app.parse(argc, argv);

@@ -19,6 +19,8 @@ struct BenchSettings {
     int threads = 1;           ///< worker threads for build and trace (>= 1)
     int repetitions = 5;       ///< timed passes (and timed builds) after one warm-up each
     SimdLevel simd = best_simd_level();  ///< kernel to run
+    bool packets = false;  ///< B1 only: trace 4x4 pixel packets (intersect_closest_tile);
+                           ///< reported as bench "B1p16"
 };
 
 /// Results of one benchmark run; times in milliseconds.
@@ -44,6 +46,13 @@ struct BenchResult {
 /// triangle per ray, on `threads` threads pulling chunks of `chunk` rays.
 void trace_closest(const WideBvh& bvh, const BenchRays& rays, int threads, size_t chunk,
                    SimdLevel simd, std::vector<float>& hit_t, std::vector<uint32_t>& hit_triangle);
+
+/// Closest hit of every ray of a `width`-wide row-major image of rays, as 4x4 packets
+/// (intersect_closest_tile), on `threads` threads pulling chunks of `chunk_rows` rows (a multiple
+/// of 4): distance (or +inf) and triangle per ray, as trace_closest gives them.
+void trace_closest_packets(const WideBvh& bvh, const BenchRays& rays, uint32_t width, int threads,
+                           uint32_t chunk_rows, SimdLevel simd, std::vector<float>& hit_t,
+                           std::vector<uint32_t>& hit_triangle);
 
 /// Any hit of every ray: 1 where occluded.
 void trace_occluded(const WideBvh& bvh, const BenchRays& rays, int threads, size_t chunk,

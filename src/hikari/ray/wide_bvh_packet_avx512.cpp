@@ -1,0 +1,33 @@
+// The packet kernel compiled for AVX-512 (chosen at run time by wide_bvh_packet.cpp). Everything
+// the kernel includes comes first, compiled for the baseline; the kernel itself follows the
+// target pragma and has internal linkage, so no AVX-512 code leaks into shared inline functions.
+#include <immintrin.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "hikari/core/ray.h"
+#include "hikari/ray/bvh_traversal.h"
+#include "hikari/ray/simd_level.h"
+#include "hikari/ray/triangle_intersect.h"
+#include "hikari/ray/wide_bvh.h"
+#include "hikari/ray/wide_bvh_packet.h"
+
+#if HIKARI_SIMD_KERNELS
+#pragma GCC target("avx2,avx512f,avx512vl,avx512dq,avx512bw,popcnt,bmi,bmi2,lzcnt")
+#include "hikari/ray/wide_bvh_packet_simd.h"
+
+namespace hikari::detail {
+
+uint32_t packet_group_avx512(const WideBvh& bvh, const RayPacket& packet, uint32_t group, int axes,
+                             PacketHit& hits, uint32_t& ties) {
+    return packet_kernel::trace_group<packet_kernel::Simd16Ops>(bvh, packet, group, axes, hits,
+                                                                ties);
+}
+
+}  // namespace hikari::detail
+#endif
