@@ -100,10 +100,11 @@ void trace_closest_packets(const WideBvh& bvh, const BenchRays& rays, uint32_t w
     hit_triangle.resize(n);
     const size_t height = width ? n / width : 0;
     parallel_chunks(threads, height, chunk_rows, [&](size_t y0, size_t y1) {
-        // Per chunk, so the answers are the same for any thread count; 8 KiB per row, no
-        // allocation worth timing beside tracing 1024 rays a row.
-        std::vector<TriangleHit> hits(width * (y1 - y0));
-        std::vector<uint8_t> found(width * (y1 - y0));
+        // Per-thread scratch for the tile's answers, allocated once.
+        thread_local std::vector<TriangleHit> hits;
+        thread_local std::vector<uint8_t> found;
+        hits.resize(width * (y1 - y0));
+        found.resize(width * (y1 - y0));
         const size_t first = y0 * width;
         intersect_closest_tile(bvh, rays.rays.data() + first, width, width, uint32_t(y1 - y0),
                                {0.0f, rays.t_far}, hits.data(), found.data(), simd);

@@ -10,10 +10,10 @@
 namespace hikari {
 namespace detail {
 // Defined in wide_bvh_packet_avx2.cpp and wide_bvh_packet_avx512.cpp.
-uint32_t packet_group_avx2(const WideBvh& bvh, const RayPacket& packet, uint32_t group, int axes,
-                           PacketHit& hits, uint32_t& ties);
-uint32_t packet_group_avx512(const WideBvh& bvh, const RayPacket& packet, uint32_t group, int axes,
-                             PacketHit& hits, uint32_t& ties);
+uint32_t packet_closest_avx2(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
+                             uint32_t min_group, PacketHit& hits, uint32_t& single);
+uint32_t packet_closest_avx512(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
+                               uint32_t min_group, PacketHit& hits, uint32_t& single);
 }  // namespace detail
 
 namespace {
@@ -65,6 +65,18 @@ struct PortableOps {
     }
     static V max(V a, V b) {
         return map(a, b, [](float x, float y) { return x > y ? x : y; });
+    }
+    static V abs(V a) {
+        for (float& x : a.x) x = std::abs(x);
+        return a;
+    }
+    static uint32_t sign(const V& a) {
+        uint32_t m = 0;
+        for (uint32_t i = 0; i < k_packet_size; ++i) m |= std::signbit(a.x[i]) ? 1u << i : 0u;
+        return m;
+    }
+    static uint32_t ge(V a, V b) {
+        return mask(a, b, [](float x, float y) { return x >= y; });
     }
     static uint32_t lt(V a, V b) {
         return mask(a, b, [](float x, float y) { return x < y; });
@@ -118,28 +130,24 @@ struct PortableOps {
     }
 };
 
-uint32_t packet_group(const WideBvh& bvh, const RayPacket& packet, uint32_t group, int axes,
-                      PacketHit& hits, uint32_t& ties, SimdLevel level) {
+uint32_t packet_closest(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
+                        uint32_t min_group, PacketHit& hits, uint32_t& single, SimdLevel level) {
 #if HIKARI_SIMD_KERNELS
     switch (level) {
         case SimdLevel::avx512:
-            return detail::packet_group_avx512(bvh, packet, group, axes, hits, ties);
+            return detail::packet_closest_avx512(bvh, packet, active, min_group, hits, single);
         case SimdLevel::avx2:
-            return detail::packet_group_avx2(bvh, packet, group, axes, hits, ties);
+            return detail::packet_closest_avx2(bvh, packet, active, min_group, hits, single);
         default:
             break;
     }
 #endif
     (void)level;
-    return packet_kernel::trace_group<PortableOps>(bvh, packet, group, axes, hits, ties);
+    return packet_kernel::trace_packet<PortableOps>(bvh, packet, active, min_group, hits, single);
 }
 
 /// Smallest group traced as a packet by default: below it, single rays are faster.
 constexpr uint32_t k_min_group = 4;
-
-/// Below this |direction component|, 1 / component may overflow to inf, and inf * 0 = NaN would
-/// defeat the interval bounds: such rays go through the single-ray kernel.
-constexpr float k_min_direction = 1e-30f;
 
 }  // namespace
 
@@ -149,45 +157,9 @@ uint32_t detail::intersect_closest_packet(const WideBvh& bvh, const RayPacket& p
     active &= (1u << k_packet_size) - 1;
     if (bvh.empty() || active == 0) return 0;
 
-    /* sort the lanes into groups of one direction octant and one watertight permutation */
-    std::array<uint8_t, k_packet_size> code;
-    uint32_t single = 0, packable = 0;
-    for (uint32_t m = active; m != 0; m &= m - 1) {
-        const auto lane = static_cast<uint32_t>(std::countr_zero(m));
-        const float d[3] = {packet.direction[0][lane], packet.direction[1][lane],
-                            packet.direction[2][lane]};
-        bool ok = !std::isnan(packet.t_min[lane]) && !std::isnan(packet.t_max[lane]);
-        uint32_t signs = 0;
-        for (int a = 0; a < 3; ++a) {
-            ok = ok && std::isfinite(packet.origin[a][lane]) && std::isfinite(d[a]) &&
-                 std::abs(d[a]) >= k_min_direction;
-            signs |= std::signbit(d[a]) ? 1u << a : 0u;
-        }
-        if (!ok) {
-            single |= 1u << lane;
-            continue;
-        }
-        code[lane] = static_cast<uint8_t>(signs | packet_kernel::watertight_axes(d) << 3);
-        packable |= 1u << lane;
-    }
-
-    uint32_t found = 0;
-    while (packable != 0) {
-        const uint8_t c = code[std::countr_zero(packable)];
-        uint32_t group = 0;
-        for (uint32_t m = packable; m != 0; m &= m - 1)
-            if (code[std::countr_zero(m)] == c) group |= m & -m;
-        packable &= ~group;
-        if (uint32_t(std::popcount(group)) < std::max(1u, min_group)) {
-            single |= group;
-            continue;
-        }
-        uint32_t ties = 0;
-        found |= packet_group(bvh, packet, group, c >> 3, hits, ties, level);
-        // Two triangles at exactly the nearest t: the single-ray kernel reports the first in
-        // its own visiting order, so ask it.
-        single |= ties;
-    }
+    uint32_t single = 0;
+    uint32_t found =
+        packet_closest(bvh, packet, active, std::max(1u, min_group), hits, single, level);
 
     /* the rest one by one */
     for (uint32_t m = single; m != 0; m &= m - 1) {

@@ -19,14 +19,15 @@
 
 #if HIKARI_SIMD_KERNELS
 #pragma GCC target("avx2,popcnt,bmi,bmi2,lzcnt")
+#define HIKARI_PACKET_AVX512 0
 #include "hikari/ray/wide_bvh_packet_simd.h"
 
 namespace hikari::detail {
 
-uint32_t packet_group_avx2(const WideBvh& bvh, const RayPacket& packet, uint32_t group, int axes,
-                           PacketHit& hits, uint32_t& ties) {
-    return packet_kernel::trace_group<packet_kernel::Simd16Ops>(bvh, packet, group, axes, hits,
-                                                                ties);
+uint32_t packet_closest_avx2(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
+                             uint32_t min_group, PacketHit& hits, uint32_t& single) {
+    return packet_kernel::trace_packet<packet_kernel::Simd16Ops>(bvh, packet, active, min_group,
+                                                                 hits, single);
 }
 
 }  // namespace hikari::detail

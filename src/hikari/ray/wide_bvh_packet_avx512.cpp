@@ -19,14 +19,19 @@
 
 #if HIKARI_SIMD_KERNELS
 #pragma GCC target("avx2,avx512f,avx512vl,avx512dq,avx512bw,popcnt,bmi,bmi2,lzcnt")
+// GCC 12's AVX-512 intrinsics read an intentionally undefined register (_mm512_undefined_ps)
+// and then warn about it once inlined.
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#define HIKARI_PACKET_AVX512 1
 #include "hikari/ray/wide_bvh_packet_simd.h"
 
 namespace hikari::detail {
 
-uint32_t packet_group_avx512(const WideBvh& bvh, const RayPacket& packet, uint32_t group, int axes,
-                             PacketHit& hits, uint32_t& ties) {
-    return packet_kernel::trace_group<packet_kernel::Simd16Ops>(bvh, packet, group, axes, hits,
-                                                                ties);
+uint32_t packet_closest_avx512(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
+                               uint32_t min_group, PacketHit& hits, uint32_t& single) {
+    return packet_kernel::trace_packet<packet_kernel::Simd16Ops>(bvh, packet, active, min_group,
+                                                                 hits, single);
 }
 
 }  // namespace hikari::detail

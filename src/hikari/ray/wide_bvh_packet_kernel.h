@@ -7,7 +7,7 @@
 // One call traces a group of alike rays: every direction has the same sign per axis (so the
 // rays enter a box by the same faces) and the same watertight axis permutation (so the sheared
 // triangle test runs on all lanes with one shuffle of vertex rows), and 1 / direction is finite.
-// The dispatcher (wide_bvh_packet.cpp) splits a packet into such groups.
+// trace_packet splits a packet into such groups.
 //
 // Ops provides, all IEEE-exact and bit-identical across implementations:
 //   V                                16 floats
@@ -67,16 +67,8 @@ struct alignas(64) GroupRays {
     Frustum frustum;
 };
 
-/// Watertight permutation of one direction, by WatertightRay's rules (kz: dominant axis; kx, ky
-/// swapped when d[kz] < 0). Returns kz + 3 * swapped.
-inline int watertight_axes(const float d[3]) {
-    const float ax = std::abs(d[0]), ay = std::abs(d[1]), az = std::abs(d[2]);
-    const int kz = (ax >= ay && ax >= az) ? 0 : (ay >= az) ? 1 : 2;
-    return kz + (d[kz] < 0.0f ? 3 : 0);
-}
-
-/// Prepares group `group` of `packet` (lanes with one sign pattern and one permutation code,
-/// see watertight_axes).
+/// Prepares group `group` of `packet` (lanes with one sign pattern and one watertight
+/// permutation: kz = axes % 3, kx and ky swapped when axes >= 3).
 template <typename Ops>
 void prepare(const RayPacket& packet, uint32_t group, int axes, GroupRays& r) {
     using V = typename Ops::V;
@@ -294,21 +286,61 @@ void traverse(const WideBvh& bvh, const RayPacket& packet, uint32_t group, int a
     }
 }
 
-/// Traces group `group` of `packet` (alike lanes with permutation code `axes`, see
-/// watertight_axes) on a non-empty tree: fills the lanes of `out` that hit and returns them;
-/// `ties` gets the lanes whose answer the caller must take from the single-ray kernel.
+/// Traces the lanes `active` of `packet`: sorts them into groups of one direction octant and
+/// one watertight permutation and traces each group of at least `min_group` lanes as a packet.
+/// Fills the lanes of `out` that hit and returns them; `single` gets the lanes the caller must
+/// trace with the single-ray kernel instead (small groups, rays whose 1 / direction may
+/// overflow, odd intervals, and ties).
 template <typename Ops>
-uint32_t trace_group(const WideBvh& bvh, const RayPacket& packet, uint32_t group, int axes,
-                     PacketHit& out, uint32_t& ties) {
-    GroupHits h;
-    traverse<Ops>(bvh, packet, group, axes, h);
-    for (uint32_t m = h.found; m != 0; m &= m - 1) {
-        const auto lane = static_cast<uint32_t>(std::countr_zero(m));
-        out.t[lane] = h.t[lane], out.u[lane] = h.u[lane], out.v[lane] = h.v[lane];
-        out.triangle[lane] = bvh.triangle_ids[h.slot[lane]];
+uint32_t trace_packet(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
+                      uint32_t min_group, PacketHit& out, uint32_t& single) {
+    using V = typename Ops::V;
+    /* per lane: may it go in a packet, its direction's signs and its dominant axis */
+    uint32_t ok = active & Ops::eq(Ops::load(packet.t_min), Ops::load(packet.t_min)) &
+                  Ops::eq(Ops::load(packet.t_max), Ops::load(packet.t_max));
+    uint32_t negative[3];
+    V abs_dir[3];
+    const V inf = Ops::set1(k_infinity);
+    for (int a = 0; a < 3; ++a) {
+        const V d = Ops::load(packet.direction[a]);
+        abs_dir[a] = Ops::abs(d);
+        negative[a] = Ops::sign(d);
+        // Below 1e-30, 1 / d may overflow, and inf * 0 = NaN would defeat the bounds.
+        ok &= Ops::lt(Ops::abs(Ops::load(packet.origin[a])), inf) & Ops::lt(abs_dir[a], inf) &
+              Ops::ge(abs_dir[a], Ops::set1(1e-30f));
     }
-    ties = h.ties;
-    return h.found;
+    // WatertightRay's rule: kz is the first axis of largest |d|.
+    const uint32_t kz0 = Ops::ge(abs_dir[0], abs_dir[1]) & Ops::ge(abs_dir[0], abs_dir[2]);
+    const uint32_t kz1 = ~kz0 & Ops::ge(abs_dir[1], abs_dir[2]);
+    const std::array<uint32_t, 5> traits = {negative[0], negative[1], negative[2], kz0, kz1};
+    single = active & ~ok;
+
+    uint32_t found = 0;
+    while (ok != 0) {
+        /* the group of the first remaining lane: the lanes agreeing with it on every trait */
+        const uint32_t lead = ok & -ok;
+        uint32_t group = ok;
+        for (uint32_t t : traits) group &= (t & lead) ? t : ~t;
+        ok &= ~group;
+        if (uint32_t(std::popcount(group)) < min_group) {
+            single |= group;
+            continue;
+        }
+        const int kz = (kz0 & lead) ? 0 : (kz1 & lead) ? 1 : 2;
+        const int axes = kz + ((negative[kz] & lead) ? 3 : 0);
+        GroupHits h;
+        traverse<Ops>(bvh, packet, group, axes, h);
+        for (uint32_t m = h.found; m != 0; m &= m - 1) {
+            const auto lane = static_cast<uint32_t>(std::countr_zero(m));
+            out.t[lane] = h.t[lane], out.u[lane] = h.u[lane], out.v[lane] = h.v[lane];
+            out.triangle[lane] = bvh.triangle_ids[h.slot[lane]];
+        }
+        found |= h.found;
+        // Two triangles at exactly the nearest t: the single-ray kernel reports the first in
+        // its own visiting order, so it must answer.
+        single |= h.ties;
+    }
+    return found & ~single;
 }
 
 }  // namespace

@@ -1,9 +1,10 @@
 #pragma once
 // The 16-lane operations of the packet kernel (wide_bvh_packet_kernel.h): one zmm register per
 // value with AVX-512, two ymm registers with AVX2. Include only after `#pragma GCC target` in
-// the kernel's own translation unit (see wide_bvh_packet_avx512.cpp); which one is defined
-// follows the target's macros. Every operation is an IEEE-exact add, sub, mul, div, min or max,
-// no FMA, so the answers are bit-identical to the portable kernel's.
+// the kernel's own translation unit (see wide_bvh_packet_avx512.cpp), which defines
+// HIKARI_PACKET_AVX512 for the AVX-512 version: g++ does not define __AVX512F__ after the pragma
+// in C++, so the target's own macros cannot choose. Every operation is an IEEE-exact add, sub, mul,
+// div, min or max, no FMA, so the answers are bit-identical to the portable kernel's.
 
 #include <immintrin.h>
 
@@ -12,7 +13,7 @@
 namespace hikari::packet_kernel {
 namespace {
 
-#if defined(__AVX512VL__)
+#if HIKARI_PACKET_AVX512
 #define HIKARI_CMP8(a, b, op) static_cast<uint32_t>(_mm256_cmp_ps_mask(a, b, op))
 #else
 #define HIKARI_CMP8(a, b, op) static_cast<uint32_t>(_mm256_movemask_ps(_mm256_cmp_ps(a, b, op)))
@@ -35,7 +36,7 @@ inline uint32_t test_frustum_simd8(const WideBvhNode& node, const Frustum& f, fl
     return HIKARI_CMP8(t0, _mm256_mul_ps(t1, _mm256_set1_ps(k_exit_scale)), _CMP_LE_OQ);
 }
 
-#if defined(__AVX512F__)
+#if HIKARI_PACKET_AVX512
 
 struct Simd16Ops {
     using V = __m512;
@@ -48,6 +49,9 @@ struct Simd16Ops {
     static V div(V a, V b) { return _mm512_div_ps(a, b); }
     static V min(V a, V b) { return _mm512_min_ps(a, b); }
     static V max(V a, V b) { return _mm512_max_ps(a, b); }
+    static V abs(V a) { return _mm512_abs_ps(a); }
+    static uint32_t sign(V a) { return _mm512_movepi32_mask(_mm512_castps_si512(a)); }
+    static uint32_t ge(V a, V b) { return _mm512_cmp_ps_mask(a, b, _CMP_GE_OQ); }
     static uint32_t lt(V a, V b) { return _mm512_cmp_ps_mask(a, b, _CMP_LT_OQ); }
     static uint32_t le(V a, V b) { return _mm512_cmp_ps_mask(a, b, _CMP_LE_OQ); }
     static uint32_t eq(V a, V b) { return _mm512_cmp_ps_mask(a, b, _CMP_EQ_OQ); }
@@ -82,6 +86,14 @@ struct Simd16Ops {
     static uint32_t cmp(V a, V b) {
         return HIKARI_CMP8(a.lo, b.lo, k_op) | HIKARI_CMP8(a.hi, b.hi, k_op) << 8;
     }
+    static V abs(V a) {
+        const __m256 m = _mm256_castsi256_ps(_mm256_set1_epi32(0x7fffffff));
+        return {_mm256_and_ps(a.lo, m), _mm256_and_ps(a.hi, m)};
+    }
+    static uint32_t sign(V a) {
+        return uint32_t(_mm256_movemask_ps(a.lo)) | uint32_t(_mm256_movemask_ps(a.hi)) << 8;
+    }
+    static uint32_t ge(V a, V b) { return cmp<_CMP_GE_OQ>(a, b); }
     static uint32_t lt(V a, V b) { return cmp<_CMP_LT_OQ>(a, b); }
     static uint32_t le(V a, V b) { return cmp<_CMP_LE_OQ>(a, b); }
     static uint32_t eq(V a, V b) { return cmp<_CMP_EQ_OQ>(a, b); }
