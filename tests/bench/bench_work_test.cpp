@@ -66,5 +66,24 @@ TEST(BenchWork, ValidationValuesMatchBruteForceForAnyThreadCount) {
     EXPECT_LT(occluded, b2.rays.size() - 50);
 }
 
+/// B1 as 4x4 packets: every ray's t and triangle equal the single-ray B1's, for any thread
+/// count and SIMD level (a mesh much smaller than the image, so packets straddle silhouettes).
+TEST(BenchWork, PacketB1EqualsSingleRayB1) {
+    const BenchMesh mesh = bench_mesh(testing::random_soup(3000, 0.2f, 78));
+    const WideBvh bvh = build_wide_bvh(mesh.positions, mesh.indices);
+    const BenchRays b1 = make_b1_rays(mesh, 64, 64);
+    std::vector<float> t_single, t_packet;
+    std::vector<uint32_t> tri_single, tri_packet;
+    trace_closest(bvh, b1, 1, 64, best_simd_level(), t_single, tri_single);
+    for (SimdLevel level : {SimdLevel::portable, SimdLevel::avx2, SimdLevel::avx512}) {
+        if (!simd_level_supported(level)) continue;
+        for (int threads : {1, 2}) {
+            trace_closest_packets(bvh, b1, 64, threads, 8, level, t_packet, tri_packet);
+            EXPECT_EQ(t_packet, t_single) << simd_level_name(level) << " " << threads;
+            EXPECT_EQ(tri_packet, tri_single) << simd_level_name(level) << " " << threads;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace hikari
