@@ -27,7 +27,7 @@ def samples(s): return [float(x) for x in s.split(",") if x]
 
 print("| bench | mesh | T | metric | hikari median (min-max) | peer median | hikari/peer | validation hikari / peer |")
 print("|---|---|---|---|---|---|---|---|")
-for bench in ("B1", "B2"):
+for bench in ("B1", "B1p16", "B2"):
     for mesh in ("bunny", "bumpy1m"):
         for t in (1, 2):
             H = [r for r in hik if r.get("bench") == bench and r.get("mesh") == mesh and r.get("threads") == t]
@@ -37,7 +37,7 @@ for bench in ("B1", "B2"):
             ht = [x for r in H for x in r["trace_samples_ms"]]
             et = [x for r in E for x in samples(r.get("samples_ms", ""))]
             hm, em = rays / med(ht) / 1e3, (E[0] and float(E[0]["rays"]) / med(et) / 1e3) if et else float("nan")
-            if bench == "B1":
+            if bench in ("B1", "B1p16"):
                 hv = f'{H[0]["hits"]} / {H[0]["mean_t"]:.6f}'
                 ev = f'{E[0]["hits"]} / {E[0]["mean_t"]}' if E else "-"
             else:

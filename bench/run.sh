@@ -5,7 +5,8 @@
 #   ONLY="B1" bench/run.sh       B1 and B2 only (B3: POV-Ray scene)
 # Builds hikari (Release), generates bumpy1m into build/bench/data, runs `hikari bench` and,
 # when the peers are built and installed (make -C $PEERS; Embree, POV-Ray), the peers'
-# programs interleaved with ours, then prints medians and ratios (bench/aggregate.py).
+# programs interleaved with ours, then prints medians and ratios (bench/aggregate.py). B1p16 is
+# B1 as 4x4 packets (`hikari bench B1 --packets`), compared with Embree's rtcIntersect16 line.
 set -u
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 PEERS=${PEERS:-/work/shared/bench/peers}
@@ -34,7 +35,11 @@ for r in $(seq "$RUNS"); do
   if has B1; then
     for mesh in bunny bumpy1m; do for t in 1 2; do
       file=$BUNNY; [ $mesh = bumpy1m ] && file=$BUMPY
-      for b in B1 B2; do "$HIKARI" bench $b --mesh "$file" --threads $t | sed "s/\"mesh\": \"[^\"]*\"/\"mesh\": \"$mesh\"/" >> "$LOG/hikari.jsonl"; done
+      # B1p16: B1 as 4x4 packets, against Embree's rtcIntersect16 (its B1p16 line).
+      for b in B1 B1p16 B2; do
+        args=$b; [ $b = B1p16 ] && args="B1 --packets"
+        "$HIKARI" bench $args --mesh "$file" --threads $t | sed "s/\"mesh\": \"[^\"]*\"/\"mesh\": \"$mesh\"/" >> "$LOG/hikari.jsonl"
+      done
       [ -n "$EMBREE" ] && "$EMBREE" "$file" $t 5 | sed "s/mesh=[^ ]*/mesh=$mesh/" >> "$LOG/embree.log" 2>> "$LOG/embree.err"
     done; done
   fi
