@@ -98,6 +98,9 @@ struct PortableOps {
             if (m & (1u << i)) b.x[i] = a.x[i];
         return b;
     }
+    static void store_masked(uint32_t* p, uint32_t m, uint32_t x) {
+        for (; m != 0; m &= m - 1) p[std::countr_zero(m)] = x;
+    }
     static float reduce_min(uint32_t m, const V& a) {
         float r = k_infinity;
         for (; m != 0; m &= m - 1) r = std::min(r, a.x[std::countr_zero(m)]);

@@ -58,6 +58,9 @@ struct Simd16Ops {
     static uint32_t gt(V a, V b) { return _mm512_cmp_ps_mask(a, b, _CMP_GT_OQ); }
     static uint32_t neq(V a, V b) { return _mm512_cmp_ps_mask(a, b, _CMP_NEQ_UQ); }
     static V select(uint32_t m, V a, V b) { return _mm512_mask_blend_ps(__mmask16(m), b, a); }
+    static void store_masked(uint32_t* p, uint32_t m, uint32_t x) {
+        _mm512_mask_storeu_epi32(p, __mmask16(m), _mm512_set1_epi32(int(x)));
+    }
     static float reduce_min(uint32_t m, V a) { return _mm512_mask_reduce_min_ps(__mmask16(m), a); }
     static float reduce_max(uint32_t m, V a) { return _mm512_mask_reduce_max_ps(__mmask16(m), a); }
     static uint32_t test_frustum(const WideBvhNode& node, const Frustum& f, float t_lo, float t_hi,
@@ -108,6 +111,12 @@ struct Simd16Ops {
     static V select(uint32_t m, V a, V b) {
         return {_mm256_blendv_ps(b.lo, a.lo, lane_mask(m)),
                 _mm256_blendv_ps(b.hi, a.hi, lane_mask(m >> 8))};
+    }
+    static void store_masked(uint32_t* p, uint32_t m, uint32_t x) {
+        const __m256i v = _mm256_set1_epi32(int(x));
+        _mm256_maskstore_epi32(reinterpret_cast<int*>(p), _mm256_castps_si256(lane_mask(m)), v);
+        _mm256_maskstore_epi32(reinterpret_cast<int*>(p + 8),
+                               _mm256_castps_si256(lane_mask(m >> 8)), v);
     }
     static float reduce_min(uint32_t m, V a) {
         alignas(32) float x[16];
