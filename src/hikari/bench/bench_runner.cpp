@@ -100,18 +100,24 @@ void trace_closest_packets(const WideBvh& bvh, const BenchRays& rays, uint32_t w
     hit_triangle.resize(n);
     const size_t height = width ? n / width : 0;
     parallel_chunks(threads, height, chunk_rows, [&](size_t y0, size_t y1) {
-        // Per-thread scratch for the tile's answers, allocated once.
-        thread_local std::vector<TriangleHit> hits;
-        thread_local std::vector<uint8_t> found;
-        hits.resize(width * (y1 - y0));
-        found.resize(width * (y1 - y0));
-        const size_t first = y0 * width;
-        intersect_closest_tile(bvh, rays.rays.data() + first, width, width, uint32_t(y1 - y0),
-                               {0.0f, rays.t_far}, hits.data(), found.data(), simd);
-        for (size_t i = 0; i < hits.size(); ++i) {
-            hit_t[first + i] = found[i] ? hits[i].t : k_infinity;
-            hit_triangle[first + i] = found[i] ? hits[i].triangle : ~0u;
-        }
+        // The tile loop of intersect_closest_tile, writing B1's outputs directly.
+        RayPacket packet;
+        PacketHit hits;
+        for (size_t y = y0; y < y1; y += 4)
+            for (uint32_t x = 0; x < width; x += 4) {
+                const size_t first = y * width + x;
+                const uint32_t active =
+                    packet.load_block(rays.rays.data() + first, width, width - x,
+                                      uint32_t(std::min<size_t>(4, y1 - y)), {0.0f, rays.t_far});
+                const uint32_t hit_mask = intersect_closest_packet(bvh, packet, active, hits, simd);
+                for (uint32_t k = 0; k < k_packet_size; ++k) {
+                    if (!(active & (1u << k))) continue;
+                    const size_t i = first + (k / 4) * width + k % 4;
+                    const bool hit = (hit_mask >> k) & 1u;
+                    hit_t[i] = hit ? hits.t[k] : k_infinity;
+                    hit_triangle[i] = hit ? hits.triangle[k] : ~0u;
+                }
+            }
     });
 }
 

@@ -198,14 +198,8 @@ void intersect_closest_tile(const WideBvh& bvh, const Ray* rays, size_t stride, 
     PacketHit packet_hits;
     for (uint32_t y0 = 0; y0 < height; y0 += 4) {
         for (uint32_t x0 = 0; x0 < width; x0 += 4) {
-            /* gather a 4x4 block (clipped at the tile's edge) into a packet */
-            uint32_t active = 0;
-            for (uint32_t k = 0; k < k_packet_size; ++k) {
-                const uint32_t x = x0 + k % 4, y = y0 + k / 4;
-                if (x >= width || y >= height) continue;
-                packet.set(k, rays[y * stride + x], valid);
-                active |= 1u << k;
-            }
+            const uint32_t active =
+                packet.load_block(rays + y0 * stride + x0, stride, width - x0, height - y0, valid);
             const uint32_t hit_mask =
                 intersect_closest_packet(bvh, packet, active, packet_hits, level);
             for (uint32_t k = 0; k < k_packet_size; ++k) {

@@ -8,6 +8,7 @@
 // intersect_closest (wide_bvh_traversal.h): same triangle, bit-identical t, u and v, at every
 // SIMD level.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 
@@ -35,6 +36,30 @@ struct alignas(64) RayPacket {
             origin[a][lane] = ray.origin[a], direction[a][lane] = ray.direction[a];
         t_min[lane] = valid.min;
         t_max[lane] = valid.max;
+    }
+    /// Loads the 4x4 block of rays at `rays` (row-major, `stride` rays from one row to the
+    /// next; lane 4 y + x holds ray (x, y)), clipped to `width` x `height` (at most 4 x 4), all
+    /// with interval `valid`. Returns the mask of lanes loaded; the others keep their values.
+    uint32_t load_block(const Ray* rays, size_t stride, uint32_t width, uint32_t height,
+                        Interval valid) {
+        for (uint32_t k = 0; k < k_packet_size; ++k) t_min[k] = valid.min, t_max[k] = valid.max;
+        if (width >= 4 && height >= 4) {
+            // The common full block, branch-free.
+            for (uint32_t y = 0; y < 4; ++y)
+                for (uint32_t x = 0; x < 4; ++x)
+                    for (int a = 0; a < 3; ++a) {
+                        origin[a][4 * y + x] = rays[y * stride + x].origin[a];
+                        direction[a][4 * y + x] = rays[y * stride + x].direction[a];
+                    }
+            return (1u << k_packet_size) - 1;
+        }
+        uint32_t active = 0;
+        for (uint32_t y = 0; y < std::min(height, 4u); ++y)
+            for (uint32_t x = 0; x < std::min(width, 4u); ++x) {
+                set(4 * y + x, rays[y * stride + x], valid);
+                active |= 1u << (4 * y + x);
+            }
+        return active;
     }
     /// The ray in `lane`.
     Ray ray(uint32_t lane) const {

@@ -110,6 +110,12 @@ struct alignas(64) GroupHits {
                         ///< one the single-ray kernel reports depends on its visiting order
 };
 
+/// The nearest hits' t, u, v, kept in registers while a leaf is tested.
+template <typename Ops>
+struct Nearest {
+    typename Ops::V t, u, v;
+};
+
 /// The per-ray slab test of child `slot` of `node` for the lanes in `lanes`, exactly the
 /// single-ray kernel's arithmetic (wide_bvh_kernel.h's test_node) on each lane.
 template <typename Ops>
@@ -132,10 +138,12 @@ uint32_t test_box_lanes(const WideBvhNode& node, uint32_t slot, const GroupRays&
 
 /// Woop et al. 2013 for one triangle against the lanes in `lanes`, the steps and rounding as in
 /// triangle_intersect.h; lanes where an edge function is exactly zero take the reference test
-/// (its exact fallback, Sec 4). Updates the nearest hits.
+/// (its exact fallback, Sec 4). Updates the nearest hits: t, u, v in `near` (registers, while
+/// a leaf is tested), the rest in `h`. Returns the lanes whose nearest hit it became.
 template <typename Ops>
-void test_triangle(const RayPacket& packet, const GroupRays& r, const float* block, uint32_t count,
-                   uint32_t i, uint32_t slot, uint32_t lanes, GroupHits& h) {
+uint32_t test_triangle(const RayPacket& packet, const GroupRays& r, const float* block,
+                       uint32_t count, uint32_t i, uint32_t slot, uint32_t lanes,
+                       Nearest<Ops>& near, GroupHits& h) {
     using V = typename Ops::V;
     const auto vertex = [&](int v, int axis) { return block[(3 * v + axis) * count + i]; };
     /* steps 1-2: vertices relative to the origins, sheared so each ray runs along +z */
@@ -172,15 +180,16 @@ void test_triangle(const RayPacket& packet, const GroupRays& r, const float* blo
                  Ops::mul(e2, Ops::mul(sz, cz)));
     const V inv_det = Ops::div(Ops::set1(1.0f), det);
     const V t = Ops::mul(t_scaled, inv_det);
-    const V best = Ops::load(h.t);
     inside &= Ops::lt(Ops::load(r.t_min), t);
-    h.ties |= inside & h.found & Ops::eq(t, best);
-    const uint32_t nearer = inside & Ops::lt(t, best);
-    Ops::store(h.t, Ops::select(nearer, t, best));
-    Ops::store(h.u, Ops::select(nearer, Ops::mul(e1, inv_det), Ops::load(h.u)));
-    Ops::store(h.v, Ops::select(nearer, Ops::mul(e2, inv_det), Ops::load(h.v)));
+    h.ties |= inside & h.found & Ops::eq(t, near.t);
+    uint32_t nearer = inside & Ops::lt(t, near.t);
+    near.t = Ops::select(nearer, t, near.t);
+    near.u = Ops::select(nearer, Ops::mul(e1, inv_det), near.u);
+    near.v = Ops::select(nearer, Ops::mul(e2, inv_det), near.v);
     Ops::store_masked(h.slot, nearer, slot);
     h.found |= nearer;
+    if (on_edge == 0) return nearer;
+    Ops::store(h.t, near.t), Ops::store(h.u, near.u), Ops::store(h.v, near.v);
     for (uint32_t m = on_edge; m != 0; m &= m - 1) {
         // A ray through an edge or vertex: rare, so the scalar reference test.
         const auto lane = static_cast<uint32_t>(std::countr_zero(m));
@@ -195,7 +204,10 @@ void test_triangle(const RayPacket& packet, const GroupRays& r, const float* blo
         if (!(hit->t < h.t[lane])) continue;
         h.t[lane] = hit->t, h.u[lane] = hit->u, h.v[lane] = hit->v, h.slot[lane] = slot;
         h.found |= bit;
+        nearer |= bit;
     }
+    near = {Ops::load(h.t), Ops::load(h.u), Ops::load(h.v)};
+    return nearer;
 }
 
 /// The traversal loop: a stack of (reference, entry bound, parent, slot). Inner nodes: the
@@ -204,10 +216,10 @@ void test_triangle(const RayPacket& packet, const GroupRays& r, const float* blo
 /// on those lanes.
 template <typename Ops>
 void traverse(const WideBvh& bvh, const RayPacket& packet, uint32_t group, int axes, GroupHits& h) {
-    using V = typename Ops::V;
     GroupRays r;
     prepare<Ops>(packet, group, axes, r);
     Ops::store(h.t, Ops::load(packet.t_max));
+    Ops::store(h.u, Ops::set1(0.0f)), Ops::store(h.v, Ops::set1(0.0f));
 
     const WideBvhNode* nodes = bvh.nodes.data();
     const float* triangle_data = bvh.triangle_data.data();
@@ -279,12 +291,13 @@ void traverse(const WideBvh& bvh, const RayPacket& packet, uint32_t group, int a
                 const uint32_t first = WideBvhRef::leaf_first(current.ref);
                 const uint32_t count = WideBvhRef::leaf_count(current.ref);
                 const float* block = triangle_data + 9 * size_t(first);
-                const uint32_t found_before = h.found;
-                const V t_before = Ops::load(h.t);
+                Nearest<Ops> near{Ops::load(h.t), Ops::load(h.u), Ops::load(h.v)};
+                uint32_t nearer = 0;
                 for (uint32_t i = 0; i < count; ++i)
-                    test_triangle<Ops>(packet, r, block, count, i, first + i, lanes, h);
-                if (h.found != found_before || Ops::lt(Ops::load(h.t), t_before) != 0)
-                    t_hi = Ops::reduce_max(group, Ops::load(h.t));
+                    nearer |=
+                        test_triangle<Ops>(packet, r, block, count, i, first + i, lanes, near, h);
+                Ops::store(h.t, near.t), Ops::store(h.u, near.u), Ops::store(h.v, near.v);
+                if (nearer != 0) t_hi = Ops::reduce_max(group, near.t);
             }
         }
 
