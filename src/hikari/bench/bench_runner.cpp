@@ -101,7 +101,7 @@ void trace_closest_packets(const WideBvh& bvh, const BenchRays& rays, uint32_t w
     const size_t height = width ? n / width : 0;
     parallel_chunks(threads, height, chunk_rows, [&](size_t y0, size_t y1) {
         // The tile loop of intersect_closest_tile, writing B1's outputs directly.
-        RayPacket packet;
+        RayPacket packet{};
         PacketHit hits;
         for (size_t y = y0; y < y1; y += 4)
             for (uint32_t x = 0; x < width; x += 4) {
