@@ -23,7 +23,8 @@ namespace hikari {
 inline constexpr uint32_t k_packet_size = 16;
 
 /// Up to 16 rays, structure-of-arrays. Which lanes are live is said by the `active` mask passed
-/// with it; other lanes are never read.
+/// with it; the other lanes may hold anything (they are loaded with the rest but never affect
+/// an answer).
 struct alignas(64) RayPacket {
     float origin[3][k_packet_size];     ///< origin[axis][lane]
     float direction[3][k_packet_size];  ///< direction[axis][lane]; need not be unit length

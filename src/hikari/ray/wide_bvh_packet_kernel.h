@@ -10,15 +10,15 @@
 // trace_packet splits a packet into such groups.
 //
 // Ops provides, all IEEE-exact and bit-identical across implementations:
-//   V                                16 floats
-//   load(const float*) store(float*, V) set1(float)
-//   add sub mul div min max          lane-wise; min(a, b) = a < b ? a : b, max(a, b) = a > b ? a :
-//   b lt le eq gt neq(V, V)            lane masks (ordered; neq is true for NaN) select(mask, a, b)
-//   a where mask is set, else b reduce_min / reduce_max(mask, V) over the lanes in mask (+inf /
-//   -inf when none) test_frustum(node, frustum, t_lo, t_hi, entry) -> 8-bit mask of children the
-//   frustum may
-//                                    meet in [t_lo, t_hi]; entry[i] = a lower bound on where
-//                                    any of its rays enters child i
+//   V: 16 floats; load(const float*), store(float*, V), set1(float)
+//   add, sub, mul, div, min, max: lane-wise; min(a, b) = a < b ? a : b, max alike
+//   abs(V); sign(V): mask of the sign bits
+//   lt, le, ge, eq, gt, neq(V, V): lane masks (ordered; neq is true for NaN)
+//   select(mask, a, b): a where mask is set, else b
+//   reduce_min, reduce_max(mask, V): over the lanes in mask (+inf / -inf when none)
+//   store_masked(uint32_t* p, mask, x): p[i] = x for the lanes in mask
+//   test_frustum(node, frustum, t_lo, t_hi, entry): mask of the children the frustum may meet
+//     in [t_lo, t_hi]; entry[i] = a lower bound on where any of its rays enters child i
 
 #include <array>
 #include <bit>
