@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "hikari/core/aabb.h"
+#include "hikari/core/large_buffer.h"
 
 namespace hikari {
 
@@ -54,10 +55,10 @@ static_assert(sizeof(WideBvhNode) == 224);
 /// lie at triangle_data[9 first ...] as nine rows of `count` floats: p0.x, p0.y, p0.z, p1.x, ...,
 /// p2.z, the vertices exactly as given (watertightness needs bit-identical shared edges).
 struct WideBvh {
-    std::vector<WideBvhNode> nodes;       ///< inner nodes; nodes[0] is the root when root is inner
-    std::vector<float> triangle_data;     ///< per-leaf SoA vertices, plus 8 floats of padding so
+    LargeVector<WideBvhNode> nodes;       ///< inner nodes; nodes[0] is the root when root is inner
+    LargeVector<float> triangle_data;     ///< per-leaf SoA vertices, plus 8 floats of padding so
                                           ///< 8-wide loads at a leaf's end stay inside
-    std::vector<uint32_t> triangle_ids;   ///< triangle_ids[slot]: input index of that triangle
+    LargeVector<uint32_t> triangle_ids;   ///< triangle_ids[slot]: input index of that triangle
     uint32_t root = WideBvhRef::k_empty;  ///< the root reference (a leaf for tiny meshes)
     Aabb root_bounds;                     ///< box around every triangle
 

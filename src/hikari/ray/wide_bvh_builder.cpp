@@ -71,7 +71,7 @@ class Collapser {
 };
 
 /// Writes each leaf's triangles as nine rows of `count` floats at 9 * first.
-void write_triangle_data(const Bvh& binary, std::vector<float>& data) {
+void write_triangle_data(const Bvh& binary, LargeVector<float>& data) {
     data.assign(9 * binary.triangles.size() + k_wide_bvh_width, 0.0f);
     for (const BvhNode& node : binary.nodes) {
         if (!node.is_leaf()) continue;
@@ -98,7 +98,7 @@ WideBvh collapse_to_wide_bvh(const Bvh& binary) {
     wide.root_bounds = binary.bounds();
     wide.nodes.shrink_to_fit();
     write_triangle_data(binary, wide.triangle_data);
-    wide.triangle_ids = binary.triangle_ids;
+    wide.triangle_ids.assign(binary.triangle_ids.begin(), binary.triangle_ids.end());
     return wide;
 }
 

@@ -12,8 +12,9 @@
 namespace hikari::wide_kernel {
 namespace {
 
-/// 8 lanes of a comparison as a bit mask.
-#if defined(__AVX512VL__)
+/// 8 lanes of a comparison as a bit mask. The AVX-512 translation unit defines
+/// HIKARI_SIMD8_AVX512 itself: g++ 12 does not define __AVX512VL__ after `#pragma GCC target`.
+#if defined(HIKARI_SIMD8_AVX512)
 #define HIKARI_CMP_MASK(a, b, op) static_cast<uint32_t>(_mm256_cmp_ps_mask(a, b, op))
 #else
 #define HIKARI_CMP_MASK(a, b, op) static_cast<uint32_t>(_mm256_movemask_ps(_mm256_cmp_ps(a, b, op)))

@@ -18,6 +18,7 @@
 
 #if HIKARI_SIMD_KERNELS
 #pragma GCC target("avx2,avx512f,avx512vl,avx512dq,avx512bw,popcnt,bmi,bmi2,lzcnt")
+#define HIKARI_SIMD8_AVX512 1
 #include "hikari/ray/wide_bvh_simd8.h"
 
 namespace hikari::detail {
