@@ -206,6 +206,7 @@ int run_render(const RenderOptions& o) {
                                               : Interpolation::phong;
     settings.cull_back_faces = o.cull == "back";
     settings.control = &g_control;
+    settings.aov_buffers = o.aov != "color";
 
     std::optional<tbb::global_control> thread_limit;
     if (o.threads > 0)
@@ -218,14 +219,15 @@ int run_render(const RenderOptions& o) {
         fb = method->render(scene, settings);
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    const Image image = aov_image(fb, parse_aov(o.aov));
+    const int width = fb.width(), height = fb.height();
+    const Image image = aov_image(std::move(fb), parse_aov(o.aov));
     g_writing = true;
     if (g_control.cancel.load()) throw Interrupted();
     write_image(output, image);
     g_writing = false;
     if (!o.quiet)
-        fmt::print(stderr, "hikari: wrote {} ({}x{}, {}, {:.3f} s)\n", output, fb.width(),
-                   fb.height(), method->name, seconds);
+        fmt::print(stderr, "hikari: wrote {} ({}x{}, {}, {:.3f} s)\n", output, width, height,
+                   method->name, seconds);
     if (o.stats) print_stats(seconds);
     return 0;
 }

@@ -79,5 +79,20 @@ TEST(Phong, ReflectMatchesLectureFormula) {
     EXPECT_NEAR(length(r), 1.0f, 1e-6);
 }
 
+TEST(Phong, PowerMatchesPowWithinNTimesFloatEpsilon) {
+    for (float n : {0.0f, 1.0f, 2.0f, 7.0f, 40.0f, 200.0f, 1000.0f, 2.5f, 0.3f, 5000.0f})
+        for (float c = 0.001f; c <= 1.0f; c += 0.0137f) {
+            const double want = std::pow(static_cast<double>(c), static_cast<double>(n));
+            EXPECT_NEAR(phong_power(c, n), want, (n + 2.0) * 1.2e-7 * want + 1e-38)
+                << c << "^" << n;
+        }
+}
+
+TEST(CheckerTexture, FloorIntIsFloor) {
+    for (float v : {-2.5f, -2.0f, -1e-7f, -0.0f, 0.0f, 1e-7f, 0.999999f, 1.0f, 3.5f, -16777217.0f,
+                    16777216.0f, 1e12f, -1e12f})
+        EXPECT_EQ(CheckerTexture::floor_int(v), static_cast<long long>(std::floor(v))) << v;
+}
+
 }  // namespace
 }  // namespace hikari

@@ -1,6 +1,5 @@
 #include "hikari/io/image_write.h"
 
-#include <stb_image_write.h>
 #include <tinyexr.h>
 
 #include <bit>
@@ -10,10 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "hikari/core/color.h"
 #include "hikari/core/error.h"
+#include "hikari/core/srgb8_encoder.h"
 #include "hikari/io/atomic_file.h"
 #include "hikari/io/image_format.h"
+#include "hikari/io/png_write.h"
 
 namespace hikari {
 
@@ -27,29 +27,14 @@ void append(Bytes& out, const std::string& text) {
 
 /// The image as packed 8-bit sRGB triples, row 0 (top) first.
 Bytes to_srgb8(const Image& image) {
-    Bytes rgb;
-    rgb.reserve(image.pixels.size() * 3);
-    for (const Vec3& p : image.pixels) {
-        rgb.push_back(linear_to_srgb8(p.x));
-        rgb.push_back(linear_to_srgb8(p.y));
-        rgb.push_back(linear_to_srgb8(p.z));
+    const Srgb8Encoder& srgb = Srgb8Encoder::instance();
+    Bytes rgb(image.pixels.size() * 3);
+    for (size_t i = 0; i < image.pixels.size(); ++i) {
+        rgb[3 * i + 0] = srgb.encode(image.pixels[i].x);
+        rgb[3 * i + 1] = srgb.encode(image.pixels[i].y);
+        rgb[3 * i + 2] = srgb.encode(image.pixels[i].z);
     }
     return rgb;
-}
-
-Bytes encode_png(const std::filesystem::path& path, const Image& image) {
-    const Bytes rgb = to_srgb8(image);
-    Bytes png;
-    auto sink = [](void* context, void* data, int size) {
-        const auto* bytes = static_cast<const uint8_t*>(data);
-        static_cast<Bytes*>(context)->insert(static_cast<Bytes*>(context)->end(), bytes,
-                                             bytes + size);
-    };
-    if (!stbi_write_png_to_func(sink, &png, image.width, image.height, 3, rgb.data(),
-                                image.width * 3)) {
-        throw InputError("cannot write " + path.string() + ": PNG encoding failed");
-    }
-    return png;
 }
 
 /// Netpbm P6 (netpbm.sourceforge.net/doc/ppm.html): maxval 255, one byte per sample, top row first.
@@ -140,7 +125,7 @@ Bytes encode_exr(const std::filesystem::path& path, const Image& image) {
 Bytes encode(const std::filesystem::path& path, const Image& image, ImageFormat format) {
     switch (format) {
         case ImageFormat::Png:
-            return encode_png(path, image);
+            return encode_png(image);
         case ImageFormat::Ppm:
             return encode_ppm(image);
         case ImageFormat::Pfm:

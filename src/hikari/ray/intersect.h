@@ -22,6 +22,9 @@ inline float intersect_sphere(const Ray& ray, Vec3 center, float radius, Interva
     const float discriminant = r2 - dot(perpendicular, perpendicular);  // (B² − 4AC) / 4
     if (discriminant < 0.0f) return NAN;
     const float c = dot(f, f) - r2;
+    // Origin outside (C > 0) and centre behind (b ≤ 0): both roots ≤ 0, so no hit in a range
+    // that starts at 0 or later. Skips the square root for most rays that miss.
+    if (c > 0.0f && b <= 0.0f && range.min >= 0.0f) return NAN;
     const float q = b + std::copysign(std::sqrt(discriminant), b);
     float t0 = c / q;  // q has the sign of b, so these are the two roots with no cancellation
     float t1 = q;

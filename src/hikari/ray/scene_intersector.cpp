@@ -31,7 +31,7 @@ SceneIntersector::SceneIntersector(const Scene& scene) : m_scene(scene) {
 bool SceneIntersector::closest(const Ray& ray, Interval range, SurfaceHit& hit) const {
     enum class Kind { none, sphere, plane, triangle } kind = Kind::none;
     TriangleHit triangle_hit;
-    if (intersect_closest(m_bvh, ray, range, triangle_hit)) {
+    if (m_scene.triangles.size() > 0 && intersect_closest(m_bvh, ray, range, triangle_hit)) {
         range.max = triangle_hit.t;
         kind = Kind::triangle;
     }
@@ -85,7 +85,9 @@ void SceneIntersector::set_triangle_hit(const TriangleHit& th, SurfaceHit& hit) 
 }
 
 bool SceneIntersector::occluded(const Ray& ray, Interval range) const {
-    if (intersect_any(m_all_cast ? m_bvh : m_shadow_bvh, ray, range)) return true;
+    if (m_scene.triangles.size() > 0 &&
+        intersect_any(m_all_cast ? m_bvh : m_shadow_bvh, ray, range))
+        return true;
     for (const Sphere& s : m_scene.spheres)
         if (s.casts_shadow && !std::isnan(intersect_sphere(ray, s.center, s.radius, range)))
             return true;

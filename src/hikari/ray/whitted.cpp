@@ -105,7 +105,7 @@ void strata(int n, int& cols, int& rows) {
 
 Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
     const Camera& cam = scene.camera;
-    Framebuffer fb(cam.width, cam.height, scene.background);
+    Framebuffer fb(cam.width, cam.height, scene.background, settings.aov_buffers);
     const SceneIntersector intersector(scene);
     const TraceContext shared{scene, intersector, settings.max_depth};
     if (RenderControl* control = settings.control) {
@@ -147,7 +147,7 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
                     sum = sum / static_cast<float>(spp);
                 }
                 fb.color.pixels[i] = sum;
-                if (first.t < k_infinity) {
+                if (settings.aov_buffers && first.t < k_infinity) {
                     fb.depth[i] = first.t;
                     fb.id[i] = first.id + 1;
                     fb.normal[i] = dot(first.shading_normal, centre.direction) < 0.0f

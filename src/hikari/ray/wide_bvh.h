@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "hikari/core/aabb.h"
-#include "hikari/core/large_buffer.h"
+#include "hikari/core/huge_page_allocator.h"
 
 namespace hikari {
 
@@ -55,12 +55,12 @@ static_assert(sizeof(WideBvhNode) == 224);
 /// lie at triangle_data[9 first ...] as nine rows of `count` floats: p0.x, p0.y, p0.z, p1.x, ...,
 /// p2.z, the vertices exactly as given (watertightness needs bit-identical shared edges).
 struct WideBvh {
-    LargeVector<WideBvhNode> nodes;       ///< inner nodes; nodes[0] is the root when root is inner
-    LargeVector<float> triangle_data;     ///< per-leaf SoA vertices, plus 8 floats of padding so
+    HugePageVector<WideBvhNode> nodes;    ///< inner nodes; nodes[0] is the root when root is inner
+    HugePageVector<float> triangle_data;  ///< per-leaf SoA vertices, plus 8 floats of padding so
                                           ///< 8-wide loads at a leaf's end stay inside
-    LargeVector<uint32_t> triangle_ids;   ///< triangle_ids[slot]: input index of that triangle
-    uint32_t root = WideBvhRef::k_empty;  ///< the root reference (a leaf for tiny meshes)
-    Aabb root_bounds;                     ///< box around every triangle
+    HugePageVector<uint32_t> triangle_ids;  ///< triangle_ids[slot]: input index of that triangle
+    uint32_t root = WideBvhRef::k_empty;    ///< the root reference (a leaf for tiny meshes)
+    Aabb root_bounds;                       ///< box around every triangle
 
     /// True when the tree holds no triangle.
     bool empty() const { return root == WideBvhRef::k_empty; }

@@ -71,7 +71,7 @@ class Collapser {
 };
 
 /// Writes each leaf's triangles as nine rows of `count` floats at 9 * first.
-void write_triangle_data(const Bvh& binary, LargeVector<float>& data) {
+void write_triangle_data(const Bvh& binary, HugePageVector<float>& data) {
     data.assign(9 * binary.triangles.size() + k_wide_bvh_width, 0.0f);
     for (const BvhNode& node : binary.nodes) {
         if (!node.is_leaf()) continue;

@@ -1,17 +1,24 @@
 #include "hikari/render/framebuffer.h"
 
+#include <stdexcept>
+#include <utility>
+
 #include "hikari/core/ray.h"
 
 namespace hikari {
 
-Framebuffer::Framebuffer(int width, int height, Vec3 background)
-    : color(width, height, background),
-      depth(color.pixels.size(), k_infinity),
-      id(color.pixels.size(), k_background_id),
-      normal(color.pixels.size(), Vec3(0.0f)) {}
+Framebuffer::Framebuffer(int width, int height, Vec3 background, bool aov_buffers)
+    : color(width, height, background) {
+    if (!aov_buffers) return;
+    depth.assign(color.pixels.size(), k_infinity);
+    id.assign(color.pixels.size(), k_background_id);
+    normal.assign(color.pixels.size(), Vec3(0.0f));
+}
 
-Image aov_image(const Framebuffer& fb, Aov aov) {
-    if (aov == Aov::color) return fb.color;
+Image aov_image(Framebuffer&& fb, Aov aov) {
+    if (aov == Aov::color) return std::move(fb.color);
+    if (fb.depth.size() != fb.color.pixels.size())
+        throw std::invalid_argument("aov_image: the render kept colour only");
     Image out(fb.width(), fb.height());
     for (size_t i = 0; i < out.pixels.size(); ++i) {
         switch (aov) {

@@ -12,18 +12,21 @@ namespace hikari {
 /// Primitive id stored for pixels where no primitive is seen.
 inline constexpr uint32_t k_background_id = 0;
 
-/// Linear colour and per-pixel AOVs, all row-major with row 0 at the top.
+/// Linear colour and per-pixel AOVs, all row-major with row 0 at the top. The AOV buffers are
+/// empty when the render was asked for colour only (RenderSettings::aov_buffers false).
 struct Framebuffer {
-    Image color;               ///< linear RGB
-    std::vector<float> depth;  ///< eye-space distance to the surface seen at the pixel centre;
-                               ///< infinity for background
-    std::vector<uint32_t>
+    Image color;                  ///< linear RGB
+    HugePageVector<float> depth;  ///< eye-space distance to the surface seen at the pixel centre;
+                                  ///< infinity for background
+    HugePageVector<uint32_t>
         id;  ///< 1 + PrimitiveId seen at the pixel centre, k_background_id for none
-    std::vector<Vec3> normal;  ///< unit world-space shading normal at the pixel centre facing the
-                               ///< eye; zero for background
+    HugePageVector<Vec3> normal;  ///< unit world-space shading normal at the pixel centre facing
+                                  ///< the eye; zero for background
 
     Framebuffer() = default;
-    Framebuffer(int width, int height, Vec3 background);
+    /// Colour filled with `background`; the AOV buffers cleared to "nothing seen" when
+    /// `aov_buffers`, else left empty.
+    Framebuffer(int width, int height, Vec3 background, bool aov_buffers = true);
 
     int width() const { return color.width; }
     int height() const { return color.height; }
@@ -32,7 +35,8 @@ struct Framebuffer {
 /// Which buffer an image file receives.
 enum class Aov { color, depth, id, normal };
 
-/// The chosen buffer as an RGB image (depth and id repeated in every channel, exactly).
-Image aov_image(const Framebuffer& fb, Aov aov);
+/// The chosen buffer as an RGB image (depth and id repeated in every channel, exactly). The
+/// framebuffer must hold that buffer. Moves the colour out rather than copying it.
+Image aov_image(Framebuffer&& fb, Aov aov);
 
 }  // namespace hikari

@@ -35,6 +35,9 @@ struct RenderSettings {
     Interpolation interp = Interpolation::phong;  ///< raster methods' shading interpolation
     bool cull_back_faces = false;      ///< raster methods drop triangles facing away (Fig 4.3)
     RenderControl* control = nullptr;  ///< optional progress / cancellation
+    /// Fill the framebuffer's depth, id and normal buffers too. False: colour only (ray tracing
+    /// then neither allocates nor writes them; raster methods, which need depth, keep them).
+    bool aov_buffers = true;
 };
 
 }  // namespace hikari

@@ -21,10 +21,16 @@ struct CheckerTexture {
     /// The colour at world-space point p.
     Vec3 at(Vec3 p) const {
         const Vec3 q = (p + offset) / size;
-        const auto cell = static_cast<long long>(std::floor(q.x)) +
-                          static_cast<long long>(std::floor(q.y)) +
-                          static_cast<long long>(std::floor(q.z));
+        const long long cell = floor_int(q.x) + floor_int(q.y) + floor_int(q.z);
         return (cell & 1) == 0 ? color_a : color_b;
+    }
+
+    /// floor(v) as an integer, without the libm call std::floor is on baseline x86-64 (no
+    /// SSE4.1 round instruction): truncate, then step down for negative non-integers. Exact
+    /// wherever the cast is defined (|v| < 2^63), since floats of 2^24 or more are integers.
+    static long long floor_int(float v) {
+        const auto truncated = static_cast<long long>(v);
+        return truncated - (v < static_cast<float>(truncated) ? 1 : 0);
     }
 };
 

@@ -3,6 +3,8 @@
 //   colour = ka Ia + Σ_lights I (kd max(0, N·L) + ks max(0, R·V)^n)
 // with R = L_in + 2aN, a = −L_in·N, where L_in is the light's direction of travel.
 
+#include <cmath>
+
 #include "hikari/core/vec.h"
 #include "hikari/scene/material.h"
 
@@ -11,6 +13,19 @@ namespace hikari {
 /// The ambient term ka·Ia ("環境光": light bounced so often it lights everything evenly).
 inline Vec3 shade_ambient(const Material& m, Vec3 ambient_intensity) {
     return m.ka * ambient_intensity;
+}
+
+/// cos^n for the Phong highlight. Integer exponents up to 1024 (the usual case) by repeated
+/// squaring, much cheaper than pow(): each squaring doubles the relative rounding error, so the
+/// result is within about n·2^-24 relative (1e-5 for n = 200, far below 8-bit output steps).
+/// Other exponents go through std::pow.
+inline float phong_power(float cos_gamma, float n) {
+    if (!(n >= 0.0f && n <= 1024.0f) || n != static_cast<float>(static_cast<unsigned>(n)))
+        return std::pow(cos_gamma, n);
+    float result = 1.0f, base = cos_gamma;
+    for (auto e = static_cast<unsigned>(n); e != 0; e >>= 1, base *= base)
+        if (e & 1u) result *= base;
+    return result;
 }
 
 /// Light from one source reflected toward the eye: Lambert diffuse I0 kd cos α plus Phong
@@ -24,7 +39,7 @@ inline Vec3 shade_direct(const Material& m, Vec3 n, Vec3 to_light, Vec3 to_eye, 
     // R = L_in + 2aN with L_in = −L and a = −L_in·N = N·L: the mirror direction of the light.
     const Vec3 r = reflect(-to_light, n);
     const float cos_gamma = dot(r, to_eye);
-    const float specular = cos_gamma > 0.0f ? std::pow(cos_gamma, m.shininess) : 0.0f;
+    const float specular = cos_gamma > 0.0f ? phong_power(cos_gamma, m.shininess) : 0.0f;
     return irradiance * (m.kd * cos_alpha + m.ks * specular);
 }
 

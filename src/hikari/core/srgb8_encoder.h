@@ -1,0 +1,46 @@
+#pragma once
+// Linear float to 8-bit sRGB without a pow() per channel, with results identical to
+// linear_to_srgb8(). The encoding is monotonic, so each code k is taken by one interval of floats
+// [threshold[k], threshold[k + 1]); the thresholds are found once, by bisection on the float bit
+// patterns against the reference conversion itself. A lookup then starts from the code at the
+// start of a small bucket of floats (the top bits of the float) and steps over at most the
+// couple of thresholds inside that bucket.
+
+#include <array>
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+
+namespace hikari {
+
+class Srgb8Encoder {
+  public:
+    /// The shared encoder, built on first use (some 8000 reference conversions).
+    static const Srgb8Encoder& instance();
+
+    /// Same as linear_to_srgb8(v) for every float v, NaN and infinities included.
+    uint8_t encode(float v) const {
+        if (!(v > 0.0f)) return 0;  // also NaN
+        if (v >= 1.0f) return 255;
+        unsigned code = m_bucket_start[std::bit_cast<uint32_t>(v) >> k_bucket_shift];
+        while (v >= m_threshold[code + 1]) ++code;
+        return static_cast<uint8_t>(code);
+    }
+
+    /// The smallest float whose code is `code` (1 ≤ code ≤ 255); threshold(0) is 0.
+    float threshold(int code) const { return m_threshold[code]; }
+
+  private:
+    Srgb8Encoder();
+
+    // Buckets of floats sharing their top bits: 2^7 per octave, finer than the spacing of the
+    // codes (at least 0.9% of the value), so a lookup steps over at most two thresholds.
+    static constexpr int k_bucket_shift = 16;
+    static constexpr uint32_t k_one_bits = 0x3F800000;  // 1.0f
+    static constexpr size_t k_buckets = (k_one_bits >> k_bucket_shift) + 1;
+
+    std::array<float, 257> m_threshold{};  ///< [256] = infinity ends every search
+    std::array<uint8_t, k_buckets> m_bucket_start{};
+};
+
+}  // namespace hikari

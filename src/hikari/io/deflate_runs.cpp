@@ -1,0 +1,230 @@
+#include "hikari/io/deflate_runs.h"
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <memory>
+
+namespace hikari {
+
+namespace {
+
+constexpr int k_max_code_bits = 15;  // RFC 1951 §3.2.7: code lengths 0..15
+constexpr int k_end_of_block = 256;
+constexpr int k_litlen_symbols = 286;  // literals, end of block, length codes 257..285
+constexpr int k_min_run = 3, k_max_run = 258;
+
+/// Length code, extra-bit count and extra-bit value of a match length 3..258 (RFC 1951 §3.2.5).
+struct LengthCode {
+    uint16_t symbol;
+    uint8_t extra_bits;
+    uint8_t extra;
+};
+
+constexpr std::array<LengthCode, k_max_run + 1> make_length_codes() {
+    // The first length of each of the codes 257..284; 285 alone stands for 258.
+    constexpr std::array<int, 28> base = {3,  4,  5,  6,   7,   8,   9,   10, 11, 13,
+                                          15, 17, 19, 23,  27,  31,  35,  43, 51, 59,
+                                          67, 83, 99, 115, 131, 163, 195, 227};
+    std::array<LengthCode, k_max_run + 1> table{};
+    for (int code = 0; code < 28; ++code) {
+        const int extra_bits = code < 8 ? 0 : code / 4 - 1;
+        for (int extra = 0; extra < (1 << extra_bits); ++extra) {
+            const int length = base[code] + extra;
+            if (length < k_max_run)
+                table[length] = {static_cast<uint16_t>(257 + code),
+                                 static_cast<uint8_t>(extra_bits), static_cast<uint8_t>(extra)};
+        }
+    }
+    table[k_max_run] = {285, 0, 0};
+    return table;
+}
+
+constexpr std::array<LengthCode, k_max_run + 1> k_length_codes = make_length_codes();
+
+/// Calls literal(byte) and run(length) for `data` read as literals and runs: a byte repeated
+/// after itself becomes one match of distance 1 per 258 repeats (shorter leftovers stay literals).
+template <class Literal, class Run>
+void tokenize(std::span<const uint8_t> data, Literal&& literal, Run&& run) {
+    const size_t n = data.size();
+    const uint8_t* d = data.data();
+    size_t i = 0;
+    while (i < n) {
+        const uint8_t b = d[i];
+        literal(b);
+        // Measure the run of b after d[i], eight bytes at a time while they all match.
+        const uint64_t all_b = 0x0101010101010101ULL * b;
+        size_t j = i + 1;
+        for (uint64_t word; j + 8 <= n; j += 8) {
+            std::memcpy(&word, d + j, 8);
+            if (word != all_b) break;
+        }
+        while (j < n && d[j] == b) ++j;
+        size_t repeats = j - i - 1;
+        for (; repeats >= k_min_run; repeats -= std::min<size_t>(repeats, k_max_run))
+            run(static_cast<int>(std::min<size_t>(repeats, k_max_run)));
+        for (; repeats > 0; --repeats) literal(b);
+        i = j;
+    }
+}
+
+/// Huffman code lengths of at most `max_bits` for the symbol frequencies `freq` (0: unused).
+/// Huffman's merge with two queues over the sorted leaves; when the tree is too deep the
+/// frequencies are halved (keeping them non-zero), which flattens it, and the merge rerun.
+template <size_t N>
+std::array<uint8_t, N> huffman_lengths(std::array<uint32_t, N> freq, int max_bits) {
+    std::array<uint8_t, N> lengths{};
+    std::vector<int> leaves;
+    for (size_t s = 0; s < N; ++s)
+        if (freq[s] > 0) leaves.push_back(static_cast<int>(s));
+    if (leaves.size() == 1) lengths[leaves[0]] = 1;
+    if (leaves.size() <= 1) return lengths;
+
+    const size_t count = leaves.size();
+    std::vector<uint64_t> weight(2 * count - 1);
+    std::vector<size_t> parent(2 * count - 1);
+    std::vector<int> depth(2 * count - 1);
+    for (;;) {
+        std::stable_sort(leaves.begin(), leaves.end(),
+                         [&](int a, int b) { return freq[a] < freq[b]; });
+        for (size_t k = 0; k < count; ++k) weight[k] = freq[leaves[k]];
+        // Nodes 0..count-1 are the leaves, ascending; internal nodes follow in the order made,
+        // which is also ascending, so the two lightest are at the front of one queue or the other.
+        size_t next_leaf = 0, next_node = count;
+        auto take_lightest = [&](size_t made) {
+            if (next_leaf < count && (next_node == made || weight[next_leaf] <= weight[next_node]))
+                return next_leaf++;
+            return next_node++;
+        };
+        for (size_t made = count; made < 2 * count - 1; ++made) {
+            const size_t a = take_lightest(made), b = take_lightest(made);
+            weight[made] = weight[a] + weight[b];
+            parent[a] = parent[b] = made;
+        }
+        // Parents come after their children, so one backward sweep gives every depth.
+        depth[2 * count - 2] = 0;
+        int deepest = 0;
+        for (size_t k = 2 * count - 2; k-- > 0;) {
+            depth[k] = depth[parent[k]] + 1;
+            deepest = std::max(deepest, depth[k]);
+        }
+        if (deepest <= max_bits) break;
+        for (uint32_t& f : freq)
+            if (f > 0) f = (f + 1) / 2;
+    }
+    for (size_t k = 0; k < count; ++k) lengths[leaves[k]] = static_cast<uint8_t>(depth[k]);
+    return lengths;
+}
+
+uint32_t reverse_bits(uint32_t code, int bits) {
+    uint32_t out = 0;
+    for (int i = 0; i < bits; ++i) out |= ((code >> i) & 1u) << (bits - 1 - i);
+    return out;
+}
+
+/// Canonical Huffman codes for `lengths` (RFC 1951 §3.2.2), bit-reversed because DEFLATE sends
+/// codes from their most significant bit while the bit writer fills bytes from the least.
+template <size_t N>
+std::array<uint16_t, N> canonical_codes(const std::array<uint8_t, N>& lengths) {
+    std::array<int, k_max_code_bits + 1> length_count{};
+    for (uint8_t l : lengths) ++length_count[l];
+    length_count[0] = 0;
+    std::array<uint32_t, k_max_code_bits + 2> next{};
+    for (int bits = 1, code = 0; bits <= k_max_code_bits; ++bits) {
+        code = (code + length_count[bits - 1]) << 1;
+        next[bits] = static_cast<uint32_t>(code);
+    }
+    std::array<uint16_t, N> codes{};
+    for (size_t s = 0; s < N; ++s)
+        if (lengths[s] > 0)
+            codes[s] = static_cast<uint16_t>(reverse_bits(next[lengths[s]]++, lengths[s]));
+    return codes;
+}
+
+/// Writes bits least significant first into a buffer sized in advance.
+class BitWriter {
+  public:
+    explicit BitWriter(uint8_t* out) : m_out(out) {}
+
+    /// Appends the low `count` bits of `bits` (count + pending ≤ 64 holds: count ≤ 32).
+    void put(uint64_t bits, int count) {
+        m_acc |= bits << m_count;
+        m_count += count;
+        if (m_count >= 32) {
+            const auto word = static_cast<uint32_t>(m_acc);
+            std::memcpy(m_out, &word, 4);  // little-endian host: bytes in stream order
+            m_out += 4;
+            m_acc >>= 32;
+            m_count -= 32;
+        }
+    }
+
+    /// Pads with zero bits to a byte boundary and returns the end of the written bytes.
+    uint8_t* finish() {
+        for (; m_count > 0; m_count -= 8, m_acc >>= 8) *m_out++ = static_cast<uint8_t>(m_acc);
+        m_count = 0;
+        return m_out;
+    }
+
+  private:
+    uint8_t* m_out;
+    uint64_t m_acc = 0;
+    int m_count = 0;
+};
+
+}  // namespace
+
+void deflate_runs(std::span<const uint8_t> data, bool last, std::vector<uint8_t>& out) {
+    // Pass 1: symbol frequencies, and from them the literal/length code.
+    std::array<uint32_t, k_litlen_symbols> freq{};
+    tokenize(
+        data, [&](uint8_t b) { ++freq[b]; }, [&](int run) { ++freq[k_length_codes[run].symbol]; });
+    freq[k_end_of_block] = 1;
+    const auto lengths = huffman_lengths(freq, k_max_code_bits);
+    const auto codes = canonical_codes(lengths);
+    // A run is its length code, its extra bits and distance code 0 (one 0 bit), sent together.
+    std::array<uint32_t, k_max_run + 1> run_bits{};
+    std::array<uint8_t, k_max_run + 1> run_count{};
+    for (int run = k_min_run; run <= k_max_run; ++run) {
+        const LengthCode& lc = k_length_codes[run];
+        run_bits[run] = codes[lc.symbol] | uint32_t{lc.extra} << lengths[lc.symbol];
+        run_count[run] = static_cast<uint8_t>(lengths[lc.symbol] + lc.extra_bits + 1);
+    }
+
+    // Worst case: 15 bits per byte, plus the header (under 200 bytes) and the flush. The
+    // scratch is left uninitialised: only what is written is touched.
+    const auto scratch = std::make_unique_for_overwrite<uint8_t[]>(data.size() * 2 + 256);
+    BitWriter bits(scratch.get());
+
+    // Block header (RFC 1951 §3.2.7): BFINAL, BTYPE = 2 (dynamic), HLIT, HDIST, HCLEN. The
+    // code-length code gives the lengths 0..15 four bits each (16 codes of 4 bits: complete);
+    // its repeat codes 16..18 are not used. Two distance codes of one bit; only code 0 is sent.
+    int litlen_count = k_litlen_symbols;
+    while (litlen_count > 257 && lengths[litlen_count - 1] == 0) --litlen_count;
+    bits.put(last ? 1 : 0, 1);
+    bits.put(2, 2);
+    bits.put(static_cast<uint64_t>(litlen_count - 257), 5);
+    bits.put(2 - 1, 5);
+    bits.put(19 - 4, 4);
+    constexpr std::array<int, 19> k_code_length_order = {16, 17, 18, 0, 8,  7, 9,  6, 10, 5,
+                                                         11, 4,  12, 3, 13, 2, 14, 1, 15};
+    for (int symbol : k_code_length_order) bits.put(symbol >= 16 ? 0 : 4, 3);
+    for (int s = 0; s < litlen_count; ++s) bits.put(reverse_bits(lengths[s], 4), 4);
+    for (int s = 0; s < 2; ++s) bits.put(reverse_bits(1, 4), 4);
+
+    // Pass 2: the data.
+    tokenize(
+        data, [&](uint8_t b) { bits.put(codes[b], lengths[b]); },
+        [&](int run) { bits.put(run_bits[run], run_count[run]); });
+    bits.put(codes[k_end_of_block], lengths[k_end_of_block]);
+    if (!last) bits.put(0, 3);  // an empty stored block: BFINAL 0, BTYPE 0, ...
+    uint8_t* end = bits.finish();
+    if (!last) {
+        // ... padded to a byte, then LEN 0 and NLEN 0xFFFF.
+        const std::array<uint8_t, 4> empty_stored = {0x00, 0x00, 0xFF, 0xFF};
+        end = std::copy(empty_stored.begin(), empty_stored.end(), end);
+    }
+    out.insert(out.end(), scratch.get(), end);
+}
+
+}  // namespace hikari

@@ -1,0 +1,154 @@
+#include "hikari/io/png_write.h"
+
+#include <zlib.h>
+
+#include <array>
+#include <cstdlib>
+#include <cstring>
+#include <span>
+#include <string_view>
+
+#include "hikari/core/parallel.h"
+#include "hikari/core/srgb8_encoder.h"
+#include "hikari/io/deflate_runs.h"
+
+namespace hikari {
+
+namespace {
+
+using Bytes = std::vector<uint8_t>;
+
+/// Rows per band: each band is filtered and compressed on its own, so bands are the unit of
+/// parallel work; fixed (not per thread) so the file does not depend on the thread count.
+constexpr int k_band_rows = 32;
+
+/// PNG filter types (ISO/IEC 15948 §9.2).
+enum Filter : uint8_t { k_none = 0, k_sub = 1, k_up = 2, k_paeth = 4 };
+
+void put_u32_be(uint8_t* p, uint32_t v) {
+    p[0] = static_cast<uint8_t>(v >> 24);
+    p[1] = static_cast<uint8_t>(v >> 16);
+    p[2] = static_cast<uint8_t>(v >> 8);
+    p[3] = static_cast<uint8_t>(v);
+}
+
+/// Appends a chunk: length, type, data, CRC-32 of type and data (§5.3).
+void append_chunk(Bytes& out, std::string_view type, std::span<const uint8_t> data) {
+    const size_t at = out.size();
+    out.resize(at + 8 + data.size() + 4);
+    uint8_t* p = out.data() + at;
+    put_u32_be(p, static_cast<uint32_t>(data.size()));
+    std::memcpy(p + 4, type.data(), 4);
+    if (!data.empty()) std::memcpy(p + 8, data.data(), data.size());
+    const uLong crc = crc32(0L, p + 4, static_cast<uInt>(4 + data.size()));
+    put_u32_be(p + 8 + data.size(), static_cast<uint32_t>(crc));
+}
+
+/// Paeth's predictor (§9.4): whichever of left, up, upper-left is nearest to left + up −
+/// upper-left.
+uint8_t paeth(int a, int b, int c) {
+    const int p = a + b - c;
+    const int pa = std::abs(p - a), pb = std::abs(p - b), pc = std::abs(p - c);
+    if (pa <= pb && pa <= pc) return static_cast<uint8_t>(a);
+    return static_cast<uint8_t>(pb <= pc ? b : c);
+}
+
+/// Filters one row of RGB bytes into `out` (filter byte first), choosing per row among Sub, Up
+/// and Paeth the one with the smallest sum of |residual| as signed bytes: the heuristic the PNG
+/// specification recommends (§12.8) and libpng uses. `prev` is the row above (zeros for row 0).
+void filter_row(const uint8_t* row, const uint8_t* prev, size_t n, uint8_t* scratch, uint8_t* out) {
+    uint8_t* sub = scratch;
+    uint8_t* up = scratch + n;
+    uint8_t* pae = scratch + 2 * n;
+    uint32_t cost_sub = 0, cost_up = 0, cost_paeth = 0;
+    auto cost = [](uint8_t r) { return static_cast<uint32_t>(std::abs(static_cast<int8_t>(r))); };
+    for (size_t i = 0; i < n; ++i) {
+        const int a = i >= 3 ? row[i - 3] : 0, b = prev[i], c = i >= 3 ? prev[i - 3] : 0;
+        sub[i] = static_cast<uint8_t>(row[i] - a);
+        up[i] = static_cast<uint8_t>(row[i] - b);
+        pae[i] = static_cast<uint8_t>(row[i] - paeth(a, b, c));
+        cost_sub += cost(sub[i]);
+        cost_up += cost(up[i]);
+        cost_paeth += cost(pae[i]);
+    }
+    const uint8_t* best = sub;
+    out[0] = k_sub;
+    if (cost_up < cost_sub) best = up, out[0] = k_up;
+    if (cost_paeth < std::min(cost_sub, cost_up)) best = pae, out[0] = k_paeth;
+    std::memcpy(out + 1, best, n);
+}
+
+/// One band of rows [y0, y1), encoded: sRGB, filtered, compressed.
+struct Band {
+    Bytes deflated;      ///< this band's DEFLATE piece
+    uint32_t adler = 1;  ///< Adler-32 of the band's filtered bytes
+    size_t filtered_size = 0;
+};
+
+Band encode_band(const Image& image, int y0, int y1, bool last) {
+    const Srgb8Encoder& srgb = Srgb8Encoder::instance();
+    const size_t n = static_cast<size_t>(image.width) * 3;
+    // The row above the band too: Up and Paeth predict from it.
+    std::vector<uint8_t> rgb(n * static_cast<size_t>(y1 - y0 + 1), 0);
+    for (int y = std::max(0, y0 - 1); y < y1; ++y) {
+        uint8_t* out = rgb.data() + n * static_cast<size_t>(y - y0 + 1);
+        const Vec3* in = &image.pixels[static_cast<size_t>(y) * image.width];
+        for (int x = 0; x < image.width; ++x) {
+            out[3 * x + 0] = srgb.encode(in[x].x);
+            out[3 * x + 1] = srgb.encode(in[x].y);
+            out[3 * x + 2] = srgb.encode(in[x].z);
+        }
+    }
+    Band band;
+    band.filtered_size = (n + 1) * static_cast<size_t>(y1 - y0);
+    Bytes filtered(band.filtered_size);
+    std::vector<uint8_t> scratch(3 * n);
+    for (int y = y0; y < y1; ++y) {
+        const size_t k = static_cast<size_t>(y - y0);
+        filter_row(rgb.data() + n * (k + 1), rgb.data() + n * k, n, scratch.data(),
+                   filtered.data() + (n + 1) * k);
+    }
+    band.adler =
+        static_cast<uint32_t>(adler32(1L, filtered.data(), static_cast<uInt>(filtered.size())));
+    deflate_runs(filtered, last, band.deflated);
+    return band;
+}
+
+}  // namespace
+
+Bytes encode_png(const Image& image) {
+    const int band_count = (image.height + k_band_rows - 1) / k_band_rows;
+    std::vector<Band> bands(static_cast<size_t>(band_count));
+    hikari::parallel_for(0, band_count, [&](int b) {
+        bands[static_cast<size_t>(b)] =
+            encode_band(image, b * k_band_rows, std::min(image.height, (b + 1) * k_band_rows),
+                        b == band_count - 1);
+    });
+
+    Bytes png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    // IHDR (§11.2.2): size, bit depth 8, colour type 2 (RGB), deflate, adaptive filters, no
+    // interlace.
+    std::array<uint8_t, 13> header{};
+    put_u32_be(header.data(), static_cast<uint32_t>(image.width));
+    put_u32_be(header.data() + 4, static_cast<uint32_t>(image.height));
+    header[8] = 8;
+    header[9] = 2;
+    append_chunk(png, "IHDR", header);
+    // The zlib stream (RFC 1950) across IDAT chunks: header 78 01 (deflate, 32 KiB window,
+    // fastest level; 0x7801 is a multiple of 31), one chunk per band, then the Adler-32 of all
+    // the filtered bytes, combined from the bands' own.
+    const std::array<uint8_t, 2> zlib_header = {0x78, 0x01};
+    append_chunk(png, "IDAT", zlib_header);
+    uLong adler = 1;
+    for (const Band& band : bands) {
+        append_chunk(png, "IDAT", band.deflated);
+        adler = adler32_combine(adler, band.adler, static_cast<z_off_t>(band.filtered_size));
+    }
+    std::array<uint8_t, 4> trailer{};
+    put_u32_be(trailer.data(), static_cast<uint32_t>(adler));
+    append_chunk(png, "IDAT", trailer);
+    append_chunk(png, "IEND", {});
+    return png;
+}
+
+}  // namespace hikari
