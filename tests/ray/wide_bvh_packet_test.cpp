@@ -15,14 +15,6 @@ namespace {
 
 using testing::TestMesh;
 
-/// The SIMD levels this CPU runs; the portable one always.
-std::vector<SimdLevel> levels() {
-    std::vector<SimdLevel> out;
-    for (SimdLevel l : {SimdLevel::portable, SimdLevel::avx2, SimdLevel::avx512})
-        if (simd_level_supported(l)) out.push_back(l);
-    return out;
-}
-
 WideBvh build(const TestMesh& mesh) { return build_wide_bvh(mesh.positions, mesh.indices); }
 
 /// Traces `packet` at every level, through the public entry (smallest group 4) and with every
@@ -32,7 +24,7 @@ WideBvh build(const TestMesh& mesh) { return build_wide_bvh(mesh.positions, mesh
 int expect_matches_single_rays(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
                                const char* what) {
     int hits = 0;
-    for (SimdLevel level : levels()) {
+    for (SimdLevel level : supported_simd_levels()) {
         for (uint32_t min_group : {1u, 4u}) {
             SCOPED_TRACE(::testing::Message()
                          << what << ", " << simd_level_name(level) << ", min_group " << min_group);
@@ -220,7 +212,7 @@ TEST(WideBvhPacket, VerticesEdgesAndTiesMatchSingleRays) {
 TEST(WideBvhPacket, EmptyTreeHitsNothing) {
     const WideBvh empty;
     const RayPacket p = camera_block({0, 0, 3}, 8, 0, 0, {});
-    for (SimdLevel level : levels()) {
+    for (SimdLevel level : supported_simd_levels()) {
         PacketHit h;
         EXPECT_EQ(intersect_closest_packet(empty, p, 0xffffu, h, level), 0u);
     }
@@ -245,7 +237,7 @@ TEST(WideBvhPacket, TileMatchesSingleRays) {
             rays[size_t(y) * stride + x] = {{0.0f, 0.0f, 3.0f}, normalize(Vec3(sx, sy, -1.0f))};
         }
     const Interval valid{0.5f, 100.0f};
-    for (SimdLevel level : levels()) {
+    for (SimdLevel level : supported_simd_levels()) {
         SCOPED_TRACE(simd_level_name(level));
         std::vector<TriangleHit> hits(rays.size(), TriangleHit{-1, -1, -1, 12345});
         std::vector<uint8_t> found(rays.size(), 7);

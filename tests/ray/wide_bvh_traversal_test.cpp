@@ -13,14 +13,6 @@ namespace {
 
 using testing::TestMesh;
 
-/// The SIMD levels this CPU runs; the portable one always.
-std::vector<SimdLevel> levels() {
-    std::vector<SimdLevel> out;
-    for (SimdLevel l : {SimdLevel::portable, SimdLevel::avx2, SimdLevel::avx512})
-        if (simd_level_supported(l)) out.push_back(l);
-    return out;
-}
-
 /// The wide BVH's closest and any hit at every level against testing every triangle: same
 /// miss, same t, same triangle (ties: the first in input order never matters here, so any
 /// triangle hit at that t), and all levels bit-identical to each other.
@@ -30,7 +22,7 @@ void expect_matches_brute_force(const WideBvh& bvh, const TestMesh& mesh, const 
     TriangleHit first_hit;
     bool first_found = false;
     bool first_level = true;
-    for (SimdLevel level : levels()) {
+    for (SimdLevel level : supported_simd_levels()) {
         SCOPED_TRACE(simd_level_name(level));
         TriangleHit hit;
         const bool found = intersect_closest(bvh, ray, valid, hit, level);
@@ -68,7 +60,7 @@ TEST(WideBvhTraversal, PortableLevelAlwaysSupported) {
 TEST(WideBvhTraversal, EmptyTreeHitsNothing) {
     const WideBvh bvh = build_wide_bvh({}, {});
     TriangleHit hit;
-    for (SimdLevel level : levels()) {
+    for (SimdLevel level : supported_simd_levels()) {
         EXPECT_FALSE(intersect_closest(bvh, Ray{{0, 0, 0}, {0, 0, 1}}, {}, hit, level));
         EXPECT_FALSE(intersect_any(bvh, Ray{{0, 0, 0}, {0, 0, 1}}, {}, level));
     }
@@ -79,7 +71,7 @@ TEST(WideBvhTraversal, ReportsInputIndexAndBarycentrics) {
     mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 0, 0}, {0, 0, -1}, {1, 0, -1}};
     mesh.indices = {{0, 1, 3}, {4, 5, 2}, {0, 1, 2}};
     const WideBvh bvh = build_wide_bvh(mesh.positions, mesh.indices);
-    for (SimdLevel level : levels()) {
+    for (SimdLevel level : supported_simd_levels()) {
         TriangleHit hit;
         ASSERT_TRUE(intersect_closest(bvh, Ray{{0.25f, 0.5f, 2}, {0, 0, -1}}, {}, hit, level));
         EXPECT_EQ(hit.triangle, 2u);
@@ -94,7 +86,7 @@ TEST(WideBvhTraversal, BadRaysHitNothing) {
     const WideBvh bvh = build_wide_bvh(mesh.positions, mesh.indices);
     const float nan = std::nanf("");
     TriangleHit hit;
-    for (SimdLevel level : levels())
+    for (SimdLevel level : supported_simd_levels())
         for (const Ray& ray : {Ray{{0, 0, -3}, {0, 0, 0}}, Ray{{0, 0, -3}, {nan, 0, 1}},
                                Ray{{nan, 0, -3}, {0, 0, 1}}, Ray{{0, 0, -3}, {0, 0, k_infinity}}}) {
             EXPECT_FALSE(intersect_closest(bvh, ray, {}, hit, level));
@@ -119,7 +111,7 @@ TEST(WideBvhTraversal, IntervalLimitsHits) {
     const TestMesh mesh = testing::uv_sphere(16, 8, 1.0f);
     const WideBvh bvh = build_wide_bvh(mesh.positions, mesh.indices);
     const Ray ray{{0.01f, 0.02f, -3}, {0, 0, 1}};
-    for (SimdLevel level : levels()) {
+    for (SimdLevel level : supported_simd_levels()) {
         TriangleHit hit;
         ASSERT_TRUE(intersect_closest(bvh, ray, {3.0f, k_infinity}, hit, level));
         EXPECT_NEAR(hit.t, 4.0f, 0.05f);
@@ -176,7 +168,7 @@ TEST(WideBvhTraversal, AxisAlignedRaysThroughGridEdges) {
     for (int y = 1; y < 2 * n; ++y)
         for (int x = 1; x < 2 * n; ++x) {
             const Ray ray{{0.5f * float(x), 0.5f * float(y), 1}, {0, 0, -1}};
-            for (SimdLevel level : levels()) {
+            for (SimdLevel level : supported_simd_levels()) {
                 TriangleHit hit;
                 ASSERT_TRUE(intersect_closest(bvh, ray, {}, hit, level)) << x << "," << y;
                 EXPECT_EQ(hit.t, 1.0f);
@@ -193,7 +185,7 @@ TEST(WideBvhTraversal, AnyHitMatchesBruteForceWithinShortIntervals) {
         const Ray ray{testing::random_point(rng, 1.0f), testing::random_direction(rng)};
         const Interval valid{0.01f, 0.3f * rng.next_float()};
         const bool expected = testing::brute_force_closest(mesh, ray, valid).has_value();
-        for (SimdLevel level : levels())
+        for (SimdLevel level : supported_simd_levels())
             ASSERT_EQ(intersect_any(bvh, ray, valid, level), expected) << "ray " << i;
     }
 }

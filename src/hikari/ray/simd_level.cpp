@@ -27,6 +27,13 @@ SimdLevel best_simd_level() {
     return best;
 }
 
+std::vector<SimdLevel> supported_simd_levels() {
+    std::vector<SimdLevel> out;
+    for (SimdLevel level : {SimdLevel::portable, SimdLevel::avx2, SimdLevel::avx512})
+        if (simd_level_supported(level)) out.push_back(level);
+    return out;
+}
+
 const char* simd_level_name(SimdLevel level) {
     switch (level) {
         case SimdLevel::avx2:

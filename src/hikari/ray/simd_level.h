@@ -10,6 +10,8 @@
 #define HIKARI_SIMD_KERNELS 0
 #endif
 
+#include <vector>
+
 namespace hikari {
 
 /// The instruction sets the traversal kernels are compiled for. Every level gives bit-identical
@@ -21,6 +23,9 @@ SimdLevel best_simd_level();
 
 /// True when this CPU can run `level`.
 bool simd_level_supported(SimdLevel level);
+
+/// Every level this CPU can run, portable first (tests compare them all).
+std::vector<SimdLevel> supported_simd_levels();
 
 /// A short name: "portable", "avx2" or "avx512".
 const char* simd_level_name(SimdLevel level);
