@@ -1,10 +1,680 @@
 #include "hikari/ray/wide_bvh_builder.h"
 
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
+#include <tbb/blocked_range.h>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+#include "hikari/core/parallel.h"
+
 namespace hikari {
 namespace {
+
+// ---- Four-lane float vectors ----------------------------------------------------------------
+// GCC/Clang vector extensions: one SSE register on x86, portable elsewhere. Lanes 0-2 are x, y,
+// z; lane 3 rides along unused. Every operation is an exact IEEE min, max, add, sub or mul.
+
+typedef float F4 __attribute__((vector_size(16)));
+typedef int32_t I4 __attribute__((vector_size(16)));
+
+inline F4 splat(float s) { return F4{s, s, s, s}; }
+inline F4 vmin(F4 a, F4 b) { return a < b ? a : b; }
+inline F4 vmax(F4 a, F4 b) { return a > b ? a : b; }
+inline F4 to_f4(Vec3 p) { return F4{p.x, p.y, p.z, 0.0f}; }
+/// Lane i of a vector in memory, read as a scalar (no round trip through a register).
+inline float lane(const F4& v, int i) {
+    float x;
+    std::memcpy(&x, reinterpret_cast<const char*>(&v) + sizeof(float) * i, sizeof(float));
+    return x;
+}
+
+/// An axis-aligned box in two vectors; empty() is min +inf, max -inf, as for Aabb.
+struct Box4 {
+    F4 lower, upper;
+
+    static Box4 empty() { return {splat(k_infinity), splat(-k_infinity)}; }
+    void extend(F4 lo, F4 hi) {
+        lower = vmin(lower, lo);
+        upper = vmax(upper, hi);
+    }
+    void extend(const Box4& b) { extend(b.lower, b.upper); }
+    /// Half the surface area; meaningless for an empty box (callers skip those).
+    float half_area() const {
+        const F4 e = upper - lower;
+        return e[0] * e[1] + e[1] * e[2] + e[2] * e[0];
+    }
+    /// As an Aabb, -0 mapped to +0 so bounds are bitwise identical whatever order min/max ran in.
+    Aabb to_aabb() const {
+        const F4 lo = lower + splat(0.0f), hi = upper + splat(0.0f);
+        return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+    }
+};
+
+// ---- Primitive references -------------------------------------------------------------------
+
+/// A triangle as the builder moves it around: its box with its input index in the spare lane,
+/// 32 bytes, so every pass over a range streams through memory (Embree's PrimRef; Wald 2007).
+/// The index rides as the bits of a normal float (exponent bits forced on): the lane goes through
+/// the centroid arithmetic too, and arithmetic on denormals costs a microcode assist each.
+struct alignas(32) PrimRef {
+    F4 lower;  ///< xyz: min corner; lane 3: the input index, encoded
+    F4 upper;  ///< xyz: max corner; lane 3: 0
+
+    static constexpr uint32_t k_id_mask = WideBvhRef::k_first_mask;
+    static constexpr uint32_t k_id_tag = 0x40000000u;  ///< makes the bits a float in [2, 2^17)
+
+    uint32_t id() const { return std::bit_cast<uint32_t>(lower[3]) & k_id_mask; }
+    void set_id(uint32_t id) { lower[3] = std::bit_cast<float>(id | k_id_tag); }
+    /// Twice the centroid (min + max): the halving cancels out of the binning.
+    F4 centroid2() const { return lower + upper; }
+};
+static_assert(sizeof(PrimRef) == 32);
+
+/// Marks a triangle that can never be hit, before such triangles are dropped; no input index
+/// is this large (build_wide_bvh takes fewer than k_max_triangles).
+constexpr uint32_t k_unusable = PrimRef::k_id_mask;
+
+/// A triangle can be hit only when its indices are in range, its vertices finite and its area
+/// non-zero; then `ref` gets its box.
+bool make_prim_ref(std::span<const Vec3> positions, const std::array<uint32_t, 3>& tri, uint32_t id,
+                   PrimRef& ref) {
+    const size_t n = positions.size();
+    ref.lower = splat(0.0f);
+    ref.upper = splat(0.0f);
+    ref.set_id(k_unusable);
+    if (tri[0] >= n || tri[1] >= n || tri[2] >= n) return false;
+    const Vec3 p0 = positions[tri[0]], p1 = positions[tri[1]], p2 = positions[tri[2]];
+    if (!is_finite(p0) || !is_finite(p1) || !is_finite(p2)) return false;
+    if (cross(p1 - p0, p2 - p0) == Vec3(0.0f)) return false;
+    const F4 a = to_f4(p0), b = to_f4(p1), c = to_f4(p2);
+    ref.lower = vmin(vmin(a, b), c);
+    ref.set_id(id);
+    ref.upper = vmax(vmax(a, b), c);
+    return true;
+}
+
+// ---- Memory ---------------------------------------------------------------------------------
+// First touches of fresh memory are the dearest part of a build on virtual machines (a page
+// fault each 4 KiB); big buffers ask for 2 MiB pages, as Embree's allocator does.
+
+constexpr size_t k_huge_page = size_t(2) << 20;
+
+/// Asks the kernel to back the pages of [p, p + bytes) with 2 MiB pages where it can.
+void advise_huge_pages([[maybe_unused]] void* p, [[maybe_unused]] size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    if (bytes < 2 * k_huge_page) return;
+    const auto first = reinterpret_cast<uintptr_t>(p) & ~uintptr_t(4095);
+    madvise(reinterpret_cast<void*>(first), reinterpret_cast<uintptr_t>(p) + bytes - first,
+            MADV_HUGEPAGE);
+#endif
+}
+
+/// `v` resized to n value-initialized elements, big ones on 2 MiB pages.
+template <class T>
+void resize_on_huge_pages(std::vector<T>& v, size_t n) {
+    v.reserve(n);
+    advise_huge_pages(v.data(), n * sizeof(T));
+    v.resize(n);
+}
+
+/// An uninitialized scratch array of PrimRefs, 2 MiB aligned so all of it can be huge pages.
+class PrimRefArray {
+  public:
+    explicit PrimRefArray(size_t n) {
+        const size_t bytes = std::max<size_t>(n, 1) * sizeof(PrimRef);
+        const size_t rounded = (bytes + k_huge_page - 1) / k_huge_page * k_huge_page;
+        void* p = std::aligned_alloc(k_huge_page, rounded);
+        if (p == nullptr) throw std::bad_alloc();
+        advise_huge_pages(p, rounded);
+        m_data.reset(static_cast<PrimRef*>(p));
+    }
+    PrimRef* data() const { return m_data.get(); }
+
+  private:
+    struct Free {
+        void operator()(PrimRef* p) const { std::free(p); }
+    };
+    std::unique_ptr<PrimRef, Free> m_data;
+};
+
+// ---- Binned SAH (Wald 2007) -----------------------------------------------------------------
+
+constexpr uint32_t k_max_bins = 32;
+
+/// ceil(log2(n)) for n >= 1: the depth of a tree that halves n items down to single ones.
+uint32_t ceil_log2(uint32_t n) { return static_cast<uint32_t>(std::bit_width(n - 1)); }
+
+/// A range of PrimRefs still to be built, with what the SAH needs about it.
+struct BuildRange {
+    uint32_t begin = 0, end = 0;
+    uint32_t depth = 0;  ///< depth in the binary tree of splits, for the depth limit
+    Box4 bounds;         ///< box around the triangles
+    Box4 centroids;      ///< box around their doubled centroids
+
+    uint32_t size() const { return end - begin; }
+};
+
+/// Wald 2007, Sec 3.2: centroid c falls into bin floor(k1 (c - c_min)) with
+/// k1 = K (1 - eps) / (c_max - c_min), clamped against rounding at c_max (and against
+/// overflowing coordinates, which give inf or NaN here).
+struct BinMapping {
+    F4 origin;
+    F4 scale;
+    I4 last;
+
+    BinMapping(const Box4& centroids, uint32_t bins) : origin(centroids.lower) {
+        const F4 extent = centroids.upper - centroids.lower;
+        scale = splat(0.0f);
+        for (int a = 0; a < 3; ++a) {
+            const float k1 = float(bins) * (1.0f - 1e-6f) / extent[a];
+            scale[a] = extent[a] > 0.0f && std::isfinite(k1) ? k1 : 0.0f;  // 0: a flat axis
+        }
+        origin[3] = 0.0f;
+        const auto l = static_cast<int32_t>(bins - 1);
+        last = I4{l, l, l, l};
+    }
+    /// The bins of doubled centroid c2 along x, y and z.
+    I4 operator()(F4 c2) const {
+        const I4 zero = {0, 0, 0, 0};
+        I4 i = __builtin_convertvector((c2 - origin) * scale, I4);
+        i = i < zero ? zero : i;
+        return i > last ? last : i;
+    }
+};
+
+/// SAH bins along all three axes.
+struct Bins {
+    std::array<std::array<Box4, k_max_bins>, 3> box;
+    std::array<std::array<uint32_t, k_max_bins>, 3> count;
+
+    explicit Bins(uint32_t bin_count) {
+        for (int a = 0; a < 3; ++a) {
+            std::fill_n(box[a].begin(), bin_count, Box4::empty());
+            std::fill_n(count[a].begin(), bin_count, 0u);
+        }
+    }
+    void add(const PrimRef* refs, uint32_t begin, uint32_t end, const BinMapping& mapping) {
+        for (uint32_t i = begin; i < end; ++i) {
+            const PrimRef& ref = refs[i];
+            const I4 bin = mapping(ref.centroid2());
+            for (int a = 0; a < 3; ++a) {
+                box[a][bin[a]].extend(ref.lower, ref.upper);
+                ++count[a][bin[a]];
+            }
+        }
+    }
+    void merge(const Bins& b, uint32_t bin_count) {
+        for (int a = 0; a < 3; ++a) {
+            for (uint32_t i = 0; i < bin_count; ++i) {
+                box[a][i].extend(b.box[a][i]);
+                count[a][i] += b.count[a][i];
+            }
+        }
+    }
+};
+
+/// The best SAH split found: triangles in bins [0, bin) of `axis` go left.
+struct Split {
+    float cost = std::numeric_limits<float>::infinity();
+    int axis = -1;
+    uint32_t bin = 0;
+};
+
+/// A range split in two, with the bounds of each side gathered on the way.
+struct Halves {
+    uint32_t mid = 0;
+    Box4 bounds[2] = {Box4::empty(), Box4::empty()};
+    Box4 centroids[2] = {Box4::empty(), Box4::empty()};
+
+    void add(int side, const PrimRef& ref) {
+        bounds[side].extend(ref.lower, ref.upper);
+        const F4 c = ref.centroid2();
+        centroids[side].extend(c, c);
+    }
+    void merge(const Halves& h) {
+        for (int s = 0; s < 2; ++s) {
+            bounds[s].extend(h.bounds[s]);
+            centroids[s].extend(h.centroids[s]);
+        }
+    }
+};
+
+/// The nodes one task built: a subtree whose big subtrees were built by tasks of their own.
+/// Node indices are local until assembly gives the subtree its place in WideBvh::nodes, so the
+/// tree does not depend on which thread built what.
+struct Subtree {
+    struct Link {
+        uint32_t node = 0;  ///< local node whose child slot `slot` is `child`'s root
+        uint32_t slot = 0;
+        std::unique_ptr<Subtree> child;
+    };
+    std::vector<WideBvhNode> nodes;  ///< nodes[0] is the subtree's root
+    std::vector<Link> links;
+    uint32_t offset = 0;  ///< index of nodes[0] in WideBvh::nodes
+};
+
+/// Builds the wide tree straight from the PrimRefs: each node is a binned-SAH split (Wald 2007)
+/// whose largest-area child is split again until there are eight children (Wald et al. 2008,
+/// Sec 3; Embree's BVH8 builder, Wald et al. 2014), leaves written straight into their SoA
+/// blocks. Decisions depend only on the range, so the tree is the one the binary builder's
+/// collapse would give, and the same for any thread count.
+class WideSahBuilder {
+  public:
+    WideSahBuilder(const BvhBuildSettings& settings, PrimRef* refs, std::span<const Vec3> positions,
+                   std::span<const std::array<uint32_t, 3>> indices, WideBvh& out)
+        : m_refs(refs),
+          m_positions(positions),
+          m_indices(indices),
+          m_triangle_data(out.triangle_data.data()),
+          m_ids(out.triangle_ids.data()) {
+        m_bin_count = std::clamp(settings.bin_count, 2u, k_max_bins);
+        m_min_leaf = std::clamp(settings.min_leaf_size, 1u, WideBvhRef::k_max_leaf_size);
+        m_max_leaf = std::clamp(settings.max_leaf_size, m_min_leaf, WideBvhRef::k_max_leaf_size);
+        m_traversal_cost = settings.traversal_cost;
+        m_task_threshold = std::max(settings.parallel_threshold, 2u);
+        m_data_parallel_threshold = 4 * m_task_threshold;
+    }
+
+    /// Builds the tree over `range` into `out` (nodes[0] when the root is inner); returns the
+    /// root reference.
+    uint32_t build(const BuildRange& range, Subtree& out) {
+        const Decision decision = decide(range);
+        if (decision.leaf) return make_leaf(range);
+
+        /* open children: split the largest-area inner child until eight (Wald et al. 2008) */
+        std::array<Child, k_wide_bvh_width> children;
+        uint32_t count = 2;
+        split(range, decision.split, children[0], children[1]);
+        while (count < k_wide_bvh_width) {
+            int best = -1;
+            float best_area = -1.0f;
+            for (uint32_t i = 0; i < count; ++i) {
+                if (!children[i].leaf && children[i].area > best_area) {
+                    best = static_cast<int>(i);
+                    best_area = children[i].area;
+                }
+            }
+            if (best < 0) break;
+            const Decision d = decide(children[best].range);
+            if (d.leaf) {
+                children[best].leaf = true;
+                continue;
+            }
+            const BuildRange opened = children[best].range;
+            std::move_backward(children.begin() + best + 1, children.begin() + count,
+                               children.begin() + count + 1);
+            split(opened, d.split, children[best], children[best + 1]);
+            ++count;
+        }
+        return write_node(children, count, out);
+    }
+
+  private:
+    struct Decision {
+        bool leaf = true;
+        Split split;
+    };
+    struct Child {
+        BuildRange range;
+        float area = 0.0f;
+        bool leaf = false;  ///< decided to be a leaf; otherwise not decided yet
+    };
+
+    /// Writes the node over `children`; builds the small inner children here and the big ones
+    /// (more than m_task_threshold triangles) as parallel tasks with subtrees of their own.
+    uint32_t write_node(const std::array<Child, k_wide_bvh_width>& children, uint32_t count,
+                        Subtree& out) {
+        const auto index = static_cast<uint32_t>(out.nodes.size());
+        WideBvhNode node;
+        for (int a = 0; a < 3; ++a) {
+            node.bounds[2 * a].fill(k_infinity);
+            node.bounds[2 * a + 1].fill(-k_infinity);
+        }
+        node.child.fill(WideBvhRef::k_empty);
+        std::array<Subtree*, k_wide_bvh_width> tasks{};
+        bool any_task = false;
+        for (uint32_t i = 0; i < count; ++i) {
+            const Aabb box = children[i].range.bounds.to_aabb();
+            for (int a = 0; a < 3; ++a) {
+                node.bounds[2 * a][i] = box.min[a];
+                node.bounds[2 * a + 1][i] = box.max[a];
+            }
+            if (children[i].leaf) {
+                node.child[i] = make_leaf(children[i].range);
+            } else if (children[i].range.size() > m_task_threshold) {
+                out.links.push_back({index, i, std::make_unique<Subtree>()});
+                tasks[i] = out.links.back().child.get();
+                any_task = true;
+            }
+        }
+        out.nodes.push_back(node);
+
+        // The serial children go into `out`, which no task touches.
+        const auto build_serial = [&] {
+            for (uint32_t i = 0; i < count; ++i) {
+                if (children[i].leaf || tasks[i] != nullptr) continue;
+                const uint32_t ref = build(children[i].range, out);
+                out.nodes[index].child[i] = ref;
+            }
+        };
+        if (!any_task) {
+            build_serial();
+        } else {
+            hikari::parallel_for(0u, count + 1, [&](uint32_t i) {
+                if (i == count) return build_serial();
+                if (tasks[i] == nullptr) return;
+                tasks[i]->nodes.reserve(children[i].range.size() / 8);
+                build(children[i].range, *tasks[i]);
+            });
+        }
+        return WideBvhRef::inner(index);
+    }
+
+    /// Leaf or split, as the binary builder decides: SAH, size limits and the depth limit.
+    Decision decide(const BuildRange& range) const {
+        const uint32_t n = range.size();
+        if (n <= m_min_leaf) return {};
+        // A split costs more than C_trav (areas are positive), so it cannot beat n tests here.
+        if (n <= m_max_leaf && float(n) <= m_traversal_cost) return {};
+        // Only balanced halving from here on fits the depth limit (and the traversal stack).
+        const bool must_halve = range.depth + ceil_log2(n) + 1 >= k_bvh_max_depth;
+        const Split best = must_halve ? Split{} : find_split(range);
+        const bool split_pays = best.axis >= 0 && best.cost < float(n);
+        if (n <= m_max_leaf && !split_pays) return {};
+        return {false, best};
+    }
+
+    /// Wald 2007, Sec 3.3: the SAH cost C = C_trav + (A_L N_L + A_R N_R) / A in units of one
+    /// triangle test, evaluated at every plane between bins on all three axes.
+    Split find_split(const BuildRange& range) const {
+        const float node_area = range.bounds.half_area();
+        if (!(node_area > 0.0f) || !std::isfinite(node_area)) return {};
+        const uint32_t bin_count = bins_for(range.size());
+        const BinMapping mapping(range.centroids, bin_count);
+        if (mapping.scale[0] == 0.0f && mapping.scale[1] == 0.0f && mapping.scale[2] == 0.0f)
+            return {};  // all centroids coincide
+        Bins bins(bin_count);
+        fill_bins(range, mapping, bins);
+
+        Split best;
+        for (int a = 0; a < 3; ++a) {
+            if (mapping.scale[a] == 0.0f) continue;  // all centroids in one plane
+            // Sweep from the right: area and count of everything at or right of plane i.
+            std::array<float, k_max_bins> right_area;
+            std::array<uint32_t, k_max_bins> right_count;
+            Box4 right = Box4::empty();
+            uint32_t count = 0;
+            for (uint32_t i = bin_count - 1; i > 0; --i) {
+                right.extend(bins.box[a][i]);
+                count += bins.count[a][i];
+                right_area[i] = right.half_area();
+                right_count[i] = count;
+            }
+            // Sweep from the left, pricing each plane.
+            Box4 left = Box4::empty();
+            count = 0;
+            for (uint32_t i = 1; i < bin_count; ++i) {
+                left.extend(bins.box[a][i - 1]);
+                count += bins.count[a][i - 1];
+                if (count == 0 || right_count[i] == 0) continue;
+                const float cost =
+                    left.half_area() * float(count) + right_area[i] * float(right_count[i]);
+                if (cost < best.cost) best = {cost, a, i};
+            }
+        }
+        if (best.axis >= 0) best.cost = m_traversal_cost + best.cost / node_area;
+        return best;
+    }
+
+    /// Wald 2007, Sec 3.4: few triangles need few bins; the bin count follows the range size,
+    /// so binning and partition agree on it.
+    uint32_t bins_for(uint32_t n) const { return std::clamp(n, 4u, m_bin_count); }
+
+    void fill_bins(const BuildRange& range, const BinMapping& mapping, Bins& bins) const {
+        const uint32_t bin_count = static_cast<uint32_t>(mapping.last[0]) + 1;
+        if (range.size() <= m_data_parallel_threshold) {
+            bins.add(m_refs, range.begin, range.end, mapping);
+            return;
+        }
+        // Counts add exactly and boxes merge exactly, so any split of the work gives the same
+        // bins.
+        bins = hikari::parallel_reduce(
+            tbb::blocked_range<uint32_t>(range.begin, range.end, 4096), bins,
+            [&](const tbb::blocked_range<uint32_t>& r, Bins partial) {
+                partial.add(m_refs, r.begin(), r.end(), mapping);
+                return partial;
+            },
+            [bin_count](Bins a, const Bins& b) {
+                a.merge(b, bin_count);
+                return a;
+            });
+    }
+
+    /// Splits `range` at `best` (or at the median when the SAH found nothing that separates).
+    void split(const BuildRange& range, const Split& best, Child& left, Child& right) {
+        Halves h;
+        if (best.axis >= 0) {
+            // BinMapping's arithmetic on lane `axis` alone: bin < best.bin exactly when
+            // !(f >= best.bin), NaN included (the mapping puts NaN in bin 0).
+            const BinMapping mapping(range.centroids, bins_for(range.size()));
+            const int axis = best.axis;
+            const float origin = mapping.origin[axis], scale = mapping.scale[axis];
+            const float plane = float(best.bin);
+            const auto goes_left = [=](const PrimRef& ref) {
+                return !((lane(ref.lower, axis) + lane(ref.upper, axis) - origin) * scale >= plane);
+            };
+            h = range.size() > m_data_parallel_threshold
+                    ? partition_parallel(range.begin, range.end, goes_left)
+                    : partition(range.begin, range.end, goes_left);
+        }
+        if (best.axis < 0 || h.mid == range.begin || h.mid == range.end) h = median_split(range);
+        left = {{range.begin, h.mid, range.depth + 1, h.bounds[0], h.centroids[0]},
+                h.bounds[0].half_area()};
+        right = {{h.mid, range.end, range.depth + 1, h.bounds[1], h.centroids[1]},
+                 h.bounds[1].half_area()};
+    }
+
+    /// In-place two-pointer partition (Hoare), gathering the bounds of both sides.
+    template <class GoesLeft>
+    Halves partition(uint32_t begin, uint32_t end, const GoesLeft& goes_left) const {
+        Halves h;
+        PrimRef* l = m_refs + begin;
+        PrimRef* r = m_refs + end;
+        for (;;) {
+            for (; l < r && goes_left(*l); ++l) h.add(0, *l);
+            for (; l < r && !goes_left(r[-1]); --r) h.add(1, r[-1]);
+            if (l == r) break;
+            --r;
+            std::swap(*l, *r);
+            h.add(0, *l++);
+            h.add(1, *r);
+        }
+        h.mid = static_cast<uint32_t>(l - m_refs);
+        return h;
+    }
+
+    /// A deterministic parallel partition: fixed blocks are partitioned in place in parallel,
+    /// then the right-going refs left of the final midpoint swap, in order, with the left-going
+    /// refs right of it. The result depends only on the input, not on the threads.
+    template <class GoesLeft>
+    Halves partition_parallel(uint32_t begin, uint32_t end, const GoesLeft& goes_left) const {
+        constexpr uint32_t k_block = 8192;
+        const uint32_t blocks = (end - begin + k_block - 1) / k_block;
+        std::vector<Halves> parts(blocks);
+        hikari::parallel_for(0u, blocks, [&](uint32_t b) {
+            parts[b] =
+                partition(begin + b * k_block, std::min(end, begin + (b + 1) * k_block), goes_left);
+        });
+        Halves h;
+        uint32_t mid = begin;
+        for (const Halves& p : parts) {
+            h.merge(p);
+            mid += p.mid - (begin + uint32_t(&p - parts.data()) * k_block);
+        }
+        h.mid = mid;
+
+        // Runs of misplaced refs: right-goers in [begin, mid), left-goers in [mid, end).
+        struct Run {
+            uint32_t first, count;
+        };
+        std::vector<Run> wrong_right, wrong_left;
+        for (uint32_t b = 0; b < blocks; ++b) {
+            const uint32_t first = begin + b * k_block, last = std::min(end, first + k_block);
+            const uint32_t split = parts[b].mid;
+            // The block's right part [split, last) inside [begin, mid), its left part
+            // [first, split) inside [mid, end).
+            if (std::min(last, mid) > split)
+                wrong_right.push_back({split, std::min(last, mid) - split});
+            if (split > std::max(first, mid))
+                wrong_left.push_back({std::max(first, mid), split - std::max(first, mid)});
+        }
+        // Pair the runs into swaps of equal length, at most a block each.
+        struct Swap {
+            uint32_t a, b, count;
+        };
+        std::vector<Swap> swaps;
+        size_t i = 0, j = 0;
+        uint32_t used_i = 0, used_j = 0;
+        while (i < wrong_right.size() && j < wrong_left.size()) {
+            const uint32_t n =
+                std::min({wrong_right[i].count - used_i, wrong_left[j].count - used_j, k_block});
+            swaps.push_back({wrong_right[i].first + used_i, wrong_left[j].first + used_j, n});
+            used_i += n;
+            used_j += n;
+            if (used_i == wrong_right[i].count) ++i, used_i = 0;
+            if (used_j == wrong_left[j].count) ++j, used_j = 0;
+        }
+        hikari::parallel_for(size_t(0), swaps.size(), [&](size_t s) {
+            std::swap_ranges(m_refs + swaps[s].a, m_refs + swaps[s].a + swaps[s].count,
+                             m_refs + swaps[s].b);
+        });
+        return h;
+    }
+
+    /// The fallback when the SAH finds no split: halves the range at the median centroid along
+    /// the widest centroid axis, ties broken by id so the result is deterministic.
+    Halves median_split(const BuildRange& range) const {
+        const F4 extent = range.centroids.upper - range.centroids.lower;
+        const int axis =
+            extent[0] >= extent[1] && extent[0] >= extent[2] ? 0 : (extent[1] >= extent[2] ? 1 : 2);
+        const uint32_t mid = range.begin + range.size() / 2;
+        std::nth_element(m_refs + range.begin, m_refs + mid, m_refs + range.end,
+                         [axis](const PrimRef& a, const PrimRef& b) {
+                             const float ca = a.centroid2()[axis], cb = b.centroid2()[axis];
+                             return ca < cb || (ca == cb && a.id() < b.id());
+                         });
+        Halves h;
+        h.mid = mid;
+        for (uint32_t i = range.begin; i < range.end; ++i) h.add(i < mid ? 0 : 1, m_refs[i]);
+        return h;
+    }
+
+    /// Writes the leaf's ids and its SoA block: nine rows of `count` floats at 9 * first.
+    uint32_t make_leaf(const BuildRange& range) const {
+        const uint32_t first = range.begin, count = range.size();
+        float* block = m_triangle_data + 9 * size_t(first);
+        for (uint32_t i = 0; i < count; ++i) {
+            const uint32_t id = m_refs[first + i].id();
+            m_ids[first + i] = id;
+            const auto& tri = m_indices[id];
+            for (int v = 0; v < 3; ++v) {
+                const Vec3 p = m_positions[tri[v]];
+                block[(3 * v + 0) * count + i] = p.x;
+                block[(3 * v + 1) * count + i] = p.y;
+                block[(3 * v + 2) * count + i] = p.z;
+            }
+        }
+        return WideBvhRef::leaf(first, count);
+    }
+
+    PrimRef* m_refs;
+    std::span<const Vec3> m_positions;
+    std::span<const std::array<uint32_t, 3>> m_indices;
+    float* m_triangle_data;
+    uint32_t* m_ids;
+    uint32_t m_bin_count = 16;
+    uint32_t m_min_leaf = 1;
+    uint32_t m_max_leaf = 8;
+    float m_traversal_cost = 3.0f;
+    uint32_t m_task_threshold = 4096;
+    uint32_t m_data_parallel_threshold = 4 * 4096;
+};
+
+/// The PrimRefs of the usable triangles, in input order, and the root range over them.
+/// Fixed blocks in parallel; the bounds merge exactly, so the result is thread-independent.
+BuildRange make_prim_refs(std::span<const Vec3> positions,
+                          std::span<const std::array<uint32_t, 3>> indices, PrimRef* refs) {
+    constexpr uint32_t k_block = 4096;
+    const auto n = static_cast<uint32_t>(indices.size());
+    const uint32_t blocks = (n + k_block - 1) / k_block;
+    struct Part {
+        Box4 bounds = Box4::empty(), centroids = Box4::empty();
+        uint32_t usable = 0;
+    };
+    std::vector<Part> parts(blocks);
+    hikari::parallel_for(0u, blocks, [&](uint32_t b) {
+        Part& part = parts[b];
+        for (uint32_t i = b * k_block; i < std::min(n, (b + 1) * k_block); ++i) {
+            if (!make_prim_ref(positions, indices[i], i, refs[i])) continue;
+            ++part.usable;
+            part.bounds.extend(refs[i].lower, refs[i].upper);
+            const F4 c = refs[i].centroid2();
+            part.centroids.extend(c, c);
+        }
+    });
+    BuildRange root{0, 0, 0, Box4::empty(), Box4::empty()};
+    for (const Part& p : parts) {
+        root.end += p.usable;
+        root.bounds.extend(p.bounds);
+        root.centroids.extend(p.centroids);
+    }
+    if (root.end < n) {  // rare: drop the unusable ones, keeping the order
+        (void)std::remove_if(refs, refs + n, [](const PrimRef& r) { return r.id() == k_unusable; });
+    }
+    return root;
+}
+
+/// Lays the subtrees out one after another, depth first, and copies them into `nodes` with
+/// their local indices made global.
+void assemble(Subtree& root, std::vector<WideBvhNode>& nodes) {
+    std::vector<Subtree*> order;
+    uint32_t total = 0;
+    std::vector<Subtree*> todo{&root};
+    while (!todo.empty()) {
+        Subtree* s = todo.back();
+        todo.pop_back();
+        s->offset = total;
+        total += static_cast<uint32_t>(s->nodes.size());
+        order.push_back(s);
+        for (auto it = s->links.rbegin(); it != s->links.rend(); ++it)
+            todo.push_back(it->child.get());
+    }
+    resize_on_huge_pages(nodes, total);
+    hikari::parallel_for(size_t(0), order.size(), [&](size_t k) {
+        const Subtree& s = *order[k];
+        WideBvhNode* out = nodes.data() + s.offset;
+        for (size_t i = 0; i < s.nodes.size(); ++i) {
+            out[i] = s.nodes[i];
+            for (uint32_t& c : out[i].child)
+                if (!WideBvhRef::is_leaf(c)) c += s.offset;  // k_empty counts as a leaf
+        }
+        for (const Subtree::Link& link : s.links)
+            out[link.node].child[link.slot] = WideBvhRef::inner(link.child->offset);
+    });
+}
+
+// ---- Collapsing a binary tree ---------------------------------------------------------------
 
 /// Collapses the binary subtree under each inner node into one wide node, depth first.
 class Collapser {
@@ -19,7 +689,6 @@ class Collapser {
         m_wide.nodes.emplace_back();
         const std::vector<uint32_t> children = open_children(node);
         WideBvhNode wide{};
-        for (auto& row : wide.bounds) row.fill(0.0f);
         for (int a = 0; a < 3; ++a) {
             wide.bounds[2 * a].fill(k_infinity);
             wide.bounds[2 * a + 1].fill(-k_infinity);
@@ -105,7 +774,23 @@ WideBvh collapse_to_wide_bvh(const Bvh& binary) {
 WideBvh build_wide_bvh(std::span<const Vec3> positions,
                        std::span<const std::array<uint32_t, 3>> indices,
                        const BvhBuildSettings& settings) {
-    return collapse_to_wide_bvh(build_bvh(positions, indices, settings));
+    if (indices.size() >= WideBvhRef::k_max_triangles)
+        throw std::length_error("build_wide_bvh: too many triangles for the reference encoding");
+    PrimRefArray refs(indices.size());
+    const BuildRange root = make_prim_refs(positions, indices, refs.data());
+    WideBvh wide;
+    if (root.size() == 0) return wide;
+
+    // The 8 floats of padding stay 0; every other float is written by its leaf.
+    resize_on_huge_pages(wide.triangle_data, 9 * size_t(root.size()) + k_wide_bvh_width);
+    resize_on_huge_pages(wide.triangle_ids, root.size());
+    WideSahBuilder builder(settings, refs.data(), positions, indices, wide);
+    Subtree top;
+    top.nodes.reserve(std::min(root.size(), 16 * std::max(settings.parallel_threshold, 2u)) / 8);
+    wide.root = builder.build(root, top);
+    if (!WideBvhRef::is_leaf(wide.root)) assemble(top, wide.nodes);
+    wide.root_bounds = root.bounds.to_aabb();
+    return wide;
 }
 
 }  // namespace hikari
