@@ -166,12 +166,12 @@ struct BuildRange {
 };
 
 /// Wald 2007, Sec 3.2: centroid c falls into bin floor(k1 (c - c_min)) with
-/// k1 = K (1 - eps) / (c_max - c_min), clamped against rounding at c_max (and against
-/// overflowing coordinates, which give inf or NaN here).
+/// k1 = K (1 - eps) / (c_max - c_min), clamped against rounding at c_max. The clamp comes before
+/// the conversion, so NaN (from overflowing coordinates) lands in the last bin.
 struct BinMapping {
     F4 origin;
     F4 scale;
-    I4 last;
+    F4 last;  ///< K - 1
 
     BinMapping(const Box4& centroids, uint32_t bins) : origin(centroids.lower) {
         const F4 extent = centroids.upper - centroids.lower;
@@ -181,48 +181,72 @@ struct BinMapping {
             scale[a] = extent[a] > 0.0f && std::isfinite(k1) ? k1 : 0.0f;  // 0: a flat axis
         }
         origin[3] = 0.0f;
-        const auto l = static_cast<int32_t>(bins - 1);
-        last = I4{l, l, l, l};
+        last = splat(float(bins - 1));
     }
-    /// The bins of doubled centroid c2 along x, y and z.
+    /// The bins of doubled centroid c2 along x, y and z. (c2 >= origin, so the scaled offset is
+    /// never negative.)
     I4 operator()(F4 c2) const {
-        const I4 zero = {0, 0, 0, 0};
-        I4 i = __builtin_convertvector((c2 - origin) * scale, I4);
-        i = i < zero ? zero : i;
-        return i > last ? last : i;
+        return __builtin_convertvector(vmin((c2 - origin) * scale, last), I4);
+    }
+    /// True when the ref's bin along `axis` is below `bin`: the same arithmetic on one lane.
+    bool below(const PrimRef& ref, int axis, float bin) const {
+        return (lane(ref.lower, axis) + lane(ref.upper, axis) - lane(origin, axis)) *
+                   lane(scale, axis) <
+               bin;
     }
 };
 
-/// SAH bins along all three axes.
+/// SAH bins along all three axes: bin i of axis a has box[a][i] and count[i][a] (counts by
+/// bin, so the sweep adds all three axes at once).
 struct Bins {
+    uint32_t bin_count = 0;
     std::array<std::array<Box4, k_max_bins>, 3> box;
-    std::array<std::array<uint32_t, k_max_bins>, 3> count;
+    std::array<I4, k_max_bins> count;
 
-    explicit Bins(uint32_t bin_count) {
+    explicit Bins(uint32_t bins) : bin_count(bins) {
+        for (int a = 0; a < 3; ++a) std::fill_n(box[a].begin(), bin_count, Box4::empty());
+        std::fill_n(count.begin(), bin_count, I4{0, 0, 0, 0});
+    }
+    void add(const PrimRef& ref, const BinMapping& mapping) {
+        const I4 bin = mapping(ref.centroid2());
         for (int a = 0; a < 3; ++a) {
-            std::fill_n(box[a].begin(), bin_count, Box4::empty());
-            std::fill_n(count[a].begin(), bin_count, 0u);
+            box[a][bin[a]].extend(ref.lower, ref.upper);
+            ++count[bin[a]][a];
         }
     }
+    /// Bins refs [begin, end). Long runs alternate between two bin sets: neighbours often fall
+    /// into the same bin, and would otherwise each wait for the other's store.
     void add(const PrimRef* refs, uint32_t begin, uint32_t end, const BinMapping& mapping) {
-        for (uint32_t i = begin; i < end; ++i) {
-            const PrimRef& ref = refs[i];
-            const I4 bin = mapping(ref.centroid2());
-            for (int a = 0; a < 3; ++a) {
-                box[a][bin[a]].extend(ref.lower, ref.upper);
-                ++count[a][bin[a]];
+        uint32_t i = begin;
+        if (end - begin >= 64) {
+            Bins odd(bin_count);
+            for (; i + 1 < end; i += 2) {
+                add(refs[i], mapping);
+                odd.add(refs[i + 1], mapping);
             }
+            merge(odd);
         }
+        for (; i < end; ++i) add(refs[i], mapping);
     }
-    void merge(const Bins& b, uint32_t bin_count) {
-        for (int a = 0; a < 3; ++a) {
-            for (uint32_t i = 0; i < bin_count; ++i) {
-                box[a][i].extend(b.box[a][i]);
-                count[a][i] += b.count[a][i];
-            }
+    void merge(const Bins& b) {
+        for (uint32_t i = 0; i < bin_count; ++i) {
+            for (int a = 0; a < 3; ++a) box[a][i].extend(b.box[a][i]);
+            count[i] += b.count[i];
         }
     }
 };
+
+/// Half the surface areas of three boxes at once, lane a for box a (the same arithmetic as
+/// Box4::half_area, lane by lane).
+inline F4 half_areas(const Box4& b0, const Box4& b1, const Box4& b2) {
+    const F4 e0 = b0.upper - b0.lower, e1 = b1.upper - b1.lower, e2 = b2.upper - b2.lower;
+    const F4 t0 = __builtin_shufflevector(e0, e1, 0, 4, 1, 5);  // x0 x1 y0 y1
+    const F4 t1 = __builtin_shufflevector(e0, e1, 2, 6, 2, 6);  // z0 z1 z0 z1
+    const F4 ex = __builtin_shufflevector(t0, e2, 0, 1, 4, 4);
+    const F4 ey = __builtin_shufflevector(t0, e2, 2, 3, 5, 5);
+    const F4 ez = __builtin_shufflevector(t1, e2, 0, 1, 6, 6);
+    return ex * ey + ey * ez + ez * ex;
+}
 
 /// The best SAH split found: triangles in bins [0, bin) of `axis` go left.
 struct Split {
@@ -407,31 +431,39 @@ class WideSahBuilder {
         Bins bins(bin_count);
         fill_bins(range, mapping, bins);
 
+        // Sweep from the right: areas and counts of everything at or right of plane i, for the
+        // three axes at once (lane a: axis a).
+        std::array<F4, k_max_bins> right_area;
+        std::array<I4, k_max_bins> right_count;
+        std::array<Box4, 3> side = {Box4::empty(), Box4::empty(), Box4::empty()};
+        I4 count = {0, 0, 0, 0};
+        for (uint32_t i = bin_count - 1; i > 0; --i) {
+            for (int a = 0; a < 3; ++a) side[a].extend(bins.box[a][i]);
+            count += bins.count[i];
+            right_area[i] = half_areas(side[0], side[1], side[2]);
+            right_count[i] = count;
+        }
+        // Sweep from the left, pricing each plane; the first cheapest plane wins per axis.
+        side = {Box4::empty(), Box4::empty(), Box4::empty()};
+        count = I4{0, 0, 0, 0};
+        F4 best_cost = splat(k_infinity);
+        I4 best_bin = {0, 0, 0, 0};
+        const I4 zero = {0, 0, 0, 0};
+        for (uint32_t i = 1; i < bin_count; ++i) {
+            for (int a = 0; a < 3; ++a) side[a].extend(bins.box[a][i - 1]);
+            count += bins.count[i - 1];
+            const F4 cost =
+                half_areas(side[0], side[1], side[2]) * __builtin_convertvector(count, F4) +
+                right_area[i] * __builtin_convertvector(right_count[i], F4);
+            const I4 better = (count != zero) & (right_count[i] != zero) & (cost < best_cost);
+            best_cost = better ? cost : best_cost;
+            best_bin = better ? I4{int32_t(i), int32_t(i), int32_t(i), int32_t(i)} : best_bin;
+        }
         Split best;
         for (int a = 0; a < 3; ++a) {
             if (mapping.scale[a] == 0.0f) continue;  // all centroids in one plane
-            // Sweep from the right: area and count of everything at or right of plane i.
-            std::array<float, k_max_bins> right_area;
-            std::array<uint32_t, k_max_bins> right_count;
-            Box4 right = Box4::empty();
-            uint32_t count = 0;
-            for (uint32_t i = bin_count - 1; i > 0; --i) {
-                right.extend(bins.box[a][i]);
-                count += bins.count[a][i];
-                right_area[i] = right.half_area();
-                right_count[i] = count;
-            }
-            // Sweep from the left, pricing each plane.
-            Box4 left = Box4::empty();
-            count = 0;
-            for (uint32_t i = 1; i < bin_count; ++i) {
-                left.extend(bins.box[a][i - 1]);
-                count += bins.count[a][i - 1];
-                if (count == 0 || right_count[i] == 0) continue;
-                const float cost =
-                    left.half_area() * float(count) + right_area[i] * float(right_count[i]);
-                if (cost < best.cost) best = {cost, a, i};
-            }
+            if (best_cost[a] < best.cost)
+                best = {best_cost[a], a, static_cast<uint32_t>(best_bin[a])};
         }
         if (best.axis >= 0) best.cost = m_traversal_cost + best.cost / node_area;
         return best;
@@ -442,7 +474,6 @@ class WideSahBuilder {
     uint32_t bins_for(uint32_t n) const { return std::clamp(n, 4u, m_bin_count); }
 
     void fill_bins(const BuildRange& range, const BinMapping& mapping, Bins& bins) const {
-        const uint32_t bin_count = static_cast<uint32_t>(mapping.last[0]) + 1;
         if (range.size() <= m_data_parallel_threshold) {
             bins.add(m_refs, range.begin, range.end, mapping);
             return;
@@ -455,8 +486,8 @@ class WideSahBuilder {
                 partial.add(m_refs, r.begin(), r.end(), mapping);
                 return partial;
             },
-            [bin_count](Bins a, const Bins& b) {
-                a.merge(b, bin_count);
+            [](Bins a, const Bins& b) {
+                a.merge(b);
                 return a;
             });
     }
@@ -465,14 +496,10 @@ class WideSahBuilder {
     void split(const BuildRange& range, const Split& best, Child& left, Child& right) {
         Halves h;
         if (best.axis >= 0) {
-            // BinMapping's arithmetic on lane `axis` alone: bin < best.bin exactly when
-            // !(f >= best.bin), NaN included (the mapping puts NaN in bin 0).
             const BinMapping mapping(range.centroids, bins_for(range.size()));
-            const int axis = best.axis;
-            const float origin = mapping.origin[axis], scale = mapping.scale[axis];
-            const float plane = float(best.bin);
-            const auto goes_left = [=](const PrimRef& ref) {
-                return !((lane(ref.lower, axis) + lane(ref.upper, axis) - origin) * scale >= plane);
+            const auto goes_left = [&mapping, axis = best.axis,
+                                    bin = float(best.bin)](const PrimRef& ref) {
+                return mapping.below(ref, axis, bin);
             };
             h = range.size() > m_data_parallel_threshold
                     ? partition_parallel(range.begin, range.end, goes_left)
