@@ -303,9 +303,7 @@ class WideSahBuilder {
           m_triangle_data(out.triangle_data.data()),
           m_ids(out.triangle_ids.data()) {
         m_bin_count = std::clamp(settings.bin_count, 2u, k_max_bins);
-        m_min_leaf = std::clamp(settings.min_leaf_size, 1u, WideBvhRef::k_max_leaf_size);
-        m_max_leaf = std::clamp(settings.max_leaf_size, m_min_leaf, WideBvhRef::k_max_leaf_size);
-        m_traversal_cost = settings.traversal_cost;
+        m_max_leaf = std::clamp(settings.max_leaf_size, 1u, WideBvhRef::k_max_leaf_size);
         m_task_threshold = std::max(settings.parallel_threshold, 2u);
         m_data_parallel_threshold = 4 * m_task_threshold;
     }
@@ -405,22 +403,20 @@ class WideSahBuilder {
         return WideBvhRef::inner(index);
     }
 
-    /// Leaf or split, as the binary builder decides: SAH, size limits and the depth limit.
+    /// Leaf or split. A range that fits one leaf becomes one: the 8-wide leaf test costs about
+    /// the same for 1 to 8 triangles, so a split, which adds a node visit, cannot pay (the SAH
+    /// with leaf costs counted in SIMD blocks, as in Embree's builders; Wald et al. 2014). A
+    /// larger range splits at the SAH's best plane, or at the median near the depth limit.
     Decision decide(const BuildRange& range) const {
         const uint32_t n = range.size();
-        if (n <= m_min_leaf) return {};
-        // A split costs more than C_trav (areas are positive), so it cannot beat n tests here.
-        if (n <= m_max_leaf && float(n) <= m_traversal_cost) return {};
+        if (n <= m_max_leaf) return {};
         // Only balanced halving from here on fits the depth limit (and the traversal stack).
         const bool must_halve = range.depth + ceil_log2(n) + 1 >= k_bvh_max_depth;
-        const Split best = must_halve ? Split{} : find_split(range);
-        const bool split_pays = best.axis >= 0 && best.cost < float(n);
-        if (n <= m_max_leaf && !split_pays) return {};
-        return {false, best};
+        return {false, must_halve ? Split{} : find_split(range)};
     }
 
-    /// Wald 2007, Sec 3.3: the SAH cost C = C_trav + (A_L N_L + A_R N_R) / A in units of one
-    /// triangle test, evaluated at every plane between bins on all three axes.
+    /// Wald 2007, Sec 3.3: the plane between bins, on any axis, with the least SAH cost
+    /// A_L N_L + A_R N_R (C_trav and the division by A do not change which plane wins).
     Split find_split(const BuildRange& range) const {
         const float node_area = range.bounds.half_area();
         if (!(node_area > 0.0f) || !std::isfinite(node_area)) return {};
@@ -465,7 +461,6 @@ class WideSahBuilder {
             if (best_cost[a] < best.cost)
                 best = {best_cost[a], a, static_cast<uint32_t>(best_bin[a])};
         }
-        if (best.axis >= 0) best.cost = m_traversal_cost + best.cost / node_area;
         return best;
     }
 
@@ -631,9 +626,7 @@ class WideSahBuilder {
     float* m_triangle_data;
     uint32_t* m_ids;
     uint32_t m_bin_count = 16;
-    uint32_t m_min_leaf = 1;
     uint32_t m_max_leaf = 8;
-    float m_traversal_cost = 3.0f;
     uint32_t m_task_threshold = 4096;
     uint32_t m_data_parallel_threshold = 4 * 4096;
 };
