@@ -1,12 +1,14 @@
 #include "hikari/ray/wide_bvh_builder.h"
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <vector>
 
@@ -106,17 +108,23 @@ bool make_prim_ref(std::span<const Vec3> positions, const std::array<uint32_t, 3
 
 // ---- Memory ---------------------------------------------------------------------------------
 // First touches of fresh memory are the dearest part of a build on virtual machines (a page
-// fault each 4 KiB); big buffers ask for 2 MiB pages, as Embree's allocator does.
+// fault each 4 KiB, each a trap to the hypervisor); big buffers ask for 2 MiB pages, as Embree's
+// allocator does, and are populated in one call where the kernel allows.
 
 constexpr size_t k_huge_page = size_t(2) << 20;
 
-/// Asks the kernel to back the pages of [p, p + bytes) with 2 MiB pages where it can.
-void advise_huge_pages([[maybe_unused]] void* p, [[maybe_unused]] size_t bytes) {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
+/// Asks the kernel to back the pages of [p, p + bytes) with 2 MiB pages where it can, and
+/// (populate) to map them all now rather than fault them in one by one.
+void prepare_pages([[maybe_unused]] void* p, [[maybe_unused]] size_t bytes,
+                   [[maybe_unused]] bool populate) {
+#if defined(__linux__)
     if (bytes < 2 * k_huge_page) return;
     const auto first = reinterpret_cast<uintptr_t>(p) & ~uintptr_t(4095);
-    madvise(reinterpret_cast<void*>(first), reinterpret_cast<uintptr_t>(p) + bytes - first,
-            MADV_HUGEPAGE);
+    void* const start = reinterpret_cast<void*>(first);
+    const size_t length = reinterpret_cast<uintptr_t>(p) + bytes - first;
+    madvise(start, length, MADV_HUGEPAGE);
+    constexpr int k_populate_write = 23;  // MADV_POPULATE_WRITE, Linux 5.14; older ones refuse
+    if (populate) madvise(start, length, k_populate_write);
 #endif
 }
 
@@ -124,28 +132,72 @@ void advise_huge_pages([[maybe_unused]] void* p, [[maybe_unused]] size_t bytes) 
 template <class T>
 void resize_on_huge_pages(std::vector<T>& v, size_t n) {
     v.reserve(n);
-    advise_huge_pages(v.data(), n * sizeof(T));
+    prepare_pages(v.data(), n * sizeof(T), true);
     v.resize(n);
 }
 
-/// An uninitialized scratch array of PrimRefs, 2 MiB aligned so all of it can be huge pages.
-class PrimRefArray {
+/// Uninitialized scratch memory, 2 MiB aligned. On Linux a mapping of its own, so no 4 KiB page
+/// left over from earlier use keeps the kernel from backing it with 2 MiB pages.
+class ScratchBlock {
   public:
-    explicit PrimRefArray(size_t n) {
-        const size_t bytes = std::max<size_t>(n, 1) * sizeof(PrimRef);
-        const size_t rounded = (bytes + k_huge_page - 1) / k_huge_page * k_huge_page;
-        void* p = std::aligned_alloc(k_huge_page, rounded);
-        if (p == nullptr) throw std::bad_alloc();
-        advise_huge_pages(p, rounded);
-        m_data.reset(static_cast<PrimRef*>(p));
+    ScratchBlock(size_t bytes, bool populate) {
+        m_size = (std::max<size_t>(bytes, 1) + k_huge_page - 1) / k_huge_page * k_huge_page;
+#if defined(__linux__)
+        m_mapped = mmap(nullptr, m_size + k_huge_page, PROT_READ | PROT_WRITE,
+                        MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        if (m_mapped == MAP_FAILED) throw std::bad_alloc();
+        const auto base = reinterpret_cast<uintptr_t>(m_mapped);
+        m_data = reinterpret_cast<void*>((base + k_huge_page - 1) & ~(k_huge_page - 1));
+#else
+        m_data = std::aligned_alloc(k_huge_page, m_size);
+        if (m_data == nullptr) throw std::bad_alloc();
+#endif
+        prepare_pages(m_data, m_size, populate);
     }
-    PrimRef* data() const { return m_data.get(); }
+    ~ScratchBlock() {
+#if defined(__linux__)
+        munmap(m_mapped, m_size + k_huge_page);
+#else
+        std::free(m_data);
+#endif
+    }
+    ScratchBlock(const ScratchBlock&) = delete;
+    ScratchBlock& operator=(const ScratchBlock&) = delete;
+
+    void* data() const { return m_data; }
+    size_t size() const { return m_size; }
 
   private:
-    struct Free {
-        void operator()(PrimRef* p) const { std::free(p); }
-    };
-    std::unique_ptr<PrimRef, Free> m_data;
+    void* m_mapped = nullptr;
+    void* m_data = nullptr;
+    size_t m_size = 0;
+};
+
+/// Storage for the nodes of all subtrees while they are built, handed out in chunks from one
+/// scratch block (from the heap once that is used up). Only storage: which task gets which chunk
+/// depends on the threads, so assemble() copies the nodes into the tree's own order.
+class NodeArena {
+  public:
+    static constexpr uint32_t k_chunk = 32;  ///< nodes per chunk
+
+    explicit NodeArena(size_t max_chunks)
+        : m_block(max_chunks * k_chunk * sizeof(WideBvhNode), false),
+          m_chunks(m_block.size() / (k_chunk * sizeof(WideBvhNode))) {}
+
+    WideBvhNode* chunk() {
+        const size_t i = m_next.fetch_add(1, std::memory_order_relaxed);
+        if (i < m_chunks) return static_cast<WideBvhNode*>(m_block.data()) + i * k_chunk;
+        const std::lock_guard lock(m_mutex);
+        m_overflow.push_back(std::make_unique<WideBvhNode[]>(k_chunk));
+        return m_overflow.back().get();
+    }
+
+  private:
+    ScratchBlock m_block;
+    size_t m_chunks;
+    std::atomic<size_t> m_next{0};
+    std::mutex m_mutex;
+    std::vector<std::unique_ptr<WideBvhNode[]>> m_overflow;
 };
 
 // ---- Binned SAH (Wald 2007) -----------------------------------------------------------------
@@ -283,9 +335,20 @@ struct Subtree {
         uint32_t slot = 0;
         std::unique_ptr<Subtree> child;
     };
-    std::vector<WideBvhNode> nodes;  ///< nodes[0] is the subtree's root
+    std::vector<WideBvhNode*> chunks;  ///< node i is chunks[i / k_chunk][i % k_chunk]
+    uint32_t size = 0;                 ///< nodes held; node 0 is the subtree's root
     std::vector<Link> links;
-    uint32_t offset = 0;  ///< index of nodes[0] in WideBvh::nodes
+    uint32_t offset = 0;  ///< index of node 0 in WideBvh::nodes
+
+    WideBvhNode& node(uint32_t i) const {
+        return chunks[i / NodeArena::k_chunk][i % NodeArena::k_chunk];
+    }
+    /// Appends `n`; returns its local index.
+    uint32_t push(NodeArena& arena, const WideBvhNode& n) {
+        if (size % NodeArena::k_chunk == 0) chunks.push_back(arena.chunk());
+        node(size) = n;
+        return size++;
+    }
 };
 
 /// Builds the wide tree straight from the PrimRefs: each node is a binned-SAH split (Wald 2007)
@@ -296,8 +359,9 @@ struct Subtree {
 class WideSahBuilder {
   public:
     WideSahBuilder(const BvhBuildSettings& settings, PrimRef* refs, std::span<const Vec3> positions,
-                   std::span<const std::array<uint32_t, 3>> indices, WideBvh& out)
+                   std::span<const std::array<uint32_t, 3>> indices, NodeArena& arena, WideBvh& out)
         : m_refs(refs),
+          m_arena(arena),
           m_positions(positions),
           m_indices(indices),
           m_triangle_data(out.triangle_data.data()),
@@ -357,7 +421,7 @@ class WideSahBuilder {
     /// (more than m_task_threshold triangles) as parallel tasks with subtrees of their own.
     uint32_t write_node(const std::array<Child, k_wide_bvh_width>& children, uint32_t count,
                         Subtree& out) {
-        const auto index = static_cast<uint32_t>(out.nodes.size());
+        const uint32_t index = out.size;
         WideBvhNode node;
         for (int a = 0; a < 3; ++a) {
             node.bounds[2 * a].fill(k_infinity);
@@ -380,14 +444,14 @@ class WideSahBuilder {
                 any_task = true;
             }
         }
-        out.nodes.push_back(node);
+        out.push(m_arena, node);
 
         // The serial children go into `out`, which no task touches.
         const auto build_serial = [&] {
             for (uint32_t i = 0; i < count; ++i) {
                 if (children[i].leaf || tasks[i] != nullptr) continue;
                 const uint32_t ref = build(children[i].range, out);
-                out.nodes[index].child[i] = ref;
+                out.node(index).child[i] = ref;
             }
         };
         if (!any_task) {
@@ -396,7 +460,6 @@ class WideSahBuilder {
             hikari::parallel_for(0u, count + 1, [&](uint32_t i) {
                 if (i == count) return build_serial();
                 if (tasks[i] == nullptr) return;
-                tasks[i]->nodes.reserve(children[i].range.size() / 8);
                 build(children[i].range, *tasks[i]);
             });
         }
@@ -621,6 +684,7 @@ class WideSahBuilder {
     }
 
     PrimRef* m_refs;
+    NodeArena& m_arena;
     std::span<const Vec3> m_positions;
     std::span<const std::array<uint32_t, 3>> m_indices;
     float* m_triangle_data;
@@ -675,7 +739,7 @@ void assemble(Subtree& root, std::vector<WideBvhNode>& nodes) {
         Subtree* s = todo.back();
         todo.pop_back();
         s->offset = total;
-        total += static_cast<uint32_t>(s->nodes.size());
+        total += s->size;
         order.push_back(s);
         for (auto it = s->links.rbegin(); it != s->links.rend(); ++it)
             todo.push_back(it->child.get());
@@ -684,8 +748,8 @@ void assemble(Subtree& root, std::vector<WideBvhNode>& nodes) {
     hikari::parallel_for(size_t(0), order.size(), [&](size_t k) {
         const Subtree& s = *order[k];
         WideBvhNode* out = nodes.data() + s.offset;
-        for (size_t i = 0; i < s.nodes.size(); ++i) {
-            out[i] = s.nodes[i];
+        for (uint32_t i = 0; i < s.size; ++i) {
+            out[i] = s.node(i);
             for (uint32_t& c : out[i].child)
                 if (!WideBvhRef::is_leaf(c)) c += s.offset;  // k_empty counts as a leaf
         }
@@ -796,17 +860,21 @@ WideBvh build_wide_bvh(std::span<const Vec3> positions,
                        const BvhBuildSettings& settings) {
     if (indices.size() >= WideBvhRef::k_max_triangles)
         throw std::length_error("build_wide_bvh: too many triangles for the reference encoding");
-    PrimRefArray refs(indices.size());
-    const BuildRange root = make_prim_refs(positions, indices, refs.data());
+    const ScratchBlock refs_block(indices.size() * sizeof(PrimRef), true);
+    auto* const refs = static_cast<PrimRef*>(refs_block.data());
+    const BuildRange root = make_prim_refs(positions, indices, refs);
     WideBvh wide;
     if (root.size() == 0) return wide;
 
     // The 8 floats of padding stay 0; every other float is written by its leaf.
     resize_on_huge_pages(wide.triangle_data, 9 * size_t(root.size()) + k_wide_bvh_width);
     resize_on_huge_pages(wide.triangle_ids, root.size());
-    WideSahBuilder builder(settings, refs.data(), positions, indices, wide);
+    // Room for one node per 8 triangles (a tree over n triangles has about n / 15) and a
+    // part-used chunk per subtree; the heap takes any more.
+    const size_t subtrees = 2 * size_t(root.size()) / std::max(settings.parallel_threshold, 2u);
+    NodeArena arena(root.size() / (8 * NodeArena::k_chunk) + subtrees + 16);
+    WideSahBuilder builder(settings, refs, positions, indices, arena, wide);
     Subtree top;
-    top.nodes.reserve(std::min(root.size(), 16 * std::max(settings.parallel_threshold, 2u)) / 8);
     wide.root = builder.build(root, top);
     if (!WideBvhRef::is_leaf(wide.root)) assemble(top, wide.nodes);
     wide.root_bounds = root.bounds.to_aabb();
