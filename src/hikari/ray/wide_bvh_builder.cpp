@@ -1,7 +1,6 @@
 #include "hikari/ray/wide_bvh_builder.h"
 
 #include <algorithm>
-#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdlib>
@@ -173,31 +172,31 @@ class ScratchBlock {
     size_t m_size = 0;
 };
 
-/// Storage for the nodes of all subtrees while they are built, handed out in chunks from one
-/// scratch block (from the heap once that is used up). Only storage: which task gets which chunk
-/// depends on the threads, so assemble() copies the nodes into the tree's own order.
+/// Storage for the nodes of all subtrees while they are built, handed out in chunks from
+/// scratch blocks. Only storage: which task gets which chunk depends on the threads, so
+/// assemble() copies the nodes into the tree's own order.
 class NodeArena {
   public:
     static constexpr uint32_t k_chunk = 32;  ///< nodes per chunk
 
-    explicit NodeArena(size_t max_chunks)
-        : m_block(max_chunks * k_chunk * sizeof(WideBvhNode), false),
-          m_chunks(m_block.size() / (k_chunk * sizeof(WideBvhNode))) {}
+    explicit NodeArena(size_t chunks_per_block)
+        : m_block_chunks(std::max<size_t>(chunks_per_block, 8)) {}
 
     WideBvhNode* chunk() {
-        const size_t i = m_next.fetch_add(1, std::memory_order_relaxed);
-        if (i < m_chunks) return static_cast<WideBvhNode*>(m_block.data()) + i * k_chunk;
         const std::lock_guard lock(m_mutex);
-        m_overflow.push_back(std::make_unique<WideBvhNode[]>(k_chunk));
-        return m_overflow.back().get();
+        if (m_blocks.empty() || m_used == m_block_chunks) {
+            m_blocks.push_back(std::make_unique<ScratchBlock>(
+                m_block_chunks * k_chunk * sizeof(WideBvhNode), false));
+            m_used = 0;
+        }
+        return static_cast<WideBvhNode*>(m_blocks.back()->data()) + k_chunk * m_used++;
     }
 
   private:
-    ScratchBlock m_block;
-    size_t m_chunks;
-    std::atomic<size_t> m_next{0};
+    size_t m_block_chunks;
+    size_t m_used = 0;  ///< chunks handed out from the last block
+    std::vector<std::unique_ptr<ScratchBlock>> m_blocks;
     std::mutex m_mutex;
-    std::vector<std::unique_ptr<WideBvhNode[]>> m_overflow;
 };
 
 // ---- Binned SAH (Wald 2007) -----------------------------------------------------------------
@@ -869,10 +868,10 @@ WideBvh build_wide_bvh(std::span<const Vec3> positions,
     // The 8 floats of padding stay 0; every other float is written by its leaf.
     resize_on_huge_pages(wide.triangle_data, 9 * size_t(root.size()) + k_wide_bvh_width);
     resize_on_huge_pages(wide.triangle_ids, root.size());
-    // Room for one node per 8 triangles (a tree over n triangles has about n / 15) and a
-    // part-used chunk per subtree; the heap takes any more.
+    // A first block with room for one node per 8 triangles (trees here have about one per 15)
+    // and a part-used chunk per subtree; more blocks if it fills up.
     const size_t subtrees = 2 * size_t(root.size()) / std::max(settings.parallel_threshold, 2u);
-    NodeArena arena(root.size() / (8 * NodeArena::k_chunk) + subtrees + 16);
+    NodeArena arena(root.size() / (8 * NodeArena::k_chunk) + subtrees);
     WideSahBuilder builder(settings, refs, positions, indices, arena, wide);
     Subtree top;
     wide.root = builder.build(root, top);
