@@ -118,9 +118,8 @@ void prepare_pages([[maybe_unused]] void* p, [[maybe_unused]] size_t bytes,
                    [[maybe_unused]] bool populate) {
 #if defined(__linux__)
     if (bytes < 2 * k_huge_page) return;
-    const auto first = reinterpret_cast<uintptr_t>(p) & ~uintptr_t(4095);
-    void* const start = reinterpret_cast<void*>(first);
-    const size_t length = reinterpret_cast<uintptr_t>(p) + bytes - first;
+    char* const start = static_cast<char*>(p) - reinterpret_cast<uintptr_t>(p) % 4096;
+    const size_t length = static_cast<size_t>(static_cast<char*>(p) - start) + bytes;
     madvise(start, length, MADV_HUGEPAGE);
     constexpr int k_populate_write = 23;  // MADV_POPULATE_WRITE, Linux 5.14; older ones refuse
     if (populate) madvise(start, length, k_populate_write);
@@ -145,8 +144,8 @@ class ScratchBlock {
         m_mapped = mmap(nullptr, m_size + k_huge_page, PROT_READ | PROT_WRITE,
                         MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
         if (m_mapped == MAP_FAILED) throw std::bad_alloc();
-        const auto base = reinterpret_cast<uintptr_t>(m_mapped);
-        m_data = reinterpret_cast<void*>((base + k_huge_page - 1) & ~(k_huge_page - 1));
+        const size_t misalignment = reinterpret_cast<uintptr_t>(m_mapped) % k_huge_page;
+        m_data = static_cast<char*>(m_mapped) + (k_huge_page - misalignment) % k_huge_page;
 #else
         m_data = std::aligned_alloc(k_huge_page, m_size);
         if (m_data == nullptr) throw std::bad_alloc();
@@ -353,8 +352,8 @@ struct Subtree {
 /// Builds the wide tree straight from the PrimRefs: each node is a binned-SAH split (Wald 2007)
 /// whose largest-area child is split again until there are eight children (Wald et al. 2008,
 /// Sec 3; Embree's BVH8 builder, Wald et al. 2014), leaves written straight into their SoA
-/// blocks. Decisions depend only on the range, so the tree is the one the binary builder's
-/// collapse would give, and the same for any thread count.
+/// blocks. Every decision (split plane, serial or parallel partition, task or not) depends only
+/// on the range, never on the threads, so the tree is the same for any thread count.
 class WideSahBuilder {
   public:
     WideSahBuilder(const BvhBuildSettings& settings, PrimRef* refs, std::span<const Vec3> positions,
@@ -371,7 +370,7 @@ class WideSahBuilder {
         m_data_parallel_threshold = 4 * m_task_threshold;
     }
 
-    /// Builds the tree over `range` into `out` (nodes[0] when the root is inner); returns the
+    /// Builds the tree over `range` into `out` (its node 0 when the root is inner); returns the
     /// root reference.
     uint32_t build(const BuildRange& range, Subtree& out) {
         const Decision decision = decide(range);
@@ -740,8 +739,7 @@ void assemble(Subtree& root, std::vector<WideBvhNode>& nodes) {
         s->offset = total;
         total += s->size;
         order.push_back(s);
-        for (auto it = s->links.rbegin(); it != s->links.rend(); ++it)
-            todo.push_back(it->child.get());
+        for (size_t i = s->links.size(); i-- > 0;) todo.push_back(s->links[i].child.get());
     }
     resize_on_huge_pages(nodes, total);
     hikari::parallel_for(size_t(0), order.size(), [&](size_t k) {
