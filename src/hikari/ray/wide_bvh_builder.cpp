@@ -568,22 +568,34 @@ class WideSahBuilder {
                  h.bounds[1].half_area()};
     }
 
-    /// In-place two-pointer partition (Hoare), gathering the bounds of both sides.
+    /// In-place two-pointer partition (Hoare), gathering the bounds of both sides (in locals,
+    /// so that they stay in registers).
     template <class GoesLeft>
     Halves partition(uint32_t begin, uint32_t end, const GoesLeft& goes_left) const {
-        Halves h;
+        Box4 bounds[2] = {Box4::empty(), Box4::empty()};
+        Box4 centroids[2] = {Box4::empty(), Box4::empty()};
+        const auto add = [&](int side, const PrimRef& ref) {
+            bounds[side].extend(ref.lower, ref.upper);
+            const F4 c = ref.centroid2();
+            centroids[side].extend(c, c);
+        };
         PrimRef* l = m_refs + begin;
         PrimRef* r = m_refs + end;
         for (;;) {
-            for (; l < r && goes_left(*l); ++l) h.add(0, *l);
-            for (; l < r && !goes_left(r[-1]); --r) h.add(1, r[-1]);
+            for (; l < r && goes_left(*l); ++l) add(0, *l);
+            for (; l < r && !goes_left(r[-1]); --r) add(1, r[-1]);
             if (l == r) break;
             --r;
             std::swap(*l, *r);
-            h.add(0, *l++);
-            h.add(1, *r);
+            add(0, *l++);
+            add(1, *r);
         }
+        Halves h;
         h.mid = static_cast<uint32_t>(l - m_refs);
+        for (int side = 0; side < 2; ++side) {
+            h.bounds[side] = bounds[side];
+            h.centroids[side] = centroids[side];
+        }
         return h;
     }
 
