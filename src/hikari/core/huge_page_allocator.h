@@ -20,6 +20,22 @@
 
 namespace hikari {
 
+/// Asks the kernel to back the pages of [p, p + bytes) with 2 MiB pages where it can, and
+/// (populate) to map them all now rather than fault them in one by one. Advice only: where it
+/// is refused the memory works the same.
+inline void prepare_huge_pages([[maybe_unused]] void* p, [[maybe_unused]] size_t bytes,
+                               [[maybe_unused]] bool populate) {
+#if defined(__linux__)
+    constexpr size_t k_huge_page = size_t{2} << 20;
+    if (bytes < k_huge_page) return;
+    char* const start = static_cast<char*>(p) - reinterpret_cast<uintptr_t>(p) % 4096;
+    const size_t length = static_cast<size_t>(static_cast<char*>(p) - start) + bytes;
+    madvise(start, length, MADV_HUGEPAGE);
+    constexpr int k_populate_write = 23;  // MADV_POPULATE_WRITE, Linux 5.14; older ones refuse
+    if (populate) madvise(start, length, k_populate_write);
+#endif
+}
+
 /// A std::allocator that backs allocations of k_huge_page_bytes or more with huge pages when the
 /// system grants them (it may not: the memory then behaves like any other).
 template <class T>
@@ -40,9 +56,7 @@ struct HugePageAllocator {
             (bytes + k_huge_page_bytes - 1) / k_huge_page_bytes * k_huge_page_bytes;
         void* p = std::aligned_alloc(k_huge_page_bytes, rounded);
         if (p == nullptr) throw std::bad_alloc();
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-        madvise(p, rounded, MADV_HUGEPAGE);  // advice only: ordinary pages work the same
-#endif
+        prepare_huge_pages(p, rounded, false);
         return static_cast<T*>(p);
     }
 

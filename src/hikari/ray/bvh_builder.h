@@ -26,7 +26,8 @@ struct BvhBuildSettings {
     /// triangle on scanned and tessellated meshes (Stanford bunny: 63) at about 5% of speed.
     float traversal_cost = 2.0f;
     /// Ranges with more triangles than this are binned with a parallel reduction and their two
-    /// halves built as parallel tasks; smaller ones are built serially.
+    /// halves built as parallel tasks; smaller ones are built serially. (build_wide_bvh: see
+    /// there.)
     uint32_t parallel_threshold = 4096;
 };
 
