@@ -12,6 +12,7 @@
 
 #include "hikari/core/rng.h"
 #include "hikari/io/scene_json.h"
+#include "hikari/ray/ray_offset.h"
 #include "hikari/ray/whitted.h"
 #include "test_meshes.h"
 
@@ -38,7 +39,7 @@ void expect_blocks_match_closest(const Scene& scene) {
     const SceneIntersector intersector(scene);
     const CameraFrame frame = make_camera_frame(scene.camera);
     const int width = scene.camera.width, height = scene.camera.height;
-    int hits = 0;
+    int hits = 0, shadowed = 0;
     for (SimdLevel level : levels()) {
         SCOPED_TRACE(simd_level_name(level));
         const PrimaryHitTracer tracer(intersector, scene, frame, level);
@@ -69,10 +70,24 @@ void expect_blocks_match_closest(const Scene& scene) {
                         ASSERT_TRUE(same_bits(expected.shading_normal, got.shading_normal));
                         ASSERT_EQ(expected.material, got.material);
                         ASSERT_EQ(expected.id, got.id);
+                        // The shadow rays shade_local would trace from this hit.
+                        ASSERT_TRUE(block.shadows_known);
+                        const Vec3 ng = dot(got.geometric_normal, ray.direction) < 0.0f
+                                            ? got.geometric_normal
+                                            : -got.geometric_normal;
+                        const Vec3 origin = offset_ray_origin(got.position, ng);
+                        for (size_t l = 0; l < scene.lights.size(); ++l) {
+                            const LightSample ls = sample_light(scene.lights[l], got.position);
+                            const bool blocked =
+                                intersector.occluded({origin, ls.to_light}, {0.0f, ls.distance});
+                            ASSERT_EQ(!blocked, (block.lit[k] >> l & 1u) != 0) << "light " << l;
+                            shadowed += blocked ? 1 : 0;
+                        }
                     }
             }
     }
     EXPECT_GT(hits, 0);
+    if (!scene.lights.empty()) EXPECT_GT(shadowed, 0);
 }
 
 Scene scene_from(const std::string& json) {
@@ -93,6 +108,7 @@ Scene random_scene(uint64_t seed) {
         s.radius = 0.2f + 1.5f * rng.next_float();
         s.material = static_cast<uint32_t>(i % 3);
         s.id = id++;
+        s.casts_shadow = i != 3;
         scene.spheres.push_back(s);
     }
     Sphere twin = scene.spheres[2];
@@ -119,6 +135,8 @@ Scene random_scene(uint64_t seed) {
         tris.id.push_back(id++);
     }
     scene.primitive_count = id;
+    scene.lights.push_back(PointLight{testing::random_point(rng, 6.0f), Vec3(1.0f), true});
+    scene.lights.push_back(DirectionalLight{testing::random_direction(rng), Vec3(1.0f)});
     Camera& cam = scene.camera;
     cam.eye = (seed % 3 == 0) ? scene.spheres[0].center  // inside a sphere
                               : testing::random_point(rng, 8.0f);

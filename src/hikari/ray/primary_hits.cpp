@@ -1,6 +1,7 @@
 #include "hikari/ray/primary_hits.h"
 
 #include <algorithm>
+#include <variant>
 
 #include "hikari/ray/primary_hits_kernel.h"
 #include "hikari/ray/wide_bvh_packet.h"
@@ -18,20 +19,60 @@ void primary_analytic_portable(const PrimaryCamera& cam, const PrimaryAnalytic& 
     analytic_kernel(cam, a, lanes);
 }
 
+void primary_shadows_portable(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
+                              ShadowLanes& lanes) {
+    shadow_kernel(light, casters, lanes);
+}
+
 }  // namespace detail
+
+void PrimaryHitTracer::Analytic::add(const Sphere& s) {
+    for (int a = 0; a < 3; ++a) sphere_center[a].push_back(s.center[a]);
+    sphere_radius.push_back(s.radius);
+}
+
+void PrimaryHitTracer::Analytic::add(const Plane& p) {
+    for (int a = 0; a < 3; ++a) {
+        plane_point[a].push_back(p.point[a]);
+        plane_normal[a].push_back(p.normal[a]);
+    }
+}
+
+detail::PrimaryAnalytic PrimaryHitTracer::Analytic::view() const {
+    detail::PrimaryAnalytic v{};
+    for (int a = 0; a < 3; ++a) {
+        v.sphere_center[a] = sphere_center[a].data();
+        v.plane_point[a] = plane_point[a].data();
+        v.plane_normal[a] = plane_normal[a].data();
+    }
+    v.sphere_radius = sphere_radius.data();
+    v.spheres = static_cast<int32_t>(sphere_radius.size());
+    v.planes = static_cast<int32_t>(plane_normal[0].size());
+    return v;
+}
 
 PrimaryHitTracer::PrimaryHitTracer(const SceneIntersector& intersector, const Scene& scene,
                                    const CameraFrame& frame, SimdLevel level)
     : m_intersector(intersector), m_scene(scene), m_frame(frame), m_level(level) {
     for (const Sphere& s : scene.spheres) {
-        for (int a = 0; a < 3; ++a) m_analytic.sphere_center[a].push_back(s.center[a]);
-        m_analytic.sphere_radius.push_back(s.radius);
+        m_analytic.add(s);
+        if (s.casts_shadow) m_casters.add(s);
     }
-    for (const Plane& p : scene.planes)
-        for (int a = 0; a < 3; ++a) {
-            m_analytic.plane_point[a].push_back(p.point[a]);
-            m_analytic.plane_normal[a].push_back(p.normal[a]);
+    for (const Plane& p : scene.planes) {
+        m_analytic.add(p);
+        if (p.casts_shadow) m_casters.add(p);
+    }
+    for (const Light& light : scene.lights) {
+        detail::PrimaryShadowLight l{};
+        if (const auto* point = std::get_if<PointLight>(&light)) {
+            for (int a = 0; a < 3; ++a) l.position[a] = point->position[a];
+        } else {
+            l.directional = true;
+            const Vec3 to_light = -std::get<DirectionalLight>(light).direction;
+            for (int a = 0; a < 3; ++a) l.to_light[a] = to_light[a];
         }
+        m_lights.push_back(l);
+    }
 }
 
 void PrimaryHitTracer::trace(int x0, int y0, int width, int height, PrimaryBlock& block) const {
@@ -85,15 +126,7 @@ void PrimaryHitTracer::trace(int x0, int y0, int width, int height, PrimaryBlock
     }
 
     // 3. Spheres and planes, each against all lanes.
-    detail::PrimaryAnalytic analytic{};
-    for (int a = 0; a < 3; ++a) {
-        analytic.sphere_center[a] = m_analytic.sphere_center[a].data();
-        analytic.plane_point[a] = m_analytic.plane_point[a].data();
-        analytic.plane_normal[a] = m_analytic.plane_normal[a].data();
-    }
-    analytic.sphere_radius = m_analytic.sphere_radius.data();
-    analytic.spheres = static_cast<int32_t>(m_scene.spheres.size());
-    analytic.planes = static_cast<int32_t>(m_scene.planes.size());
+    const detail::PrimaryAnalytic analytic = m_analytic.view();
     switch (m_level) {
         case SimdLevel::avx512:
             detail::primary_analytic_avx512(cam, analytic, lanes);
@@ -123,6 +156,49 @@ void PrimaryHitTracer::trace(int x0, int y0, int width, int height, PrimaryBlock
             m_intersector.describe_hit(block.rays[i], lanes.t[i], kind, index, triangle_hits[i],
                                        block.hits[i]);
         }
+
+    // 5. The hits' shadow rays, one light at a time against all lanes (Boulos et al. 2007 trace
+    // shadow rays as packets too: from nearby points toward one light they stay coherent).
+    block.shadows_known = m_lights.size() <= 8;
+    if (!block.shadows_known) return;
+    detail::ShadowLanes shadow;
+    for (int i = 0; i < k_primary_block_rays; ++i) {
+        const bool found = block.found[i] != 0 && i % k_primary_block < width;
+        const SurfaceHit& hit = block.hits[i];
+        Vec3 ng(0.0f);  // unused lanes: a harmless point and normal
+        Vec3 p(0.0f);
+        if (found) {
+            // The geometric normal facing the incoming ray, as shade() takes it.
+            ng = dot(hit.geometric_normal, block.rays[i].direction) < 0.0f ? hit.geometric_normal
+                                                                           : -hit.geometric_normal;
+            p = hit.position;
+        }
+        for (int a = 0; a < 3; ++a) shadow.position[a][i] = p[a], shadow.normal[a][i] = ng[a];
+        block.lit[i] = 0;
+    }
+    const detail::PrimaryAnalytic casters = m_casters.view();
+    for (size_t l = 0; l < m_lights.size(); ++l) {
+        switch (m_level) {
+            case SimdLevel::avx512:
+                detail::primary_shadows_avx512(m_lights[l], casters, shadow);
+                break;
+            case SimdLevel::avx2:
+                detail::primary_shadows_avx2(m_lights[l], casters, shadow);
+                break;
+            default:
+                detail::primary_shadows_portable(m_lights[l], casters, shadow);
+        }
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                const int i = y * k_primary_block + x;
+                if (!block.found[i] || shadow.blocked[i]) continue;
+                const Ray ray{
+                    {shadow.origin[0][i], shadow.origin[1][i], shadow.origin[2][i]},
+                    {shadow.to_light[0][i], shadow.to_light[1][i], shadow.to_light[2][i]}};
+                if (m_intersector.occluded_by_triangles(ray, {0.0f, shadow.distance[i]})) continue;
+                block.lit[i] |= static_cast<uint8_t>(1u << l);
+            }
+    }
 }
 
 }  // namespace hikari

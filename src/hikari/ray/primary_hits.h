@@ -33,7 +33,33 @@ struct PrimaryBlock {
     Ray rays[k_primary_block_rays];         ///< the ray through each pixel centre
     SurfaceHit hits[k_primary_block_rays];  ///< its nearest hit, where found
     uint8_t found[k_primary_block_rays];    ///< 1 where the ray hits something (t in (0, ∞))
+    /// Where found and `shadows_known`: bit l set when the shadow ray of the hit toward light l
+    /// (from offset_ray_origin(position, geometric normal facing the ray), as shade_local
+    /// builds it) is unblocked, as SceneIntersector::occluded answers.
+    uint8_t lit[k_primary_block_rays];
+    bool shadows_known = false;  ///< false: `lit` not filled (more than 8 lights)
 };
+
+namespace detail {
+/// The scene's spheres and planes as the kernels read them: plain arrays, one entry per
+/// primitive (no library code runs inside the kernels).
+struct PrimaryAnalytic {
+    const float* sphere_center[3];
+    const float* sphere_radius;
+    int32_t spheres;
+    const float* plane_point[3];
+    const float* plane_normal[3];
+    int32_t planes;
+};
+
+/// One light as the shadow kernel reads it.
+struct PrimaryShadowLight {
+    bool directional;
+    float position[3];  ///< point lights
+    float to_light[3];  ///< directional lights: the unit direction toward the light
+};
+
+}  // namespace detail
 
 /// Traces the camera rays of pixel blocks of one scene and camera. Built once per render
 /// (the scene's spheres and planes copied into the lanes' layout), read by all threads.
@@ -46,7 +72,8 @@ class PrimaryHitTracer {
 
     /// Fills `block` for the pixels [x0, x0 + width) x [y0, y0 + height) (width, height at most
     /// k_primary_block, inside the image): the ray camera_ray(frame, x + 0.5, y + 0.5) through
-    /// each, and its nearest hit inside (0, ∞) as SceneIntersector::closest reports it.
+    /// each, its nearest hit inside (0, ∞) as SceneIntersector::closest reports it, and which
+    /// lights each hit sees (the shadow rays of the hits traced together too).
     void trace(int x0, int y0, int width, int height, PrimaryBlock& block) const;
 
   private:
@@ -54,6 +81,11 @@ class PrimaryHitTracer {
     struct Analytic {
         std::vector<float> sphere_center[3], sphere_radius;
         std::vector<float> plane_point[3], plane_normal[3];
+
+        void add(const Sphere& s);
+        void add(const Plane& p);
+        /// The kernels' view of these arrays.
+        detail::PrimaryAnalytic view() const;
     };
 
     const SceneIntersector& m_intersector;
@@ -61,6 +93,8 @@ class PrimaryHitTracer {
     CameraFrame m_frame;
     SimdLevel m_level;
     Analytic m_analytic;
+    Analytic m_casters;  ///< the spheres and planes that cast shadows
+    std::vector<detail::PrimaryShadowLight> m_lights;
 };
 
 namespace detail {
@@ -75,22 +109,21 @@ struct alignas(64) PrimaryLanes {
     int32_t object[k_primary_block_rays];
 };
 
-/// The scene's spheres and planes as the kernels read them: plain arrays, one entry per
-/// primitive (no library code runs inside the kernels).
-struct PrimaryAnalytic {
-    const float* sphere_center[3];
-    const float* sphere_radius;
-    int32_t spheres;
-    const float* plane_point[3];
-    const float* plane_normal[3];
-    int32_t planes;
-};
-
 /// Camera parameters the kernel needs, as plain floats.
 struct PrimaryCamera {
     float eye[3], right[3], up[3], forward[3];
     float tan_half_fov_y, aspect, width, height;
     int x0, y0;
+};
+
+/// The shadow rays of a block's hits toward one light, lane by lane.
+struct alignas(64) ShadowLanes {
+    float position[3][k_primary_block_rays];  ///< in: hit point
+    float normal[3][k_primary_block_rays];    ///< in: geometric normal facing the camera ray
+    float origin[3][k_primary_block_rays];    ///< out: shadow-ray origin, offset off the surface
+    float to_light[3][k_primary_block_rays];  ///< out: unit direction toward the light
+    float distance[k_primary_block_rays];     ///< out: distance to the light (∞: directional)
+    uint8_t blocked[k_primary_block_rays];    ///< out: 1 where a casting sphere or plane blocks
 };
 
 /// Camera-ray directions of a block (kernel for each SIMD level).
@@ -103,6 +136,14 @@ void primary_analytic_portable(const PrimaryCamera& cam, const PrimaryAnalytic& 
 void primary_analytic_avx2(const PrimaryCamera& cam, const PrimaryAnalytic& a, PrimaryLanes& lanes);
 void primary_analytic_avx512(const PrimaryCamera& cam, const PrimaryAnalytic& a,
                              PrimaryLanes& lanes);
+
+/// Shadow rays toward one light against the casting spheres and planes (each SIMD level).
+void primary_shadows_portable(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
+                              ShadowLanes& lanes);
+void primary_shadows_avx2(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
+                          ShadowLanes& lanes);
+void primary_shadows_avx512(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
+                            ShadowLanes& lanes);
 
 }  // namespace detail
 

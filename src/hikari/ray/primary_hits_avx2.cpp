@@ -22,6 +22,11 @@ void primary_analytic_avx2(const PrimaryCamera& cam, const PrimaryAnalytic& a,
     analytic_kernel(cam, a, lanes);
 }
 
+void primary_shadows_avx2(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
+                          ShadowLanes& lanes) {
+    shadow_kernel(light, casters, lanes);
+}
+
 }  // namespace hikari::detail
 #else
 namespace hikari::detail {
@@ -32,6 +37,10 @@ void primary_directions_avx2(const PrimaryCamera& cam, PrimaryLanes& lanes) {
 void primary_analytic_avx2(const PrimaryCamera& cam, const PrimaryAnalytic& a,
                            PrimaryLanes& lanes) {
     primary_analytic_portable(cam, a, lanes);
+}
+void primary_shadows_avx2(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
+                          ShadowLanes& lanes) {
+    primary_shadows_portable(light, casters, lanes);
 }
 }  // namespace hikari::detail
 #endif

@@ -88,10 +88,13 @@ void SceneIntersector::describe_hit(const Ray& ray, float t, HitKind kind, size_
     hit.id = tris.id[triangle.triangle];
 }
 
+bool SceneIntersector::occluded_by_triangles(const Ray& ray, Interval range) const {
+    return m_scene.triangles.size() > 0 &&
+           intersect_any(m_all_cast ? m_bvh : m_shadow_bvh, ray, range);
+}
+
 bool SceneIntersector::occluded(const Ray& ray, Interval range) const {
-    if (m_scene.triangles.size() > 0 &&
-        intersect_any(m_all_cast ? m_bvh : m_shadow_bvh, ray, range))
-        return true;
+    if (occluded_by_triangles(ray, range)) return true;
     for (const Sphere& s : m_scene.spheres)
         if (s.casts_shadow && !std::isnan(intersect_sphere(ray, s.center, s.radius, range)))
             return true;

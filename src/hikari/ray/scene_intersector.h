@@ -34,6 +34,9 @@ class SceneIntersector {
     /// first blocker; objects with casts_shadow false are ignored).
     bool occluded(const Ray& ray, Interval range) const;
 
+    /// Whether a shadow-casting triangle blocks `ray` inside `range` (occluded's first part).
+    bool occluded_by_triangles(const Ray& ray, Interval range) const;
+
     /// Fills `hit` for the nearest hit of `ray` found at distance `t` on primitive `index` of
     /// kind `kind` (Scene::spheres or Scene::planes; for triangles, `triangle` says which and
     /// where). What closest() does once it knows the nearest hit, for callers that searched

@@ -25,15 +25,20 @@ struct TraceContext {
 };
 
 /// The local (direct) illumination of a hit: ambient, then each light that a shadow ray
-/// finds unblocked.
-Vec3 shade_local(TraceContext& ctx, const Material& m, Vec3 p, Vec3 n, Vec3 ng, Vec3 to_eye) {
+/// finds unblocked. `lit`, when given, holds the shadow rays' answers already (bit l: light l
+/// unblocked), found in bulk for camera-ray hits by ray/primary_hits.h.
+Vec3 shade_local(TraceContext& ctx, const Material& m, Vec3 p, Vec3 n, Vec3 ng, Vec3 to_eye,
+                 const uint8_t* lit) {
     Vec3 colour = shade_ambient(m, ctx.scene.ambient);
     const Vec3 shadow_origin = offset_ray_origin(p, ng);
-    for (const Light& light : ctx.scene.lights) {
-        const LightSample ls = sample_light(light, p);
+    for (size_t l = 0; l < ctx.scene.lights.size(); ++l) {
+        const LightSample ls = sample_light(ctx.scene.lights[l], p);
         if (dot(n, ls.to_light) <= 0.0f) continue;
         ++ctx.rays;
-        if (ctx.intersector.occluded({shadow_origin, ls.to_light}, {0.0f, ls.distance})) continue;
+        const bool blocked =
+            lit ? (*lit & (1u << l)) == 0
+                : ctx.intersector.occluded({shadow_origin, ls.to_light}, {0.0f, ls.distance});
+        if (blocked) continue;
         colour += shade_direct(m, n, ls.to_light, to_eye, ls.irradiance);
     }
     return colour;
@@ -62,8 +67,10 @@ Vec3 sky(const TraceContext& ctx, const Ray& ray) {
 }
 
 /// Colour seen along `ray` (segment number `segment` of its path, primary = 1) whose nearest
-/// hit is `hit`: local illumination, then the mirror and refracted rays.
-Vec3 shade(TraceContext& ctx, const Ray& ray, const SurfaceHit& hit, int segment) {
+/// hit is `hit`: local illumination, then the mirror and refracted rays. `lit` as for
+/// shade_local.
+Vec3 shade(TraceContext& ctx, const Ray& ray, const SurfaceHit& hit, int segment,
+           const uint8_t* lit = nullptr) {
     // Face the normals toward the incoming ray: planes and triangles are two-sided, and a ray
     // inside a sphere sees its inner side.
     const bool entering = dot(hit.geometric_normal, ray.direction) < 0.0f;
@@ -76,7 +83,7 @@ Vec3 shade(TraceContext& ctx, const Ray& ray, const SurfaceHit& hit, int segment
     const Material* textured_material = &material;
     if (material.texture) textured_material = &(local = textured(material, hit.position));
     const Material& m = *textured_material;
-    Vec3 colour = shade_local(ctx, m, hit.position, n, ng, -ray.direction);
+    Vec3 colour = shade_local(ctx, m, hit.position, n, ng, -ray.direction, lit);
     if (segment >= ctx.max_depth) return colour;
 
     const Vec3 mirror = reflect(ray.direction, n);
@@ -159,7 +166,8 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
                         fb.color.pixels[i] = sky(ctx, ray);
                         continue;
                     }
-                    fb.color.pixels[i] = shade(ctx, ray, block.hits[k], 1);
+                    fb.color.pixels[i] = shade(ctx, ray, block.hits[k], 1,
+                                               block.shadows_known ? &block.lit[k] : nullptr);
                     store_aovs(i, ray, block.hits[k]);
                 }
             if (settings.control) settings.control->rays_traced += ctx.rays;
