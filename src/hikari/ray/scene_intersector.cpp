@@ -29,65 +29,72 @@ SceneIntersector::SceneIntersector(const Scene& scene) : m_scene(scene) {
 }
 
 bool SceneIntersector::closest(const Ray& ray, Interval range, SurfaceHit& hit) const {
-    enum class Kind { none, sphere, plane, triangle } kind = Kind::none;
+    HitKind kind = HitKind::none;
     TriangleHit triangle_hit;
     if (m_scene.triangles.size() > 0 && intersect_closest(m_bvh, ray, range, triangle_hit)) {
         range.max = triangle_hit.t;
-        kind = Kind::triangle;
+        kind = HitKind::triangle;
     }
     size_t index = 0;
     for (size_t i = 0; i < m_scene.spheres.size(); ++i) {
         const Sphere& s = m_scene.spheres[i];
         const float t = intersect_sphere(ray, s.center, s.radius, range);
-        if (t == t) range.max = t, kind = Kind::sphere, index = i;  // t == t: not NaN
+        if (t == t) range.max = t, kind = HitKind::sphere, index = i;  // t == t: not NaN
     }
     for (size_t i = 0; i < m_scene.planes.size(); ++i) {
         const Plane& p = m_scene.planes[i];
         const float t = intersect_plane(ray, p.point, p.normal, range);
-        if (t == t) range.max = t, kind = Kind::plane, index = i;
+        if (t == t) range.max = t, kind = HitKind::plane, index = i;
     }
-    if (kind == Kind::none) return false;
-    hit.t = range.max;
-    hit.position = ray.at(hit.t);
-    if (kind == Kind::sphere) {
-        const Sphere& s = m_scene.spheres[index];
-        hit.geometric_normal = (hit.position - s.center) / s.radius;
-        hit.material = s.material;
-        hit.id = s.id;
-    } else if (kind == Kind::plane) {
-        const Plane& p = m_scene.planes[index];
-        hit.geometric_normal = p.normal;
-        hit.material = p.material;
-        hit.id = p.id;
-    } else {
-        set_triangle_hit(triangle_hit, hit);
-        return true;
-    }
-    hit.shading_normal = hit.geometric_normal;
+    if (kind == HitKind::none) return false;
+    describe_hit(ray, range.max, kind, index, triangle_hit, hit);
     return true;
 }
 
-void SceneIntersector::set_triangle_hit(const TriangleHit& th, SurfaceHit& hit) const {
+void SceneIntersector::describe_hit(const Ray& ray, float t, HitKind kind, size_t index,
+                                    const TriangleHit& triangle, SurfaceHit& hit) const {
+    hit.t = t;
+    hit.position = ray.at(t);
+    if (kind == HitKind::sphere) {
+        const Sphere& s = m_scene.spheres[index];
+        hit.geometric_normal = (hit.position - s.center) / s.radius;
+        hit.shading_normal = hit.geometric_normal;
+        hit.material = s.material;
+        hit.id = s.id;
+        return;
+    }
+    if (kind == HitKind::plane) {
+        const Plane& p = m_scene.planes[index];
+        hit.geometric_normal = p.normal;
+        hit.shading_normal = hit.geometric_normal;
+        hit.material = p.material;
+        hit.id = p.id;
+        return;
+    }
     const TriangleSet& tris = m_scene.triangles;
-    const auto& [i0, i1, i2] = tris.indices[th.triangle];
+    const auto& [i0, i1, i2] = tris.indices[triangle.triangle];
     const Vec3 p0 = tris.positions[i0], p1 = tris.positions[i1], p2 = tris.positions[i2];
     // The lecture's N = (P2 − P1) × (P3 − P2) (Fig 4.5).
     hit.geometric_normal = normalize(cross(p1 - p0, p2 - p1));
-    const float w = 1.0f - th.u - th.v;
+    const float w = 1.0f - triangle.u - triangle.v;
     // From the barycentrics rather than origin + t·direction: closer to the surface, which the
     // ray-offset of secondary rays relies on (Wächter & Binder 2019).
-    hit.position = p0 * w + p1 * th.u + p2 * th.v;
-    const Vec3 n = tris.normals[i0] * w + tris.normals[i1] * th.u + tris.normals[i2] * th.v;
+    hit.position = p0 * w + p1 * triangle.u + p2 * triangle.v;
+    const Vec3 n =
+        tris.normals[i0] * w + tris.normals[i1] * triangle.u + tris.normals[i2] * triangle.v;
     const float len2 = dot(n, n);
     hit.shading_normal = len2 > 0.0f ? n / std::sqrt(len2) : hit.geometric_normal;
-    hit.material = tris.material[th.triangle];
-    hit.id = tris.id[th.triangle];
+    hit.material = tris.material[triangle.triangle];
+    hit.id = tris.id[triangle.triangle];
+}
+
+bool SceneIntersector::occluded_by_triangles(const Ray& ray, Interval range) const {
+    return m_scene.triangles.size() > 0 &&
+           intersect_any(m_all_cast ? m_bvh : m_shadow_bvh, ray, range);
 }
 
 bool SceneIntersector::occluded(const Ray& ray, Interval range) const {
-    if (m_scene.triangles.size() > 0 &&
-        intersect_any(m_all_cast ? m_bvh : m_shadow_bvh, ray, range))
-        return true;
+    if (occluded_by_triangles(ray, range)) return true;
     for (const Sphere& s : m_scene.spheres)
         if (s.casts_shadow && !std::isnan(intersect_sphere(ray, s.center, s.radius, range)))
             return true;

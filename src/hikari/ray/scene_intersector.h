@@ -20,6 +20,9 @@ struct SurfaceHit {
     PrimitiveId id = 0;     ///< the primitive hit
 };
 
+/// Which kind of primitive a nearest-hit search found.
+enum class HitKind : uint8_t { none, triangle, sphere, plane };
+
 class SceneIntersector {
   public:
     /// Prepares acceleration structures for `scene`, which must outlive this object.
@@ -31,14 +34,22 @@ class SceneIntersector {
     /// first blocker; objects with casts_shadow false are ignored).
     bool occluded(const Ray& ray, Interval range) const;
 
+    /// Whether a shadow-casting triangle blocks `ray` inside `range` (occluded's first part).
+    bool occluded_by_triangles(const Ray& ray, Interval range) const;
+
+    /// Fills `hit` for the nearest hit of `ray` found at distance `t` on primitive `index` of
+    /// kind `kind` (Scene::spheres or Scene::planes; for triangles, `triangle` says which and
+    /// where). What closest() does once it knows the nearest hit, for callers that searched
+    /// another way (e.g. the bulk camera-ray front end, ray/primary_hits.h).
+    void describe_hit(const Ray& ray, float t, HitKind kind, size_t index,
+                      const TriangleHit& triangle, SurfaceHit& hit) const;
+
     /// The wide BVH over the scene's triangles.
     const WideBvh& bvh() const { return m_bvh; }
     /// Wall time the BVH build took, in milliseconds.
     double build_ms() const { return m_build_ms; }
 
   private:
-    void set_triangle_hit(const TriangleHit& th, SurfaceHit& hit) const;
-
     const Scene& m_scene;
     WideBvh m_bvh;
     WideBvh m_shadow_bvh;    ///< the shadow-casting triangles, when some do not cast

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "hikari/core/rng.h"
+#include "hikari/ray/primary_hits.h"
 #include "hikari/ray/ray_offset.h"
 #include "hikari/ray/scene_intersector.h"
 #include "hikari/render/tiles.h"
@@ -24,15 +25,20 @@ struct TraceContext {
 };
 
 /// The local (direct) illumination of a hit: ambient, then each light that a shadow ray
-/// finds unblocked.
-Vec3 shade_local(TraceContext& ctx, const Material& m, Vec3 p, Vec3 n, Vec3 ng, Vec3 to_eye) {
+/// finds unblocked. `lit`, when given, holds the shadow rays' answers already (bit l: light l
+/// unblocked), found in bulk for camera-ray hits by ray/primary_hits.h.
+Vec3 shade_local(TraceContext& ctx, const Material& m, Vec3 p, Vec3 n, Vec3 ng, Vec3 to_eye,
+                 const uint8_t* lit) {
     Vec3 colour = shade_ambient(m, ctx.scene.ambient);
     const Vec3 shadow_origin = offset_ray_origin(p, ng);
-    for (const Light& light : ctx.scene.lights) {
-        const LightSample ls = sample_light(light, p);
+    for (size_t l = 0; l < ctx.scene.lights.size(); ++l) {
+        const LightSample ls = sample_light(ctx.scene.lights[l], p);
         if (dot(n, ls.to_light) <= 0.0f) continue;
         ++ctx.rays;
-        if (ctx.intersector.occluded({shadow_origin, ls.to_light}, {0.0f, ls.distance})) continue;
+        const bool blocked =
+            lit ? (*lit & (1u << l)) == 0
+                : ctx.intersector.occluded({shadow_origin, ls.to_light}, {0.0f, ls.distance});
+        if (blocked) continue;
         colour += shade_direct(m, n, ls.to_light, to_eye, ls.irradiance);
     }
     return colour;
@@ -53,15 +59,18 @@ Material textured(const Material& m, Vec3 p) {
     return out;
 }
 
-/// Colour seen along `ray`, which is segment number `segment` of its path (primary = 1).
-/// Returns the primary hit through `first_hit` when asked (for the AOVs).
-Vec3 trace(TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* first_hit = nullptr) {
-    ++ctx.rays;
-    SurfaceHit hit;
-    if (!ctx.intersector.closest(ray, {0.0f, k_infinity}, hit))
-        return ctx.scene.sky.colour(ray.direction, ctx.scene.background);
-    if (first_hit) *first_hit = hit;
+Vec3 trace(TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* first_hit = nullptr);
 
+/// What a ray that hits nothing sees.
+Vec3 sky(const TraceContext& ctx, const Ray& ray) {
+    return ctx.scene.sky.colour(ray.direction, ctx.scene.background);
+}
+
+/// Colour seen along `ray` (segment number `segment` of its path, primary = 1) whose nearest
+/// hit is `hit`: local illumination, then the mirror and refracted rays. `lit` as for
+/// shade_local.
+Vec3 shade(TraceContext& ctx, const Ray& ray, const SurfaceHit& hit, int segment,
+           const uint8_t* lit = nullptr) {
     // Face the normals toward the incoming ray: planes and triangles are two-sided, and a ray
     // inside a sphere sees its inner side.
     const bool entering = dot(hit.geometric_normal, ray.direction) < 0.0f;
@@ -74,7 +83,7 @@ Vec3 trace(TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* first_hit
     const Material* textured_material = &material;
     if (material.texture) textured_material = &(local = textured(material, hit.position));
     const Material& m = *textured_material;
-    Vec3 colour = shade_local(ctx, m, hit.position, n, ng, -ray.direction);
+    Vec3 colour = shade_local(ctx, m, hit.position, n, ng, -ray.direction, lit);
     if (segment >= ctx.max_depth) return colour;
 
     const Vec3 mirror = reflect(ray.direction, n);
@@ -92,6 +101,16 @@ Vec3 trace(TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* first_hit
         colour += m.transparency *
                   trace(ctx, {offset_ray_origin(hit.position, -ng), *refracted}, segment + 1);
     return colour;
+}
+
+/// Colour seen along `ray`, which is segment number `segment` of its path (primary = 1).
+/// Returns the primary hit through `first_hit` when asked (for the AOVs).
+Vec3 trace(TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* first_hit) {
+    ++ctx.rays;
+    SurfaceHit hit;
+    if (!ctx.intersector.closest(ray, {0.0f, k_infinity}, hit)) return sky(ctx, ray);
+    if (first_hit) *first_hit = hit;
+    return shade(ctx, ray, hit, segment);
 }
 
 /// Strata for `n` jittered samples: the most square grid cols × rows = n.
@@ -120,8 +139,40 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
     int cols = 1, rows = 1;
     strata(spp, cols, rows);
 
+    // One ray per pixel: the tile's camera rays and their nearest hits are found together
+    // (ray/primary_hits.h, SIMD), then each pixel is shaded from its hit as trace() would.
+    const PrimaryHitTracer primary(intersector, scene, frame);
+    const auto store_aovs = [&](size_t i, const Ray& centre, const SurfaceHit& first) {
+        if (!settings.aov_buffers || !(first.t < k_infinity)) return;
+        fb.depth[i] = first.t;
+        fb.id[i] = first.id + 1;
+        fb.normal[i] = dot(first.shading_normal, centre.direction) < 0.0f ? first.shading_normal
+                                                                          : -first.shading_normal;
+    };
+    static_assert(k_tile_size <= k_primary_block);
+
     for_each_tile(cam.width, cam.height, settings.control, [&](const Tile& tile) {
         TraceContext ctx = shared;
+        if (spp == 1 && settings.primary_blocks) {
+            PrimaryBlock block;
+            primary.trace(tile.x0, tile.y0, tile.x1 - tile.x0, tile.y1 - tile.y0, block);
+            for (int y = tile.y0; y < tile.y1; ++y)
+                for (int x = tile.x0; x < tile.x1; ++x) {
+                    const size_t i = static_cast<size_t>(y) * cam.width + x;
+                    const int k = (y - tile.y0) * k_primary_block + (x - tile.x0);
+                    const Ray& ray = block.rays[k];
+                    ++ctx.rays;
+                    if (!block.found[k]) {
+                        fb.color.pixels[i] = sky(ctx, ray);
+                        continue;
+                    }
+                    fb.color.pixels[i] = shade(ctx, ray, block.hits[k], 1,
+                                               block.shadows_known ? &block.lit[k] : nullptr);
+                    store_aovs(i, ray, block.hits[k]);
+                }
+            if (settings.control) settings.control->rays_traced += ctx.rays;
+            return;
+        }
         for (int y = tile.y0; y < tile.y1; ++y)
             for (int x = tile.x0; x < tile.x1; ++x) {
                 const size_t i = static_cast<size_t>(y) * cam.width + x;
@@ -147,13 +198,7 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
                     sum = sum / static_cast<float>(spp);
                 }
                 fb.color.pixels[i] = sum;
-                if (settings.aov_buffers && first.t < k_infinity) {
-                    fb.depth[i] = first.t;
-                    fb.id[i] = first.id + 1;
-                    fb.normal[i] = dot(first.shading_normal, centre.direction) < 0.0f
-                                       ? first.shading_normal
-                                       : -first.shading_normal;
-                }
+                store_aovs(i, centre, first);
             }
         if (settings.control) settings.control->rays_traced += ctx.rays;
     });

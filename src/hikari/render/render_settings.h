@@ -38,6 +38,10 @@ struct RenderSettings {
     /// Fill the framebuffer's depth, id and normal buffers too. False: colour only (ray tracing
     /// then neither allocates nor writes them; raster methods, which need depth, keep them).
     bool aov_buffers = true;
+    /// Ray tracing with one sample per pixel finds the camera rays' hits a tile at a time, in
+    /// SIMD (ray/primary_hits.h). False: one camera ray at a time through trace(), the
+    /// reference the tests compare with (the images are bit-identical).
+    bool primary_blocks = true;
 };
 
 }  // namespace hikari
