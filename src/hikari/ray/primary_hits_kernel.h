@@ -25,8 +25,9 @@ constexpr int k_lanes = k_primary_block_rays;
     float* __restrict dz = lanes.direction[2];
     const PrimaryCamera c = cam;  // a local copy: the stores below cannot change it
     for (int i = 0; i < k_lanes; ++i) {
-        const float px = static_cast<float>(c.x0 + (i & (k_primary_block - 1))) + 0.5f;
-        const float py = static_cast<float>(c.y0 + i / k_primary_block) + 0.5f;
+        const int column = i % k_primary_block, row = i / k_primary_block;  // lane i's pixel
+        const float px = static_cast<float>(c.x0 + column) + 0.5f;
+        const float py = static_cast<float>(c.y0 + row) + 0.5f;
         const float x = (2.0f * px / c.width - 1.0f) * c.tan_half_fov_y * c.aspect;
         const float y = (1.0f - 2.0f * py / c.height) * c.tan_half_fov_y;
         const float vx = c.forward[0] + c.right[0] * x + c.up[0] * y;
