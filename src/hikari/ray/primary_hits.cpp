@@ -5,6 +5,7 @@
 
 #include "hikari/ray/primary_hits_kernel.h"
 #include "hikari/ray/wide_bvh_packet.h"
+#include "hikari/ray/wide_bvh_traversal.h"
 
 namespace hikari {
 
@@ -14,9 +15,8 @@ void primary_directions_portable(const PrimaryCamera& cam, PrimaryLanes& lanes) 
     directions_kernel(cam, lanes);
 }
 
-void primary_analytic_portable(const PrimaryCamera& cam, const PrimaryAnalytic& a,
-                               PrimaryLanes& lanes) {
-    analytic_kernel(cam, a, lanes);
+void primary_analytic_portable(const PrimaryAnalytic& a, PrimaryLanes& lanes) {
+    analytic_kernel(a, lanes);
 }
 
 void primary_shadows_portable(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
@@ -124,38 +124,60 @@ void PrimaryHitTracer::trace(int x0, int y0, int width, int height, PrimaryBlock
                 if (found[i]) lanes.t[i] = triangle_hits[i].t, lanes.object[i] = 1;
             }
     }
+    finish(
+        lanes, triangle_hits,
+        [&](int i) { return i % k_primary_block < width && i / k_primary_block < height; }, block);
+}
 
+void PrimaryHitTracer::trace_rays(int count, PrimaryBlock& block) const {
+    detail::PrimaryLanes lanes;
+    TriangleHit triangle_hits[k_primary_block_rays];
+    const bool triangles = m_scene.triangles.size() > 0;
+    for (int i = 0; i < k_primary_block_rays; ++i) {
+        const Ray ray = i < count ? block.rays[i] : Ray{m_frame.eye, {0.0f, 0.0f, 1.0f}};
+        for (int a = 0; a < 3; ++a) lanes.origin[a][i] = ray.origin[a];
+        for (int a = 0; a < 3; ++a) lanes.direction[a][i] = ray.direction[a];
+        lanes.t[i] = k_infinity;
+        lanes.object[i] = 0;
+        if (triangles && i < count &&
+            intersect_closest(m_intersector.bvh(), ray, {0.0f, k_infinity}, triangle_hits[i]))
+            lanes.t[i] = triangle_hits[i].t, lanes.object[i] = 1;
+    }
+    finish(
+        lanes, triangle_hits, [&](int i) { return i < count; }, block);
+}
+
+template <class ValidLane>
+void PrimaryHitTracer::finish(detail::PrimaryLanes& lanes, const TriangleHit* triangle_hits,
+                              ValidLane valid, PrimaryBlock& block) const {
     // 3. Spheres and planes, each against all lanes.
     const detail::PrimaryAnalytic analytic = m_analytic.view();
     switch (m_level) {
         case SimdLevel::avx512:
-            detail::primary_analytic_avx512(cam, analytic, lanes);
+            detail::primary_analytic_avx512(analytic, lanes);
             break;
         case SimdLevel::avx2:
-            detail::primary_analytic_avx2(cam, analytic, lanes);
+            detail::primary_analytic_avx2(analytic, lanes);
             break;
         default:
-            detail::primary_analytic_portable(cam, analytic, lanes);
+            detail::primary_analytic_portable(analytic, lanes);
     }
 
     // 4. Each hit described as SceneIntersector::closest describes it.
     const auto spheres = static_cast<int32_t>(m_scene.spheres.size());
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            const int i = y * k_primary_block + x;
-            const int32_t object = lanes.object[i];
-            block.found[i] = object != 0 ? 1 : 0;
-            if (object == 0) continue;
-            const HitKind kind = object == 1            ? HitKind::triangle
-                                 : object < 2 + spheres ? HitKind::sphere
-                                                        : HitKind::plane;
-            const size_t index = kind == HitKind::sphere ? static_cast<size_t>(object - 2)
-                                 : kind == HitKind::plane
-                                     ? static_cast<size_t>(object - 2 - spheres)
-                                     : 0;
-            m_intersector.describe_hit(block.rays[i], lanes.t[i], kind, index, triangle_hits[i],
-                                       block.hits[i]);
-        }
+    for (int i = 0; i < k_primary_block_rays; ++i) {
+        const int32_t object = valid(i) ? lanes.object[i] : 0;
+        block.found[i] = object != 0 ? 1 : 0;
+        if (object == 0) continue;
+        const HitKind kind = object == 1            ? HitKind::triangle
+                             : object < 2 + spheres ? HitKind::sphere
+                                                    : HitKind::plane;
+        const size_t index = kind == HitKind::sphere  ? static_cast<size_t>(object - 2)
+                             : kind == HitKind::plane ? static_cast<size_t>(object - 2 - spheres)
+                                                      : 0;
+        m_intersector.describe_hit(block.rays[i], lanes.t[i], kind, index, triangle_hits[i],
+                                   block.hits[i]);
+    }
 
     // 5. The hits' shadow rays, one light at a time against all lanes (Boulos et al. 2007 trace
     // shadow rays as packets too: from nearby points toward one light they stay coherent).
@@ -163,11 +185,10 @@ void PrimaryHitTracer::trace(int x0, int y0, int width, int height, PrimaryBlock
     if (!block.shadows_known) return;
     detail::ShadowLanes shadow;
     for (int i = 0; i < k_primary_block_rays; ++i) {
-        const bool found = block.found[i] != 0 && i % k_primary_block < width;
         const SurfaceHit& hit = block.hits[i];
         Vec3 ng(0.0f);  // unused lanes: a harmless point and normal
         Vec3 p(0.0f);
-        if (found) {
+        if (block.found[i]) {
             // The geometric normal facing the incoming ray, as shade() takes it.
             ng = dot(hit.geometric_normal, block.rays[i].direction) < 0.0f ? hit.geometric_normal
                                                                            : -hit.geometric_normal;
@@ -188,16 +209,13 @@ void PrimaryHitTracer::trace(int x0, int y0, int width, int height, PrimaryBlock
             default:
                 detail::primary_shadows_portable(m_lights[l], casters, shadow);
         }
-        for (int y = 0; y < height; ++y)
-            for (int x = 0; x < width; ++x) {
-                const int i = y * k_primary_block + x;
-                if (!block.found[i] || shadow.blocked[i]) continue;
-                const Ray ray{
-                    {shadow.origin[0][i], shadow.origin[1][i], shadow.origin[2][i]},
-                    {shadow.to_light[0][i], shadow.to_light[1][i], shadow.to_light[2][i]}};
-                if (m_intersector.occluded_by_triangles(ray, {0.0f, shadow.distance[i]})) continue;
-                block.lit[i] |= static_cast<uint8_t>(1u << l);
-            }
+        for (int i = 0; i < k_primary_block_rays; ++i) {
+            if (!block.found[i] || shadow.blocked[i]) continue;
+            const Ray ray{{shadow.origin[0][i], shadow.origin[1][i], shadow.origin[2][i]},
+                          {shadow.to_light[0][i], shadow.to_light[1][i], shadow.to_light[2][i]}};
+            if (m_intersector.occluded_by_triangles(ray, {0.0f, shadow.distance[i]})) continue;
+            block.lit[i] |= static_cast<uint8_t>(1u << l);
+        }
     }
 }
 

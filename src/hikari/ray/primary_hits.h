@@ -52,6 +52,8 @@ struct PrimaryAnalytic {
     int32_t planes;
 };
 
+struct PrimaryLanes;
+
 /// One light as the shadow kernel reads it.
 struct PrimaryShadowLight {
     bool directional;
@@ -76,6 +78,12 @@ class PrimaryHitTracer {
     /// lights each hit sees (the shadow rays of the hits traced together too).
     void trace(int x0, int y0, int width, int height, PrimaryBlock& block) const;
 
+    /// The same for any rays (a Whitted tracer's mirror and refracted rays): block.rays[0,
+    /// count) are given (count at most k_primary_block_rays, unit directions), and entry i of
+    /// hits, found and lit is filled for each, as trace() fills them; entries past `count` get
+    /// found = 0. Triangles are found one ray at a time (such rays are rarely coherent).
+    void trace_rays(int count, PrimaryBlock& block) const;
+
   private:
     /// Spheres and planes in structure-of-arrays form, one entry per primitive, for the lanes.
     struct Analytic {
@@ -87,6 +95,13 @@ class PrimaryHitTracer {
         /// The kernels' view of these arrays.
         detail::PrimaryAnalytic view() const;
     };
+
+    /// Steps shared by trace() and trace_rays(): spheres and planes after the triangles already
+    /// in `lanes`, each hit described into `block`, and the hits' shadow rays. `valid(i)` says
+    /// whether lane i is a ray of the block.
+    template <class ValidLane>
+    void finish(detail::PrimaryLanes& lanes, const TriangleHit* triangle_hits, ValidLane valid,
+                PrimaryBlock& block) const;
 
     const SceneIntersector& m_intersector;
     const Scene& m_scene;
@@ -103,7 +118,8 @@ namespace detail {
 /// (x0 + i % 16, y0 + i / 16); all 256 lanes are computed even for a clipped block (the extra
 /// lanes are harmless finite rays, never read back).
 struct alignas(64) PrimaryLanes {
-    float direction[3][k_primary_block_rays];  ///< unit camera-ray direction per lane
+    float origin[3][k_primary_block_rays];     ///< ray origin per lane
+    float direction[3][k_primary_block_rays];  ///< unit ray direction per lane
     float t[k_primary_block_rays];             ///< in: nearest triangle t or ∞; out: nearest t
     /// in: 0 none, 1 triangle; out: also 2 + i for sphere i, 2 + spheres + j for plane j.
     int32_t object[k_primary_block_rays];
@@ -131,11 +147,10 @@ void primary_directions_portable(const PrimaryCamera& cam, PrimaryLanes& lanes);
 void primary_directions_avx2(const PrimaryCamera& cam, PrimaryLanes& lanes);
 void primary_directions_avx512(const PrimaryCamera& cam, PrimaryLanes& lanes);
 /// Spheres and planes against every lane, after the triangles (kernel for each SIMD level).
-void primary_analytic_portable(const PrimaryCamera& cam, const PrimaryAnalytic& a,
-                               PrimaryLanes& lanes);
-void primary_analytic_avx2(const PrimaryCamera& cam, const PrimaryAnalytic& a, PrimaryLanes& lanes);
-void primary_analytic_avx512(const PrimaryCamera& cam, const PrimaryAnalytic& a,
-                             PrimaryLanes& lanes);
+/// Lanes without a ray must hold a harmless finite one.
+void primary_analytic_portable(const PrimaryAnalytic& a, PrimaryLanes& lanes);
+void primary_analytic_avx2(const PrimaryAnalytic& a, PrimaryLanes& lanes);
+void primary_analytic_avx512(const PrimaryAnalytic& a, PrimaryLanes& lanes);
 
 /// Shadow rays toward one light against the casting spheres and planes (each SIMD level).
 void primary_shadows_portable(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,

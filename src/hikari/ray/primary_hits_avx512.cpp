@@ -18,9 +18,8 @@ void primary_directions_avx512(const PrimaryCamera& cam, PrimaryLanes& lanes) {
     directions_kernel(cam, lanes);
 }
 
-void primary_analytic_avx512(const PrimaryCamera& cam, const PrimaryAnalytic& a,
-                             PrimaryLanes& lanes) {
-    analytic_kernel(cam, a, lanes);
+void primary_analytic_avx512(const PrimaryAnalytic& a, PrimaryLanes& lanes) {
+    analytic_kernel(a, lanes);
 }
 
 void primary_shadows_avx512(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
@@ -35,9 +34,8 @@ namespace hikari::detail {
 void primary_directions_avx512(const PrimaryCamera& cam, PrimaryLanes& lanes) {
     primary_directions_portable(cam, lanes);
 }
-void primary_analytic_avx512(const PrimaryCamera& cam, const PrimaryAnalytic& a,
-                             PrimaryLanes& lanes) {
-    primary_analytic_portable(cam, a, lanes);
+void primary_analytic_avx512(const PrimaryAnalytic& a, PrimaryLanes& lanes) {
+    primary_analytic_portable(a, lanes);
 }
 void primary_shadows_avx512(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
                             ShadowLanes& lanes) {

@@ -23,6 +23,9 @@ constexpr int k_lanes = k_primary_block_rays;
     float* __restrict dx = lanes.direction[0];
     float* __restrict dy = lanes.direction[1];
     float* __restrict dz = lanes.direction[2];
+    float* __restrict ox = lanes.origin[0];
+    float* __restrict oy = lanes.origin[1];
+    float* __restrict oz = lanes.origin[2];
     const PrimaryCamera c = cam;  // a local copy: the stores below cannot change it
     for (int i = 0; i < k_lanes; ++i) {
         const int column = i % k_primary_block, row = i / k_primary_block;  // lane i's pixel
@@ -37,63 +40,84 @@ constexpr int k_lanes = k_primary_block_rays;
         dx[i] = vx * inv_length;
         dy[i] = vy * inv_length;
         dz[i] = vz * inv_length;
+        ox[i] = c.eye[0], oy[i] = c.eye[1], oz[i] = c.eye[2];
     }
+}
+
+/// intersect_sphere (Haines et al. 2019) for one lane on the range (0, limit): the distance of
+/// the nearer hit inside the range, or NaN for none (also when q = 0: intersect_sphere takes both
+/// roots as 0 there, which the open range never holds). f is origin - centre.
+[[maybe_unused]] inline float sphere_lane(float fx, float fy, float fz, float dx, float dy,
+                                          float dz, float r2, float limit) {
+    const float b = -(fx * dx + fy * dy + fz * dz);
+    const float qx = fx + dx * b, qy = fy + dy * b, qz = fz + dz * b;
+    const float discriminant = r2 - (qx * qx + qy * qy + qz * qz);
+    const float c = fx * fx + fy * fy + fz * fz - r2;
+    const bool behind = c > 0.0f && b <= 0.0f;                  // both roots <= 0
+    const float root = __builtin_sqrtf(discriminant);           // NaN when negative: no hit
+    const float q = b + (__builtin_signbit(b) ? -root : root);  // copysign(root, b)
+    const float t0 = c / q, t1 = q;
+    const bool swap = t0 > t1;
+    const float near = swap ? t1 : t0, far = swap ? t0 : t1;
+    const bool near_in = 0.0f < near && near < limit;
+    const bool far_in = 0.0f < far && far < limit;
+    const bool hit = !(discriminant < 0.0f) && !behind && q != 0.0f && (near_in || far_in);
+    return hit ? (near_in ? near : far) : __builtin_nanf("");
 }
 
 /// The nearest of the lanes' triangle hit (already in lanes.t / lanes.object), the spheres and
 /// the planes, tested in SceneIntersector::closest's order: a later primitive wins only when
-/// strictly nearer. All rays start at the eye.
-[[maybe_unused]] void analytic_kernel(const PrimaryCamera& cam, const PrimaryAnalytic& a,
-                                      PrimaryLanes& lanes) {
+/// strictly nearer.
+[[maybe_unused]] void analytic_kernel(const PrimaryAnalytic& a, PrimaryLanes& lanes) {
+    const float* __restrict ox = lanes.origin[0];
+    const float* __restrict oy = lanes.origin[1];
+    const float* __restrict oz = lanes.origin[2];
     const float* __restrict dx = lanes.direction[0];
     const float* __restrict dy = lanes.direction[1];
     const float* __restrict dz = lanes.direction[2];
     float* __restrict t_max = lanes.t;
     int32_t* __restrict object = lanes.object;
-    const float ox = cam.eye[0], oy = cam.eye[1], oz = cam.eye[2];
     const int32_t spheres = a.spheres, planes = a.planes;
 
     for (int32_t s = 0; s < spheres; ++s) {
-        // intersect_sphere (Haines et al. 2019), per lane, on the range (0, t_max).
-        const float fx = ox - a.sphere_center[0][s], fy = oy - a.sphere_center[1][s],
-                    fz = oz - a.sphere_center[2][s];
+        const float cx = a.sphere_center[0][s], cy = a.sphere_center[1][s],
+                    cz = a.sphere_center[2][s];
         const float radius = a.sphere_radius[s];
         const float r2 = radius * radius;
-        const float c = fx * fx + fy * fy + fz * fz - r2;
         for (int i = 0; i < k_lanes; ++i) {
-            const float b = -(fx * dx[i] + fy * dy[i] + fz * dz[i]);
-            const float qx = fx + dx[i] * b, qy = fy + dy[i] * b, qz = fz + dz[i] * b;
-            const float discriminant = r2 - (qx * qx + qy * qy + qz * qz);
-            const bool behind = c > 0.0f && b <= 0.0f;                  // both roots <= 0
-            const float root = __builtin_sqrtf(discriminant);           // NaN when negative: no hit
-            const float q = b + (__builtin_signbit(b) ? -root : root);  // copysign(root, b)
-            // intersect_sphere takes both roots as 0 when q = 0 (origin on the sphere, tangent),
-            // which the range (0, t_max) never holds: q = 0 is a miss here.
-            const float t0 = c / q, t1 = q;
-            const bool swap = t0 > t1;
-            const float near = swap ? t1 : t0, far = swap ? t0 : t1;
-            const float limit = t_max[i];
-            const bool near_in = 0.0f < near && near < limit;
-            const bool far_in = 0.0f < far && far < limit;
-            const bool hit = !(discriminant < 0.0f) && !behind && q != 0.0f && (near_in || far_in);
-            t_max[i] = hit ? (near_in ? near : far) : limit;
+            const float t =
+                sphere_lane(ox[i] - cx, oy[i] - cy, oz[i] - cz, dx[i], dy[i], dz[i], r2, t_max[i]);
+            const bool hit = t == t;
+            t_max[i] = hit ? t : t_max[i];
             object[i] = hit ? 2 + s : object[i];
         }
     }
     for (int32_t p = 0; p < planes; ++p) {
         // intersect_plane, per lane.
+        const float qx = a.plane_point[0][p], qy = a.plane_point[1][p], qz = a.plane_point[2][p];
         const float nx = a.plane_normal[0][p], ny = a.plane_normal[1][p], nz = a.plane_normal[2][p];
-        const float numerator = (a.plane_point[0][p] - ox) * nx + (a.plane_point[1][p] - oy) * ny +
-                                (a.plane_point[2][p] - oz) * nz;
         for (int i = 0; i < k_lanes; ++i) {
             const float denominator = nx * dx[i] + ny * dy[i] + nz * dz[i];
-            const float t = numerator / denominator;
+            const float t =
+                ((qx - ox[i]) * nx + (qy - oy[i]) * ny + (qz - oz[i]) * nz) / denominator;
             const float limit = t_max[i];
             const bool hit = denominator != 0.0f && 0.0f < t && t < limit;
             t_max[i] = hit ? t : limit;
             object[i] = hit ? 2 + spheres + p : object[i];
         }
     }
+}
+
+/// offset_ray_origin (ray/ray_offset.h) for one coordinate: p moved by 256 n ulps away from
+/// zero's side (the sign bit s of p gives -ulps as (ulps ^ s) - s; positions are finite, so the
+/// sign bit is p < 0 except for -0, which the |p| < 1/32 branch takes), or by n / 65536 near
+/// the origin.
+[[maybe_unused]] inline float offset_origin_lane(float p, float n) {
+    const auto ulps = static_cast<int32_t>(256.0f * n);
+    const auto bits = __builtin_bit_cast(int32_t, p);
+    const int32_t sign = bits >> 31;
+    const float moved = __builtin_bit_cast(float, bits + ((ulps ^ sign) - sign));
+    return __builtin_fabsf(p) < 1.0f / 32.0f ? p + 1.0f / 65536.0f * n : moved;
 }
 
 /// Shadow rays from the lanes' hit points toward one light: shade_local's sample_light, the
@@ -117,20 +141,10 @@ constexpr int k_lanes = k_primary_block_rays;
     float* __restrict distance = lanes.distance;
     uint8_t* __restrict blocked = lanes.blocked;
     const PrimaryShadowLight l = light;
-    // offset_ray_origin per axis: p moved by 256 n ulps away from zero's side (the sign bit s
-    // of p gives -ulps as (ulps ^ s) - s; positions are finite, so the sign bit is p < 0 except
-    // for -0, which the |p| < 1/32 branch takes), or by n / 65536 near the origin.
-    const auto offset = [](float p, float n) {
-        const auto ulps = static_cast<int32_t>(256.0f * n);
-        const auto bits = __builtin_bit_cast(int32_t, p);
-        const int32_t sign = bits >> 31;
-        const float moved = __builtin_bit_cast(float, bits + ((ulps ^ sign) - sign));
-        return __builtin_fabsf(p) < 1.0f / 32.0f ? p + 1.0f / 65536.0f * n : moved;
-    };
     for (int i = 0; i < k_lanes; ++i) {
-        ox[i] = offset(px[i], nx[i]);
-        oy[i] = offset(py[i], ny[i]);
-        oz[i] = offset(pz[i], nz[i]);
+        ox[i] = offset_origin_lane(px[i], nx[i]);
+        oy[i] = offset_origin_lane(py[i], ny[i]);
+        oz[i] = offset_origin_lane(pz[i], nz[i]);
     }
     // sample_light: unit direction toward the light and the distance to it.
     if (l.directional) {
@@ -155,23 +169,9 @@ constexpr int k_lanes = k_primary_block_rays;
         const float radius = a.sphere_radius[s];
         const float r2 = radius * radius;
         for (int i = 0; i < k_lanes; ++i) {
-            // intersect_sphere on (0, distance), as in analytic_kernel but from each lane's origin.
-            const float fx = ox[i] - cx, fy = oy[i] - cy, fz = oz[i] - cz;
-            const float b = -(fx * dx[i] + fy * dy[i] + fz * dz[i]);
-            const float qx = fx + dx[i] * b, qy = fy + dy[i] * b, qz = fz + dz[i] * b;
-            const float discriminant = r2 - (qx * qx + qy * qy + qz * qz);
-            const float c = fx * fx + fy * fy + fz * fz - r2;
-            const bool behind = c > 0.0f && b <= 0.0f;
-            const float root = __builtin_sqrtf(discriminant);
-            const float q = b + (__builtin_signbit(b) ? -root : root);
-            const float t0 = c / q, t1 = q;
-            const bool swap = t0 > t1;
-            const float near = swap ? t1 : t0, far = swap ? t0 : t1;
-            const float limit = distance[i];
-            const bool near_in = 0.0f < near && near < limit;
-            const bool far_in = 0.0f < far && far < limit;
-            const bool hit = !(discriminant < 0.0f) && !behind && q != 0.0f && (near_in || far_in);
-            blocked[i] = hit ? 1 : blocked[i];
+            const float t = sphere_lane(ox[i] - cx, oy[i] - cy, oz[i] - cz, dx[i], dy[i], dz[i], r2,
+                                        distance[i]);
+            blocked[i] = t == t ? 1 : blocked[i];
         }
     }
     for (int32_t p = 0; p < a.planes; ++p) {

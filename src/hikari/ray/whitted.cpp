@@ -1,12 +1,16 @@
 #include "hikari/ray/whitted.h"
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <optional>
+#include <vector>
 
 #include "hikari/core/rng.h"
 #include "hikari/ray/primary_hits.h"
 #include "hikari/ray/ray_offset.h"
 #include "hikari/ray/scene_intersector.h"
+#include "hikari/ray/whitted_shade.h"
 #include "hikari/render/tiles.h"
 #include "hikari/shading/phong.h"
 #include "hikari/shading/refraction.h"
@@ -113,6 +117,168 @@ Vec3 trace(TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* first_hit
     return shade(ctx, ray, hit, segment);
 }
 
+/// One ray of a tile's ray tree, breadth first: its own contribution (local illumination at its
+/// hit, or the sky) and where its mirror and refracted rays sit in the next level.
+struct PathNode {
+    Vec3 colour;  ///< own contribution; after fold(), the whole colour seen along the ray
+    int32_t mirror = -1, refract = -1;  ///< indices of the child rays in the next level, or -1
+    float mirror_weight = 0.0f, refract_weight = 0.0f;
+};
+
+/// What one thread keeps between tiles (the blocks are too big for a worker's stack).
+struct WaveScratch {
+    PrimaryBlock block;
+    detail::ShadeLanes lanes;
+    std::vector<std::vector<PathNode>> levels;
+    std::vector<Ray> rays, next_rays;
+};
+
+/// A tile's rays traced level by level (Boulos et al. 2007): the camera rays' hits as a block,
+/// all hits of a level shaded together in lanes (ray/whitted_shade.h), the mirror and refracted
+/// rays they spawn gathered into the next level and traced as blocks of their own. Then the
+/// colours are folded from the deepest level up in exactly the order shade() adds them, so every
+/// pixel is bit-identical to the recursive trace.
+class WaveTracer {
+  public:
+    WaveTracer(TraceContext& ctx, const PrimaryHitTracer& hits, const LaneShader& shader,
+               WaveScratch& scratch)
+        : m_ctx(ctx), m_hits(hits), m_shader(shader), m_s(scratch) {}
+
+    /// Traces the camera rays of `tile` (at most one block); AOVs via `first_hits(block)` right
+    /// after the camera rays' hits are known. Colour of lane y * k_primary_block + x in
+    /// `levels[0]`.
+    template <class FirstHits>
+    const std::vector<PathNode>& trace_tile(const Tile& tile, FirstHits&& first_hits) {
+        const int width = tile.x1 - tile.x0, height = tile.y1 - tile.y0;
+        PrimaryBlock& block = m_s.block;
+        m_hits.trace(tile.x0, tile.y0, width, height, block);
+        first_hits(block);
+        level(0).assign(k_primary_block_rays, PathNode{});
+        m_s.next_rays.clear();
+        shade_block(
+            block,
+            [&](int i) { return i % k_primary_block < width && i / k_primary_block < height; }, 1,
+            level(0).data());
+        int depth = 1;
+        while (!m_s.next_rays.empty()) {
+            std::swap(m_s.rays, m_s.next_rays);
+            m_s.next_rays.clear();
+            std::vector<PathNode>& nodes = level(depth);
+            nodes.assign(m_s.rays.size(), PathNode{});
+            ++depth;
+            for (size_t first = 0; first < m_s.rays.size(); first += k_primary_block_rays) {
+                const int count = static_cast<int>(
+                    std::min<size_t>(k_primary_block_rays, m_s.rays.size() - first));
+                std::copy_n(m_s.rays.begin() + static_cast<std::ptrdiff_t>(first), count,
+                            block.rays);
+                m_hits.trace_rays(count, block);
+                shade_block(
+                    block, [&](int i) { return i < count; }, depth, nodes.data() + first);
+            }
+        }
+        fold(depth);
+        return level(0);
+    }
+
+  private:
+    std::vector<PathNode>& level(int index) {
+        if (m_s.levels.size() <= static_cast<size_t>(index)) m_s.levels.resize(index + 1);
+        return m_s.levels[index];
+    }
+
+    /// Shades the block's lanes that hold rays of path segment `segment` into `nodes` (one per
+    /// lane) and appends the rays they spawn to next_rays.
+    template <class ValidLane>
+    void shade_block(const PrimaryBlock& block, ValidLane valid, int segment, PathNode* nodes) {
+        detail::ShadeLanes& lanes = m_s.lanes;
+        for (int i = 0; i < k_primary_block_rays; ++i) {
+            const SurfaceHit& hit = block.hits[i];
+            const bool active = valid(i) && block.found[i];
+            lanes.active[i] = active ? 1 : 0;
+            const Vec3 d = block.rays[i].direction;
+            const Vec3 p = active ? hit.position : Vec3(0.0f);
+            const Vec3 g = active ? hit.geometric_normal : Vec3(0.0f, 1.0f, 0.0f);
+            const Vec3 s = active ? hit.shading_normal : g;
+            for (int a = 0; a < 3; ++a) {
+                lanes.direction[a][i] = d[a];
+                lanes.position[a][i] = p[a];
+                lanes.geometric_normal[a][i] = g[a];
+                lanes.shading_normal[a][i] = s[a];
+            }
+            lanes.material[i] = active ? static_cast<int32_t>(hit.material) : 0;
+            lanes.lit[i] = active ? block.lit[i] : 0;
+        }
+        const bool spawn = segment < m_ctx.max_depth;
+        m_shader.shade(lanes, spawn);
+        for (int i = 0; i < k_primary_block_rays; ++i) {
+            if (!valid(i)) continue;
+            const Ray& ray = block.rays[i];
+            PathNode& node = nodes[i];
+            ++m_ctx.rays;
+            if (!block.found[i]) {
+                node.colour = sky(m_ctx, ray);
+                continue;
+            }
+            m_ctx.rays += lanes.shadow_rays[i];
+            node.colour = {lanes.colour[0][i], lanes.colour[1][i], lanes.colour[2][i]};
+            if (lanes.scalar_specular[i]) {
+                // A Phong exponent the lanes cannot raise exactly: the scalar code shades it
+                // (its ray count is already in shadow_rays).
+                TraceContext scalar = m_ctx;
+                const SurfaceHit& hit = block.hits[i];
+                const Material& material = m_ctx.scene.materials[hit.material];
+                Material local;
+                const Material& m =
+                    material.texture ? (local = textured(material, hit.position)) : material;
+                node.colour =
+                    shade_local(scalar, m, hit.position,
+                                {lanes.normal[0][i], lanes.normal[1][i], lanes.normal[2][i]},
+                                {lanes.facing_normal[0][i], lanes.facing_normal[1][i],
+                                 lanes.facing_normal[2][i]},
+                                -ray.direction, &block.lit[i]);
+            }
+            if (!spawn) continue;
+            if (lanes.mirror_weight[i] > 0.0f) {
+                node.mirror = static_cast<int32_t>(m_s.next_rays.size());
+                node.mirror_weight = lanes.mirror_weight[i];
+                m_s.next_rays.push_back(
+                    {{lanes.mirror_origin[0][i], lanes.mirror_origin[1][i],
+                      lanes.mirror_origin[2][i]},
+                     {lanes.mirror_direction[0][i], lanes.mirror_direction[1][i],
+                      lanes.mirror_direction[2][i]}});
+            }
+            if (lanes.refract_weight[i] > 0.0f) {
+                node.refract = static_cast<int32_t>(m_s.next_rays.size());
+                node.refract_weight = lanes.refract_weight[i];
+                m_s.next_rays.push_back(
+                    {{lanes.refract_origin[0][i], lanes.refract_origin[1][i],
+                      lanes.refract_origin[2][i]},
+                     {lanes.refract_direction[0][i], lanes.refract_direction[1][i],
+                      lanes.refract_direction[2][i]}});
+            }
+        }
+    }
+
+    /// Adds each level's colours into their parents', deepest first, as shade() adds them:
+    /// colour += mirror_weight * mirror colour, then += transparency * refracted colour.
+    void fold(int depth) {
+        for (int d = depth - 2; d >= 0; --d) {
+            const std::vector<PathNode>& children = m_s.levels[d + 1];
+            for (PathNode& node : m_s.levels[d]) {
+                if (node.mirror >= 0)
+                    node.colour += node.mirror_weight * children[node.mirror].colour;
+                if (node.refract >= 0)
+                    node.colour += node.refract_weight * children[node.refract].colour;
+            }
+        }
+    }
+
+    TraceContext& m_ctx;
+    const PrimaryHitTracer& m_hits;
+    const LaneShader& m_shader;
+    WaveScratch& m_s;
+};
+
 /// Strata for `n` jittered samples: the most square grid cols × rows = n.
 void strata(int n, int& cols, int& rows) {
     cols = static_cast<int>(std::sqrt(static_cast<double>(n)));
@@ -142,6 +308,7 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
     // One ray per pixel: the tile's camera rays and their nearest hits are found together
     // (ray/primary_hits.h, SIMD), then each pixel is shaded from its hit as trace() would.
     const PrimaryHitTracer primary(intersector, scene, frame);
+    const LaneShader shader(scene);
     const auto store_aovs = [&](size_t i, const Ray& centre, const SurfaceHit& first) {
         if (!settings.aov_buffers || !(first.t < k_infinity)) return;
         fb.depth[i] = first.t;
@@ -153,23 +320,24 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
 
     for_each_tile(cam.width, cam.height, settings.control, [&](const Tile& tile) {
         TraceContext ctx = shared;
-        if (spp == 1 && settings.primary_blocks) {
-            PrimaryBlock block;
-            primary.trace(tile.x0, tile.y0, tile.x1 - tile.x0, tile.y1 - tile.y0, block);
+        if (spp == 1 && settings.primary_blocks && shader.supported()) {
+            thread_local std::unique_ptr<WaveScratch> scratch;
+            if (!scratch) scratch = std::make_unique<WaveScratch>();
+            WaveTracer wave(ctx, primary, shader, *scratch);
+            const std::vector<PathNode>& colours =
+                wave.trace_tile(tile, [&](const PrimaryBlock& block) {
+                    for (int y = tile.y0; y < tile.y1; ++y)
+                        for (int x = tile.x0; x < tile.x1; ++x) {
+                            const int k = (y - tile.y0) * k_primary_block + (x - tile.x0);
+                            if (block.found[k])
+                                store_aovs(static_cast<size_t>(y) * cam.width + x, block.rays[k],
+                                           block.hits[k]);
+                        }
+                });
             for (int y = tile.y0; y < tile.y1; ++y)
-                for (int x = tile.x0; x < tile.x1; ++x) {
-                    const size_t i = static_cast<size_t>(y) * cam.width + x;
-                    const int k = (y - tile.y0) * k_primary_block + (x - tile.x0);
-                    const Ray& ray = block.rays[k];
-                    ++ctx.rays;
-                    if (!block.found[k]) {
-                        fb.color.pixels[i] = sky(ctx, ray);
-                        continue;
-                    }
-                    fb.color.pixels[i] = shade(ctx, ray, block.hits[k], 1,
-                                               block.shadows_known ? &block.lit[k] : nullptr);
-                    store_aovs(i, ray, block.hits[k]);
-                }
+                for (int x = tile.x0; x < tile.x1; ++x)
+                    fb.color.pixels[static_cast<size_t>(y) * cam.width + x] =
+                        colours[(y - tile.y0) * k_primary_block + (x - tile.x0)].colour;
             if (settings.control) settings.control->rays_traced += ctx.rays;
             return;
         }

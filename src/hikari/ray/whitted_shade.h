@@ -1,0 +1,139 @@
+#pragma once
+// The shading step of the Whitted ray tracer for a whole block of hits at once: the lecture's
+// shading model (Fig 4.29, shading/phong.h) at each hit, then the mirror and refracted rays it
+// spawns (Fig 4.43, shading/refraction.h), in SIMD lanes. whitted.cpp runs it level by level
+// over a tile's rays (a breadth-first "wavefront" of the ray tree, as in Boulos et al. 2007,
+// "Packet-based Whitted and Distribution Ray Tracing") instead of recursing one ray at a time.
+//
+// The lanes perform the scalar code's operations (shade_local / shade_direct / phong_power /
+// textured / reflect / refract / offset_ray_origin) in the same order without FMA contraction,
+// so every level gives bit-identical colours and rays; tests compare them with the recursive
+// tracer. The one exception, a Phong exponent that is not an integer in [0, 1024], is flagged
+// per lane for the caller to shade with the scalar code (std::pow has no exact lane form).
+
+#include <cstdint>
+#include <vector>
+
+#include "hikari/ray/primary_hits.h"
+#include "hikari/ray/simd_level.h"
+#include "hikari/scene/scene.h"
+
+namespace hikari {
+
+namespace detail {
+
+/// Lanes per shading call: one block of rays (ray/primary_hits.h).
+inline constexpr int k_shade_lanes = k_primary_block_rays;
+
+/// The scene's materials as the lanes read them: structure-of-arrays, indexed by material.
+struct ShadeMaterials {
+    const float* ka[3];
+    const float* kd[3];
+    const float* ks[3];
+    /// The Phong exponent when it is an integer in [0, 1024] (phong_power's repeated squaring),
+    /// else -1 (the lane is flagged scalar_specular).
+    const int32_t* exponent;
+    const float* reflectivity;
+    const float* transparency;
+    const float* ior;
+    const int32_t* textured;  ///< 1: ka and kd are scaled by the checker texture
+    const float* inverse_size;
+    const float* offset[3];
+    const float* color_a[3];
+    const float* color_b[3];
+};
+
+/// One light as the lanes read it (sample_light's two cases).
+struct ShadeLight {
+    int32_t directional;     ///< 1: directional light, else point light
+    int32_t inverse_square;  ///< point lights: 1 when irradiance falls off as 1/d²
+    float position[3];       ///< point lights
+    float to_light[3];       ///< directional lights: the unit direction toward the light
+    float intensity[3];
+};
+
+/// Everything the shading lanes read besides the hits.
+struct ShadeScene {
+    ShadeMaterials materials;
+    const ShadeLight* lights;
+    int32_t light_count;  ///< at most 8 (one bit each in ShadeLanes::lit)
+    float ambient[3];
+    int32_t exponent_bits;  ///< bit length of the largest integer exponent (squaring steps)
+};
+
+/// The hits of one block, structure-of-arrays, and what shading them gives.
+struct alignas(64) ShadeLanes {
+    // In: lane i is one ray and its nearest hit.
+    float direction[3][k_shade_lanes];         ///< unit direction of the incoming ray
+    float position[3][k_shade_lanes];          ///< hit point
+    float geometric_normal[3][k_shade_lanes];  ///< as SurfaceHit has it (not turned)
+    float shading_normal[3][k_shade_lanes];
+    int32_t material[k_shade_lanes];
+    int32_t lit[k_shade_lanes];     ///< bit l: the shadow ray toward light l is unblocked
+    int32_t active[k_shade_lanes];  ///< 0: no hit in this lane, outputs are not read
+
+    // Out.
+    float colour[3][k_shade_lanes];         ///< local illumination (ambient + lit lights)
+    int32_t shadow_rays[k_shade_lanes];     ///< lights facing the point (shadow rays cast)
+    int32_t scalar_specular[k_shade_lanes]; ///< 1: colour must be recomputed by the scalar code
+    float normal[3][k_shade_lanes];         ///< shading normal turned toward the ray
+    float facing_normal[3][k_shade_lanes];  ///< geometric normal turned toward the ray
+    /// Only with spawning: weight of the mirror and refracted rays (0: no such ray) and the rays.
+    float mirror_weight[k_shade_lanes];
+    float refract_weight[k_shade_lanes];
+    float mirror_origin[3][k_shade_lanes];
+    float mirror_direction[3][k_shade_lanes];
+    float refract_origin[3][k_shade_lanes];
+    float refract_direction[3][k_shade_lanes];
+
+    // Scratch between the kernel's loops: each lane's material, then what shading it needs.
+    float ka[3][k_shade_lanes];
+    float kd[3][k_shade_lanes];
+    float ks[3][k_shade_lanes];
+    float offset[3][k_shade_lanes];
+    float color_a[3][k_shade_lanes];
+    float color_b[3][k_shade_lanes];
+    float inverse_size[k_shade_lanes];
+    float reflectivity[k_shade_lanes];
+    float transparency[k_shade_lanes];
+    float ior[k_shade_lanes];
+    int32_t textured[k_shade_lanes];
+    int32_t exponent[k_shade_lanes];
+    float to_light[3][k_shade_lanes];
+    float irradiance[3][k_shade_lanes];
+    float cos_gamma[k_shade_lanes];
+    float power[k_shade_lanes];
+    float base[k_shade_lanes];
+    int32_t entering[k_shade_lanes];
+};
+
+/// The shading kernel for each SIMD level: fills the outputs of every active lane, and the
+/// secondary rays when `spawn` is nonzero.
+void shade_lanes_portable(const ShadeScene& scene, int spawn, ShadeLanes& lanes);
+void shade_lanes_avx2(const ShadeScene& scene, int spawn, ShadeLanes& lanes);
+void shade_lanes_avx512(const ShadeScene& scene, int spawn, ShadeLanes& lanes);
+
+}  // namespace detail
+
+/// A scene's materials and lights copied into the lanes' layout once per render, and the kernel
+/// of the chosen SIMD level. Read by all threads.
+class LaneShader {
+  public:
+    /// `scene` must outlive this object; `level` must be supported by this CPU.
+    explicit LaneShader(const Scene& scene, SimdLevel level = best_simd_level());
+
+    /// Whether the lanes can shade this scene (at most 8 lights); else use the scalar code.
+    bool supported() const { return m_supported; }
+    /// Shades every active lane of `lanes` (and spawns its secondary rays when `spawn`).
+    void shade(detail::ShadeLanes& lanes, bool spawn) const;
+
+  private:
+    std::vector<float> m_floats;  ///< backing store of the material columns
+    std::vector<int32_t> m_ints;
+    std::vector<detail::ShadeLight> m_lights;
+    detail::ShadeScene m_scene{};
+    SimdLevel m_level;
+    bool m_supported = true;
+};
+
+}  // namespace hikari

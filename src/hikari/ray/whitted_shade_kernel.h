@@ -1,0 +1,252 @@
+#pragma once
+// The lane loops of the Whitted shading step (whitted_shade.h), written once and compiled by
+// whitted_shade.cpp (baseline x86-64), whitted_shade_avx2.cpp and whitted_shade_avx512.cpp
+// (after their `#pragma GCC target`), which the compiler vectorises. Each loop body repeats the
+// scalar code's arithmetic in its order, with branches turned into selects; only float
+// arithmetic and builtins appear, in functions of internal linkage (see primary_hits_kernel.h).
+
+#include <cstdint>
+
+#include "hikari/ray/primary_hits_kernel.h"
+#include "hikari/ray/whitted_shade.h"
+
+namespace hikari::detail {
+namespace {
+
+/// Parity of floor(v), as CheckerTexture::floor_int(v) & 1: floats of 2^31 or more in
+/// magnitude are multiples of 256, so even.
+[[maybe_unused]] inline int32_t floor_parity_lane(float v) {
+    const bool small = __builtin_fabsf(v) < 2147483648.0f;
+    const float w = small ? v : 0.0f;
+    const auto truncated = static_cast<int32_t>(w);
+    const int32_t floor = truncated - (w < static_cast<float>(truncated) ? 1 : 0);
+    return floor & 1;
+}
+
+/// sample_light for every lane: the unit direction toward the light and I0 after falloff (a
+/// template per kind of light, as GCC does not vectorise selects on a loop-invariant flag).
+template <bool Directional, bool InverseSquare>
+void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
+    const float* __restrict px = lanes.position[0];
+    const float* __restrict py = lanes.position[1];
+    const float* __restrict pz = lanes.position[2];
+    float* __restrict lx = lanes.to_light[0];
+    float* __restrict ly = lanes.to_light[1];
+    float* __restrict lz = lanes.to_light[2];
+    float* __restrict ir = lanes.irradiance[0];
+    float* __restrict ig = lanes.irradiance[1];
+    float* __restrict ib = lanes.irradiance[2];
+    const float cx = light.position[0], cy = light.position[1], cz = light.position[2];
+    const float tx = light.to_light[0], ty = light.to_light[1], tz = light.to_light[2];
+    const float i0r = light.intensity[0], i0g = light.intensity[1], i0b = light.intensity[2];
+    for (int i = 0; i < k_shade_lanes; ++i) {
+        if constexpr (Directional) {
+            lx[i] = tx, ly[i] = ty, lz[i] = tz;
+            ir[i] = i0r, ig[i] = i0g, ib[i] = i0b;
+        } else {
+            const float vx = cx - px[i], vy = cy - py[i], vz = cz - pz[i];
+            const float d2 = vx * vx + vy * vy + vz * vz;
+            const float inverse_distance = 1.0f / __builtin_sqrtf(d2);
+            lx[i] = vx * inverse_distance, ly[i] = vy * inverse_distance;
+            lz[i] = vz * inverse_distance;
+            if constexpr (InverseSquare) {
+                const float inverse_d2 = 1.0f / d2;
+                ir[i] = i0r * inverse_d2, ig[i] = i0g * inverse_d2, ib[i] = i0b * inverse_d2;
+            } else {
+                ir[i] = i0r, ig[i] = i0g, ib[i] = i0b;
+            }
+        }
+    }
+}
+
+/// A lane array of the block, as a restrict pointer (the kernels' arrays never overlap).
+#define HIKARI_LANES(name, array) auto* __restrict name = (array)
+
+[[maybe_unused]] void shade_kernel(const ShadeScene& scene, int spawn, ShadeLanes& lanes) {
+    const ShadeMaterials mt = scene.materials;
+    HIKARI_LANES(dx, lanes.direction[0]);
+    HIKARI_LANES(dy, lanes.direction[1]);
+    HIKARI_LANES(dz, lanes.direction[2]);
+    HIKARI_LANES(px, lanes.position[0]);
+    HIKARI_LANES(py, lanes.position[1]);
+    HIKARI_LANES(pz, lanes.position[2]);
+    HIKARI_LANES(nx, lanes.normal[0]);
+    HIKARI_LANES(ny, lanes.normal[1]);
+    HIKARI_LANES(nz, lanes.normal[2]);
+    HIKARI_LANES(fx, lanes.facing_normal[0]);
+    HIKARI_LANES(fy, lanes.facing_normal[1]);
+    HIKARI_LANES(fz, lanes.facing_normal[2]);
+    HIKARI_LANES(red, lanes.colour[0]);
+    HIKARI_LANES(green, lanes.colour[1]);
+    HIKARI_LANES(blue, lanes.colour[2]);
+    HIKARI_LANES(kd_r, lanes.kd[0]);
+    HIKARI_LANES(kd_g, lanes.kd[1]);
+    HIKARI_LANES(kd_b, lanes.kd[2]);
+    HIKARI_LANES(material, lanes.material);
+    HIKARI_LANES(active, lanes.active);
+    HIKARI_LANES(entering, lanes.entering);
+    HIKARI_LANES(power, lanes.power);
+    HIKARI_LANES(cos_gamma, lanes.cos_gamma);
+    HIKARI_LANES(shadow_rays, lanes.shadow_rays);
+    HIKARI_LANES(lit_bits, lanes.lit);
+
+    // 1. shade(): normals turned toward the ray.
+    for (int i = 0; i < k_shade_lanes; ++i) {
+        const float gx = lanes.geometric_normal[0][i], gy = lanes.geometric_normal[1][i],
+                    gz = lanes.geometric_normal[2][i];
+        const float sx = lanes.shading_normal[0][i], sy = lanes.shading_normal[1][i],
+                    sz = lanes.shading_normal[2][i];
+        const bool enter = gx * dx[i] + gy * dy[i] + gz * dz[i] < 0.0f;
+        const float ax = enter ? gx : -gx, ay = enter ? gy : -gy, az = enter ? gz : -gz;
+        const float bx = enter ? sx : -sx, by = enter ? sy : -sy, bz = enter ? sz : -sz;
+        const bool turned_away = bx * dx[i] + by * dy[i] + bz * dz[i] > 0.0f;
+        nx[i] = turned_away ? ax : bx, ny[i] = turned_away ? ay : by, nz[i] = turned_away ? az : bz;
+        fx[i] = ax, fy[i] = ay, fz[i] = az;
+        entering[i] = enter ? 1 : 0;
+        material[i] = active[i] ? material[i] : 0;  // lanes without a hit read material 0
+    }
+    // The lanes' material parameters, gathered once (GCC's vectoriser gives up on gathers
+    // inside the arithmetic loops below).
+    HIKARI_LANES(ks_r, lanes.ks[0]);
+    HIKARI_LANES(ks_g, lanes.ks[1]);
+    HIKARI_LANES(ks_b, lanes.ks[2]);
+    HIKARI_LANES(exponent, lanes.exponent);
+    for (int i = 0; i < k_shade_lanes; ++i) {
+        const int32_t m = material[i];
+        for (int c = 0; c < 3; ++c) {
+            lanes.ka[c][i] = mt.ka[c][m];
+            lanes.kd[c][i] = mt.kd[c][m];
+            lanes.ks[c][i] = mt.ks[c][m];
+            lanes.offset[c][i] = mt.offset[c][m];
+            lanes.color_a[c][i] = mt.color_a[c][m];
+            lanes.color_b[c][i] = mt.color_b[c][m];
+        }
+        lanes.inverse_size[i] = mt.inverse_size[m];
+        lanes.textured[i] = mt.textured[m];
+        exponent[i] = mt.exponent[m];
+        lanes.reflectivity[i] = mt.reflectivity[m];
+        lanes.transparency[i] = mt.transparency[m];
+        lanes.ior[i] = mt.ior[m];
+    }
+    // textured(): ka and kd at the point (CheckerTexture::at: q = (p + offset) / size, then the
+    // parity of the floors' sum); shade_ambient().
+    const float ambient_r = scene.ambient[0], ambient_g = scene.ambient[1],
+                ambient_b = scene.ambient[2];
+    for (int i = 0; i < k_shade_lanes; ++i) {
+        const float inverse_size = lanes.inverse_size[i];
+        const float qx = (px[i] + lanes.offset[0][i]) * inverse_size;
+        const float qy = (py[i] + lanes.offset[1][i]) * inverse_size;
+        const float qz = (pz[i] + lanes.offset[2][i]) * inverse_size;
+        const bool odd =
+            (floor_parity_lane(qx) ^ floor_parity_lane(qy) ^ floor_parity_lane(qz)) != 0;
+        const bool textured = lanes.textured[i] != 0;
+        const float tr = odd ? lanes.color_b[0][i] : lanes.color_a[0][i];
+        const float tg = odd ? lanes.color_b[1][i] : lanes.color_a[1][i];
+        const float tb = odd ? lanes.color_b[2][i] : lanes.color_a[2][i];
+        const float ka_r = textured ? lanes.ka[0][i] * tr : lanes.ka[0][i];
+        const float ka_g = textured ? lanes.ka[1][i] * tg : lanes.ka[1][i];
+        const float ka_b = textured ? lanes.ka[2][i] * tb : lanes.ka[2][i];
+        kd_r[i] = textured ? kd_r[i] * tr : kd_r[i];
+        kd_g[i] = textured ? kd_g[i] * tg : kd_g[i];
+        kd_b[i] = textured ? kd_b[i] * tb : kd_b[i];
+        red[i] = ka_r * ambient_r;
+        green[i] = ka_g * ambient_g;
+        blue[i] = ka_b * ambient_b;
+        shadow_rays[i] = 0;
+        lanes.scalar_specular[i] = active[i] && exponent[i] < 0 ? 1 : 0;
+    }
+
+    // 2. shade_local(): each light that faces the point and whose shadow ray was found unblocked
+    // adds shade_direct(), lights in the scalar order.
+    HIKARI_LANES(lx, lanes.to_light[0]);
+    HIKARI_LANES(ly, lanes.to_light[1]);
+    HIKARI_LANES(lz, lanes.to_light[2]);
+    HIKARI_LANES(ir, lanes.irradiance[0]);
+    HIKARI_LANES(ig, lanes.irradiance[1]);
+    HIKARI_LANES(ib, lanes.irradiance[2]);
+    for (int32_t l = 0; l < scene.light_count; ++l) {
+        const ShadeLight& light = scene.lights[l];
+        if (light.directional)
+            sample_light_lanes<true, false>(light, lanes);
+        else if (light.inverse_square)
+            sample_light_lanes<false, true>(light, lanes);
+        else
+            sample_light_lanes<false, false>(light, lanes);
+        // The highlight's cos γ = R·V with R = reflect(-L, N) and V = -direction.
+        for (int i = 0; i < k_shade_lanes; ++i) {
+            const float a = 2.0f * -(-lx[i] * nx[i] + -ly[i] * ny[i] + -lz[i] * nz[i]);
+            const float rx = -lx[i] + nx[i] * a, ry = -ly[i] + ny[i] * a,
+                        rz = -lz[i] + nz[i] * a;
+            cos_gamma[i] = rx * -dx[i] + ry * -dy[i] + rz * -dz[i];
+            power[i] = 1.0f;
+        }
+        // phong_power by repeated squaring: the exponent's bits in the scalar order.
+        for (int i = 0; i < k_shade_lanes; ++i) lanes.base[i] = cos_gamma[i];
+        for (int32_t b = 0; b < scene.exponent_bits; ++b) {
+            HIKARI_LANES(base, lanes.base);
+            for (int i = 0; i < k_shade_lanes; ++i) {
+                power[i] = (exponent[i] >> b) & 1 ? power[i] * base[i] : power[i];
+                base[i] = base[i] * base[i];
+            }
+        }
+        const int32_t bit = 1 << l;
+        for (int i = 0; i < k_shade_lanes; ++i) {
+            const float cos_alpha = nx[i] * lx[i] + ny[i] * ly[i] + nz[i] * lz[i];
+            // Bitwise & rather than &&: no branches, so GCC can if-convert the loop.
+            const bool facing = (active[i] != 0) & !(cos_alpha <= 0.0f);
+            shadow_rays[i] = shadow_rays[i] + (facing ? 1 : 0);
+            const bool lit = facing & ((lit_bits[i] & bit) != 0);
+            const float specular = cos_gamma[i] > 0.0f ? power[i] : 0.0f;
+            const float term_r = ir[i] * (kd_r[i] * cos_alpha + ks_r[i] * specular);
+            const float term_g = ig[i] * (kd_g[i] * cos_alpha + ks_g[i] * specular);
+            const float term_b = ib[i] * (kd_b[i] * cos_alpha + ks_b[i] * specular);
+            red[i] = lit ? red[i] + term_r : red[i];
+            green[i] = lit ? green[i] + term_g : green[i];
+            blue[i] = lit ? blue[i] + term_b : blue[i];
+        }
+    }
+    if (!spawn) return;
+
+    // 3. shade()'s secondary rays: the mirror ray, the refracted ray (refract(), Snell's law)
+    // and POV-Ray's total-internal-reflection rule, each from offset_ray_origin.
+    for (int i = 0; i < k_shade_lanes; ++i) {
+        const float a = 2.0f * -(dx[i] * nx[i] + dy[i] * ny[i] + dz[i] * nz[i]);
+        lanes.mirror_direction[0][i] = dx[i] + nx[i] * a;
+        lanes.mirror_direction[1][i] = dy[i] + ny[i] * a;
+        lanes.mirror_direction[2][i] = dz[i] + nz[i] * a;
+        lanes.mirror_origin[0][i] = offset_origin_lane(px[i], fx[i]);
+        lanes.mirror_origin[1][i] = offset_origin_lane(py[i], fy[i]);
+        lanes.mirror_origin[2][i] = offset_origin_lane(pz[i], fz[i]);
+    }
+    for (int i = 0; i < k_shade_lanes; ++i) {
+        const float ior = lanes.ior[i];
+        const float eta = entering[i] ? 1.0f / ior : ior;
+        const float cos_i = -(dx[i] * nx[i] + dy[i] * ny[i] + dz[i] * nz[i]);
+        const float sin2_cos = 1.0f - cos_i * cos_i;
+        const float sin2_t = eta * eta * (0.0f < sin2_cos ? sin2_cos : 0.0f);
+        const bool total_internal_reflection = sin2_t > 1.0f;
+        const float cos_t = __builtin_sqrtf(1.0f - sin2_t);
+        const float k = eta * cos_i - cos_t;
+        const float tx = dx[i] * eta + nx[i] * k, ty = dy[i] * eta + ny[i] * k,
+                    tz = dz[i] * eta + nz[i] * k;
+        const float inverse_length = 1.0f / __builtin_sqrtf(tx * tx + ty * ty + tz * tz);
+        lanes.refract_direction[0][i] = tx * inverse_length;
+        lanes.refract_direction[1][i] = ty * inverse_length;
+        lanes.refract_direction[2][i] = tz * inverse_length;
+        lanes.refract_origin[0][i] = offset_origin_lane(px[i], -fx[i]);
+        lanes.refract_origin[1][i] = offset_origin_lane(py[i], -fy[i]);
+        lanes.refract_origin[2][i] = offset_origin_lane(pz[i], -fz[i]);
+
+        const float transparency = lanes.transparency[i];
+        const bool transparent = active[i] && transparency > 0.0f;
+        const float mirror_weight =
+            transparent && total_internal_reflection ? transparency : lanes.reflectivity[i];
+        lanes.mirror_weight[i] = active[i] ? mirror_weight : 0.0f;
+        lanes.refract_weight[i] = transparent && !total_internal_reflection ? transparency : 0.0f;
+    }
+}
+
+#undef HIKARI_LANES
+
+}  // namespace
+}  // namespace hikari::detail

@@ -1,0 +1,207 @@
+// The Whitted shading lanes: every SIMD level gives the same lanes, and renders shaded in lanes
+// level by level are bit-identical to the recursive ray-at-a-time tracer, on scenes that use
+// every material feature (textures, mirrors, glass with total internal reflection, integer and
+// non-integer Phong exponents) under every kind of light.
+#include "hikari/ray/whitted_shade.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstring>
+#include <memory>
+
+#include "hikari/core/rng.h"
+#include "hikari/ray/whitted.h"
+#include "test_meshes.h"
+
+namespace hikari {
+namespace {
+
+bool same_bits(float a, float b) {
+    return std::bit_cast<uint32_t>(a) == std::bit_cast<uint32_t>(b);
+}
+
+Vec3 random_colour(Pcg32& rng) {
+    return {rng.next_float(), rng.next_float(), rng.next_float()};
+}
+
+/// Materials that between them use every parameter the lanes read.
+std::vector<Material> random_materials(Pcg32& rng) {
+    std::vector<Material> out;
+    for (int i = 0; i < 7; ++i) {
+        Material m;
+        m.ka = random_colour(rng) * 0.2f;
+        m.kd = random_colour(rng);
+        m.ks = random_colour(rng);
+        // Integer exponents (the lanes' squaring), a non-integer one and one beyond 1024 (both
+        // left to the scalar code).
+        const float exponents[] = {1.0f, 40.0f, 200.0f, 12.5f, 2000.0f, 0.0f, 1024.0f};
+        m.shininess = exponents[i];
+        m.reflectivity = i % 3 == 1 ? 0.5f + 0.4f * rng.next_float() : 0.0f;
+        if (i == 2 || i == 5) {
+            m.transparency = 0.9f;
+            m.ior = i == 2 ? 1.5f : 0.8f;  // glass, and a bubble (less dense inside)
+        }
+        if (i % 2 == 0) {
+            CheckerTexture checker;
+            checker.size = 0.3f + rng.next_float();
+            checker.color_a = random_colour(rng);
+            checker.color_b = random_colour(rng);
+            checker.offset = testing::random_point(rng, 1.0f);
+            m.texture = checker;
+        }
+        out.push_back(m);
+    }
+    return out;
+}
+
+std::vector<Light> random_lights(Pcg32& rng) {
+    return {PointLight{testing::random_point(rng, 6.0f), Vec3(20.0f), true},
+            PointLight{testing::random_point(rng, 6.0f), Vec3(0.5f), false},
+            DirectionalLight{testing::random_direction(rng), Vec3(0.7f)}};
+}
+
+/// Random hits with random normals and materials in every lane, some lanes inactive.
+void fill_random_lanes(Pcg32& rng, uint32_t materials, uint32_t lights,
+                       detail::ShadeLanes& lanes) {
+    for (int i = 0; i < detail::k_shade_lanes; ++i) {
+        const Vec3 d = testing::random_direction(rng), p = testing::random_point(rng, 5.0f);
+        const Vec3 g = testing::random_direction(rng);
+        const Vec3 s = normalize(g + 0.3f * testing::random_direction(rng));
+        for (int a = 0; a < 3; ++a) {
+            lanes.direction[a][i] = d[a];
+            lanes.position[a][i] = p[a];
+            lanes.geometric_normal[a][i] = g[a];
+            lanes.shading_normal[a][i] = s[a];
+        }
+        lanes.material[i] = static_cast<int32_t>(rng.next_u32() % materials);
+        lanes.lit[i] = static_cast<int32_t>(rng.next_u32() % (1u << lights));
+        lanes.active[i] = rng.next_float() < 0.9f ? 1 : 0;
+    }
+}
+
+TEST(WhittedShade, EveryLevelShadesAlike) {
+    Pcg32 rng(11, 3);
+    Scene scene;
+    scene.materials = random_materials(rng);
+    scene.lights = random_lights(rng);
+    scene.ambient = Vec3(0.3f, 0.4f, 0.5f);
+    const LaneShader reference(scene, SimdLevel::portable);
+    auto input = std::make_unique<detail::ShadeLanes>();
+    auto expected = std::make_unique<detail::ShadeLanes>();
+    auto got = std::make_unique<detail::ShadeLanes>();
+    for (int round = 0; round < 8; ++round) {
+        fill_random_lanes(rng, static_cast<uint32_t>(scene.materials.size()),
+                          static_cast<uint32_t>(scene.lights.size()), *input);
+        std::memcpy(expected.get(), input.get(), sizeof(detail::ShadeLanes));
+        reference.shade(*expected, true);
+        for (SimdLevel level : {SimdLevel::avx2, SimdLevel::avx512}) {
+            if (!simd_level_supported(level)) continue;
+            SCOPED_TRACE(simd_level_name(level));
+            std::memcpy(got.get(), input.get(), sizeof(detail::ShadeLanes));
+            LaneShader(scene, level).shade(*got, true);
+            for (int i = 0; i < detail::k_shade_lanes; ++i) {
+                if (!input->active[i]) continue;
+                ASSERT_EQ(expected->shadow_rays[i], got->shadow_rays[i]);
+                ASSERT_EQ(expected->scalar_specular[i], got->scalar_specular[i]);
+                for (int a = 0; a < 3; ++a) {
+                    ASSERT_TRUE(same_bits(expected->colour[a][i], got->colour[a][i])) << i;
+                    ASSERT_TRUE(same_bits(expected->mirror_direction[a][i],
+                                          got->mirror_direction[a][i]));
+                    ASSERT_TRUE(same_bits(expected->mirror_origin[a][i], got->mirror_origin[a][i]));
+                    ASSERT_TRUE(same_bits(expected->refract_direction[a][i],
+                                          got->refract_direction[a][i]) ||
+                                expected->refract_weight[i] == 0.0f);
+                    ASSERT_TRUE(
+                        same_bits(expected->refract_origin[a][i], got->refract_origin[a][i]));
+                }
+                ASSERT_TRUE(same_bits(expected->mirror_weight[i], got->mirror_weight[i]));
+                ASSERT_TRUE(same_bits(expected->refract_weight[i], got->refract_weight[i]));
+            }
+        }
+    }
+}
+
+TEST(WhittedShade, EightLightsAtMost) {
+    Scene scene;
+    scene.lights.assign(8, DirectionalLight{Vec3(0.0f, -1.0f, 0.0f), Vec3(1.0f)});
+    EXPECT_TRUE(LaneShader(scene).supported());
+    scene.lights.push_back(DirectionalLight{Vec3(0.0f, -1.0f, 0.0f), Vec3(1.0f)});
+    EXPECT_FALSE(LaneShader(scene).supported());
+}
+
+/// Spheres (some overlapping, some not casting shadows), a ground plane and a smooth-shaded
+/// triangle soup, all materials of random_materials, lit by random_lights.
+Scene random_scene(uint64_t seed) {
+    Pcg32 rng(seed, 5);
+    Scene scene;
+    scene.materials = random_materials(rng);
+    scene.lights = random_lights(rng);
+    scene.ambient = Vec3(0.2f);
+    scene.background = Vec3(0.1f, 0.2f, 0.3f);
+    if (seed % 2 == 0) scene.sky = Sky{true, Vec3(0.8f, 0.9f, 1.0f), Vec3(0.2f, 0.4f, 0.9f)};
+    const auto materials = static_cast<uint32_t>(scene.materials.size());
+    PrimitiveId id = 0;
+    for (int i = 0; i < 8; ++i) {
+        Sphere s;
+        s.center = testing::random_point(rng, 3.0f);
+        s.radius = 0.3f + rng.next_float();
+        s.material = static_cast<uint32_t>(i) % materials;
+        s.id = id++;
+        s.casts_shadow = i != 2;
+        scene.spheres.push_back(s);
+    }
+    Plane ground;
+    ground.point = Vec3(0.0f, -3.0f, 0.0f);
+    ground.normal = Vec3(0.0f, 1.0f, 0.0f);
+    ground.material = 0;
+    ground.id = id++;
+    scene.planes.push_back(ground);
+    const testing::TestMesh soup = testing::random_soup(60, 0.8f, seed);
+    TriangleSet& tris = scene.triangles;
+    tris.positions = soup.positions;
+    tris.indices = soup.indices;
+    for (const Vec3& p : soup.positions) tris.normals.push_back(normalize(p + Vec3(0.01f)));
+    for (size_t i = 0; i < soup.indices.size(); ++i) {
+        tris.material.push_back(static_cast<uint32_t>(i) % materials);
+        tris.id.push_back(id++);
+    }
+    scene.primitive_count = id;
+    Camera& cam = scene.camera;
+    cam.eye = seed % 3 == 0 ? scene.spheres[0].center : testing::random_point(rng, 9.0f);
+    cam.look_at = testing::random_point(rng, 1.0f);
+    cam.fov_y_degrees = 30.0f + 60.0f * rng.next_float();
+    cam.width = 45;  // clipped blocks on both axes
+    cam.height = 29;
+    return scene;
+}
+
+TEST(WhittedShade, RandomScenesRenderAsRayAtATime) {
+    for (uint64_t seed = 1; seed <= 6; ++seed)
+        for (int depth : {1, 2, 6}) {
+            SCOPED_TRACE(::testing::Message() << "seed " << seed << " depth " << depth);
+            const Scene scene = random_scene(seed);
+            RenderSettings lanes, single;
+            lanes.max_depth = single.max_depth = depth;
+            lanes.aov_buffers = single.aov_buffers = true;
+            single.primary_blocks = false;
+            RenderControl counted_lanes, counted_single;
+            lanes.control = &counted_lanes;
+            single.control = &counted_single;
+            const Framebuffer a = render_whitted(scene, lanes);
+            const Framebuffer b = render_whitted(scene, single);
+            for (size_t i = 0; i < a.color.pixels.size(); ++i)
+                for (int c = 0; c < 3; ++c)
+                    ASSERT_TRUE(same_bits(a.color.pixels[i][c], b.color.pixels[i][c]))
+                        << "pixel " << i << ": " << a.color.pixels[i][c] << " vs "
+                        << b.color.pixels[i][c];
+            for (size_t i = 0; i < a.depth.size(); ++i) {
+                ASSERT_TRUE(same_bits(a.depth[i], b.depth[i]));
+                ASSERT_EQ(a.id[i], b.id[i]);
+            }
+            EXPECT_EQ(counted_lanes.rays_traced.load(), counted_single.rays_traced.load());
+        }
+}
+
+}  // namespace
+}  // namespace hikari
