@@ -7,6 +7,9 @@
 //   static uint32_t test_node(const WideBvhNode&, const NodeRay&, float t_min, float t_max,
 //                             float* entry)  -> mask of children whose box the ray meets in
 //                             [t_min, t_max]; entry[i] = where it enters child i
+//   static uint32_t test_node_any(const WideBvhNode&, const NodeRay&, float t_min,
+//                                 float t_max_far) -> the same mask with the exits widened
+//                                 through NodeRay::inv_dir_far (see k_far_scale), no entries
 //   template <bool k_any_hit> static bool test_leaf(const LeafRay&, const float* block,
 //                             uint32_t count, uint32_t first, Interval& valid, LeafHit& hit)
 //                             -> nearest (or any) triangle of the leaf inside valid; shrinks
@@ -38,17 +41,26 @@ constexpr float gamma(int n) {
 /// slab test conservative, so a box the exact ray touches is never culled.
 constexpr float k_exit_scale = 1.0f + 2.0f * gamma(3);
 
+/// The any-hit slab test widens the exit distance before it is computed, by scaling the
+/// reciprocal used for the far planes: that side then has four roundings (subtraction, 1 / d,
+/// this scaling, product) against the entry side's three, and (1 + gamma(3)) / (1 - gamma(4))
+/// < 1 + 2 gamma(4), so the test stays conservative (Ize 2013's argument, one rounding more)
+/// with one multiplication less on the per-node critical path.
+constexpr float k_far_scale = 1.0f + 2.0f * gamma(4);
+
 /// Per-ray constants of the slab test against a node's SoA boxes.
 struct NodeRay {
     std::array<float, 3> origin;
-    std::array<float, 3> inv_dir;  ///< 1 / direction; +-inf where a component is +-0
-    std::array<int, 3> near_row;   ///< row of WideBvhNode::bounds the ray enters by, per axis
-    std::array<int, 3> far_row;    ///< row it leaves by
+    std::array<float, 3> inv_dir;      ///< 1 / direction; +-inf where a component is +-0
+    std::array<float, 3> inv_dir_far;  ///< inv_dir * k_far_scale (any-hit far planes)
+    std::array<int, 3> near_row;       ///< row of WideBvhNode::bounds the ray enters by, per axis
+    std::array<int, 3> far_row;        ///< row it leaves by
 
     explicit NodeRay(const Ray& ray) {
         for (int a = 0; a < 3; ++a) {
             origin[a] = ray.origin[a];
             inv_dir[a] = 1.0f / ray.direction[a];
+            inv_dir_far[a] = inv_dir[a] * k_far_scale;
             // The sign bit, not `< 0`: 1 / -0 is -inf, and the faces must agree with that sign.
             const int negative = std::signbit(ray.direction[a]) ? 1 : 0;
             near_row[a] = 2 * a + negative;
@@ -109,10 +121,9 @@ inline bool is_traceable(const Ray& ray) {
     return is_finite(ray.origin) && is_finite(ray.direction) && !(ray.direction == Vec3(0.0f));
 }
 
-/// The traversal loop: a stack of (reference, entry distance); at an inner node all eight
-/// boxes are tested at once and the hit children visited nearest first (closest hit) or in
-/// slot order (any hit).
-template <typename Ops, bool k_any_hit>
+/// The closest-hit loop: a stack of (reference, entry distance); at an inner node all eight
+/// boxes are tested at once and the hit children visited nearest first.
+template <typename Ops>
 bool traverse(const WideBvh& bvh, const Ray& ray, Interval valid, LeafHit& hit) {
     if (bvh.empty() || !is_traceable(ray)) return false;
     const NodeRay node_ray(ray);
@@ -143,40 +154,29 @@ bool traverse(const WideBvh& bvh, const Ray& ray, Interval valid, LeafHit& hit) 
                     current = node.child[first];
                     continue;
                 }
-                if constexpr (k_any_hit) {
-                    for (; mask != 0; mask &= mask - 1) {
-                        const auto i = static_cast<uint32_t>(std::countr_zero(mask));
-                        stack[stack_size++] = {node.child[i], entry[i]};
-                    }
-                    current = node.child[first];
-                    continue;
-                } else {
-                    // Insertion sort by entry distance (ties keep slot order), then push
-                    // farthest first so the nearest is popped first.
-                    std::array<StackEntry, k_wide_bvh_width> hits;
-                    uint32_t n = 0;
-                    hits[n++] = {node.child[first], entry[first]};
-                    for (; mask != 0; mask &= mask - 1) {
-                        const auto i = static_cast<uint32_t>(std::countr_zero(mask));
-                        const StackEntry e{node.child[i], entry[i]};
-                        uint32_t k = n++;
-                        for (; k > 0 && hits[k - 1].entry > e.entry; --k) hits[k] = hits[k - 1];
-                        hits[k] = e;
-                    }
-                    for (uint32_t k = n - 1; k > 0; --k) stack[stack_size++] = hits[k];
-                    current = hits[0].ref;
-                    continue;
+                // Insertion sort by entry distance (ties keep slot order), then push
+                // farthest first so the nearest is popped first.
+                std::array<StackEntry, k_wide_bvh_width> hits;
+                uint32_t n = 0;
+                hits[n++] = {node.child[first], entry[first]};
+                for (; mask != 0; mask &= mask - 1) {
+                    const auto i = static_cast<uint32_t>(std::countr_zero(mask));
+                    const StackEntry e{node.child[i], entry[i]};
+                    uint32_t k = n++;
+                    for (; k > 0 && hits[k - 1].entry > e.entry; --k) hits[k] = hits[k - 1];
+                    hits[k] = e;
                 }
+                for (uint32_t k = n - 1; k > 0; --k) stack[stack_size++] = hits[k];
+                current = hits[0].ref;
+                continue;
             }
         } else {
             /* leaf: test its triangles; a nearest hit shrinks valid.max */
             const uint32_t first = WideBvhRef::leaf_first(current);
             const uint32_t count = WideBvhRef::leaf_count(current);
             const float* block = triangle_data + 9 * size_t(first);
-            if (Ops::template test_leaf<k_any_hit>(leaf_ray, block, count, first, valid, hit)) {
-                if constexpr (k_any_hit) return true;
+            if (Ops::template test_leaf<false>(leaf_ray, block, count, first, valid, hit))
                 found = true;
-            }
         }
 
         /* pop the next node that starts before the nearest hit so far */
@@ -188,6 +188,50 @@ bool traverse(const WideBvh& bvh, const Ray& ray, Interval valid, LeafHit& hit) 
             current = next.ref;
         }
         if (!popped) return found;
+    }
+}
+
+/// The any-hit loop (shadow rays): children in slot order, a stack of bare references. A
+/// hit ends the walk, so valid.max never shrinks, and every pushed child (entered before
+/// valid.max) stays worth visiting: no entry distances, no test when popping.
+template <typename Ops>
+bool occluded(const WideBvh& bvh, const Ray& ray, Interval valid) {
+    if (bvh.empty() || !is_traceable(ray)) return false;
+    const NodeRay node_ray(ray);
+    const LeafRay leaf_ray(ray);
+    const WideBvhNode* nodes = bvh.nodes.data();
+    const float* triangle_data = bvh.triangle_data.data();
+
+    constexpr uint32_t k_stack_size = (k_wide_bvh_width - 1) * k_bvh_max_depth + 1;
+    std::array<uint32_t, k_stack_size> stack;
+    uint32_t stack_size = 0;
+    LeafHit unused;
+
+    const float t_max_far = valid.max * k_far_scale;
+    uint32_t current = bvh.root;
+    for (;;) {
+        if (!WideBvhRef::is_leaf(current)) {
+            /* inner node: go to the first hit child, defer the others */
+            const WideBvhNode& node = nodes[current];
+            uint32_t mask = Ops::test_node_any(node, node_ray, valid.min, t_max_far);
+            if (mask != 0) {
+                current = node.child[std::countr_zero(mask)];
+                for (mask &= mask - 1; mask != 0; mask &= mask - 1)
+                    stack[stack_size++] = node.child[std::countr_zero(mask)];
+                continue;
+            }
+        } else {
+            /* leaf: any triangle inside valid ends the walk */
+            const uint32_t first = WideBvhRef::leaf_first(current);
+            const uint32_t count = WideBvhRef::leaf_count(current);
+            const float* block = triangle_data + 9 * size_t(first);
+            if (Ops::template test_leaf<true>(leaf_ray, block, count, first, valid, unused))
+                return true;
+        }
+
+        /* pop the next node */
+        if (stack_size == 0) return false;
+        current = stack[--stack_size];
     }
 }
 

@@ -40,6 +40,26 @@ struct PortableOps {
         return mask;
     }
 
+    static uint32_t test_node_any(const WideBvhNode& node, const NodeRay& ray, float t_min,
+                                  float t_max_far) {
+        uint32_t mask = 0;
+        for (uint32_t i = 0; i < k_wide_bvh_width; ++i) {
+            float t0 = t_min, t1 = t_max_far;
+            for (int a = 0; a < 3; ++a) {
+                const float near =
+                    (node.bounds[ray.near_row[a]][i] - ray.origin[a]) * ray.inv_dir[a];
+                t0 = near > t0 ? near : t0;
+            }
+            for (int a = 0; a < 3; ++a) {
+                const float far =
+                    (node.bounds[ray.far_row[a]][i] - ray.origin[a]) * ray.inv_dir_far[a];
+                t1 = far < t1 ? far : t1;
+            }
+            if (t0 <= t1) mask |= 1u << i;
+        }
+        return mask;
+    }
+
     template <bool k_any_hit>
     static bool test_leaf(const LeafRay& ray, const float* block, uint32_t count, uint32_t first,
                           Interval& valid, LeafHit& hit) {
@@ -50,14 +70,13 @@ struct PortableOps {
 
 bool closest_portable(const WideBvh& bvh, const Ray& ray, Interval valid, TriangleHit& hit) {
     LeafHit h;
-    if (!wide_kernel::traverse<PortableOps, false>(bvh, ray, valid, h)) return false;
+    if (!wide_kernel::traverse<PortableOps>(bvh, ray, valid, h)) return false;
     hit = wide_kernel::to_triangle_hit(bvh, h);
     return true;
 }
 
 bool any_portable(const WideBvh& bvh, const Ray& ray, Interval valid) {
-    LeafHit h;
-    return wide_kernel::traverse<PortableOps, true>(bvh, ray, valid, h);
+    return wide_kernel::occluded<PortableOps>(bvh, ray, valid);
 }
 
 }  // namespace

@@ -25,14 +25,13 @@ namespace hikari::detail {
 
 bool wide_closest_avx512(const WideBvh& bvh, const Ray& ray, Interval valid, TriangleHit& hit) {
     wide_kernel::LeafHit h;
-    if (!wide_kernel::traverse<wide_kernel::Simd8Ops, false>(bvh, ray, valid, h)) return false;
+    if (!wide_kernel::traverse<wide_kernel::Simd8Ops>(bvh, ray, valid, h)) return false;
     hit = wide_kernel::to_triangle_hit(bvh, h);
     return true;
 }
 
 bool wide_any_avx512(const WideBvh& bvh, const Ray& ray, Interval valid) {
-    wide_kernel::LeafHit h;
-    return wide_kernel::traverse<wide_kernel::Simd8Ops, true>(bvh, ray, valid, h);
+    return wide_kernel::occluded<wide_kernel::Simd8Ops>(bvh, ray, valid);
 }
 
 }  // namespace hikari::detail
