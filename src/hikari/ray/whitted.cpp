@@ -190,38 +190,53 @@ class WaveTracer {
     /// lane) and appends the rays they spawn to next_rays.
     template <class ValidLane>
     void shade_block(const PrimaryBlock& block, ValidLane valid, int segment, PathNode* nodes) {
+        // The hits go to the lanes packed (lane k is block entry hit_of[k]), so the kernel's
+        // work follows the hits, not the block; misses see the sky.
         detail::ShadeLanes& lanes = m_s.lanes;
+        int32_t hit_of[k_primary_block_rays];
+        int count = 0;
         for (int i = 0; i < k_primary_block_rays; ++i) {
-            const SurfaceHit& hit = block.hits[i];
-            const bool active = valid(i) && block.found[i];
-            lanes.active[i] = active ? 1 : 0;
-            const Vec3 d = block.rays[i].direction;
-            const Vec3 p = active ? hit.position : Vec3(0.0f);
-            const Vec3 g = active ? hit.geometric_normal : Vec3(0.0f, 1.0f, 0.0f);
-            const Vec3 s = active ? hit.shading_normal : g;
-            for (int a = 0; a < 3; ++a) {
-                lanes.direction[a][i] = d[a];
-                lanes.position[a][i] = p[a];
-                lanes.geometric_normal[a][i] = g[a];
-                lanes.shading_normal[a][i] = s[a];
+            if (!valid(i)) continue;
+            ++m_ctx.rays;
+            if (!block.found[i]) {
+                nodes[i].colour = sky(m_ctx, block.rays[i]);
+                continue;
             }
-            lanes.material[i] = active ? static_cast<int32_t>(hit.material) : 0;
-            lanes.lit[i] = active ? block.lit[i] : 0;
+            const SurfaceHit& hit = block.hits[i];
+            const int k = count++;
+            hit_of[k] = i;
+            lanes.active[k] = 1;
+            for (int a = 0; a < 3; ++a) {
+                lanes.direction[a][k] = block.rays[i].direction[a];
+                lanes.position[a][k] = hit.position[a];
+                lanes.geometric_normal[a][k] = hit.geometric_normal[a];
+                lanes.shading_normal[a][k] = hit.shading_normal[a];
+            }
+            lanes.material[k] = static_cast<int32_t>(hit.material);
+            lanes.lit[k] = block.lit[i];
+        }
+        if (count == 0) return;
+        lanes.count = (count + detail::k_shade_lane_step - 1) / detail::k_shade_lane_step *
+                      detail::k_shade_lane_step;
+        for (int k = count; k < lanes.count; ++k) {  // padding: harmless inactive lanes
+            lanes.active[k] = 0;
+            for (int a = 0; a < 3; ++a) {
+                lanes.direction[a][k] = a == 2 ? 1.0f : 0.0f;
+                lanes.position[a][k] = 0.0f;
+                lanes.geometric_normal[a][k] = lanes.shading_normal[a][k] = a == 1 ? 1.0f : 0.0f;
+            }
+            lanes.material[k] = 0;
+            lanes.lit[k] = 0;
         }
         const bool spawn = segment < m_ctx.max_depth;
         m_shader.shade(lanes, spawn);
-        for (int i = 0; i < k_primary_block_rays; ++i) {
-            if (!valid(i)) continue;
+        for (int k = 0; k < count; ++k) {
+            const int i = hit_of[k];
             const Ray& ray = block.rays[i];
             PathNode& node = nodes[i];
-            ++m_ctx.rays;
-            if (!block.found[i]) {
-                node.colour = sky(m_ctx, ray);
-                continue;
-            }
-            m_ctx.rays += lanes.shadow_rays[i];
-            node.colour = {lanes.colour[0][i], lanes.colour[1][i], lanes.colour[2][i]};
-            if (lanes.scalar_specular[i]) {
+            m_ctx.rays += lanes.shadow_rays[k];
+            node.colour = {lanes.colour[0][k], lanes.colour[1][k], lanes.colour[2][k]};
+            if (lanes.scalar_specular[k]) {
                 // A Phong exponent the lanes cannot raise exactly: the scalar code shades it
                 // (its ray count is already in shadow_rays).
                 TraceContext scalar = m_ctx;
@@ -232,29 +247,29 @@ class WaveTracer {
                     material.texture ? (local = textured(material, hit.position)) : material;
                 node.colour =
                     shade_local(scalar, m, hit.position,
-                                {lanes.normal[0][i], lanes.normal[1][i], lanes.normal[2][i]},
-                                {lanes.facing_normal[0][i], lanes.facing_normal[1][i],
-                                 lanes.facing_normal[2][i]},
+                                {lanes.normal[0][k], lanes.normal[1][k], lanes.normal[2][k]},
+                                {lanes.facing_normal[0][k], lanes.facing_normal[1][k],
+                                 lanes.facing_normal[2][k]},
                                 -ray.direction, &block.lit[i]);
             }
             if (!spawn) continue;
-            if (lanes.mirror_weight[i] > 0.0f) {
+            if (lanes.mirror_weight[k] > 0.0f) {
                 node.mirror = static_cast<int32_t>(m_s.next_rays.size());
-                node.mirror_weight = lanes.mirror_weight[i];
+                node.mirror_weight = lanes.mirror_weight[k];
                 m_s.next_rays.push_back(
-                    {{lanes.mirror_origin[0][i], lanes.mirror_origin[1][i],
-                      lanes.mirror_origin[2][i]},
-                     {lanes.mirror_direction[0][i], lanes.mirror_direction[1][i],
-                      lanes.mirror_direction[2][i]}});
+                    {{lanes.mirror_origin[0][k], lanes.mirror_origin[1][k],
+                      lanes.mirror_origin[2][k]},
+                     {lanes.mirror_direction[0][k], lanes.mirror_direction[1][k],
+                      lanes.mirror_direction[2][k]}});
             }
-            if (lanes.refract_weight[i] > 0.0f) {
+            if (lanes.refract_weight[k] > 0.0f) {
                 node.refract = static_cast<int32_t>(m_s.next_rays.size());
-                node.refract_weight = lanes.refract_weight[i];
+                node.refract_weight = lanes.refract_weight[k];
                 m_s.next_rays.push_back(
-                    {{lanes.refract_origin[0][i], lanes.refract_origin[1][i],
-                      lanes.refract_origin[2][i]},
-                     {lanes.refract_direction[0][i], lanes.refract_direction[1][i],
-                      lanes.refract_direction[2][i]}});
+                    {{lanes.refract_origin[0][k], lanes.refract_origin[1][k],
+                      lanes.refract_origin[2][k]},
+                     {lanes.refract_direction[0][k], lanes.refract_direction[1][k],
+                      lanes.refract_direction[2][k]}});
             }
         }
     }

@@ -24,6 +24,8 @@ namespace detail {
 
 /// Lanes per shading call: one block of rays (ray/primary_hits.h).
 inline constexpr int k_shade_lanes = k_primary_block_rays;
+/// ShadeLanes::count is a multiple of this.
+inline constexpr int k_shade_lane_step = 16;
 
 /// The scene's materials as the lanes read them: structure-of-arrays, indexed by material.
 struct ShadeMaterials {
@@ -63,6 +65,9 @@ struct ShadeScene {
 
 /// The hits of one block, structure-of-arrays, and what shading them gives.
 struct alignas(64) ShadeLanes {
+    /// In: lanes [0, count) are shaded, count a multiple of 16 (the widest SIMD step) and at
+    /// most k_shade_lanes; pad with inactive lanes.
+    int32_t count = k_shade_lanes;
     // In: lane i is one ray and its nearest hit.
     float direction[3][k_shade_lanes];         ///< unit direction of the incoming ray
     float position[3][k_shade_lanes];          ///< hit point
