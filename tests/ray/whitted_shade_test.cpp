@@ -21,9 +21,7 @@ bool same_bits(float a, float b) {
     return std::bit_cast<uint32_t>(a) == std::bit_cast<uint32_t>(b);
 }
 
-Vec3 random_colour(Pcg32& rng) {
-    return {rng.next_float(), rng.next_float(), rng.next_float()};
-}
+Vec3 random_colour(Pcg32& rng) { return {rng.next_float(), rng.next_float(), rng.next_float()}; }
 
 /// Materials that between them use every parameter the lanes read.
 std::vector<Material> random_materials(Pcg32& rng) {
@@ -62,8 +60,7 @@ std::vector<Light> random_lights(Pcg32& rng) {
 }
 
 /// Random hits with random normals and materials in every lane, some lanes inactive.
-void fill_random_lanes(Pcg32& rng, uint32_t materials, uint32_t lights,
-                       detail::ShadeLanes& lanes) {
+void fill_random_lanes(Pcg32& rng, uint32_t materials, uint32_t lights, detail::ShadeLanes& lanes) {
     for (int i = 0; i < detail::k_shade_lanes; ++i) {
         const Vec3 d = testing::random_direction(rng), p = testing::random_point(rng, 5.0f);
         const Vec3 g = testing::random_direction(rng);
@@ -106,8 +103,8 @@ TEST(WhittedShade, EveryLevelShadesAlike) {
                 ASSERT_EQ(expected->scalar_specular[i], got->scalar_specular[i]);
                 for (int a = 0; a < 3; ++a) {
                     ASSERT_TRUE(same_bits(expected->colour[a][i], got->colour[a][i])) << i;
-                    ASSERT_TRUE(same_bits(expected->mirror_direction[a][i],
-                                          got->mirror_direction[a][i]));
+                    ASSERT_TRUE(
+                        same_bits(expected->mirror_direction[a][i], got->mirror_direction[a][i]));
                     ASSERT_TRUE(same_bits(expected->mirror_origin[a][i], got->mirror_origin[a][i]));
                     ASSERT_TRUE(same_bits(expected->refract_direction[a][i],
                                           got->refract_direction[a][i]) ||

@@ -2,6 +2,7 @@
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdlib>
 #include <cstring>
@@ -44,32 +45,38 @@ void append_chunk(Bytes& out, std::string_view type, std::span<const uint8_t> da
     put_u32_be(p + 8 + data.size(), static_cast<uint32_t>(crc));
 }
 
-/// Paeth's predictor (§9.4): whichever of left, up, upper-left is nearest to left + up −
-/// upper-left.
-uint8_t paeth(int a, int b, int c) {
-    const int p = a + b - c;
-    const int pa = std::abs(p - a), pb = std::abs(p - b), pc = std::abs(p - c);
-    if (pa <= pb && pa <= pc) return static_cast<uint8_t>(a);
-    return static_cast<uint8_t>(pb <= pc ? b : c);
+/// Paeth's predictor (§9.4): whichever of left a, up b, upper-left c is nearest to
+/// p = a + b − c (so |p − a| = |b − c|, |p − b| = |a − c|), ties to a, then b. Branch-free, so
+/// the row loop below vectorises.
+inline int paeth(int a, int b, int c) {
+    const int pa = std::abs(b - c), pb = std::abs(a - c), pc = std::abs(a + b - 2 * c);
+    const int b_or_c = pb <= pc ? b : c;
+    return pa <= pb && pa <= pc ? a : b_or_c;
 }
 
 /// Filters one row of RGB bytes into `out` (filter byte first), choosing per row among Sub, Up
 /// and Paeth the one with the smallest sum of |residual| as signed bytes: the heuristic the PNG
 /// specification recommends (§12.8) and libpng uses. `prev` is the row above (zeros for row 0).
 void filter_row(const uint8_t* row, const uint8_t* prev, size_t n, uint8_t* scratch, uint8_t* out) {
-    uint8_t* sub = scratch;
-    uint8_t* up = scratch + n;
-    uint8_t* pae = scratch + 2 * n;
+    uint8_t* __restrict sub = scratch;
+    uint8_t* __restrict up = scratch + n;
+    uint8_t* __restrict pae = scratch + 2 * n;
     uint32_t cost_sub = 0, cost_up = 0, cost_paeth = 0;
-    auto cost = [](uint8_t r) { return static_cast<uint32_t>(std::abs(static_cast<int8_t>(r))); };
-    for (size_t i = 0; i < n; ++i) {
-        const int a = i >= 3 ? row[i - 3] : 0, b = prev[i], c = i >= 3 ? prev[i - 3] : 0;
-        sub[i] = static_cast<uint8_t>(row[i] - a);
-        up[i] = static_cast<uint8_t>(row[i] - b);
-        pae[i] = static_cast<uint8_t>(row[i] - paeth(a, b, c));
-        cost_sub += cost(sub[i]);
-        cost_up += cost(up[i]);
-        cost_paeth += cost(pae[i]);
+    auto cost = [](int r) { return static_cast<uint32_t>(std::abs(static_cast<int8_t>(r))); };
+    // The first pixel has no left neighbour (a = c = 0); the rest is one branch-free loop.
+    const size_t first = std::min<size_t>(3, n);
+    for (size_t i = 0; i < first; ++i) {
+        sub[i] = row[i];
+        up[i] = static_cast<uint8_t>(row[i] - prev[i]);
+        pae[i] = static_cast<uint8_t>(row[i] - paeth(0, prev[i], 0));
+        cost_sub += cost(sub[i]), cost_up += cost(up[i]), cost_paeth += cost(pae[i]);
+    }
+    for (size_t i = first; i < n; ++i) {
+        const int x = row[i], a = row[i - 3], b = prev[i], c = prev[i - 3];
+        const auto s = static_cast<uint8_t>(x - a), u = static_cast<uint8_t>(x - b),
+                   p = static_cast<uint8_t>(x - paeth(a, b, c));
+        sub[i] = s, up[i] = u, pae[i] = p;
+        cost_sub += cost(s), cost_up += cost(u), cost_paeth += cost(p);
     }
     const uint8_t* best = sub;
     out[0] = k_sub;

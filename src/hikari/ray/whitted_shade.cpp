@@ -32,8 +32,17 @@ LaneShader::LaneShader(const Scene& scene, SimdLevel level) : m_level(level) {
     // material 0.
     const size_t count = std::max<size_t>(scene.materials.size(), 1);
     enum FloatColumn {
-        ka = 0, kd = 3, ks = 6, reflectivity = 9, transparency, ior, inverse_size, offset,
-        color_a = offset + 3, color_b = color_a + 3, float_columns = color_b + 3
+        ka = 0,
+        kd = 3,
+        ks = 6,
+        reflectivity = 9,
+        transparency,
+        ior,
+        inverse_size,
+        offset,
+        color_a = offset + 3,
+        color_b = color_a + 3,
+        float_columns = color_b + 3
     };
     m_floats.assign(static_cast<size_t>(float_columns) * count, 0.0f);
     m_ints.assign(2 * count, 0);

@@ -78,11 +78,11 @@ struct alignas(64) ShadeLanes {
     int32_t active[k_shade_lanes];  ///< 0: no hit in this lane, outputs are not read
 
     // Out.
-    float colour[3][k_shade_lanes];         ///< local illumination (ambient + lit lights)
-    int32_t shadow_rays[k_shade_lanes];     ///< lights facing the point (shadow rays cast)
-    int32_t scalar_specular[k_shade_lanes]; ///< 1: colour must be recomputed by the scalar code
-    float normal[3][k_shade_lanes];         ///< shading normal turned toward the ray
-    float facing_normal[3][k_shade_lanes];  ///< geometric normal turned toward the ray
+    float colour[3][k_shade_lanes];          ///< local illumination (ambient + lit lights)
+    int32_t shadow_rays[k_shade_lanes];      ///< lights facing the point (shadow rays cast)
+    int32_t scalar_specular[k_shade_lanes];  ///< 1: colour must be recomputed by the scalar code
+    float normal[3][k_shade_lanes];          ///< shading normal turned toward the ray
+    float facing_normal[3][k_shade_lanes];   ///< geometric normal turned toward the ray
     /// Only with spawning: weight of the mirror and refracted rays (0: no such ray) and the rays.
     float mirror_weight[k_shade_lanes];
     float refract_weight[k_shade_lanes];

@@ -177,8 +177,7 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
         // The highlight's cos γ = R·V with R = reflect(-L, N) and V = -direction.
         for (int i = 0; i < count; ++i) {
             const float a = 2.0f * -(-lx[i] * nx[i] + -ly[i] * ny[i] + -lz[i] * nz[i]);
-            const float rx = -lx[i] + nx[i] * a, ry = -ly[i] + ny[i] * a,
-                        rz = -lz[i] + nz[i] * a;
+            const float rx = -lx[i] + nx[i] * a, ry = -ly[i] + ny[i] * a, rz = -lz[i] + nz[i] * a;
             cos_gamma[i] = rx * -dx[i] + ry * -dy[i] + rz * -dz[i];
             power[i] = 1.0f;
         }
