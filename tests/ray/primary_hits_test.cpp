@@ -125,15 +125,8 @@ Scene random_scene(uint64_t seed) {
     Plane twin_plane = scene.planes[0];
     twin_plane.id = id++;
     scene.planes.push_back(twin_plane);
-    const testing::TestMesh soup = testing::random_soup(200, 0.8f, seed);
-    TriangleSet& tris = scene.triangles;
-    tris.positions = soup.positions;
-    tris.indices = soup.indices;
-    for (const Vec3& p : soup.positions) tris.normals.push_back(normalize(p + Vec3(0.01f)));
-    for (size_t i = 0; i < soup.indices.size(); ++i) {
-        tris.material.push_back(2);
-        tris.id.push_back(id++);
-    }
+    testing::set_scene_triangles(scene.triangles, testing::random_soup(200, 0.8f, seed), id,
+                                 [](size_t) { return uint32_t{2}; });
     scene.primitive_count = id;
     scene.lights.push_back(PointLight{testing::random_point(rng, 6.0f), Vec3(1.0f), true});
     scene.lights.push_back(DirectionalLight{testing::random_direction(rng), Vec3(1.0f)});

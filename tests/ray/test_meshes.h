@@ -13,6 +13,7 @@
 #include "hikari/core/rng.h"
 #include "hikari/core/vec.h"
 #include "hikari/ray/triangle_intersect.h"
+#include "hikari/scene/scene.h"
 
 namespace hikari::testing {
 
@@ -21,6 +22,20 @@ struct TestMesh {
     std::vector<Vec3> positions;
     std::vector<std::array<uint32_t, 3>> indices;
 };
+
+/// `mesh` as a scene's triangles: smooth vertex normals pointing away from near the origin,
+/// triangle i with material `material_of(i)` and the next free id (`id` is advanced).
+template <class MaterialOf>
+void set_scene_triangles(TriangleSet& tris, const TestMesh& mesh, PrimitiveId& id,
+                         MaterialOf material_of) {
+    tris.positions = mesh.positions;
+    tris.indices = mesh.indices;
+    for (const Vec3& p : mesh.positions) tris.normals.push_back(normalize(p + Vec3(0.01f)));
+    for (size_t i = 0; i < mesh.indices.size(); ++i) {
+        tris.material.push_back(material_of(i));
+        tris.id.push_back(id++);
+    }
+}
 
 /// A point uniformly distributed in the cube [-r, r]^3.
 inline Vec3 random_point(Pcg32& rng, float r) {

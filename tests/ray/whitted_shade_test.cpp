@@ -154,15 +154,8 @@ Scene random_scene(uint64_t seed) {
     ground.material = 0;
     ground.id = id++;
     scene.planes.push_back(ground);
-    const testing::TestMesh soup = testing::random_soup(60, 0.8f, seed);
-    TriangleSet& tris = scene.triangles;
-    tris.positions = soup.positions;
-    tris.indices = soup.indices;
-    for (const Vec3& p : soup.positions) tris.normals.push_back(normalize(p + Vec3(0.01f)));
-    for (size_t i = 0; i < soup.indices.size(); ++i) {
-        tris.material.push_back(static_cast<uint32_t>(i) % materials);
-        tris.id.push_back(id++);
-    }
+    testing::set_scene_triangles(scene.triangles, testing::random_soup(60, 0.8f, seed), id,
+                                 [&](size_t i) { return static_cast<uint32_t>(i) % materials; });
     scene.primitive_count = id;
     Camera& cam = scene.camera;
     cam.eye = seed % 3 == 0 ? scene.spheres[0].center : testing::random_point(rng, 9.0f);

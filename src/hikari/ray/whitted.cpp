@@ -253,23 +253,20 @@ class WaveTracer {
                                 -ray.direction, &block.lit[i]);
             }
             if (!spawn) continue;
+            // The next level's rays, in the order shade() traces them: mirror, then refracted.
+            const auto spawn_ray = [&](const float(&origin)[3][detail::k_shade_lanes],
+                                       const float(&direction)[3][detail::k_shade_lanes]) {
+                m_s.next_rays.push_back({{origin[0][k], origin[1][k], origin[2][k]},
+                                         {direction[0][k], direction[1][k], direction[2][k]}});
+                return static_cast<int32_t>(m_s.next_rays.size() - 1);
+            };
             if (lanes.mirror_weight[k] > 0.0f) {
-                node.mirror = static_cast<int32_t>(m_s.next_rays.size());
+                node.mirror = spawn_ray(lanes.mirror_origin, lanes.mirror_direction);
                 node.mirror_weight = lanes.mirror_weight[k];
-                m_s.next_rays.push_back(
-                    {{lanes.mirror_origin[0][k], lanes.mirror_origin[1][k],
-                      lanes.mirror_origin[2][k]},
-                     {lanes.mirror_direction[0][k], lanes.mirror_direction[1][k],
-                      lanes.mirror_direction[2][k]}});
             }
             if (lanes.refract_weight[k] > 0.0f) {
-                node.refract = static_cast<int32_t>(m_s.next_rays.size());
+                node.refract = spawn_ray(lanes.refract_origin, lanes.refract_direction);
                 node.refract_weight = lanes.refract_weight[k];
-                m_s.next_rays.push_back(
-                    {{lanes.refract_origin[0][k], lanes.refract_origin[1][k],
-                      lanes.refract_origin[2][k]},
-                     {lanes.refract_direction[0][k], lanes.refract_direction[1][k],
-                      lanes.refract_direction[2][k]}});
             }
         }
     }

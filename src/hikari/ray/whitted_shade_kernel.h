@@ -23,6 +23,9 @@ namespace {
     return floor & 1;
 }
 
+/// A lane array of the block, as a restrict pointer (the kernels' arrays never overlap).
+#define HIKARI_LANES(name, array) auto* __restrict name = (array)
+
 /// sample_light for every lane: the unit direction toward the light and I0 after falloff (a
 /// template per kind of light, as GCC does not vectorise selects on a loop-invariant flag).
 template <bool Directional, bool InverseSquare>
@@ -30,12 +33,12 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
     const float* __restrict px = lanes.position[0];
     const float* __restrict py = lanes.position[1];
     const float* __restrict pz = lanes.position[2];
-    float* __restrict lx = lanes.to_light[0];
-    float* __restrict ly = lanes.to_light[1];
-    float* __restrict lz = lanes.to_light[2];
-    float* __restrict ir = lanes.irradiance[0];
-    float* __restrict ig = lanes.irradiance[1];
-    float* __restrict ib = lanes.irradiance[2];
+    HIKARI_LANES(lx, lanes.to_light[0]);
+    HIKARI_LANES(ly, lanes.to_light[1]);
+    HIKARI_LANES(lz, lanes.to_light[2]);
+    HIKARI_LANES(ir, lanes.irradiance[0]);
+    HIKARI_LANES(ig, lanes.irradiance[1]);
+    HIKARI_LANES(ib, lanes.irradiance[2]);
     const float cx = light.position[0], cy = light.position[1], cz = light.position[2];
     const float tx = light.to_light[0], ty = light.to_light[1], tz = light.to_light[2];
     const float i0r = light.intensity[0], i0g = light.intensity[1], i0b = light.intensity[2];
@@ -59,9 +62,6 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
         }
     }
 }
-
-/// A lane array of the block, as a restrict pointer (the kernels' arrays never overlap).
-#define HIKARI_LANES(name, array) auto* __restrict name = (array)
 
 [[maybe_unused]] void shade_kernel(const ShadeScene& scene, int spawn, ShadeLanes& lanes) {
     const ShadeMaterials mt = scene.materials;
