@@ -23,9 +23,6 @@ namespace {
     return floor & 1;
 }
 
-/// A lane array of the block, as a restrict pointer (the kernels' arrays never overlap).
-#define HIKARI_LANES(name, array) auto* __restrict name = (array)
-
 /// sample_light for every lane: the unit direction toward the light and I0 after falloff (a
 /// template per kind of light, as GCC does not vectorise selects on a loop-invariant flag).
 template <bool Directional, bool InverseSquare>
@@ -33,12 +30,12 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
     const float* __restrict px = lanes.position[0];
     const float* __restrict py = lanes.position[1];
     const float* __restrict pz = lanes.position[2];
-    HIKARI_LANES(lx, lanes.to_light[0]);
-    HIKARI_LANES(ly, lanes.to_light[1]);
-    HIKARI_LANES(lz, lanes.to_light[2]);
-    HIKARI_LANES(ir, lanes.irradiance[0]);
-    HIKARI_LANES(ig, lanes.irradiance[1]);
-    HIKARI_LANES(ib, lanes.irradiance[2]);
+    auto* __restrict lx = lanes.to_light[0];
+    auto* __restrict ly = lanes.to_light[1];
+    auto* __restrict lz = lanes.to_light[2];
+    auto* __restrict ir = lanes.irradiance[0];
+    auto* __restrict ig = lanes.irradiance[1];
+    auto* __restrict ib = lanes.irradiance[2];
     const float cx = light.position[0], cy = light.position[1], cz = light.position[2];
     const float tx = light.to_light[0], ty = light.to_light[1], tz = light.to_light[2];
     const float i0r = light.intensity[0], i0g = light.intensity[1], i0b = light.intensity[2];
@@ -64,33 +61,34 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
 }
 
 [[maybe_unused]] void shade_kernel(const ShadeScene& scene, int spawn, ShadeLanes& lanes) {
+    // Every lane array through a restrict pointer: they never overlap, and g++ needs telling.
     const ShadeMaterials mt = scene.materials;
     const int count = lanes.count;
-    HIKARI_LANES(dx, lanes.direction[0]);
-    HIKARI_LANES(dy, lanes.direction[1]);
-    HIKARI_LANES(dz, lanes.direction[2]);
-    HIKARI_LANES(px, lanes.position[0]);
-    HIKARI_LANES(py, lanes.position[1]);
-    HIKARI_LANES(pz, lanes.position[2]);
-    HIKARI_LANES(nx, lanes.normal[0]);
-    HIKARI_LANES(ny, lanes.normal[1]);
-    HIKARI_LANES(nz, lanes.normal[2]);
-    HIKARI_LANES(fx, lanes.facing_normal[0]);
-    HIKARI_LANES(fy, lanes.facing_normal[1]);
-    HIKARI_LANES(fz, lanes.facing_normal[2]);
-    HIKARI_LANES(red, lanes.colour[0]);
-    HIKARI_LANES(green, lanes.colour[1]);
-    HIKARI_LANES(blue, lanes.colour[2]);
-    HIKARI_LANES(kd_r, lanes.kd[0]);
-    HIKARI_LANES(kd_g, lanes.kd[1]);
-    HIKARI_LANES(kd_b, lanes.kd[2]);
-    HIKARI_LANES(material, lanes.material);
-    HIKARI_LANES(active, lanes.active);
-    HIKARI_LANES(entering, lanes.entering);
-    HIKARI_LANES(power, lanes.power);
-    HIKARI_LANES(cos_gamma, lanes.cos_gamma);
-    HIKARI_LANES(shadow_rays, lanes.shadow_rays);
-    HIKARI_LANES(lit_bits, lanes.lit);
+    auto* __restrict dx = lanes.direction[0];
+    auto* __restrict dy = lanes.direction[1];
+    auto* __restrict dz = lanes.direction[2];
+    auto* __restrict px = lanes.position[0];
+    auto* __restrict py = lanes.position[1];
+    auto* __restrict pz = lanes.position[2];
+    auto* __restrict nx = lanes.normal[0];
+    auto* __restrict ny = lanes.normal[1];
+    auto* __restrict nz = lanes.normal[2];
+    auto* __restrict fx = lanes.facing_normal[0];
+    auto* __restrict fy = lanes.facing_normal[1];
+    auto* __restrict fz = lanes.facing_normal[2];
+    auto* __restrict red = lanes.colour[0];
+    auto* __restrict green = lanes.colour[1];
+    auto* __restrict blue = lanes.colour[2];
+    auto* __restrict kd_r = lanes.kd[0];
+    auto* __restrict kd_g = lanes.kd[1];
+    auto* __restrict kd_b = lanes.kd[2];
+    auto* __restrict material = lanes.material;
+    auto* __restrict active = lanes.active;
+    auto* __restrict entering = lanes.entering;
+    auto* __restrict power = lanes.power;
+    auto* __restrict cos_gamma = lanes.cos_gamma;
+    auto* __restrict shadow_rays = lanes.shadow_rays;
+    auto* __restrict lit_bits = lanes.lit;
 
     // 1. shade(): normals turned toward the ray.
     for (int i = 0; i < count; ++i) {
@@ -109,10 +107,10 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
     }
     // The lanes' material parameters, gathered once (GCC's vectoriser gives up on gathers
     // inside the arithmetic loops below).
-    HIKARI_LANES(ks_r, lanes.ks[0]);
-    HIKARI_LANES(ks_g, lanes.ks[1]);
-    HIKARI_LANES(ks_b, lanes.ks[2]);
-    HIKARI_LANES(exponent, lanes.exponent);
+    auto* __restrict ks_r = lanes.ks[0];
+    auto* __restrict ks_g = lanes.ks[1];
+    auto* __restrict ks_b = lanes.ks[2];
+    auto* __restrict exponent = lanes.exponent;
     for (int i = 0; i < count; ++i) {
         const int32_t m = material[i];
         for (int c = 0; c < 3; ++c) {
@@ -160,12 +158,12 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
 
     // 2. shade_local(): each light that faces the point and whose shadow ray was found unblocked
     // adds shade_direct(), lights in the scalar order.
-    HIKARI_LANES(lx, lanes.to_light[0]);
-    HIKARI_LANES(ly, lanes.to_light[1]);
-    HIKARI_LANES(lz, lanes.to_light[2]);
-    HIKARI_LANES(ir, lanes.irradiance[0]);
-    HIKARI_LANES(ig, lanes.irradiance[1]);
-    HIKARI_LANES(ib, lanes.irradiance[2]);
+    auto* __restrict lx = lanes.to_light[0];
+    auto* __restrict ly = lanes.to_light[1];
+    auto* __restrict lz = lanes.to_light[2];
+    auto* __restrict ir = lanes.irradiance[0];
+    auto* __restrict ig = lanes.irradiance[1];
+    auto* __restrict ib = lanes.irradiance[2];
     for (int32_t l = 0; l < scene.light_count; ++l) {
         const ShadeLight& light = scene.lights[l];
         if (light.directional)
@@ -184,7 +182,7 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
         // phong_power by repeated squaring: the exponent's bits in the scalar order.
         for (int i = 0; i < count; ++i) lanes.base[i] = cos_gamma[i];
         for (int32_t b = 0; b < scene.exponent_bits; ++b) {
-            HIKARI_LANES(base, lanes.base);
+            auto* __restrict base = lanes.base;
             for (int i = 0; i < count; ++i) {
                 power[i] = (exponent[i] >> b) & 1 ? power[i] * base[i] : power[i];
                 base[i] = base[i] * base[i];
@@ -246,8 +244,6 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
         lanes.refract_weight[i] = transparent && !total_internal_reflection ? transparency : 0.0f;
     }
 }
-
-#undef HIKARI_LANES
 
 }  // namespace
 }  // namespace hikari::detail
