@@ -216,18 +216,11 @@ class WaveTracer {
             lanes.lit[k] = block.lit[i];
         }
         if (count == 0) return;
-        lanes.count = (count + detail::k_shade_lane_step - 1) / detail::k_shade_lane_step *
-                      detail::k_shade_lane_step;
-        for (int k = count; k < lanes.count; ++k) {  // padding: harmless inactive lanes
-            lanes.active[k] = 0;
-            for (int a = 0; a < 3; ++a) {
-                lanes.direction[a][k] = a == 2 ? 1.0f : 0.0f;
-                lanes.position[a][k] = 0.0f;
-                lanes.geometric_normal[a][k] = lanes.shading_normal[a][k] = a == 1 ? 1.0f : 0.0f;
-            }
-            lanes.material[k] = 0;
-            lanes.lit[k] = 0;
-        }
+        // The rest of the lanes are left as they are, only marked inactive: the kernel runs all
+        // k_shade_lanes (a constant trip count is what lets g++ vectorise its loops) and
+        // ignores their values.
+        for (int k = count; k < detail::k_shade_lanes; ++k)
+            lanes.active[k] = 0, lanes.material[k] = 0;
         const bool spawn = segment < m_ctx.max_depth;
         m_shader.shade(lanes, spawn);
         for (int k = 0; k < count; ++k) {

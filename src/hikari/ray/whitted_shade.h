@@ -24,8 +24,6 @@ namespace detail {
 
 /// Lanes per shading call: one block of rays (ray/primary_hits.h).
 inline constexpr int k_shade_lanes = k_primary_block_rays;
-/// ShadeLanes::count is a multiple of this.
-inline constexpr int k_shade_lane_step = 16;
 
 /// The scene's materials as the lanes read them: structure-of-arrays, indexed by material.
 struct ShadeMaterials {
@@ -65,17 +63,16 @@ struct ShadeScene {
 
 /// The hits of one block, structure-of-arrays, and what shading them gives.
 struct alignas(64) ShadeLanes {
-    /// In: lanes [0, count) are shaded, count a multiple of 16 (the widest SIMD step) and at
-    /// most k_shade_lanes; pad with inactive lanes.
-    int32_t count = k_shade_lanes;
     // In: lane i is one ray and its nearest hit.
     float direction[3][k_shade_lanes];         ///< unit direction of the incoming ray
     float position[3][k_shade_lanes];          ///< hit point
     float geometric_normal[3][k_shade_lanes];  ///< as SurfaceHit has it (not turned)
     float shading_normal[3][k_shade_lanes];
     int32_t material[k_shade_lanes];
-    int32_t lit[k_shade_lanes];     ///< bit l: the shadow ray toward light l is unblocked
-    int32_t active[k_shade_lanes];  ///< 0: no hit in this lane, outputs are not read
+    int32_t lit[k_shade_lanes];  ///< bit l: the shadow ray toward light l is unblocked
+    /// 0: no hit in this lane; its outputs are not read and its other inputs may be anything
+    /// (NaN included) but its material must be a valid index.
+    int32_t active[k_shade_lanes];
 
     // Out.
     float colour[3][k_shade_lanes];          ///< local illumination (ambient + lit lights)

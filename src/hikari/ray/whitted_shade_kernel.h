@@ -39,8 +39,7 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
     const float cx = light.position[0], cy = light.position[1], cz = light.position[2];
     const float tx = light.to_light[0], ty = light.to_light[1], tz = light.to_light[2];
     const float i0r = light.intensity[0], i0g = light.intensity[1], i0b = light.intensity[2];
-    const int count = lanes.count;
-    for (int i = 0; i < count; ++i) {
+    for (int i = 0; i < k_shade_lanes; ++i) {
         if constexpr (Directional) {
             lx[i] = tx, ly[i] = ty, lz[i] = tz;
             ir[i] = i0r, ig[i] = i0g, ib[i] = i0b;
@@ -63,7 +62,6 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
 [[maybe_unused]] void shade_kernel(const ShadeScene& scene, int spawn, ShadeLanes& lanes) {
     // Every lane array through a restrict pointer: they never overlap, and g++ needs telling.
     const ShadeMaterials mt = scene.materials;
-    const int count = lanes.count;
     auto* __restrict dx = lanes.direction[0];
     auto* __restrict dy = lanes.direction[1];
     auto* __restrict dz = lanes.direction[2];
@@ -91,7 +89,7 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
     auto* __restrict lit_bits = lanes.lit;
 
     // 1. shade(): normals turned toward the ray.
-    for (int i = 0; i < count; ++i) {
+    for (int i = 0; i < k_shade_lanes; ++i) {
         const float gx = lanes.geometric_normal[0][i], gy = lanes.geometric_normal[1][i],
                     gz = lanes.geometric_normal[2][i];
         const float sx = lanes.shading_normal[0][i], sy = lanes.shading_normal[1][i],
@@ -111,7 +109,7 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
     auto* __restrict ks_g = lanes.ks[1];
     auto* __restrict ks_b = lanes.ks[2];
     auto* __restrict exponent = lanes.exponent;
-    for (int i = 0; i < count; ++i) {
+    for (int i = 0; i < k_shade_lanes; ++i) {
         const int32_t m = material[i];
         for (int c = 0; c < 3; ++c) {
             lanes.ka[c][i] = mt.ka[c][m];
@@ -132,7 +130,7 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
     // parity of the floors' sum); shade_ambient().
     const float ambient_r = scene.ambient[0], ambient_g = scene.ambient[1],
                 ambient_b = scene.ambient[2];
-    for (int i = 0; i < count; ++i) {
+    for (int i = 0; i < k_shade_lanes; ++i) {
         const float inverse_size = lanes.inverse_size[i];
         const float qx = (px[i] + lanes.offset[0][i]) * inverse_size;
         const float qy = (py[i] + lanes.offset[1][i]) * inverse_size;
@@ -173,23 +171,23 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
         else
             sample_light_lanes<false, false>(light, lanes);
         // The highlight's cos γ = R·V with R = reflect(-L, N) and V = -direction.
-        for (int i = 0; i < count; ++i) {
+        for (int i = 0; i < k_shade_lanes; ++i) {
             const float a = 2.0f * -(-lx[i] * nx[i] + -ly[i] * ny[i] + -lz[i] * nz[i]);
             const float rx = -lx[i] + nx[i] * a, ry = -ly[i] + ny[i] * a, rz = -lz[i] + nz[i] * a;
             cos_gamma[i] = rx * -dx[i] + ry * -dy[i] + rz * -dz[i];
             power[i] = 1.0f;
         }
         // phong_power by repeated squaring: the exponent's bits in the scalar order.
-        for (int i = 0; i < count; ++i) lanes.base[i] = cos_gamma[i];
+        for (int i = 0; i < k_shade_lanes; ++i) lanes.base[i] = cos_gamma[i];
         for (int32_t b = 0; b < scene.exponent_bits; ++b) {
             auto* __restrict base = lanes.base;
-            for (int i = 0; i < count; ++i) {
+            for (int i = 0; i < k_shade_lanes; ++i) {
                 power[i] = (exponent[i] >> b) & 1 ? power[i] * base[i] : power[i];
                 base[i] = base[i] * base[i];
             }
         }
         const int32_t bit = 1 << l;
-        for (int i = 0; i < count; ++i) {
+        for (int i = 0; i < k_shade_lanes; ++i) {
             const float cos_alpha = nx[i] * lx[i] + ny[i] * ly[i] + nz[i] * lz[i];
             // Bitwise & rather than &&: no branches, so GCC can if-convert the loop.
             const bool facing = (active[i] != 0) & !(cos_alpha <= 0.0f);
@@ -208,7 +206,7 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
 
     // 3. shade()'s secondary rays: the mirror ray, the refracted ray (refract(), Snell's law)
     // and POV-Ray's total-internal-reflection rule, each from offset_ray_origin.
-    for (int i = 0; i < count; ++i) {
+    for (int i = 0; i < k_shade_lanes; ++i) {
         const float a = 2.0f * -(dx[i] * nx[i] + dy[i] * ny[i] + dz[i] * nz[i]);
         lanes.mirror_direction[0][i] = dx[i] + nx[i] * a;
         lanes.mirror_direction[1][i] = dy[i] + ny[i] * a;
@@ -217,7 +215,7 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
         lanes.mirror_origin[1][i] = offset_origin_lane(py[i], fy[i]);
         lanes.mirror_origin[2][i] = offset_origin_lane(pz[i], fz[i]);
     }
-    for (int i = 0; i < count; ++i) {
+    for (int i = 0; i < k_shade_lanes; ++i) {
         const float ior = lanes.ior[i];
         const float eta = entering[i] ? 1.0f / ior : ior;
         const float cos_i = -(dx[i] * nx[i] + dy[i] * ny[i] + dz[i] * nz[i]);
