@@ -181,7 +181,7 @@ void PrimaryHitTracer::finish(detail::PrimaryLanes& lanes, const TriangleHit* tr
 
     // 5. The hits' shadow rays, one light at a time against all lanes (Boulos et al. 2007 trace
     // shadow rays as packets too: from nearby points toward one light they stay coherent).
-    block.shadows_known = m_lights.size() <= 8;
+    block.shadows_known = m_lights.size() <= k_max_block_lights;
     if (!block.shadows_known) return;
     detail::ShadowLanes shadow;
     for (int i = 0; i < k_primary_block_rays; ++i) {

@@ -26,6 +26,8 @@ namespace hikari {
 inline constexpr int k_primary_block = 16;
 /// Rays in a full block.
 inline constexpr int k_primary_block_rays = k_primary_block * k_primary_block;
+/// The most lights whose shadow rays a block traces (one bit each in PrimaryBlock::lit).
+inline constexpr size_t k_max_block_lights = 8;
 
 /// The camera rays of a block of at most 16 x 16 pixels and their nearest hits, row-major with
 /// a row stride of k_primary_block: entry y * k_primary_block + x is pixel (x0 + x, y0 + y).
@@ -37,7 +39,7 @@ struct PrimaryBlock {
     /// (from offset_ray_origin(position, geometric normal facing the ray), as shade_local
     /// builds it) is unblocked, as SceneIntersector::occluded answers.
     uint8_t lit[k_primary_block_rays];
-    bool shadows_known = false;  ///< false: `lit` not filled (more than 8 lights)
+    bool shadows_known = false;  ///< false: `lit` not filled (more than k_max_block_lights)
 };
 
 namespace detail {
@@ -115,8 +117,9 @@ class PrimaryHitTracer {
 namespace detail {
 
 /// What the lane kernels (primary_hits_kernel.h) read and write for one block. Lane i is pixel
-/// (x0 + i % 16, y0 + i / 16); all 256 lanes are computed even for a clipped block (the extra
-/// lanes are harmless finite rays, never read back).
+/// (x0 + i % 16, y0 + i / 16) for camera rays, entry i of the block for trace_rays(); all 256
+/// lanes are computed even for a clipped or partial block (the extra lanes are harmless finite
+/// rays, never read back).
 struct alignas(64) PrimaryLanes {
     float origin[3][k_primary_block_rays];     ///< ray origin per lane
     float direction[3][k_primary_block_rays];  ///< unit ray direction per lane

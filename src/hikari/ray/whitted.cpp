@@ -48,19 +48,19 @@ Vec3 shade_local(TraceContext& ctx, const Material& m, Vec3 p, Vec3 n, Vec3 ng, 
     return colour;
 }
 
-/// The material at a textured point: ka and kd scaled by the texture's colour there. A copy
-/// without the name (an empty string allocates nothing).
-Material textured(const Material& m, Vec3 p) {
-    Material out;
+/// The material at point p: `m` itself, or for a textured one a copy in `storage` with ka and kd
+/// scaled by the texture's colour there (without the name: an empty string allocates nothing).
+const Material& material_at(const Material& m, Vec3 p, Material& storage) {
+    if (!m.texture) return m;
     const Vec3 c = m.texture->at(p);
-    out.ka = m.ka * c;
-    out.kd = m.kd * c;
-    out.ks = m.ks;
-    out.shininess = m.shininess;
-    out.reflectivity = m.reflectivity;
-    out.transparency = m.transparency;
-    out.ior = m.ior;
-    return out;
+    storage.ka = m.ka * c;
+    storage.kd = m.kd * c;
+    storage.ks = m.ks;
+    storage.shininess = m.shininess;
+    storage.reflectivity = m.reflectivity;
+    storage.transparency = m.transparency;
+    storage.ior = m.ior;
+    return storage;
 }
 
 Vec3 trace(TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* first_hit = nullptr);
@@ -71,10 +71,8 @@ Vec3 sky(const TraceContext& ctx, const Ray& ray) {
 }
 
 /// Colour seen along `ray` (segment number `segment` of its path, primary = 1) whose nearest
-/// hit is `hit`: local illumination, then the mirror and refracted rays. `lit` as for
-/// shade_local.
-Vec3 shade(TraceContext& ctx, const Ray& ray, const SurfaceHit& hit, int segment,
-           const uint8_t* lit = nullptr) {
+/// hit is `hit`: local illumination, then the mirror and refracted rays.
+Vec3 shade(TraceContext& ctx, const Ray& ray, const SurfaceHit& hit, int segment) {
     // Face the normals toward the incoming ray: planes and triangles are two-sided, and a ray
     // inside a sphere sees its inner side.
     const bool entering = dot(hit.geometric_normal, ray.direction) < 0.0f;
@@ -82,12 +80,9 @@ Vec3 shade(TraceContext& ctx, const Ray& ray, const SurfaceHit& hit, int segment
     Vec3 n = entering ? hit.shading_normal : -hit.shading_normal;
     if (dot(n, ray.direction) > 0.0f) n = ng;  // interpolated normal turned away: use the true one
 
-    const Material& material = ctx.scene.materials[hit.material];
-    Material local;
-    const Material* textured_material = &material;
-    if (material.texture) textured_material = &(local = textured(material, hit.position));
-    const Material& m = *textured_material;
-    Vec3 colour = shade_local(ctx, m, hit.position, n, ng, -ray.direction, lit);
+    Material storage;
+    const Material& m = material_at(ctx.scene.materials[hit.material], hit.position, storage);
+    Vec3 colour = shade_local(ctx, m, hit.position, n, ng, -ray.direction, nullptr);
     if (segment >= ctx.max_depth) return colour;
 
     const Vec3 mirror = reflect(ray.direction, n);
@@ -234,10 +229,9 @@ class WaveTracer {
                 // (its ray count is already in shadow_rays).
                 TraceContext scalar = m_ctx;
                 const SurfaceHit& hit = block.hits[i];
-                const Material& material = m_ctx.scene.materials[hit.material];
-                Material local;
+                Material storage;
                 const Material& m =
-                    material.texture ? (local = textured(material, hit.position)) : material;
+                    material_at(m_ctx.scene.materials[hit.material], hit.position, storage);
                 node.colour =
                     shade_local(scalar, m, hit.position,
                                 {lanes.normal[0][k], lanes.normal[1][k], lanes.normal[2][k]},

@@ -4,6 +4,7 @@
 #include <variant>
 
 #include "hikari/ray/whitted_shade_kernel.h"
+#include "hikari/shading/phong.h"
 
 namespace hikari {
 
@@ -15,19 +16,8 @@ void shade_lanes_portable(const ShadeScene& scene, int spawn, ShadeLanes& lanes)
 
 }  // namespace detail
 
-namespace {
-
-/// phong_power's exponent when it takes the repeated-squaring path, else -1.
-int32_t integer_exponent(float n) {
-    if (!(n >= 0.0f && n <= 1024.0f) || n != static_cast<float>(static_cast<unsigned>(n)))
-        return -1;
-    return static_cast<int32_t>(n);
-}
-
-}  // namespace
-
 LaneShader::LaneShader(const Scene& scene, SimdLevel level) : m_level(level) {
-    m_supported = scene.lights.size() <= 8;
+    m_supported = scene.lights.size() <= k_max_block_lights;
     // One column per material parameter; at least one entry, so lanes without a hit can read
     // material 0.
     const size_t count = std::max<size_t>(scene.materials.size(), 1);
@@ -57,7 +47,7 @@ LaneShader::LaneShader(const Scene& scene, SimdLevel level) : m_level(level) {
         column(reflectivity)[i] = m.reflectivity;
         column(transparency)[i] = m.transparency;
         column(ior)[i] = m.ior;
-        m_ints[i] = integer_exponent(m.shininess);
+        m_ints[i] = phong_integer_exponent(m.shininess);
         if (m.texture) {
             m_ints[count + i] = 1;
             column(inverse_size)[i] = 1.0f / m.texture->size;

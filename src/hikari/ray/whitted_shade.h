@@ -56,7 +56,7 @@ struct ShadeLight {
 struct ShadeScene {
     ShadeMaterials materials;
     const ShadeLight* lights;
-    int32_t light_count;  ///< at most 8 (one bit each in ShadeLanes::lit)
+    int32_t light_count;  ///< at most k_max_block_lights (one bit each in ShadeLanes::lit)
     float ambient[3];
     int32_t exponent_bits;  ///< bit length of the largest integer exponent (squaring steps)
 };
@@ -124,7 +124,8 @@ class LaneShader {
     /// `scene` must outlive this object; `level` must be supported by this CPU.
     explicit LaneShader(const Scene& scene, SimdLevel level = best_simd_level());
 
-    /// Whether the lanes can shade this scene (at most 8 lights); else use the scalar code.
+    /// Whether the lanes can shade this scene (at most k_max_block_lights lights); else use the
+    /// scalar code.
     bool supported() const { return m_supported; }
     /// Shades every active lane of `lanes` (and spawns its secondary rays when `spawn`).
     void shade(detail::ShadeLanes& lanes, bool spawn) const;

@@ -4,6 +4,7 @@
 // with R = L_in + 2aN, a = −L_in·N, where L_in is the light's direction of travel.
 
 #include <cmath>
+#include <cstdint>
 
 #include "hikari/core/vec.h"
 #include "hikari/scene/material.h"
@@ -15,15 +16,23 @@ inline Vec3 shade_ambient(const Material& m, Vec3 ambient_intensity) {
     return m.ka * ambient_intensity;
 }
 
+/// The Phong exponent n as the integer phong_power raises by repeated squaring (n an integer in
+/// [0, 1024]), or -1 where it calls std::pow instead.
+inline int32_t phong_integer_exponent(float n) {
+    if (!(n >= 0.0f && n <= 1024.0f) || n != static_cast<float>(static_cast<unsigned>(n)))
+        return -1;
+    return static_cast<int32_t>(n);
+}
+
 /// cos^n for the Phong highlight. Integer exponents up to 1024 (the usual case) by repeated
 /// squaring, much cheaper than pow(): each squaring doubles the relative rounding error, so the
 /// result is within about n·2^-24 relative (1e-5 for n = 200, far below 8-bit output steps).
 /// Other exponents go through std::pow.
 inline float phong_power(float cos_gamma, float n) {
-    if (!(n >= 0.0f && n <= 1024.0f) || n != static_cast<float>(static_cast<unsigned>(n)))
-        return std::pow(cos_gamma, n);
+    const int32_t exponent = phong_integer_exponent(n);
+    if (exponent < 0) return std::pow(cos_gamma, n);
     float result = 1.0f, base = cos_gamma;
-    for (auto e = static_cast<unsigned>(n); e != 0; e >>= 1, base *= base)
+    for (auto e = static_cast<unsigned>(exponent); e != 0; e >>= 1, base *= base)
         if (e & 1u) result *= base;
     return result;
 }
