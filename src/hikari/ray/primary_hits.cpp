@@ -15,13 +15,13 @@ void primary_directions_portable(const PrimaryCamera& cam, PrimaryLanes& lanes) 
     directions_kernel(cam, lanes);
 }
 
-void primary_analytic_portable(const PrimaryAnalytic& a, PrimaryLanes& lanes) {
-    analytic_kernel(a, lanes);
+void primary_analytic_portable(const PrimaryAnalytic& a, int count, PrimaryLanes& lanes) {
+    analytic_kernel(a, count, lanes);
 }
 
 void primary_shadows_portable(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
-                              ShadowLanes& lanes) {
-    shadow_kernel(light, casters, lanes);
+                              int count, ShadowLanes& lanes) {
+    shadow_kernel(light, casters, count, lanes);
 }
 
 }  // namespace detail
@@ -125,7 +125,7 @@ void PrimaryHitTracer::trace(int x0, int y0, int width, int height, PrimaryBlock
             }
     }
     finish(
-        lanes, triangle_hits,
+        lanes, triangle_hits, height * k_primary_block,
         [&](int i) { return i % k_primary_block < width && i / k_primary_block < height; }, block);
 }
 
@@ -133,7 +133,7 @@ void PrimaryHitTracer::trace_rays(int count, PrimaryBlock& block) const {
     detail::PrimaryLanes lanes;
     TriangleHit triangle_hits[k_primary_block_rays];
     const bool triangles = m_scene.triangles.size() > 0;
-    for (int i = 0; i < k_primary_block_rays; ++i) {
+    for (int i = 0; i < lanes_for(count); ++i) {
         const Ray ray = i < count ? block.rays[i] : Ray{m_frame.eye, {0.0f, 0.0f, 1.0f}};
         for (int a = 0; a < 3; ++a) lanes.origin[a][i] = ray.origin[a];
         for (int a = 0; a < 3; ++a) lanes.direction[a][i] = ray.direction[a];
@@ -144,28 +144,29 @@ void PrimaryHitTracer::trace_rays(int count, PrimaryBlock& block) const {
             lanes.t[i] = triangle_hits[i].t, lanes.object[i] = 1;
     }
     finish(
-        lanes, triangle_hits, [&](int i) { return i < count; }, block);
+        lanes, triangle_hits, count, [&](int i) { return i < count; }, block);
 }
 
 template <class ValidLane>
 void PrimaryHitTracer::finish(detail::PrimaryLanes& lanes, const TriangleHit* triangle_hits,
-                              ValidLane valid, PrimaryBlock& block) const {
+                              int count, ValidLane valid, PrimaryBlock& block) const {
+    const int used = lanes_for(count);
     // 3. Spheres and planes, each against all lanes.
     const detail::PrimaryAnalytic analytic = m_analytic.view();
     switch (m_level) {
         case SimdLevel::avx512:
-            detail::primary_analytic_avx512(analytic, lanes);
+            detail::primary_analytic_avx512(analytic, count, lanes);
             break;
         case SimdLevel::avx2:
-            detail::primary_analytic_avx2(analytic, lanes);
+            detail::primary_analytic_avx2(analytic, count, lanes);
             break;
         default:
-            detail::primary_analytic_portable(analytic, lanes);
+            detail::primary_analytic_portable(analytic, count, lanes);
     }
 
     // 4. Each hit described as SceneIntersector::closest describes it.
     const auto spheres = static_cast<int32_t>(m_scene.spheres.size());
-    for (int i = 0; i < k_primary_block_rays; ++i) {
+    for (int i = 0; i < used; ++i) {
         const int32_t object = valid(i) ? lanes.object[i] : 0;
         block.found[i] = object != 0 ? 1 : 0;
         if (object == 0) continue;
@@ -179,12 +180,14 @@ void PrimaryHitTracer::finish(detail::PrimaryLanes& lanes, const TriangleHit* tr
                                    block.hits[i]);
     }
 
+    std::fill(block.found + used, block.found + k_primary_block_rays, uint8_t{0});
+
     // 5. The hits' shadow rays, one light at a time against all lanes (Boulos et al. 2007 trace
     // shadow rays as packets too: from nearby points toward one light they stay coherent).
     block.shadows_known = m_lights.size() <= k_max_block_lights;
     if (!block.shadows_known) return;
     detail::ShadowLanes shadow;
-    for (int i = 0; i < k_primary_block_rays; ++i) {
+    for (int i = 0; i < used; ++i) {
         const SurfaceHit& hit = block.hits[i];
         Vec3 ng(0.0f);  // unused lanes: a harmless point and normal
         Vec3 p(0.0f);
@@ -201,15 +204,15 @@ void PrimaryHitTracer::finish(detail::PrimaryLanes& lanes, const TriangleHit* tr
     for (size_t l = 0; l < m_lights.size(); ++l) {
         switch (m_level) {
             case SimdLevel::avx512:
-                detail::primary_shadows_avx512(m_lights[l], casters, shadow);
+                detail::primary_shadows_avx512(m_lights[l], casters, count, shadow);
                 break;
             case SimdLevel::avx2:
-                detail::primary_shadows_avx2(m_lights[l], casters, shadow);
+                detail::primary_shadows_avx2(m_lights[l], casters, count, shadow);
                 break;
             default:
-                detail::primary_shadows_portable(m_lights[l], casters, shadow);
+                detail::primary_shadows_portable(m_lights[l], casters, count, shadow);
         }
-        for (int i = 0; i < k_primary_block_rays; ++i) {
+        for (int i = 0; i < used; ++i) {
             if (!block.found[i] || shadow.blocked[i]) continue;
             const Ray ray{{shadow.origin[0][i], shadow.origin[1][i], shadow.origin[2][i]},
                           {shadow.to_light[0][i], shadow.to_light[1][i], shadow.to_light[2][i]}};

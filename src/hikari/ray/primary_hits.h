@@ -26,6 +26,13 @@ namespace hikari {
 inline constexpr int k_primary_block = 16;
 /// Rays in a full block.
 inline constexpr int k_primary_block_rays = k_primary_block * k_primary_block;
+/// Lanes the kernels compute together: their loops run over whole chunks (a constant trip count,
+/// which is what lets g++ vectorise them), only as many chunks as hold rays.
+inline constexpr int k_lane_chunk = 16;
+/// Lanes that hold `count` rays: count rounded up to whole chunks.
+constexpr int lanes_for(int count) {
+    return (count + k_lane_chunk - 1) / k_lane_chunk * k_lane_chunk;
+}
 /// The most lights whose shadow rays a block traces (one bit each in PrimaryBlock::lit).
 inline constexpr size_t k_max_block_lights = 8;
 
@@ -99,11 +106,11 @@ class PrimaryHitTracer {
     };
 
     /// Steps shared by trace() and trace_rays(): spheres and planes after the triangles already
-    /// in `lanes`, each hit described into `block`, and the hits' shadow rays. `valid(i)` says
-    /// whether lane i is a ray of the block.
+    /// in `lanes`, each hit described into `block`, and the hits' shadow rays, for the lanes
+    /// [0, lanes_for(count)). `valid(i)` says whether lane i is a ray of the block.
     template <class ValidLane>
-    void finish(detail::PrimaryLanes& lanes, const TriangleHit* triangle_hits, ValidLane valid,
-                PrimaryBlock& block) const;
+    void finish(detail::PrimaryLanes& lanes, const TriangleHit* triangle_hits, int count,
+                ValidLane valid, PrimaryBlock& block) const;
 
     const SceneIntersector& m_intersector;
     const Scene& m_scene;
@@ -142,26 +149,27 @@ struct alignas(64) ShadowLanes {
     float origin[3][k_primary_block_rays];    ///< out: shadow-ray origin, offset off the surface
     float to_light[3][k_primary_block_rays];  ///< out: unit direction toward the light
     float distance[k_primary_block_rays];     ///< out: distance to the light (∞: directional)
-    uint8_t blocked[k_primary_block_rays];    ///< out: 1 where a casting sphere or plane blocks
+    int32_t blocked[k_primary_block_rays];    ///< out: 1 where a casting sphere or plane blocks
 };
 
 /// Camera-ray directions of a block (kernel for each SIMD level).
 void primary_directions_portable(const PrimaryCamera& cam, PrimaryLanes& lanes);
 void primary_directions_avx2(const PrimaryCamera& cam, PrimaryLanes& lanes);
 void primary_directions_avx512(const PrimaryCamera& cam, PrimaryLanes& lanes);
-/// Spheres and planes against every lane, after the triangles (kernel for each SIMD level).
-/// Lanes without a ray must hold a harmless finite one.
-void primary_analytic_portable(const PrimaryAnalytic& a, PrimaryLanes& lanes);
-void primary_analytic_avx2(const PrimaryAnalytic& a, PrimaryLanes& lanes);
-void primary_analytic_avx512(const PrimaryAnalytic& a, PrimaryLanes& lanes);
+/// Spheres and planes against lanes [0, lanes_for(count)), after the triangles (kernel for
+/// each SIMD level). Lanes past `count` must hold a harmless finite ray.
+void primary_analytic_portable(const PrimaryAnalytic& a, int count, PrimaryLanes& lanes);
+void primary_analytic_avx2(const PrimaryAnalytic& a, int count, PrimaryLanes& lanes);
+void primary_analytic_avx512(const PrimaryAnalytic& a, int count, PrimaryLanes& lanes);
 
-/// Shadow rays toward one light against the casting spheres and planes (each SIMD level).
+/// Shadow rays of lanes [0, lanes_for(count)) toward one light against the casting spheres and
+/// planes (each SIMD level).
 void primary_shadows_portable(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
-                              ShadowLanes& lanes);
+                              int count, ShadowLanes& lanes);
 void primary_shadows_avx2(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
-                          ShadowLanes& lanes);
+                          int count, ShadowLanes& lanes);
 void primary_shadows_avx512(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
-                            ShadowLanes& lanes);
+                            int count, ShadowLanes& lanes);
 
 }  // namespace detail
 

@@ -17,13 +17,13 @@ void primary_directions_avx2(const PrimaryCamera& cam, PrimaryLanes& lanes) {
     directions_kernel(cam, lanes);
 }
 
-void primary_analytic_avx2(const PrimaryAnalytic& a, PrimaryLanes& lanes) {
-    analytic_kernel(a, lanes);
+void primary_analytic_avx2(const PrimaryAnalytic& a, int count, PrimaryLanes& lanes) {
+    analytic_kernel(a, count, lanes);
 }
 
 void primary_shadows_avx2(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
-                          ShadowLanes& lanes) {
-    shadow_kernel(light, casters, lanes);
+                          int count, ShadowLanes& lanes) {
+    shadow_kernel(light, casters, count, lanes);
 }
 
 }  // namespace hikari::detail
@@ -33,12 +33,12 @@ namespace hikari::detail {
 void primary_directions_avx2(const PrimaryCamera& cam, PrimaryLanes& lanes) {
     primary_directions_portable(cam, lanes);
 }
-void primary_analytic_avx2(const PrimaryAnalytic& a, PrimaryLanes& lanes) {
-    primary_analytic_portable(a, lanes);
+void primary_analytic_avx2(const PrimaryAnalytic& a, int count, PrimaryLanes& lanes) {
+    primary_analytic_portable(a, count, lanes);
 }
 void primary_shadows_avx2(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
-                          ShadowLanes& lanes) {
-    primary_shadows_portable(light, casters, lanes);
+                          int count, ShadowLanes& lanes) {
+    primary_shadows_portable(light, casters, count, lanes);
 }
 }  // namespace hikari::detail
 #endif

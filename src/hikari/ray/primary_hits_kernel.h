@@ -68,15 +68,15 @@ constexpr int k_lanes = k_primary_block_rays;
 /// The nearest of the lanes' triangle hit (already in lanes.t / lanes.object), the spheres and
 /// the planes, tested in SceneIntersector::closest's order: a later primitive wins only when
 /// strictly nearer.
-[[maybe_unused]] void analytic_kernel(const PrimaryAnalytic& a, PrimaryLanes& lanes) {
-    const float* __restrict ox = lanes.origin[0];
-    const float* __restrict oy = lanes.origin[1];
-    const float* __restrict oz = lanes.origin[2];
-    const float* __restrict dx = lanes.direction[0];
-    const float* __restrict dy = lanes.direction[1];
-    const float* __restrict dz = lanes.direction[2];
-    float* __restrict t_max = lanes.t;
-    int32_t* __restrict object = lanes.object;
+inline void analytic_chunk(const PrimaryAnalytic& a, PrimaryLanes& lanes, int base) {
+    const float* __restrict ox = lanes.origin[0] + base;
+    const float* __restrict oy = lanes.origin[1] + base;
+    const float* __restrict oz = lanes.origin[2] + base;
+    const float* __restrict dx = lanes.direction[0] + base;
+    const float* __restrict dy = lanes.direction[1] + base;
+    const float* __restrict dz = lanes.direction[2] + base;
+    float* __restrict t_max = lanes.t + base;
+    int32_t* __restrict object = lanes.object + base;
     const int32_t spheres = a.spheres, planes = a.planes;
 
     for (int32_t s = 0; s < spheres; ++s) {
@@ -84,7 +84,7 @@ constexpr int k_lanes = k_primary_block_rays;
                     cz = a.sphere_center[2][s];
         const float radius = a.sphere_radius[s];
         const float r2 = radius * radius;
-        for (int i = 0; i < k_lanes; ++i) {
+        for (int i = 0; i < k_lane_chunk; ++i) {
             const float t =
                 sphere_lane(ox[i] - cx, oy[i] - cy, oz[i] - cz, dx[i], dy[i], dz[i], r2, t_max[i]);
             const bool hit = t == t;
@@ -96,7 +96,7 @@ constexpr int k_lanes = k_primary_block_rays;
         // intersect_plane, per lane.
         const float qx = a.plane_point[0][p], qy = a.plane_point[1][p], qz = a.plane_point[2][p];
         const float nx = a.plane_normal[0][p], ny = a.plane_normal[1][p], nz = a.plane_normal[2][p];
-        for (int i = 0; i < k_lanes; ++i) {
+        for (int i = 0; i < k_lane_chunk; ++i) {
             const float denominator = nx * dx[i] + ny * dy[i] + nz * dz[i];
             const float t =
                 ((qx - ox[i]) * nx + (qy - oy[i]) * ny + (qz - oz[i]) * nz) / denominator;
@@ -106,6 +106,11 @@ constexpr int k_lanes = k_primary_block_rays;
             object[i] = hit ? 2 + spheres + p : object[i];
         }
     }
+}
+
+/// analytic_chunk for every chunk of lanes that holds one of the first `count`.
+[[maybe_unused]] void analytic_kernel(const PrimaryAnalytic& a, int count, PrimaryLanes& lanes) {
+    for (int base = 0; base < count; base += k_lane_chunk) analytic_chunk(a, lanes, base);
 }
 
 /// offset_ray_origin (ray/ray_offset.h) for one coordinate: p moved by 256 n ulps away from
@@ -124,36 +129,36 @@ constexpr int k_lanes = k_primary_block_rays;
 /// Wächter & Binder origin offset of offset_ray_origin (ray/ray_offset.h) and
 /// SceneIntersector::occluded's sphere and plane tests, per lane. Sets bit `light_bit` of
 /// lanes.lit where no shadow-casting sphere or plane blocks the ray.
-[[maybe_unused]] void shadow_kernel(const PrimaryShadowLight& light, const PrimaryAnalytic& a,
-                                    ShadowLanes& lanes) {
-    const float* __restrict px = lanes.position[0];
-    const float* __restrict py = lanes.position[1];
-    const float* __restrict pz = lanes.position[2];
-    const float* __restrict nx = lanes.normal[0];
-    const float* __restrict ny = lanes.normal[1];
-    const float* __restrict nz = lanes.normal[2];
-    float* __restrict ox = lanes.origin[0];
-    float* __restrict oy = lanes.origin[1];
-    float* __restrict oz = lanes.origin[2];
-    float* __restrict dx = lanes.to_light[0];
-    float* __restrict dy = lanes.to_light[1];
-    float* __restrict dz = lanes.to_light[2];
-    float* __restrict distance = lanes.distance;
-    uint8_t* __restrict blocked = lanes.blocked;
+inline void shadow_chunk(const PrimaryShadowLight& light, const PrimaryAnalytic& a,
+                         ShadowLanes& lanes, int base) {
+    const float* __restrict px = lanes.position[0] + base;
+    const float* __restrict py = lanes.position[1] + base;
+    const float* __restrict pz = lanes.position[2] + base;
+    const float* __restrict nx = lanes.normal[0] + base;
+    const float* __restrict ny = lanes.normal[1] + base;
+    const float* __restrict nz = lanes.normal[2] + base;
+    float* __restrict ox = lanes.origin[0] + base;
+    float* __restrict oy = lanes.origin[1] + base;
+    float* __restrict oz = lanes.origin[2] + base;
+    float* __restrict dx = lanes.to_light[0] + base;
+    float* __restrict dy = lanes.to_light[1] + base;
+    float* __restrict dz = lanes.to_light[2] + base;
+    float* __restrict distance = lanes.distance + base;
+    int32_t* __restrict blocked = lanes.blocked + base;
     const PrimaryShadowLight l = light;
-    for (int i = 0; i < k_lanes; ++i) {
+    for (int i = 0; i < k_lane_chunk; ++i) {
         ox[i] = offset_origin_lane(px[i], nx[i]);
         oy[i] = offset_origin_lane(py[i], ny[i]);
         oz[i] = offset_origin_lane(pz[i], nz[i]);
     }
     // sample_light: unit direction toward the light and the distance to it.
     if (l.directional) {
-        for (int i = 0; i < k_lanes; ++i) {
+        for (int i = 0; i < k_lane_chunk; ++i) {
             dx[i] = l.to_light[0], dy[i] = l.to_light[1], dz[i] = l.to_light[2];
             distance[i] = __builtin_inff();
         }
     } else {
-        for (int i = 0; i < k_lanes; ++i) {
+        for (int i = 0; i < k_lane_chunk; ++i) {
             const float vx = l.position[0] - px[i], vy = l.position[1] - py[i],
                         vz = l.position[2] - pz[i];
             const float dist = __builtin_sqrtf(vx * vx + vy * vy + vz * vz);
@@ -162,13 +167,13 @@ constexpr int k_lanes = k_primary_block_rays;
             distance[i] = dist;
         }
     }
-    for (int i = 0; i < k_lanes; ++i) blocked[i] = 0;
+    for (int i = 0; i < k_lane_chunk; ++i) blocked[i] = 0;
     for (int32_t s = 0; s < a.spheres; ++s) {
         const float cx = a.sphere_center[0][s], cy = a.sphere_center[1][s],
                     cz = a.sphere_center[2][s];
         const float radius = a.sphere_radius[s];
         const float r2 = radius * radius;
-        for (int i = 0; i < k_lanes; ++i) {
+        for (int i = 0; i < k_lane_chunk; ++i) {
             const float t = sphere_lane(ox[i] - cx, oy[i] - cy, oz[i] - cz, dx[i], dy[i], dz[i], r2,
                                         distance[i]);
             blocked[i] = t == t ? 1 : blocked[i];
@@ -177,7 +182,7 @@ constexpr int k_lanes = k_primary_block_rays;
     for (int32_t p = 0; p < a.planes; ++p) {
         const float qx = a.plane_point[0][p], qy = a.plane_point[1][p], qz = a.plane_point[2][p];
         const float mx = a.plane_normal[0][p], my = a.plane_normal[1][p], mz = a.plane_normal[2][p];
-        for (int i = 0; i < k_lanes; ++i) {
+        for (int i = 0; i < k_lane_chunk; ++i) {
             const float denominator = mx * dx[i] + my * dy[i] + mz * dz[i];
             const float t =
                 ((qx - ox[i]) * mx + (qy - oy[i]) * my + (qz - oz[i]) * mz) / denominator;
@@ -185,6 +190,12 @@ constexpr int k_lanes = k_primary_block_rays;
             blocked[i] = hit ? 1 : blocked[i];
         }
     }
+}
+
+/// shadow_chunk for every chunk of lanes that holds one of the first `count`.
+[[maybe_unused]] void shadow_kernel(const PrimaryShadowLight& light, const PrimaryAnalytic& a,
+                                    int count, ShadowLanes& lanes) {
+    for (int base = 0; base < count; base += k_lane_chunk) shadow_chunk(light, a, lanes, base);
 }
 
 }  // namespace

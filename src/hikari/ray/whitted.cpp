@@ -200,31 +200,36 @@ class WaveTracer {
             const SurfaceHit& hit = block.hits[i];
             const int k = count++;
             hit_of[k] = i;
-            lanes.active[k] = 1;
+            detail::ShadeChunk& lane = lanes.chunk(k);
+            const int j = detail::lane_in_chunk(k);
+            lane.active[j] = 1;
             for (int a = 0; a < 3; ++a) {
-                lanes.direction[a][k] = block.rays[i].direction[a];
-                lanes.position[a][k] = hit.position[a];
-                lanes.geometric_normal[a][k] = hit.geometric_normal[a];
-                lanes.shading_normal[a][k] = hit.shading_normal[a];
+                lane.direction[a][j] = block.rays[i].direction[a];
+                lane.position[a][j] = hit.position[a];
+                lane.geometric_normal[a][j] = hit.geometric_normal[a];
+                lane.shading_normal[a][j] = hit.shading_normal[a];
             }
-            lanes.material[k] = static_cast<int32_t>(hit.material);
-            lanes.lit[k] = block.lit[i];
+            lane.material[j] = static_cast<int32_t>(hit.material);
+            lane.lit[j] = block.lit[i];
         }
         if (count == 0) return;
-        // The rest of the lanes are left as they are, only marked inactive: the kernel runs all
-        // k_shade_lanes (a constant trip count is what lets g++ vectorise its loops) and
-        // ignores their values.
-        for (int k = count; k < detail::k_shade_lanes; ++k)
-            lanes.active[k] = 0, lanes.material[k] = 0;
+        // The rest of the last chunk's lanes are left as they are, only marked inactive: the
+        // kernel runs whole chunks of lanes and ignores their values.
+        for (int k = count; k < lanes_for(count); ++k) {
+            const int j = detail::lane_in_chunk(k);
+            lanes.chunk(k).active[j] = 0, lanes.chunk(k).material[j] = 0;
+        }
         const bool spawn = segment < m_ctx.max_depth;
-        m_shader.shade(lanes, spawn);
+        m_shader.shade(lanes, count, spawn);
         for (int k = 0; k < count; ++k) {
             const int i = hit_of[k];
             const Ray& ray = block.rays[i];
             PathNode& node = nodes[i];
-            m_ctx.rays += lanes.shadow_rays[k];
-            node.colour = {lanes.colour[0][k], lanes.colour[1][k], lanes.colour[2][k]};
-            if (lanes.scalar_specular[k]) {
+            const detail::ShadeChunk& lane = lanes.chunk(k);
+            const int j = detail::lane_in_chunk(k);
+            m_ctx.rays += lane.shadow_rays[j];
+            node.colour = {lane.colour[0][j], lane.colour[1][j], lane.colour[2][j]};
+            if (lane.scalar_specular[j]) {
                 // A Phong exponent the lanes cannot raise exactly: the scalar code shades it
                 // (its ray count is already in shadow_rays).
                 TraceContext scalar = m_ctx;
@@ -232,28 +237,27 @@ class WaveTracer {
                 Material storage;
                 const Material& m =
                     material_at(m_ctx.scene.materials[hit.material], hit.position, storage);
-                node.colour =
-                    shade_local(scalar, m, hit.position,
-                                {lanes.normal[0][k], lanes.normal[1][k], lanes.normal[2][k]},
-                                {lanes.facing_normal[0][k], lanes.facing_normal[1][k],
-                                 lanes.facing_normal[2][k]},
-                                -ray.direction, &block.lit[i]);
+                node.colour = shade_local(
+                    scalar, m, hit.position,
+                    {lane.normal[0][j], lane.normal[1][j], lane.normal[2][j]},
+                    {lane.facing_normal[0][j], lane.facing_normal[1][j], lane.facing_normal[2][j]},
+                    -ray.direction, &block.lit[i]);
             }
             if (!spawn) continue;
             // The next level's rays, in the order shade() traces them: mirror, then refracted.
-            const auto spawn_ray = [&](const float(&origin)[3][detail::k_shade_lanes],
-                                       const float(&direction)[3][detail::k_shade_lanes]) {
-                m_s.next_rays.push_back({{origin[0][k], origin[1][k], origin[2][k]},
-                                         {direction[0][k], direction[1][k], direction[2][k]}});
+            const auto spawn_ray = [&](const float(&origin)[3][k_lane_chunk],
+                                       const float(&direction)[3][k_lane_chunk]) {
+                m_s.next_rays.push_back({{origin[0][j], origin[1][j], origin[2][j]},
+                                         {direction[0][j], direction[1][j], direction[2][j]}});
                 return static_cast<int32_t>(m_s.next_rays.size() - 1);
             };
-            if (lanes.mirror_weight[k] > 0.0f) {
-                node.mirror = spawn_ray(lanes.mirror_origin, lanes.mirror_direction);
-                node.mirror_weight = lanes.mirror_weight[k];
+            if (lane.mirror_weight[j] > 0.0f) {
+                node.mirror = spawn_ray(lane.mirror_origin, lane.mirror_direction);
+                node.mirror_weight = lane.mirror_weight[j];
             }
-            if (lanes.refract_weight[k] > 0.0f) {
-                node.refract = spawn_ray(lanes.refract_origin, lanes.refract_direction);
-                node.refract_weight = lanes.refract_weight[k];
+            if (lane.refract_weight[j] > 0.0f) {
+                node.refract = spawn_ray(lane.refract_origin, lane.refract_direction);
+                node.refract_weight = lane.refract_weight[j];
             }
         }
     }

@@ -10,8 +10,8 @@ namespace hikari {
 
 namespace detail {
 
-void shade_lanes_portable(const ShadeScene& scene, int spawn, ShadeLanes& lanes) {
-    shade_kernel(scene, spawn, lanes);
+void shade_lanes_portable(const ShadeScene& scene, int spawn, int count, ShadeLanes& lanes) {
+    shade_kernel(scene, spawn, count, lanes);
 }
 
 }  // namespace detail
@@ -101,16 +101,16 @@ LaneShader::LaneShader(const Scene& scene, SimdLevel level) : m_level(level) {
     for (int a = 0; a < 3; ++a) m_scene.ambient[a] = scene.ambient[a];
 }
 
-void LaneShader::shade(detail::ShadeLanes& lanes, bool spawn) const {
+void LaneShader::shade(detail::ShadeLanes& lanes, int count, bool spawn) const {
     switch (m_level) {
         case SimdLevel::avx512:
-            detail::shade_lanes_avx512(m_scene, spawn ? 1 : 0, lanes);
+            detail::shade_lanes_avx512(m_scene, spawn ? 1 : 0, count, lanes);
             break;
         case SimdLevel::avx2:
-            detail::shade_lanes_avx2(m_scene, spawn ? 1 : 0, lanes);
+            detail::shade_lanes_avx2(m_scene, spawn ? 1 : 0, count, lanes);
             break;
         default:
-            detail::shade_lanes_portable(m_scene, spawn ? 1 : 0, lanes);
+            detail::shade_lanes_portable(m_scene, spawn ? 1 : 0, count, lanes);
     }
 }
 

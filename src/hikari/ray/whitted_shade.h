@@ -24,6 +24,7 @@ namespace detail {
 
 /// Lanes per shading call: one block of rays (ray/primary_hits.h).
 inline constexpr int k_shade_lanes = k_primary_block_rays;
+static_assert(k_shade_lanes % k_lane_chunk == 0);
 
 /// The scene's materials as the lanes read them: structure-of-arrays, indexed by material.
 struct ShadeMaterials {
@@ -61,59 +62,72 @@ struct ShadeScene {
     int32_t exponent_bits;  ///< bit length of the largest integer exponent (squaring steps)
 };
 
-/// The hits of one block, structure-of-arrays, and what shading them gives.
-struct alignas(64) ShadeLanes {
+/// The hits of k_lane_chunk lanes, structure-of-arrays, and what shading them gives.
+struct alignas(64) ShadeChunk {
     // In: lane i is one ray and its nearest hit.
-    float direction[3][k_shade_lanes];         ///< unit direction of the incoming ray
-    float position[3][k_shade_lanes];          ///< hit point
-    float geometric_normal[3][k_shade_lanes];  ///< as SurfaceHit has it (not turned)
-    float shading_normal[3][k_shade_lanes];
-    int32_t material[k_shade_lanes];
-    int32_t lit[k_shade_lanes];  ///< bit l: the shadow ray toward light l is unblocked
+    float direction[3][k_lane_chunk];         ///< unit direction of the incoming ray
+    float position[3][k_lane_chunk];          ///< hit point
+    float geometric_normal[3][k_lane_chunk];  ///< as SurfaceHit has it (not turned)
+    float shading_normal[3][k_lane_chunk];
+    int32_t material[k_lane_chunk];
+    int32_t lit[k_lane_chunk];  ///< bit l: the shadow ray toward light l is unblocked
     /// 0: no hit in this lane; its outputs are not read and its other inputs may be anything
     /// (NaN included) but its material must be a valid index.
-    int32_t active[k_shade_lanes];
+    int32_t active[k_lane_chunk];
 
     // Out.
-    float colour[3][k_shade_lanes];          ///< local illumination (ambient + lit lights)
-    int32_t shadow_rays[k_shade_lanes];      ///< lights facing the point (shadow rays cast)
-    int32_t scalar_specular[k_shade_lanes];  ///< 1: colour must be recomputed by the scalar code
-    float normal[3][k_shade_lanes];          ///< shading normal turned toward the ray
-    float facing_normal[3][k_shade_lanes];   ///< geometric normal turned toward the ray
+    float colour[3][k_lane_chunk];          ///< local illumination (ambient + lit lights)
+    int32_t shadow_rays[k_lane_chunk];      ///< lights facing the point (shadow rays cast)
+    int32_t scalar_specular[k_lane_chunk];  ///< 1: colour must be recomputed by the scalar code
+    float normal[3][k_lane_chunk];          ///< shading normal turned toward the ray
+    float facing_normal[3][k_lane_chunk];   ///< geometric normal turned toward the ray
     /// Only with spawning: weight of the mirror and refracted rays (0: no such ray) and the rays.
-    float mirror_weight[k_shade_lanes];
-    float refract_weight[k_shade_lanes];
-    float mirror_origin[3][k_shade_lanes];
-    float mirror_direction[3][k_shade_lanes];
-    float refract_origin[3][k_shade_lanes];
-    float refract_direction[3][k_shade_lanes];
+    float mirror_weight[k_lane_chunk];
+    float refract_weight[k_lane_chunk];
+    float mirror_origin[3][k_lane_chunk];
+    float mirror_direction[3][k_lane_chunk];
+    float refract_origin[3][k_lane_chunk];
+    float refract_direction[3][k_lane_chunk];
 
     // Scratch between the kernel's loops: each lane's material, then what shading it needs.
-    float ka[3][k_shade_lanes];
-    float kd[3][k_shade_lanes];
-    float ks[3][k_shade_lanes];
-    float offset[3][k_shade_lanes];
-    float color_a[3][k_shade_lanes];
-    float color_b[3][k_shade_lanes];
-    float inverse_size[k_shade_lanes];
-    float reflectivity[k_shade_lanes];
-    float transparency[k_shade_lanes];
-    float ior[k_shade_lanes];
-    int32_t textured[k_shade_lanes];
-    int32_t exponent[k_shade_lanes];
-    float to_light[3][k_shade_lanes];
-    float irradiance[3][k_shade_lanes];
-    float cos_gamma[k_shade_lanes];
-    float power[k_shade_lanes];
-    float base[k_shade_lanes];
-    int32_t entering[k_shade_lanes];
+    float ka[3][k_lane_chunk];
+    float kd[3][k_lane_chunk];
+    float ks[3][k_lane_chunk];
+    float offset[3][k_lane_chunk];
+    float color_a[3][k_lane_chunk];
+    float color_b[3][k_lane_chunk];
+    float inverse_size[k_lane_chunk];
+    float reflectivity[k_lane_chunk];
+    float transparency[k_lane_chunk];
+    float ior[k_lane_chunk];
+    int32_t textured[k_lane_chunk];
+    int32_t exponent[k_lane_chunk];
+    float to_light[3][k_lane_chunk];
+    float irradiance[3][k_lane_chunk];
+    float cos_gamma[k_lane_chunk];
+    float power[k_lane_chunk];
+    float squared[k_lane_chunk];  ///< cos γ squared b times (phong_power)
+    int32_t entering[k_lane_chunk];
 };
 
-/// The shading kernel for each SIMD level: fills the outputs of every active lane, and the
-/// secondary rays when `spawn` is nonzero.
-void shade_lanes_portable(const ShadeScene& scene, int spawn, ShadeLanes& lanes);
-void shade_lanes_avx2(const ShadeScene& scene, int spawn, ShadeLanes& lanes);
-void shade_lanes_avx512(const ShadeScene& scene, int spawn, ShadeLanes& lanes);
+/// The hits of one block in chunks: lane k is entry k % k_lane_chunk of chunk k / k_lane_chunk
+/// (a chunk's arrays at constant offsets from one another are what g++ vectorises).
+struct ShadeLanes {
+    ShadeChunk chunks[k_shade_lanes / k_lane_chunk];
+
+    ShadeChunk& chunk(int lane) { return chunks[lane / k_lane_chunk]; }
+    const ShadeChunk& chunk(int lane) const { return chunks[lane / k_lane_chunk]; }
+};
+
+/// Lane k's index inside its chunk.
+constexpr int lane_in_chunk(int lane) { return lane % k_lane_chunk; }
+
+/// The shading kernel for each SIMD level: fills the outputs of every active lane among the
+/// chunks of k_lane_chunk lanes that hold the first `count`, and the secondary rays when `spawn`
+/// is nonzero.
+void shade_lanes_portable(const ShadeScene& scene, int spawn, int count, ShadeLanes& lanes);
+void shade_lanes_avx2(const ShadeScene& scene, int spawn, int count, ShadeLanes& lanes);
+void shade_lanes_avx512(const ShadeScene& scene, int spawn, int count, ShadeLanes& lanes);
 
 }  // namespace detail
 
@@ -127,8 +141,10 @@ class LaneShader {
     /// Whether the lanes can shade this scene (at most k_max_block_lights lights); else use the
     /// scalar code.
     bool supported() const { return m_supported; }
-    /// Shades every active lane of `lanes` (and spawns its secondary rays when `spawn`).
-    void shade(detail::ShadeLanes& lanes, bool spawn) const;
+    /// Shades every active lane among the first round_up(count, k_lane_chunk) of `lanes` (and
+    /// spawns their secondary rays when `spawn`); the lanes past `count` in the last chunk must
+    /// be marked inactive.
+    void shade(detail::ShadeLanes& lanes, int count, bool spawn) const;
 
   private:
     std::vector<float> m_floats;  ///< backing store of the material columns

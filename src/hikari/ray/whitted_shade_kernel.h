@@ -26,7 +26,7 @@ namespace {
 /// sample_light for every lane: the unit direction toward the light and I0 after falloff (a
 /// template per kind of light, as GCC does not vectorise selects on a loop-invariant flag).
 template <bool Directional, bool InverseSquare>
-void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
+void sample_light_lanes(const ShadeLight& light, ShadeChunk& lanes) {
     const float* __restrict px = lanes.position[0];
     const float* __restrict py = lanes.position[1];
     const float* __restrict pz = lanes.position[2];
@@ -39,7 +39,7 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
     const float cx = light.position[0], cy = light.position[1], cz = light.position[2];
     const float tx = light.to_light[0], ty = light.to_light[1], tz = light.to_light[2];
     const float i0r = light.intensity[0], i0g = light.intensity[1], i0b = light.intensity[2];
-    for (int i = 0; i < k_shade_lanes; ++i) {
+    for (int i = 0; i < k_lane_chunk; ++i) {
         if constexpr (Directional) {
             lx[i] = tx, ly[i] = ty, lz[i] = tz;
             ir[i] = i0r, ig[i] = i0g, ib[i] = i0b;
@@ -59,7 +59,9 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
     }
 }
 
-[[maybe_unused]] void shade_kernel(const ShadeScene& scene, int spawn, ShadeLanes& lanes) {
+/// One chunk of lanes (the struct's constant offsets and constant trip counts are what lets g++
+/// vectorise every arithmetic loop below).
+inline void shade_chunk(const ShadeScene& scene, int spawn, ShadeChunk& lanes) {
     // Every lane array through a restrict pointer: they never overlap, and g++ needs telling.
     const ShadeMaterials mt = scene.materials;
     auto* __restrict dx = lanes.direction[0];
@@ -89,7 +91,7 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
     auto* __restrict lit_bits = lanes.lit;
 
     // 1. shade(): normals turned toward the ray.
-    for (int i = 0; i < k_shade_lanes; ++i) {
+    for (int i = 0; i < k_lane_chunk; ++i) {
         const float gx = lanes.geometric_normal[0][i], gy = lanes.geometric_normal[1][i],
                     gz = lanes.geometric_normal[2][i];
         const float sx = lanes.shading_normal[0][i], sy = lanes.shading_normal[1][i],
@@ -101,57 +103,109 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
         nx[i] = turned_away ? ax : bx, ny[i] = turned_away ? ay : by, nz[i] = turned_away ? az : bz;
         fx[i] = ax, fy[i] = ay, fz[i] = az;
         entering[i] = enter ? 1 : 0;
+        shadow_rays[i] = 0;
         material[i] = active[i] ? material[i] : 0;  // lanes without a hit read material 0
     }
-    // The lanes' material parameters, gathered once (GCC's vectoriser gives up on gathers
-    // inside the arithmetic loops below).
+    // The lanes' material parameters: for each material present in the chunk (usually one or
+    // two), its values broadcast into the lanes that hold it. GCC vectorises selects like these
+    // but not table lookups (it emulates gathers one lane at a time, which stalls the vector
+    // loads that read the result).
     auto* __restrict ks_r = lanes.ks[0];
     auto* __restrict ks_g = lanes.ks[1];
     auto* __restrict ks_b = lanes.ks[2];
     auto* __restrict exponent = lanes.exponent;
-    for (int i = 0; i < k_shade_lanes; ++i) {
-        const int32_t m = material[i];
+    int32_t present[k_lane_chunk];
+    int32_t present_count = 0;
+    for (int i = 0; i < k_lane_chunk; ++i) {
+        bool seen = false;
+        for (int32_t k = 0; k < present_count; ++k) seen = seen || present[k] == material[i];
+        if (!seen) present[present_count++] = material[i];
+    }
+    for (int32_t k = 0; k < present_count; ++k) {
+        const int32_t m = present[k];
+        float column[3][6];
         for (int c = 0; c < 3; ++c) {
-            lanes.ka[c][i] = mt.ka[c][m];
-            lanes.kd[c][i] = mt.kd[c][m];
-            lanes.ks[c][i] = mt.ks[c][m];
-            lanes.offset[c][i] = mt.offset[c][m];
-            lanes.color_a[c][i] = mt.color_a[c][m];
-            lanes.color_b[c][i] = mt.color_b[c][m];
+            column[c][0] = mt.ka[c][m], column[c][1] = mt.kd[c][m], column[c][2] = mt.ks[c][m];
+            column[c][3] = mt.offset[c][m], column[c][4] = mt.color_a[c][m];
+            column[c][5] = mt.color_b[c][m];
         }
-        lanes.inverse_size[i] = mt.inverse_size[m];
-        lanes.textured[i] = mt.textured[m];
-        exponent[i] = mt.exponent[m];
-        lanes.reflectivity[i] = mt.reflectivity[m];
-        lanes.transparency[i] = mt.transparency[m];
-        lanes.ior[i] = mt.ior[m];
+        const float inverse_size = mt.inverse_size[m], reflectivity = mt.reflectivity[m],
+                    transparency = mt.transparency[m], ior = mt.ior[m];
+        const int32_t textured = mt.textured[m], power = mt.exponent[m];
+        for (int c = 0; c < 3; ++c) {
+            float* __restrict ka = lanes.ka[c];
+            float* __restrict kd = lanes.kd[c];
+            float* __restrict ks = lanes.ks[c];
+            float* __restrict offset = lanes.offset[c];
+            float* __restrict color_a = lanes.color_a[c];
+            float* __restrict color_b = lanes.color_b[c];
+            const float ka_m = column[c][0], kd_m = column[c][1], ks_m = column[c][2];
+            const float offset_m = column[c][3], color_a_m = column[c][4], color_b_m = column[c][5];
+            for (int i = 0; i < k_lane_chunk; ++i) {
+                const bool mine = material[i] == m;
+                ka[i] = mine ? ka_m : ka[i];
+                kd[i] = mine ? kd_m : kd[i];
+                ks[i] = mine ? ks_m : ks[i];
+                offset[i] = mine ? offset_m : offset[i];
+                color_a[i] = mine ? color_a_m : color_a[i];
+                color_b[i] = mine ? color_b_m : color_b[i];
+            }
+        }
+        auto* __restrict inverse_sizes = lanes.inverse_size;
+        auto* __restrict reflectivities = lanes.reflectivity;
+        auto* __restrict transparencies = lanes.transparency;
+        auto* __restrict iors = lanes.ior;
+        auto* __restrict textured_flags = lanes.textured;
+        for (int i = 0; i < k_lane_chunk; ++i) {
+            const bool mine = material[i] == m;
+            inverse_sizes[i] = mine ? inverse_size : inverse_sizes[i];
+            reflectivities[i] = mine ? reflectivity : reflectivities[i];
+            transparencies[i] = mine ? transparency : transparencies[i];
+            iors[i] = mine ? ior : iors[i];
+            textured_flags[i] = mine ? textured : textured_flags[i];
+            exponent[i] = mine ? power : exponent[i];
+        }
     }
     // textured(): ka and kd at the point (CheckerTexture::at: q = (p + offset) / size, then the
     // parity of the floors' sum); shade_ambient().
     const float ambient_r = scene.ambient[0], ambient_g = scene.ambient[1],
                 ambient_b = scene.ambient[2];
-    for (int i = 0; i < k_shade_lanes; ++i) {
-        const float inverse_size = lanes.inverse_size[i];
-        const float qx = (px[i] + lanes.offset[0][i]) * inverse_size;
-        const float qy = (py[i] + lanes.offset[1][i]) * inverse_size;
-        const float qz = (pz[i] + lanes.offset[2][i]) * inverse_size;
+    auto* __restrict scalar_specular = lanes.scalar_specular;
+    const float* __restrict check_a_r = lanes.color_a[0];
+    const float* __restrict check_a_g = lanes.color_a[1];
+    const float* __restrict check_a_b = lanes.color_a[2];
+    const float* __restrict check_b_r = lanes.color_b[0];
+    const float* __restrict check_b_g = lanes.color_b[1];
+    const float* __restrict check_b_b = lanes.color_b[2];
+    const auto* __restrict inverse_sizes = lanes.inverse_size;
+    const float* __restrict ka_in_r = lanes.ka[0];
+    const float* __restrict ka_in_g = lanes.ka[1];
+    const float* __restrict ka_in_b = lanes.ka[2];
+    const float* __restrict offset_x = lanes.offset[0];
+    const float* __restrict offset_y = lanes.offset[1];
+    const float* __restrict offset_z = lanes.offset[2];
+    const auto* __restrict textured_flags = lanes.textured;
+    for (int i = 0; i < k_lane_chunk; ++i) {
+        const float inverse_size = inverse_sizes[i];
+        const float qx = (px[i] + offset_x[i]) * inverse_size;
+        const float qy = (py[i] + offset_y[i]) * inverse_size;
+        const float qz = (pz[i] + offset_z[i]) * inverse_size;
         const bool odd =
             (floor_parity_lane(qx) ^ floor_parity_lane(qy) ^ floor_parity_lane(qz)) != 0;
-        const bool textured = lanes.textured[i] != 0;
-        const float tr = odd ? lanes.color_b[0][i] : lanes.color_a[0][i];
-        const float tg = odd ? lanes.color_b[1][i] : lanes.color_a[1][i];
-        const float tb = odd ? lanes.color_b[2][i] : lanes.color_a[2][i];
-        const float ka_r = textured ? lanes.ka[0][i] * tr : lanes.ka[0][i];
-        const float ka_g = textured ? lanes.ka[1][i] * tg : lanes.ka[1][i];
-        const float ka_b = textured ? lanes.ka[2][i] * tb : lanes.ka[2][i];
+        const bool textured = textured_flags[i] != 0;
+        const float tr = odd ? check_b_r[i] : check_a_r[i];
+        const float tg = odd ? check_b_g[i] : check_a_g[i];
+        const float tb = odd ? check_b_b[i] : check_a_b[i];
+        const float ka_r = textured ? ka_in_r[i] * tr : ka_in_r[i];
+        const float ka_g = textured ? ka_in_g[i] * tg : ka_in_g[i];
+        const float ka_b = textured ? ka_in_b[i] * tb : ka_in_b[i];
         kd_r[i] = textured ? kd_r[i] * tr : kd_r[i];
         kd_g[i] = textured ? kd_g[i] * tg : kd_g[i];
         kd_b[i] = textured ? kd_b[i] * tb : kd_b[i];
         red[i] = ka_r * ambient_r;
         green[i] = ka_g * ambient_g;
         blue[i] = ka_b * ambient_b;
-        shadow_rays[i] = 0;
-        lanes.scalar_specular[i] = active[i] && exponent[i] < 0 ? 1 : 0;
+        scalar_specular[i] = active[i] && exponent[i] < 0 ? 1 : 0;
     }
 
     // 2. shade_local(): each light that faces the point and whose shadow ray was found unblocked
@@ -171,23 +225,23 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
         else
             sample_light_lanes<false, false>(light, lanes);
         // The highlight's cos γ = R·V with R = reflect(-L, N) and V = -direction.
-        for (int i = 0; i < k_shade_lanes; ++i) {
+        for (int i = 0; i < k_lane_chunk; ++i) {
             const float a = 2.0f * -(-lx[i] * nx[i] + -ly[i] * ny[i] + -lz[i] * nz[i]);
             const float rx = -lx[i] + nx[i] * a, ry = -ly[i] + ny[i] * a, rz = -lz[i] + nz[i] * a;
             cos_gamma[i] = rx * -dx[i] + ry * -dy[i] + rz * -dz[i];
             power[i] = 1.0f;
         }
         // phong_power by repeated squaring: the exponent's bits in the scalar order.
-        for (int i = 0; i < k_shade_lanes; ++i) lanes.base[i] = cos_gamma[i];
+        auto* __restrict squared = lanes.squared;
+        for (int i = 0; i < k_lane_chunk; ++i) squared[i] = cos_gamma[i];
         for (int32_t b = 0; b < scene.exponent_bits; ++b) {
-            auto* __restrict base = lanes.base;
-            for (int i = 0; i < k_shade_lanes; ++i) {
-                power[i] = (exponent[i] >> b) & 1 ? power[i] * base[i] : power[i];
-                base[i] = base[i] * base[i];
+            for (int i = 0; i < k_lane_chunk; ++i) {
+                power[i] = (exponent[i] >> b) & 1 ? power[i] * squared[i] : power[i];
+                squared[i] = squared[i] * squared[i];
             }
         }
         const int32_t bit = 1 << l;
-        for (int i = 0; i < k_shade_lanes; ++i) {
+        for (int i = 0; i < k_lane_chunk; ++i) {
             const float cos_alpha = nx[i] * lx[i] + ny[i] * ly[i] + nz[i] * lz[i];
             // Bitwise & rather than &&: no branches, so GCC can if-convert the loop.
             const bool facing = (active[i] != 0) & !(cos_alpha <= 0.0f);
@@ -206,7 +260,7 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
 
     // 3. shade()'s secondary rays: the mirror ray, the refracted ray (refract(), Snell's law)
     // and POV-Ray's total-internal-reflection rule, each from offset_ray_origin.
-    for (int i = 0; i < k_shade_lanes; ++i) {
+    for (int i = 0; i < k_lane_chunk; ++i) {
         const float a = 2.0f * -(dx[i] * nx[i] + dy[i] * ny[i] + dz[i] * nz[i]);
         lanes.mirror_direction[0][i] = dx[i] + nx[i] * a;
         lanes.mirror_direction[1][i] = dy[i] + ny[i] * a;
@@ -215,7 +269,7 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
         lanes.mirror_origin[1][i] = offset_origin_lane(py[i], fy[i]);
         lanes.mirror_origin[2][i] = offset_origin_lane(pz[i], fz[i]);
     }
-    for (int i = 0; i < k_shade_lanes; ++i) {
+    for (int i = 0; i < k_lane_chunk; ++i) {
         const float ior = lanes.ior[i];
         const float eta = entering[i] ? 1.0f / ior : ior;
         const float cos_i = -(dx[i] * nx[i] + dy[i] * ny[i] + dz[i] * nz[i]);
@@ -241,6 +295,12 @@ void sample_light_lanes(const ShadeLight& light, ShadeLanes& lanes) {
         lanes.mirror_weight[i] = active[i] ? mirror_weight : 0.0f;
         lanes.refract_weight[i] = transparent && !total_internal_reflection ? transparency : 0.0f;
     }
+}
+
+/// Every chunk that holds one of the first `count` lanes.
+[[maybe_unused]] void shade_kernel(const ShadeScene& scene, int spawn, int count,
+                                   ShadeLanes& lanes) {
+    for (int c = 0; c * k_lane_chunk < count; ++c) shade_chunk(scene, spawn, lanes.chunks[c]);
 }
 
 }  // namespace
