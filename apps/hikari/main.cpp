@@ -18,6 +18,7 @@
 #include "hikari/bench/bench_runner.h"
 #include "hikari/core/error.h"
 #include "hikari/io/atomic_file.h"
+#include "hikari/io/image_format.h"
 #include "hikari/io/image_write.h"
 #include "hikari/io/scene_json.h"
 #include "hikari/render/methods.h"
@@ -207,6 +208,9 @@ int run_render(const RenderOptions& o) {
     settings.cull_back_faces = o.cull == "back";
     settings.control = &g_control;
     settings.aov_buffers = o.aov != "color";
+    const std::optional<ImageFormat> format = image_format_from_extension(output);
+    settings.srgb8_output =
+        o.aov == "color" && (format == ImageFormat::Png || format == ImageFormat::Ppm);
 
     std::optional<tbb::global_control> thread_limit;
     if (o.threads > 0)
@@ -220,10 +224,12 @@ int run_render(const RenderOptions& o) {
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     const int width = fb.width(), height = fb.height();
-    const Image image = aov_image(std::move(fb), parse_aov(o.aov));
     g_writing = true;
     if (g_control.cancel.load()) throw Interrupted();
-    write_image(output, image);
+    if (!fb.srgb8.bytes.empty())
+        write_image(output, fb.srgb8);
+    else
+        write_image(output, aov_image(std::move(fb), parse_aov(o.aov)));
     g_writing = false;
     if (!o.quiet)
         fmt::print(stderr, "hikari: wrote {} ({}x{}, {}, {:.3f} s)\n", output, width, height,

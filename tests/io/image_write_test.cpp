@@ -6,6 +6,7 @@
 #include <string>
 
 #include "hikari/core/error.h"
+#include "hikari/core/srgb8_encoder.h"
 #include "temp_dir.h"
 
 namespace hikari {
@@ -89,6 +90,30 @@ TEST(ImageWrite, PngAndExrHaveTheirMagicNumbers) {
     write_image(dir / "a.exr", two_by_two());
     EXPECT_EQ(read_text(dir / "a.png").substr(0, 8), "\x89PNG\r\n\x1a\n");
     EXPECT_EQ(read_text(dir / "a.exr").substr(0, 4), "\x76\x2f\x31\x01");
+}
+
+TEST(ImageWrite, Srgb8ImagesWriteTheSameBytesAsTheLinearImage) {
+    TempDir dir;
+    Image image(37, 70);  // more rows than one PNG band
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            image.at(x, y) = {static_cast<float>(x) / 36.0f, static_cast<float>(y % 9) / 8.0f,
+                              static_cast<float>((x * y) % 5) * 0.3f};
+    const Srgb8Image srgb8 = encode_srgb8(image);
+    for (const char* ext : {".png", ".ppm"}) {
+        write_image(dir / (std::string("linear") + ext), image);
+        write_image(dir / (std::string("srgb8") + ext), srgb8);
+        EXPECT_EQ(read_text(dir / (std::string("linear") + ext)),
+                  read_text(dir / (std::string("srgb8") + ext)))
+            << ext;
+    }
+    // Float formats need the linear image; malformed 8-bit images are refused like float ones.
+    EXPECT_THROW(write_image(dir / "a.pfm", srgb8), InputError);
+    Srgb8Image torn = srgb8;
+    torn.bytes.pop_back();
+    EXPECT_THROW(write_image(dir / "torn.png", torn), InputError);
+    EXPECT_FALSE(std::filesystem::exists(dir / "a.pfm"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "torn.png"));
 }
 
 TEST(ImageWrite, MissingDirectoryLeavesNothingBehind) {

@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "hikari/core/rng.h"
+#include "hikari/core/srgb8_encoder.h"
 #include "hikari/ray/whitted.h"
 #include "test_meshes.h"
 
@@ -203,6 +204,26 @@ TEST(WhittedShade, RandomScenesRenderAsRayAtATime) {
             }
             EXPECT_EQ(counted_lanes.rays_traced.load(), counted_single.rays_traced.load());
         }
+}
+
+TEST(WhittedShade, Srgb8OutputIsTheEncodedLinearRender) {
+    // Lanes (one sample) and the ray-at-a-time path (several): each pixel's colour is encoded as
+    // the PNG writer encodes the float framebuffer.
+    for (int spp : {1, 4}) {
+        SCOPED_TRACE(::testing::Message() << "spp " << spp);
+        const Scene scene = random_scene(3);
+        RenderSettings linear, srgb8;
+        linear.aov_buffers = srgb8.aov_buffers = false;
+        linear.samples_per_pixel = srgb8.samples_per_pixel = spp;
+        srgb8.srgb8_output = true;
+        const Framebuffer a = render_whitted(scene, linear);
+        const Framebuffer b = render_whitted(scene, srgb8);
+        ASSERT_TRUE(a.srgb8.bytes.empty());
+        ASSERT_TRUE(b.color.pixels.empty());
+        ASSERT_EQ(b.width(), a.width());
+        ASSERT_EQ(b.height(), a.height());
+        EXPECT_EQ(encode_srgb8(a.color).bytes, b.srgb8.bytes);
+    }
 }
 
 }  // namespace

@@ -1,7 +1,9 @@
 #pragma once
-// A linear-RGB float image: what methods render into and what io/ writes out.
+// A linear-RGB float image, what methods render into, and its 8-bit sRGB form, what PNG and PPM
+// files hold.
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "hikari/core/huge_page_allocator.h"
@@ -21,6 +23,21 @@ struct Image {
 
     Vec3& at(int x, int y) { return pixels[static_cast<size_t>(y) * width + x]; }
     const Vec3& at(int x, int y) const { return pixels[static_cast<size_t>(y) * width + x]; }
+};
+
+/// Row-major 8-bit sRGB RGB triples, row 0 at the top (linear_to_srgb8 of each channel): a
+/// quarter of the memory of an Image, for renders whose only output is a PNG or PPM file.
+struct Srgb8Image {
+    int width = 0;
+    int height = 0;
+    HugePageVector<uint8_t> bytes;  ///< 3 per pixel
+
+    Srgb8Image() = default;
+    Srgb8Image(int w, int h)
+        : width(w), height(h), bytes(static_cast<size_t>(w) * static_cast<size_t>(h) * 3) {}
+
+    uint8_t* row(int y) { return bytes.data() + static_cast<size_t>(y) * width * 3; }
+    const uint8_t* row(int y) const { return bytes.data() + static_cast<size_t>(y) * width * 3; }
 };
 
 }  // namespace hikari

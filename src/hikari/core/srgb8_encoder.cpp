@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "hikari/core/color.h"
+#include "hikari/core/parallel.h"
 
 namespace hikari {
 
@@ -36,6 +37,16 @@ Srgb8Encoder::Srgb8Encoder() {
         while (code < 255 && first >= m_threshold[code + 1]) ++code;
         m_bucket_start[b] = static_cast<uint8_t>(code);
     }
+}
+
+Srgb8Image encode_srgb8(const Image& image) {
+    const Srgb8Encoder& srgb = Srgb8Encoder::instance();
+    Srgb8Image out(image.width, image.height);
+    hikari::parallel_for(0, image.height, [&](int y) {
+        uint8_t* row = out.row(y);
+        for (int x = 0; x < image.width; ++x) srgb.encode(image.at(x, y), row + 3 * x);
+    });
+    return out;
 }
 
 }  // namespace hikari

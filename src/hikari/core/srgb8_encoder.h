@@ -11,6 +11,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "hikari/core/image.h"
+
 namespace hikari {
 
 class Srgb8Encoder {
@@ -25,6 +27,11 @@ class Srgb8Encoder {
         unsigned code = m_bucket_start[std::bit_cast<uint32_t>(v) >> k_bucket_shift];
         while (v >= m_threshold[code + 1]) ++code;
         return static_cast<uint8_t>(code);
+    }
+
+    /// The three codes of a linear RGB colour, written to out[0..2].
+    void encode(Vec3 c, uint8_t* out) const {
+        out[0] = encode(c.x), out[1] = encode(c.y), out[2] = encode(c.z);
     }
 
     /// The smallest float whose code is `code` (1 ≤ code ≤ 255); threshold(0) is 0.
@@ -42,5 +49,8 @@ class Srgb8Encoder {
     std::array<float, 257> m_threshold{};  ///< [256] = infinity ends every search
     std::array<uint8_t, k_buckets> m_bucket_start{};
 };
+
+/// `image` encoded pixel by pixel (rows in parallel).
+Srgb8Image encode_srgb8(const Image& image);
 
 }  // namespace hikari

@@ -25,25 +25,12 @@ void append(Bytes& out, const std::string& text) {
     out.insert(out.end(), text.begin(), text.end());
 }
 
-/// The image as packed 8-bit sRGB triples, row 0 (top) first.
-Bytes to_srgb8(const Image& image) {
-    const Srgb8Encoder& srgb = Srgb8Encoder::instance();
-    Bytes rgb(image.pixels.size() * 3);
-    for (size_t i = 0; i < image.pixels.size(); ++i) {
-        rgb[3 * i + 0] = srgb.encode(image.pixels[i].x);
-        rgb[3 * i + 1] = srgb.encode(image.pixels[i].y);
-        rgb[3 * i + 2] = srgb.encode(image.pixels[i].z);
-    }
-    return rgb;
-}
-
 /// Netpbm P6 (netpbm.sourceforge.net/doc/ppm.html): maxval 255, one byte per sample, top row first.
-Bytes encode_ppm(const Image& image) {
+Bytes encode_ppm(const Srgb8Image& image) {
     Bytes out;
     append(out,
            "P6\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n255\n");
-    const Bytes rgb = to_srgb8(image);
-    out.insert(out.end(), rgb.begin(), rgb.end());
+    out.insert(out.end(), image.bytes.begin(), image.bytes.end());
     return out;
 }
 
@@ -122,12 +109,25 @@ Bytes encode_exr(const std::filesystem::path& path, const Image& image) {
     return out;
 }
 
-Bytes encode(const std::filesystem::path& path, const Image& image, ImageFormat format) {
+/// The 8-bit formats.
+Bytes encode(const std::filesystem::path& path, const Srgb8Image& image, ImageFormat format) {
     switch (format) {
         case ImageFormat::Png:
             return encode_png(image);
         case ImageFormat::Ppm:
             return encode_ppm(image);
+        default:
+            break;
+    }
+    throw InputError("cannot write " + path.string() +
+                     ": an 8-bit sRGB image can only be written as .png or .ppm");
+}
+
+Bytes encode(const std::filesystem::path& path, const Image& image, ImageFormat format) {
+    switch (format) {
+        case ImageFormat::Png:
+        case ImageFormat::Ppm:
+            return encode(path, encode_srgb8(image), format);
         case ImageFormat::Pfm:
             return encode_pfm(image);
         case ImageFormat::Exr:
@@ -138,6 +138,22 @@ Bytes encode(const std::filesystem::path& path, const Image& image, ImageFormat 
     throw InputError("cannot write " + path.string() + ": unsupported image format");
 }
 
+/// write_image's checks, then the file; `pixels`: how many pixels the image holds.
+template <class AnyImage>
+void write_any_image(const std::filesystem::path& path, const AnyImage& image, size_t pixels) {
+    if (!is_supported_image_extension(path)) {
+        throw InputError("cannot write " + path.string() + ": unknown image extension '" +
+                         path.extension().string() +
+                         "' (supported: " + k_writable_image_extensions + ")");
+    }
+    if (image.width <= 0 || image.height <= 0 ||
+        pixels != static_cast<size_t>(image.width) * static_cast<size_t>(image.height)) {
+        throw InputError("cannot write " + path.string() + ": the image is empty or malformed");
+    }
+    const Bytes bytes = encode(path, image, *image_format_from_extension(path));
+    write_file_atomically(path, bytes);
+}
+
 }  // namespace
 
 bool is_supported_image_extension(const std::filesystem::path& path) {
@@ -146,17 +162,12 @@ bool is_supported_image_extension(const std::filesystem::path& path) {
 }
 
 void write_image(const std::filesystem::path& path, const Image& image) {
-    if (!is_supported_image_extension(path)) {
-        throw InputError("cannot write " + path.string() + ": unknown image extension '" +
-                         path.extension().string() +
-                         "' (supported: " + k_writable_image_extensions + ")");
-    }
-    if (image.width <= 0 || image.height <= 0 ||
-        image.pixels.size() != static_cast<size_t>(image.width) * image.height) {
-        throw InputError("cannot write " + path.string() + ": the image is empty or malformed");
-    }
-    const Bytes bytes = encode(path, image, *image_format_from_extension(path));
-    write_file_atomically(path, bytes);
+    write_any_image(path, image, image.pixels.size());
+}
+
+void write_image(const std::filesystem::path& path, const Srgb8Image& image) {
+    const bool whole_pixels = image.bytes.size() % 3 == 0;
+    write_any_image(path, image, whole_pixels ? image.bytes.size() / 3 : 0);
 }
 
 }  // namespace hikari

@@ -24,4 +24,9 @@ bool is_supported_image_extension(const std::filesystem::path& path);
 /// extension, an empty image, or any OS error.
 void write_image(const std::filesystem::path& path, const Image& image);
 
+/// Writes the 8-bit sRGB `image` to `path`, which must name a `.png` or `.ppm` file (the same
+/// bytes as write_image of the linear image it encodes). Throws InputError as write_image does,
+/// and for a float format.
+void write_image(const std::filesystem::path& path, const Srgb8Image& image);
+
 }  // namespace hikari

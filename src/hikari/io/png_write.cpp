@@ -10,7 +10,6 @@
 #include <string_view>
 
 #include "hikari/core/parallel.h"
-#include "hikari/core/srgb8_encoder.h"
 #include "hikari/io/deflate_runs.h"
 
 namespace hikari {
@@ -85,35 +84,25 @@ void filter_row(const uint8_t* row, const uint8_t* prev, size_t n, uint8_t* scra
     std::memcpy(out + 1, best, n);
 }
 
-/// One band of rows [y0, y1), encoded: sRGB, filtered, compressed.
+/// One band of rows [y0, y1), encoded: filtered, compressed.
 struct Band {
     Bytes deflated;      ///< this band's DEFLATE piece
     uint32_t adler = 1;  ///< Adler-32 of the band's filtered bytes
     size_t filtered_size = 0;
 };
 
-Band encode_band(const Image& image, int y0, int y1, bool last) {
-    const Srgb8Encoder& srgb = Srgb8Encoder::instance();
+Band encode_band(const Srgb8Image& image, int y0, int y1, bool last) {
     const size_t n = static_cast<size_t>(image.width) * 3;
-    // The row above the band too: Up and Paeth predict from it.
-    std::vector<uint8_t> rgb(n * static_cast<size_t>(y1 - y0 + 1), 0);
-    for (int y = std::max(0, y0 - 1); y < y1; ++y) {
-        uint8_t* out = rgb.data() + n * static_cast<size_t>(y - y0 + 1);
-        const Vec3* in = &image.pixels[static_cast<size_t>(y) * image.width];
-        for (int x = 0; x < image.width; ++x) {
-            out[3 * x + 0] = srgb.encode(in[x].x);
-            out[3 * x + 1] = srgb.encode(in[x].y);
-            out[3 * x + 2] = srgb.encode(in[x].z);
-        }
-    }
+    const std::vector<uint8_t> zeros(n, 0);  // the row above row 0
     Band band;
     band.filtered_size = (n + 1) * static_cast<size_t>(y1 - y0);
     Bytes filtered(band.filtered_size);
     std::vector<uint8_t> scratch(3 * n);
     for (int y = y0; y < y1; ++y) {
-        const size_t k = static_cast<size_t>(y - y0);
-        filter_row(rgb.data() + n * (k + 1), rgb.data() + n * k, n, scratch.data(),
-                   filtered.data() + (n + 1) * k);
+        // Up and Paeth predict from the row above, also across the band's top edge.
+        const uint8_t* above = y > 0 ? image.row(y - 1) : zeros.data();
+        filter_row(image.row(y), above, n, scratch.data(),
+                   filtered.data() + (n + 1) * static_cast<size_t>(y - y0));
     }
     band.adler =
         static_cast<uint32_t>(adler32(1L, filtered.data(), static_cast<uInt>(filtered.size())));
@@ -123,7 +112,7 @@ Band encode_band(const Image& image, int y0, int y1, bool last) {
 
 }  // namespace
 
-Bytes encode_png(const Image& image) {
+Bytes encode_png(const Srgb8Image& image) {
     const int band_count = (image.height + k_band_rows - 1) / k_band_rows;
     std::vector<Band> bands(static_cast<size_t>(band_count));
     hikari::parallel_for(0, band_count, [&](int b) {

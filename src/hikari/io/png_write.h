@@ -1,6 +1,6 @@
 #pragma once
-// A PNG encoder (ISO/IEC 15948) built for speed on renders: rows are sRGB-encoded, filtered and
-// compressed in independent bands, in parallel, each band its own DEFLATE piece and IDAT chunk.
+// A PNG encoder (ISO/IEC 15948) built for speed on renders: rows are filtered and compressed in
+// independent bands, in parallel, each band its own DEFLATE piece and IDAT chunk.
 
 #include <cstdint>
 #include <vector>
@@ -9,8 +9,8 @@
 
 namespace hikari {
 
-/// The linear-RGB `image` (non-empty) as the bytes of an 8-bit RGB PNG file, sRGB-encoded as
-/// linear_to_srgb8() does (clamped to [0, 1]). The bytes do not depend on the thread count.
-std::vector<uint8_t> encode_png(const Image& image);
+/// The sRGB `image` (non-empty) as the bytes of an 8-bit RGB PNG file. The bytes do not depend
+/// on the thread count.
+std::vector<uint8_t> encode_png(const Srgb8Image& image);
 
 }  // namespace hikari

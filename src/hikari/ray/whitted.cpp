@@ -293,7 +293,8 @@ void strata(int n, int& cols, int& rows) {
 
 Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
     const Camera& cam = scene.camera;
-    Framebuffer fb(cam.width, cam.height, scene.background, settings.aov_buffers);
+    Framebuffer fb(cam.width, cam.height, scene.background, settings.aov_buffers,
+                   settings.srgb8_output && !settings.aov_buffers);
     const SceneIntersector intersector(scene);
     const TraceContext shared{scene, intersector, settings.max_depth};
     if (RenderControl* control = settings.control) {
@@ -339,8 +340,8 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
                 });
             for (int y = tile.y0; y < tile.y1; ++y)
                 for (int x = tile.x0; x < tile.x1; ++x)
-                    fb.color.pixels[static_cast<size_t>(y) * cam.width + x] =
-                        colours[(y - tile.y0) * k_primary_block + (x - tile.x0)].colour;
+                    fb.set_color(static_cast<size_t>(y) * cam.width + x,
+                                 colours[(y - tile.y0) * k_primary_block + (x - tile.x0)].colour);
             if (settings.control) settings.control->rays_traced += ctx.rays;
             return;
         }
@@ -368,7 +369,7 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
                     }
                     sum = sum / static_cast<float>(spp);
                 }
-                fb.color.pixels[i] = sum;
+                fb.set_color(i, sum);
                 store_aovs(i, centre, first);
             }
         if (settings.control) settings.control->rays_traced += ctx.rays;

@@ -1,5 +1,6 @@
 #include "hikari/render/framebuffer.h"
 
+#include <cstring>
 #include <stdexcept>
 #include <utility>
 
@@ -7,16 +8,31 @@
 
 namespace hikari {
 
-Framebuffer::Framebuffer(int width, int height, Vec3 background, bool aov_buffers)
-    : color(width, height, background) {
+Framebuffer::Framebuffer(int width, int height, Vec3 background, bool aov_buffers,
+                         bool srgb8_output) {
+    if (srgb8_output) {
+        srgb8 = Srgb8Image(width, height);
+        if (height > 0) {
+            for (int x = 0; x < width; ++x)
+                Srgb8Encoder::instance().encode(background, srgb8.row(0) + 3 * x);
+            for (int y = 1; y < height; ++y)
+                std::memcpy(srgb8.row(y), srgb8.row(0), static_cast<size_t>(width) * 3);
+        }
+    } else {
+        color = Image(width, height, background);
+    }
     if (!aov_buffers) return;
-    depth.assign(color.pixels.size(), k_infinity);
-    id.assign(color.pixels.size(), k_background_id);
-    normal.assign(color.pixels.size(), Vec3(0.0f));
+    const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
+    depth.assign(pixels, k_infinity);
+    id.assign(pixels, k_background_id);
+    normal.assign(pixels, Vec3(0.0f));
 }
 
 Image aov_image(Framebuffer&& fb, Aov aov) {
-    if (aov == Aov::color) return std::move(fb.color);
+    if (aov == Aov::color) {
+        if (!fb.srgb8.bytes.empty()) throw std::invalid_argument("aov_image: 8-bit colour only");
+        return std::move(fb.color);
+    }
     if (fb.depth.size() != fb.color.pixels.size())
         throw std::invalid_argument("aov_image: the render kept colour only");
     Image out(fb.width(), fb.height());

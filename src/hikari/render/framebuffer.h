@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "hikari/core/image.h"
+#include "hikari/core/srgb8_encoder.h"
 #include "hikari/scene/scene.h"
 
 namespace hikari {
@@ -15,7 +16,10 @@ inline constexpr uint32_t k_background_id = 0;
 /// Linear colour and per-pixel AOVs, all row-major with row 0 at the top. The AOV buffers are
 /// empty when the render was asked for colour only (RenderSettings::aov_buffers false).
 struct Framebuffer {
-    Image color;                  ///< linear RGB
+    Image color;  ///< linear RGB; empty when the method filled `srgb8` instead
+    /// The colour as 8-bit sRGB, filled instead of `color` by a method that honours
+    /// RenderSettings::srgb8_output (a quarter of the memory); else empty.
+    Srgb8Image srgb8;
     HugePageVector<float> depth;  ///< eye-space distance to the surface seen at the pixel centre;
                                   ///< infinity for background
     HugePageVector<uint32_t>
@@ -24,19 +28,28 @@ struct Framebuffer {
                                   ///< the eye; zero for background
 
     Framebuffer() = default;
-    /// Colour filled with `background`; the AOV buffers cleared to "nothing seen" when
-    /// `aov_buffers`, else left empty.
-    Framebuffer(int width, int height, Vec3 background, bool aov_buffers = true);
+    /// Colour filled with `background` (as `srgb8` when `srgb8_output`, `color` left empty);
+    /// the AOV buffers cleared to "nothing seen" when `aov_buffers`, else left empty.
+    Framebuffer(int width, int height, Vec3 background, bool aov_buffers = true,
+                bool srgb8_output = false);
 
-    int width() const { return color.width; }
-    int height() const { return color.height; }
+    int width() const { return srgb8.bytes.empty() ? color.width : srgb8.width; }
+    int height() const { return srgb8.bytes.empty() ? color.height : srgb8.height; }
+    /// Pixel i's colour := c (in whichever form the framebuffer keeps it).
+    void set_color(size_t i, Vec3 c) {
+        if (srgb8.bytes.empty())
+            color.pixels[i] = c;
+        else
+            Srgb8Encoder::instance().encode(c, srgb8.bytes.data() + 3 * i);
+    }
 };
 
 /// Which buffer an image file receives.
 enum class Aov { color, depth, id, normal };
 
 /// The chosen buffer as an RGB image (depth and id repeated in every channel, exactly). The
-/// framebuffer must hold that buffer. Moves the colour out rather than copying it.
+/// framebuffer must hold that buffer (for colour: `color`, not only `srgb8`). Moves the colour out
+/// rather than copying it.
 Image aov_image(Framebuffer&& fb, Aov aov);
 
 }  // namespace hikari

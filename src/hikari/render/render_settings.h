@@ -38,6 +38,11 @@ struct RenderSettings {
     /// Fill the framebuffer's depth, id and normal buffers too. False: colour only (ray tracing
     /// then neither allocates nor writes them; raster methods, which need depth, keep them).
     bool aov_buffers = true;
+    /// The caller needs the colour only as 8-bit sRGB (a PNG or PPM file): a method may then fill
+    /// Framebuffer::srgb8 instead of `color`, a quarter of the fresh memory (on a virtual machine
+    /// the page faults of a full-HD float image cost more than encoding it). The Whitted ray
+    /// tracer does so when aov_buffers is false; the other methods ignore it.
+    bool srgb8_output = false;
     /// Ray tracing with one sample per pixel finds the camera rays' hits a tile at a time, in
     /// SIMD (ray/primary_hits.h). False: one camera ray at a time through trace(), the
     /// reference the tests compare with (the images are bit-identical).
