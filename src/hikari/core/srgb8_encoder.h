@@ -3,8 +3,8 @@
 // linear_to_srgb8(). The encoding is monotonic, so each code k is taken by one interval of floats
 // [threshold[k], threshold[k + 1]); the thresholds are found once, by bisection on the float bit
 // patterns against the reference conversion itself. A lookup then starts from the code at the
-// start of a small bucket of floats (the top bits of the float) and steps over at most the
-// couple of thresholds inside that bucket.
+// start of a small bucket of floats (the top bits of the float) and steps over the at most two
+// thresholds inside that bucket.
 
 #include <array>
 #include <bit>
@@ -24,8 +24,11 @@ class Srgb8Encoder {
     uint8_t encode(float v) const {
         if (!(v > 0.0f)) return 0;  // also NaN
         if (v >= 1.0f) return 255;
+        // Two steps, without branches: no bucket holds more than two thresholds (checked when
+        // the table is built), and an unpredictable loop costs more than a step too many.
         unsigned code = m_bucket_start[std::bit_cast<uint32_t>(v) >> k_bucket_shift];
-        while (v >= m_threshold[code + 1]) ++code;
+        code += v >= m_threshold[code + 1] ? 1 : 0;
+        code += v >= m_threshold[code + 1] ? 1 : 0;
         return static_cast<uint8_t>(code);
     }
 
