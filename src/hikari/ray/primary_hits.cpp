@@ -186,38 +186,46 @@ void PrimaryHitTracer::finish(detail::PrimaryLanes& lanes, const TriangleHit* tr
     // shadow rays as packets too: from nearby points toward one light they stay coherent).
     block.shadows_known = m_lights.size() <= k_max_block_lights;
     if (!block.shadows_known) return;
+    // The hits packed into the shadow lanes (lane k is block entry hit_of[k]): the kernel's
+    // work follows the hits, and a block of sky traces no shadow rays at all.
     detail::ShadowLanes shadow;
+    int32_t hit_of[k_primary_block_rays];
+    int hits = 0;
     for (int i = 0; i < used; ++i) {
-        const SurfaceHit& hit = block.hits[i];
-        Vec3 ng(0.0f);  // unused lanes: a harmless point and normal
-        Vec3 p(0.0f);
-        if (block.found[i]) {
-            // The geometric normal facing the incoming ray, as shade() takes it.
-            ng = dot(hit.geometric_normal, block.rays[i].direction) < 0.0f ? hit.geometric_normal
-                                                                           : -hit.geometric_normal;
-            p = hit.position;
-        }
-        for (int a = 0; a < 3; ++a) shadow.position[a][i] = p[a], shadow.normal[a][i] = ng[a];
         block.lit[i] = 0;
+        if (!block.found[i]) continue;
+        const SurfaceHit& hit = block.hits[i];
+        // The geometric normal facing the incoming ray, as shade() takes it.
+        const Vec3 ng = dot(hit.geometric_normal, block.rays[i].direction) < 0.0f
+                            ? hit.geometric_normal
+                            : -hit.geometric_normal;
+        for (int a = 0; a < 3; ++a)
+            shadow.position[a][hits] = hit.position[a], shadow.normal[a][hits] = ng[a];
+        hit_of[hits++] = i;
     }
+    if (hits == 0) return;
+    for (int k = hits; k < lanes_for(hits); ++k)  // the last chunk's spare lanes: harmless rays
+        for (int a = 0; a < 3; ++a) shadow.position[a][k] = 0.0f, shadow.normal[a][k] = 0.0f;
     const detail::PrimaryAnalytic casters = m_casters.view();
+    const bool triangles = m_scene.triangles.size() > 0;
     for (size_t l = 0; l < m_lights.size(); ++l) {
         switch (m_level) {
             case SimdLevel::avx512:
-                detail::primary_shadows_avx512(m_lights[l], casters, count, shadow);
+                detail::primary_shadows_avx512(m_lights[l], casters, hits, shadow);
                 break;
             case SimdLevel::avx2:
-                detail::primary_shadows_avx2(m_lights[l], casters, count, shadow);
+                detail::primary_shadows_avx2(m_lights[l], casters, hits, shadow);
                 break;
             default:
-                detail::primary_shadows_portable(m_lights[l], casters, count, shadow);
+                detail::primary_shadows_portable(m_lights[l], casters, hits, shadow);
         }
-        for (int i = 0; i < used; ++i) {
-            if (!block.found[i] || shadow.blocked[i]) continue;
-            const Ray ray{{shadow.origin[0][i], shadow.origin[1][i], shadow.origin[2][i]},
-                          {shadow.to_light[0][i], shadow.to_light[1][i], shadow.to_light[2][i]}};
-            if (m_intersector.occluded_by_triangles(ray, {0.0f, shadow.distance[i]})) continue;
-            block.lit[i] |= static_cast<uint8_t>(1u << l);
+        for (int k = 0; k < hits; ++k) {
+            if (shadow.blocked[k]) continue;
+            const Ray ray{{shadow.origin[0][k], shadow.origin[1][k], shadow.origin[2][k]},
+                          {shadow.to_light[0][k], shadow.to_light[1][k], shadow.to_light[2][k]}};
+            if (triangles && m_intersector.occluded_by_triangles(ray, {0.0f, shadow.distance[k]}))
+                continue;
+            block.lit[hit_of[k]] |= static_cast<uint8_t>(1u << l);
         }
     }
 }
