@@ -38,11 +38,11 @@ Srgb8Encoder::Srgb8Encoder() {
         while (code < 255 && first >= m_threshold[code + 1]) ++code;
         m_bucket_start[b] = static_cast<uint8_t>(code);
     }
-    // encode() steps at most twice: every bucket but the last (which holds only 1.0) starts at
-    // most two codes below the next one's start.
+    // encode() steps at most once: every bucket but the last (which holds only 1.0) starts at
+    // most one code below the next one's start.
     for (size_t b = 0; b + 1 < k_buckets; ++b)
-        if (m_bucket_start[b + 1] - m_bucket_start[b] > 2)
-            throw std::logic_error("Srgb8Encoder: a bucket holds more than two thresholds");
+        if (m_bucket_start[b + 1] - m_bucket_start[b] > 1)
+            throw std::logic_error("Srgb8Encoder: a bucket holds more than one threshold");
 }
 
 Srgb8Image encode_srgb8(const Image& image) {

@@ -3,8 +3,8 @@
 // linear_to_srgb8(). The encoding is monotonic, so each code k is taken by one interval of floats
 // [threshold[k], threshold[k + 1]); the thresholds are found once, by bisection on the float bit
 // patterns against the reference conversion itself. A lookup then starts from the code at the
-// start of a small bucket of floats (the top bits of the float) and steps over the at most two
-// thresholds inside that bucket.
+// start of a small bucket of floats (the top bits of the float) and steps over the at most one
+// threshold inside that bucket.
 
 #include <array>
 #include <bit>
@@ -24,10 +24,9 @@ class Srgb8Encoder {
     uint8_t encode(float v) const {
         if (!(v > 0.0f)) return 0;  // also NaN
         if (v >= 1.0f) return 255;
-        // Two steps, without branches: no bucket holds more than two thresholds (checked when
-        // the table is built), and an unpredictable loop costs more than a step too many.
+        // One step, without a branch: no bucket holds more than one threshold (checked when
+        // the table is built).
         unsigned code = m_bucket_start[std::bit_cast<uint32_t>(v) >> k_bucket_shift];
-        code += v >= m_threshold[code + 1] ? 1 : 0;
         code += v >= m_threshold[code + 1] ? 1 : 0;
         return static_cast<uint8_t>(code);
     }
@@ -43,9 +42,10 @@ class Srgb8Encoder {
   private:
     Srgb8Encoder();
 
-    // Buckets of floats sharing their top bits: 2^7 per octave, finer than the spacing of the
-    // codes (at least 0.9% of the value), so a lookup steps over at most two thresholds.
-    static constexpr int k_bucket_shift = 16;
+    // Buckets of floats sharing their top bits: 2^8 per octave (0.4% of the value), finer than
+    // the spacing of the codes (at least 0.9% of the value), so a bucket holds at most one
+    // threshold; the table is 32 KiB.
+    static constexpr int k_bucket_shift = 15;
     static constexpr uint32_t k_one_bits = 0x3F800000;  // 1.0f
     static constexpr size_t k_buckets = (k_one_bits >> k_bucket_shift) + 1;
 
