@@ -338,10 +338,14 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
                                            block.hits[k]);
                         }
                 });
-            for (int y = tile.y0; y < tile.y1; ++y)
+            for (int y = tile.y0; y < tile.y1; ++y) {
+                Vec3 row[k_tile_size];
                 for (int x = tile.x0; x < tile.x1; ++x)
-                    fb.set_color(static_cast<size_t>(y) * cam.width + x,
-                                 colours[(y - tile.y0) * k_primary_block + (x - tile.x0)].colour);
+                    row[x - tile.x0] =
+                        colours[(y - tile.y0) * k_primary_block + (x - tile.x0)].colour;
+                fb.set_colors(static_cast<size_t>(y) * cam.width + tile.x0, row,
+                              static_cast<size_t>(tile.x1 - tile.x0));
+            }
             if (settings.control) settings.control->rays_traced += ctx.rays;
             return;
         }

@@ -1,6 +1,8 @@
 #pragma once
 // What a method produces: colour plus auxiliary buffers (AOVs) for comparing methods.
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -35,6 +37,16 @@ struct Framebuffer {
 
     int width() const { return srgb8.bytes.empty() ? color.width : srgb8.width; }
     int height() const { return srgb8.bytes.empty() ? color.height : srgb8.height; }
+    /// The colours of pixels [first, first + count) := c[0, count) (a row, or part of one).
+    void set_colors(size_t first, const Vec3* c, size_t count) {
+        if (srgb8.bytes.empty()) {
+            std::copy_n(c, count, color.pixels.begin() + static_cast<std::ptrdiff_t>(first));
+            return;
+        }
+        const Srgb8Encoder& encoder = Srgb8Encoder::instance();
+        for (size_t i = 0; i < count; ++i)
+            encoder.encode(c[i], srgb8.bytes.data() + 3 * (first + i));
+    }
     /// Pixel i's colour := c (in whichever form the framebuffer keeps it).
     void set_color(size_t i, Vec3 c) {
         if (srgb8.bytes.empty())
