@@ -23,6 +23,12 @@ namespace {
     return floor & 1;
 }
 
+/// out[i] = value in the lanes of a chunk whose material is m.
+template <class T>
+void broadcast_lanes(const int32_t* __restrict material, int32_t m, T value, T* __restrict out) {
+    for (int i = 0; i < k_lane_chunk; ++i) out[i] = material[i] == m ? value : out[i];
+}
+
 /// sample_light for every lane: the unit direction toward the light and I0 after falloff (a
 /// template per kind of light, as GCC does not vectorise selects on a loop-invariant flag).
 template <bool Directional, bool InverseSquare>
@@ -123,48 +129,20 @@ inline void shade_chunk(const ShadeScene& scene, int spawn, ShadeChunk& lanes) {
     }
     for (int32_t k = 0; k < present_count; ++k) {
         const int32_t m = present[k];
-        float column[3][6];
         for (int c = 0; c < 3; ++c) {
-            column[c][0] = mt.ka[c][m], column[c][1] = mt.kd[c][m], column[c][2] = mt.ks[c][m];
-            column[c][3] = mt.offset[c][m], column[c][4] = mt.color_a[c][m];
-            column[c][5] = mt.color_b[c][m];
+            broadcast_lanes(material, m, mt.ka[c][m], lanes.ka[c]);
+            broadcast_lanes(material, m, mt.kd[c][m], lanes.kd[c]);
+            broadcast_lanes(material, m, mt.ks[c][m], lanes.ks[c]);
+            broadcast_lanes(material, m, mt.offset[c][m], lanes.offset[c]);
+            broadcast_lanes(material, m, mt.color_a[c][m], lanes.color_a[c]);
+            broadcast_lanes(material, m, mt.color_b[c][m], lanes.color_b[c]);
         }
-        const float inverse_size = mt.inverse_size[m], reflectivity = mt.reflectivity[m],
-                    transparency = mt.transparency[m], ior = mt.ior[m];
-        const int32_t textured = mt.textured[m], power = mt.exponent[m];
-        for (int c = 0; c < 3; ++c) {
-            float* __restrict ka = lanes.ka[c];
-            float* __restrict kd = lanes.kd[c];
-            float* __restrict ks = lanes.ks[c];
-            float* __restrict offset = lanes.offset[c];
-            float* __restrict color_a = lanes.color_a[c];
-            float* __restrict color_b = lanes.color_b[c];
-            const float ka_m = column[c][0], kd_m = column[c][1], ks_m = column[c][2];
-            const float offset_m = column[c][3], color_a_m = column[c][4], color_b_m = column[c][5];
-            for (int i = 0; i < k_lane_chunk; ++i) {
-                const bool mine = material[i] == m;
-                ka[i] = mine ? ka_m : ka[i];
-                kd[i] = mine ? kd_m : kd[i];
-                ks[i] = mine ? ks_m : ks[i];
-                offset[i] = mine ? offset_m : offset[i];
-                color_a[i] = mine ? color_a_m : color_a[i];
-                color_b[i] = mine ? color_b_m : color_b[i];
-            }
-        }
-        auto* __restrict inverse_sizes = lanes.inverse_size;
-        auto* __restrict reflectivities = lanes.reflectivity;
-        auto* __restrict transparencies = lanes.transparency;
-        auto* __restrict iors = lanes.ior;
-        auto* __restrict textured_flags = lanes.textured;
-        for (int i = 0; i < k_lane_chunk; ++i) {
-            const bool mine = material[i] == m;
-            inverse_sizes[i] = mine ? inverse_size : inverse_sizes[i];
-            reflectivities[i] = mine ? reflectivity : reflectivities[i];
-            transparencies[i] = mine ? transparency : transparencies[i];
-            iors[i] = mine ? ior : iors[i];
-            textured_flags[i] = mine ? textured : textured_flags[i];
-            exponent[i] = mine ? power : exponent[i];
-        }
+        broadcast_lanes(material, m, mt.inverse_size[m], lanes.inverse_size);
+        broadcast_lanes(material, m, mt.reflectivity[m], lanes.reflectivity);
+        broadcast_lanes(material, m, mt.transparency[m], lanes.transparency);
+        broadcast_lanes(material, m, mt.ior[m], lanes.ior);
+        broadcast_lanes(material, m, mt.textured[m], lanes.textured);
+        broadcast_lanes(material, m, mt.exponent[m], exponent);
     }
     // textured(): ka and kd at the point (CheckerTexture::at: q = (p + offset) / size, then the
     // parity of the floors' sum); shade_ambient().
