@@ -23,10 +23,16 @@ namespace {
     return floor & 1;
 }
 
-/// out[i] = value in the lanes of a chunk whose material is m.
+/// out[i] = value in the lanes of a chunk whose material is m; for the chunk's first material
+/// in every lane (the later ones overwrite theirs), which saves reading `out`.
 template <class T>
-void broadcast_lanes(const int32_t* __restrict material, int32_t m, T value, T* __restrict out) {
-    for (int i = 0; i < k_lane_chunk; ++i) out[i] = material[i] == m ? value : out[i];
+void broadcast_lanes(const int32_t* __restrict material, int32_t m, bool first, T value,
+                     T* __restrict out) {
+    if (first) {
+        for (int i = 0; i < k_lane_chunk; ++i) out[i] = value;
+    } else {
+        for (int i = 0; i < k_lane_chunk; ++i) out[i] = material[i] == m ? value : out[i];
+    }
 }
 
 /// sample_light for every lane: the unit direction toward the light and I0 after falloff (a
@@ -130,19 +136,19 @@ inline void shade_chunk(const ShadeScene& scene, int spawn, ShadeChunk& lanes) {
     for (int32_t k = 0; k < present_count; ++k) {
         const int32_t m = present[k];
         for (int c = 0; c < 3; ++c) {
-            broadcast_lanes(material, m, mt.ka[c][m], lanes.ka[c]);
-            broadcast_lanes(material, m, mt.kd[c][m], lanes.kd[c]);
-            broadcast_lanes(material, m, mt.ks[c][m], lanes.ks[c]);
-            broadcast_lanes(material, m, mt.offset[c][m], lanes.offset[c]);
-            broadcast_lanes(material, m, mt.color_a[c][m], lanes.color_a[c]);
-            broadcast_lanes(material, m, mt.color_b[c][m], lanes.color_b[c]);
+            broadcast_lanes(material, m, k == 0, mt.ka[c][m], lanes.ka[c]);
+            broadcast_lanes(material, m, k == 0, mt.kd[c][m], lanes.kd[c]);
+            broadcast_lanes(material, m, k == 0, mt.ks[c][m], lanes.ks[c]);
+            broadcast_lanes(material, m, k == 0, mt.offset[c][m], lanes.offset[c]);
+            broadcast_lanes(material, m, k == 0, mt.color_a[c][m], lanes.color_a[c]);
+            broadcast_lanes(material, m, k == 0, mt.color_b[c][m], lanes.color_b[c]);
         }
-        broadcast_lanes(material, m, mt.inverse_size[m], lanes.inverse_size);
-        broadcast_lanes(material, m, mt.reflectivity[m], lanes.reflectivity);
-        broadcast_lanes(material, m, mt.transparency[m], lanes.transparency);
-        broadcast_lanes(material, m, mt.ior[m], lanes.ior);
-        broadcast_lanes(material, m, mt.textured[m], lanes.textured);
-        broadcast_lanes(material, m, mt.exponent[m], exponent);
+        broadcast_lanes(material, m, k == 0, mt.inverse_size[m], lanes.inverse_size);
+        broadcast_lanes(material, m, k == 0, mt.reflectivity[m], lanes.reflectivity);
+        broadcast_lanes(material, m, k == 0, mt.transparency[m], lanes.transparency);
+        broadcast_lanes(material, m, k == 0, mt.ior[m], lanes.ior);
+        broadcast_lanes(material, m, k == 0, mt.textured[m], lanes.textured);
+        broadcast_lanes(material, m, k == 0, mt.exponent[m], exponent);
     }
     // textured(): ka and kd at the point (CheckerTexture::at: q = (p + offset) / size, then the
     // parity of the floors' sum); shade_ambient().
