@@ -58,9 +58,6 @@ LaneShader::LaneShader(const Scene& scene, SimdLevel level) : m_level(level) {
             }
         }
     }
-    int32_t bits = 0;
-    for (size_t i = 0; i < count; ++i)
-        while (m_ints[i] > 0 && (m_ints[i] >> bits) != 0) ++bits;
     detail::ShadeMaterials& t = m_scene.materials;
     for (int a = 0; a < 3; ++a) {
         t.ka[a] = column(ka + a);
@@ -76,7 +73,6 @@ LaneShader::LaneShader(const Scene& scene, SimdLevel level) : m_level(level) {
     t.inverse_size = column(inverse_size);
     t.exponent = m_ints.data();
     t.textured = m_ints.data() + count;
-    m_scene.exponent_bits = bits;
 
     for (const Light& light : scene.lights) {
         detail::ShadeLight l{};

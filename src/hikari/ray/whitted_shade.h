@@ -8,15 +8,18 @@
 // The lanes perform the scalar code's operations (shade_local / shade_direct / phong_power /
 // textured / reflect / refract / offset_ray_origin) in the same order without FMA contraction,
 // so every level gives bit-identical colours and rays; tests compare them with the recursive
-// tracer. The one exception, a Phong exponent that is not an integer in [0, 1024], is flagged
-// per lane for the caller to shade with the scalar code (std::pow has no exact lane form).
+// tracer. The one exception, a Phong exponent that is not an integer in [0,
+// k_max_integer_exponent], is flagged per lane for the caller to shade with the scalar code
+// (std::pow has no exact lane form).
 
+#include <bit>
 #include <cstdint>
 #include <vector>
 
 #include "hikari/ray/primary_hits.h"
 #include "hikari/ray/simd_level.h"
 #include "hikari/scene/scene.h"
+#include "hikari/shading/phong.h"
 
 namespace hikari {
 
@@ -25,14 +28,17 @@ namespace detail {
 /// Lanes per shading call: one block of rays (ray/primary_hits.h).
 inline constexpr int k_shade_lanes = k_primary_block_rays;
 static_assert(k_shade_lanes % k_lane_chunk == 0);
+/// Squaring steps of phong_power for any exponent up to k_max_integer_exponent.
+inline constexpr int k_exponent_bits =
+    std::bit_width(static_cast<unsigned>(k_max_integer_exponent));
 
 /// The scene's materials as the lanes read them: structure-of-arrays, indexed by material.
 struct ShadeMaterials {
     const float* ka[3];
     const float* kd[3];
     const float* ks[3];
-    /// The Phong exponent when it is an integer in [0, 1024] (phong_power's repeated squaring),
-    /// else -1 (the lane is flagged scalar_specular).
+    /// The Phong exponent when it is an integer in [0, k_max_integer_exponent] (phong_power's
+    /// repeated squaring), else -1 (the lane is flagged scalar_specular).
     const int32_t* exponent;
     const float* reflectivity;
     const float* transparency;
@@ -59,7 +65,6 @@ struct ShadeScene {
     const ShadeLight* lights;
     int32_t light_count;  ///< at most k_max_block_lights (one bit each in ShadeLanes::lit)
     float ambient[3];
-    int32_t exponent_bits;  ///< bit length of the largest integer exponent (squaring steps)
 };
 
 /// The hits of k_lane_chunk lanes, structure-of-arrays, and what shading them gives.
@@ -106,7 +111,6 @@ struct alignas(64) ShadeChunk {
     float irradiance[3][k_lane_chunk];
     float cos_gamma[k_lane_chunk];
     float power[k_lane_chunk];
-    float squared[k_lane_chunk];  ///< cos γ squared b times (phong_power)
     int32_t entering[k_lane_chunk];
 };
 

@@ -213,16 +213,18 @@ inline void shade_chunk(const ShadeScene& scene, int spawn, ShadeChunk& lanes) {
             const float a = 2.0f * -(-lx[i] * nx[i] + -ly[i] * ny[i] + -lz[i] * nz[i]);
             const float rx = -lx[i] + nx[i] * a, ry = -ly[i] + ny[i] * a, rz = -lz[i] + nz[i] * a;
             cos_gamma[i] = rx * -dx[i] + ry * -dy[i] + rz * -dz[i];
-            power[i] = 1.0f;
         }
-        // phong_power by repeated squaring: the exponent's bits in the scalar order.
-        auto* __restrict squared = lanes.squared;
-        for (int i = 0; i < k_lane_chunk; ++i) squared[i] = cos_gamma[i];
-        for (int32_t b = 0; b < scene.exponent_bits; ++b) {
-            for (int i = 0; i < k_lane_chunk; ++i) {
-                power[i] = (exponent[i] >> b) & 1 ? power[i] * squared[i] : power[i];
-                squared[i] = squared[i] * squared[i];
+        // phong_power by repeated squaring: the exponent's bits in the scalar order. Always all
+        // k_exponent_bits steps (a constant count keeps the lane in registers; the steps past
+        // the exponent's top bit leave the power as it is).
+        for (int i = 0; i < k_lane_chunk; ++i) {
+            const int32_t e = exponent[i];
+            float p = 1.0f, squared = cos_gamma[i];
+            for (int b = 0; b < k_exponent_bits; ++b) {
+                p = (e >> b) & 1 ? p * squared : p;
+                squared = squared * squared;
             }
+            power[i] = p;
         }
         const int32_t bit = 1 << l;
         for (int i = 0; i < k_lane_chunk; ++i) {

@@ -16,10 +16,14 @@ inline Vec3 shade_ambient(const Material& m, Vec3 ambient_intensity) {
     return m.ka * ambient_intensity;
 }
 
+/// The largest Phong exponent phong_power raises by repeated squaring.
+inline constexpr int32_t k_max_integer_exponent = 1024;
+
 /// The Phong exponent n as the integer phong_power raises by repeated squaring (n an integer in
-/// [0, 1024]), or -1 where it calls std::pow instead.
+/// [0, k_max_integer_exponent]), or -1 where it calls std::pow instead.
 inline int32_t phong_integer_exponent(float n) {
-    if (!(n >= 0.0f && n <= 1024.0f) || n != static_cast<float>(static_cast<unsigned>(n)))
+    if (!(n >= 0.0f && n <= static_cast<float>(k_max_integer_exponent)) ||
+        n != static_cast<float>(static_cast<unsigned>(n)))
         return -1;
     return static_cast<int32_t>(n);
 }
