@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstring>
 #include <memory>
 
@@ -52,14 +53,23 @@ void tokenize(std::span<const uint8_t> data, Literal&& literal, Run&& run) {
     while (i < n) {
         const uint8_t b = d[i];
         literal(b);
-        // Measure the run of b after d[i], eight bytes at a time while they all match.
+        if (i + 1 < n && d[i + 1] != b) {  // no run: the common case, one comparison
+            ++i;
+            continue;
+        }
+        // Measure the run of b after d[i], eight bytes at a time: the first byte that differs
+        // is the lowest non-zero byte of word ^ all_b (a little-endian load, as BitWriter
+        // assumes too); the last few bytes one at a time.
         const uint64_t all_b = 0x0101010101010101ULL * b;
         size_t j = i + 1;
-        for (uint64_t word; j + 8 <= n; j += 8) {
+        bool ended = false;
+        for (uint64_t word; !ended && j + 8 <= n;) {
             std::memcpy(&word, d + j, 8);
-            if (word != all_b) break;
+            const uint64_t differ = word ^ all_b;
+            ended = differ != 0;
+            j += ended ? static_cast<size_t>(std::countr_zero(differ) / 8) : 8;
         }
-        while (j < n && d[j] == b) ++j;
+        while (!ended && j < n && d[j] == b) ++j;
         size_t repeats = j - i - 1;
         for (; repeats >= k_min_run; repeats -= std::min<size_t>(repeats, k_max_run))
             run(static_cast<int>(std::min<size_t>(repeats, k_max_run)));
