@@ -62,6 +62,20 @@ TEST(DeflateRuns, PiecesConcatenateIntoOneStream) {
     EXPECT_EQ(inflate_raw(deflated, data.size()), data);
 }
 
+TEST(DeflateRuns, RunsEndingAnywhereNearTheEnd) {
+    // A run's end is found eight bytes at a time, then byte by byte within the last seven:
+    // runs of every length that stop 0..9 bytes before the end of the data.
+    for (int length = 1; length <= 20; ++length)
+        for (int tail = 0; tail <= 9; ++tail) {
+            Bytes data = {1, 2, 3};
+            data.insert(data.end(), static_cast<size_t>(length), 9);
+            for (int k = 0; k < tail; ++k) data.push_back(static_cast<uint8_t>(20 + k % 2));
+            Bytes deflated;
+            deflate_runs(data, true, deflated);
+            ASSERT_EQ(inflate_raw(deflated, data.size()), data) << length << " " << tail;
+        }
+}
+
 TEST(DeflateRuns, EmptyAndSingleByteInputs) {
     for (const Bytes& data : {Bytes{}, Bytes{42}, Bytes(1000, 0)}) {
         Bytes deflated;
