@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <span>
 #include <string_view>
 
@@ -96,20 +97,21 @@ struct Band {
 
 Band encode_band(const Srgb8Image& image, int y0, int y1, bool last) {
     const size_t n = static_cast<size_t>(image.width) * 3;
-    const std::vector<uint8_t> zeros(n, 0);  // the row above row 0
+    const std::vector<uint8_t> zeros(y0 == 0 ? n : 0, 0);  // the row above row 0
     Band band;
     band.filtered_size = (n + 1) * static_cast<size_t>(y1 - y0);
-    Bytes filtered(band.filtered_size);
-    std::vector<uint8_t> scratch(3 * n);
+    // Every byte is written before it is read: no zero fill.
+    const auto filtered = std::make_unique_for_overwrite<uint8_t[]>(band.filtered_size);
+    const auto scratch = std::make_unique_for_overwrite<uint8_t[]>(3 * n);
     for (int y = y0; y < y1; ++y) {
         // Up and Paeth predict from the row above, also across the band's top edge.
         const uint8_t* above = y > 0 ? image.row(y - 1) : zeros.data();
-        filter_row(image.row(y), above, n, scratch.data(),
-                   filtered.data() + (n + 1) * static_cast<size_t>(y - y0));
+        filter_row(image.row(y), above, n, scratch.get(),
+                   filtered.get() + (n + 1) * static_cast<size_t>(y - y0));
     }
     band.adler =
-        static_cast<uint32_t>(adler32(1L, filtered.data(), static_cast<uInt>(filtered.size())));
-    deflate_runs(filtered, last, band.deflated);
+        static_cast<uint32_t>(adler32(1L, filtered.get(), static_cast<uInt>(band.filtered_size)));
+    deflate_runs({filtered.get(), band.filtered_size}, last, band.deflated);
     return band;
 }
 
