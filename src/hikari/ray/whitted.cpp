@@ -148,7 +148,12 @@ class WaveTracer {
         PrimaryBlock& block = m_s.block;
         m_hits.trace(tile.x0, tile.y0, width, height, block);
         first_hits(block);
-        level(0).assign(k_primary_block_rays, PathNode{});
+        // shade_block sets every node of a ray; a clipped tile's other nodes must read as leaves
+        // for fold().
+        if (width < k_primary_block || height < k_primary_block)
+            level(0).assign(k_primary_block_rays, PathNode{});
+        else
+            level(0).resize(k_primary_block_rays);
         m_s.next_rays.clear();
         shade_block(
             block,
@@ -159,7 +164,7 @@ class WaveTracer {
             std::swap(m_s.rays, m_s.next_rays);
             m_s.next_rays.clear();
             std::vector<PathNode>& nodes = level(depth);
-            nodes.assign(m_s.rays.size(), PathNode{});
+            nodes.resize(m_s.rays.size());
             ++depth;
             for (size_t first = 0; first < m_s.rays.size(); first += k_primary_block_rays) {
                 const int count = static_cast<int>(
@@ -182,7 +187,8 @@ class WaveTracer {
     }
 
     /// Shades the block's lanes that hold rays of path segment `segment` into `nodes` (one per
-    /// lane) and appends the rays they spawn to next_rays.
+    /// lane; every field of the node of each ray is set) and appends the rays they spawn to
+    /// next_rays.
     template <class ValidLane>
     void shade_block(const PrimaryBlock& block, ValidLane valid, int segment, PathNode* nodes) {
         // The hits go to the lanes packed (lane k is block entry hit_of[k]), so the kernel's
@@ -194,7 +200,7 @@ class WaveTracer {
             if (!valid(i)) continue;
             ++m_ctx.rays;
             if (!block.found[i]) {
-                nodes[i].colour = sky(m_ctx, block.rays[i]);
+                nodes[i] = PathNode{sky(m_ctx, block.rays[i])};
                 continue;
             }
             const SurfaceHit& hit = block.hits[i];
@@ -228,7 +234,7 @@ class WaveTracer {
             const detail::ShadeChunk& lane = lanes.chunk(k);
             const int j = detail::lane_in_chunk(k);
             m_ctx.rays += lane.shadow_rays[j];
-            node.colour = {lane.colour[0][j], lane.colour[1][j], lane.colour[2][j]};
+            node = PathNode{{lane.colour[0][j], lane.colour[1][j], lane.colour[2][j]}};
             if (lane.scalar_specular[j]) {
                 // A Phong exponent the lanes cannot raise exactly: the scalar code shades it
                 // (its ray count is already in shadow_rays).
@@ -330,6 +336,7 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
             WaveTracer wave(ctx, primary, shader, *scratch);
             const std::vector<PathNode>& colours =
                 wave.trace_tile(tile, [&](const PrimaryBlock& block) {
+                    if (!settings.aov_buffers) return;
                     for (int y = tile.y0; y < tile.y1; ++y)
                         for (int x = tile.x0; x < tile.x1; ++x) {
                             const int k = (y - tile.y0) * k_primary_block + (x - tile.x0);
