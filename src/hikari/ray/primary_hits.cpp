@@ -111,8 +111,6 @@ void PrimaryHitTracer::trace(int x0, int y0, int width, int height, PrimaryBlock
 
     // 2. Triangles: the block as 4x4 packets through the wide BVH.
     TriangleHit triangle_hits[k_primary_block_rays];
-    std::fill(std::begin(lanes.t), std::end(lanes.t), k_infinity);
-    std::fill(std::begin(lanes.object), std::end(lanes.object), 0);
     if (m_scene.triangles.size() > 0) {
         uint8_t* found = block.found;
         intersect_closest_tile(m_intersector.bvh(), block.rays, k_primary_block,

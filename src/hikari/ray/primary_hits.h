@@ -152,7 +152,7 @@ struct alignas(64) ShadowLanes {
     int32_t blocked[k_primary_block_rays];    ///< out: 1 where a casting sphere or plane blocks
 };
 
-/// Camera-ray directions of a block (kernel for each SIMD level).
+/// Camera rays of a block, without hits yet (kernel for each SIMD level).
 void primary_directions_portable(const PrimaryCamera& cam, PrimaryLanes& lanes);
 void primary_directions_avx2(const PrimaryCamera& cam, PrimaryLanes& lanes);
 void primary_directions_avx512(const PrimaryCamera& cam, PrimaryLanes& lanes);

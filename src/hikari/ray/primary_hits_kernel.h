@@ -18,7 +18,8 @@ namespace {
 constexpr int k_lanes = k_primary_block_rays;
 
 /// camera_ray(frame, x + 0.5, y + 0.5) for every lane: direction = normalize(forward + x right +
-/// y up) with x, y the pixel centre on the image plane one unit in front of the eye.
+/// y up) with x, y the pixel centre on the image plane one unit in front of the eye; no hit yet
+/// (t = ∞, object 0).
 [[maybe_unused]] void directions_kernel(const PrimaryCamera& cam, PrimaryLanes& lanes) {
     float* __restrict dx = lanes.direction[0];
     float* __restrict dy = lanes.direction[1];
@@ -26,6 +27,8 @@ constexpr int k_lanes = k_primary_block_rays;
     float* __restrict ox = lanes.origin[0];
     float* __restrict oy = lanes.origin[1];
     float* __restrict oz = lanes.origin[2];
+    float* __restrict t = lanes.t;
+    int32_t* __restrict object = lanes.object;
     const PrimaryCamera c = cam;  // a local copy: the stores below cannot change it
     for (int i = 0; i < k_lanes; ++i) {
         const int column = i % k_primary_block, row = i / k_primary_block;  // lane i's pixel
@@ -41,6 +44,7 @@ constexpr int k_lanes = k_primary_block_rays;
         dy[i] = vy * inv_length;
         dz[i] = vz * inv_length;
         ox[i] = c.eye[0], oy[i] = c.eye[1], oz[i] = c.eye[2];
+        t[i] = __builtin_inff(), object[i] = 0;
     }
 }
 
