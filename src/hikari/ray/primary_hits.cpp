@@ -149,7 +149,7 @@ template <class ValidLane>
 void PrimaryHitTracer::finish(detail::PrimaryLanes& lanes, const TriangleHit* triangle_hits,
                               int count, ValidLane valid, PrimaryBlock& block) const {
     const int used = lanes_for(count);
-    // 3. Spheres and planes, each against all lanes.
+    // 3. Spheres and planes, each against every chunk of lanes that holds rays.
     const detail::PrimaryAnalytic analytic = m_analytic.view();
     switch (m_level) {
         case SimdLevel::avx512:
@@ -180,7 +180,7 @@ void PrimaryHitTracer::finish(detail::PrimaryLanes& lanes, const TriangleHit* tr
 
     std::fill(block.found + used, block.found + k_primary_block_rays, uint8_t{0});
 
-    // 5. The hits' shadow rays, one light at a time against all lanes (Boulos et al. 2007 trace
+    // 5. The hits' shadow rays, one light at a time against all of them (Boulos et al. 2007 trace
     // shadow rays as packets too: from nearby points toward one light they stay coherent).
     block.shadows_known = m_lights.size() <= k_max_block_lights;
     if (!block.shadows_known) return;

@@ -124,9 +124,9 @@ class PrimaryHitTracer {
 namespace detail {
 
 /// What the lane kernels (primary_hits_kernel.h) read and write for one block. Lane i is pixel
-/// (x0 + i % 16, y0 + i / 16) for camera rays, entry i of the block for trace_rays(); all 256
-/// lanes are computed even for a clipped or partial block (the extra lanes are harmless finite
-/// rays, never read back).
+/// (x0 + i % 16, y0 + i / 16) for camera rays, entry i of the block for trace_rays(). The kernels
+/// compute whole chunks of k_lane_chunk lanes, so the lanes past the last ray in its chunk hold
+/// harmless finite rays, never read back.
 struct alignas(64) PrimaryLanes {
     float origin[3][k_primary_block_rays];     ///< ray origin per lane
     float direction[3][k_primary_block_rays];  ///< unit ray direction per lane

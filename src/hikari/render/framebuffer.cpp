@@ -13,8 +13,10 @@ Framebuffer::Framebuffer(int width, int height, Vec3 background, bool aov_buffer
     if (srgb8_output) {
         srgb8 = Srgb8Image(width, height);
         if (height > 0) {
-            for (int x = 0; x < width; ++x)
-                Srgb8Encoder::instance().encode(background, srgb8.row(0) + 3 * x);
+            // One row pixel by pixel, then the others copied from it a row at a time.
+            uint8_t code[3];
+            Srgb8Encoder::instance().encode(background, code);
+            for (int x = 0; x < width; ++x) std::memcpy(srgb8.row(0) + 3 * x, code, 3);
             for (int y = 1; y < height; ++y)
                 std::memcpy(srgb8.row(y), srgb8.row(0), static_cast<size_t>(width) * 3);
         }

@@ -47,13 +47,9 @@ struct Framebuffer {
         for (size_t i = 0; i < count; ++i)
             encoder.encode(c[i], srgb8.bytes.data() + 3 * (first + i));
     }
+
     /// Pixel i's colour := c (in whichever form the framebuffer keeps it).
-    void set_color(size_t i, Vec3 c) {
-        if (srgb8.bytes.empty())
-            color.pixels[i] = c;
-        else
-            Srgb8Encoder::instance().encode(c, srgb8.bytes.data() + 3 * i);
-    }
+    void set_color(size_t i, Vec3 c) { set_colors(i, &c, 1); }
 };
 
 /// Which buffer an image file receives.
