@@ -54,16 +54,16 @@ void expect_blocks_match_closest(const Scene& scene) {
                         const int k = y * k_primary_block + x;
                         const Ray ray = camera_ray(frame, static_cast<float>(x0 + x) + 0.5f,
                                                    static_cast<float>(y0 + y) + 0.5f);
-                        ASSERT_TRUE(same_bits(ray.origin, block.rays[k].origin));
-                        ASSERT_TRUE(same_bits(ray.direction, block.rays[k].direction))
+                        ASSERT_TRUE(same_bits(ray.origin, block.ray(k).origin));
+                        ASSERT_TRUE(same_bits(ray.direction, block.ray(k).direction))
                             << "pixel " << x0 + x << ", " << y0 + y;
                         SurfaceHit expected;
                         const bool found = intersector.closest(ray, {0.0f, k_infinity}, expected);
-                        ASSERT_EQ(found, block.found[k] != 0)
+                        ASSERT_EQ(found, block.found(k) != 0)
                             << "pixel " << x0 + x << ", " << y0 + y;
                         if (!found) continue;
                         ++hits;
-                        const SurfaceHit& got = block.hits[k];
+                        const SurfaceHit got = block.hit(k);
                         ASSERT_TRUE(same_bits(expected.t, got.t)) << expected.t << " " << got.t;
                         ASSERT_TRUE(same_bits(expected.position, got.position));
                         ASSERT_TRUE(same_bits(expected.geometric_normal, got.geometric_normal));
@@ -80,7 +80,7 @@ void expect_blocks_match_closest(const Scene& scene) {
                             const LightSample ls = sample_light(scene.lights[l], got.position);
                             const bool blocked =
                                 intersector.occluded({origin, ls.to_light}, {0.0f, ls.distance});
-                            ASSERT_EQ(!blocked, (block.lit[k] >> l & 1u) != 0) << "light " << l;
+                            ASSERT_EQ(!blocked, (block.lit(k) >> l & 1u) != 0) << "light " << l;
                             shadowed += blocked ? 1 : 0;
                         }
                     }

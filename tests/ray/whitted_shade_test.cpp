@@ -61,12 +61,12 @@ std::vector<Light> random_lights(Pcg32& rng) {
 }
 
 /// Random hits with random normals and materials in every lane, some lanes inactive.
-void fill_random_lanes(Pcg32& rng, uint32_t materials, uint32_t lights, detail::ShadeLanes& lanes) {
+void fill_random_lanes(Pcg32& rng, uint32_t materials, uint32_t lights, detail::BlockLanes& lanes) {
     for (int i = 0; i < detail::k_shade_lanes; ++i) {
         const Vec3 d = testing::random_direction(rng), p = testing::random_point(rng, 5.0f);
         const Vec3 g = testing::random_direction(rng);
         const Vec3 s = normalize(g + 0.3f * testing::random_direction(rng));
-        detail::ShadeChunk& lane = lanes.chunk(i);
+        detail::LaneChunk& lane = lanes.chunk(i);
         const int j = detail::lane_in_chunk(i);
         for (int a = 0; a < 3; ++a) {
             lane.direction[a][j] = d[a];
@@ -87,9 +87,9 @@ TEST(WhittedShade, EveryLevelShadesAlike) {
     scene.lights = random_lights(rng);
     scene.ambient = Vec3(0.3f, 0.4f, 0.5f);
     const LaneShader reference(scene, SimdLevel::portable);
-    auto input = std::make_unique<detail::ShadeLanes>();
-    auto expected = std::make_unique<detail::ShadeLanes>();
-    auto got = std::make_unique<detail::ShadeLanes>();
+    auto input = std::make_unique<detail::BlockLanes>();
+    auto expected = std::make_unique<detail::BlockLanes>();
+    auto got = std::make_unique<detail::BlockLanes>();
     for (int round = 0; round < 8; ++round) {
         fill_random_lanes(rng, static_cast<uint32_t>(scene.materials.size()),
                           static_cast<uint32_t>(scene.lights.size()), *input);
@@ -101,17 +101,17 @@ TEST(WhittedShade, EveryLevelShadesAlike) {
             const int j = detail::lane_in_chunk(i);
             input->chunk(i).active[j] = 0, input->chunk(i).material[j] = 0;
         }
-        std::memcpy(expected.get(), input.get(), sizeof(detail::ShadeLanes));
+        std::memcpy(expected.get(), input.get(), sizeof(detail::BlockLanes));
         reference.shade(*expected, count, true);
         for (SimdLevel level : {SimdLevel::avx2, SimdLevel::avx512}) {
             if (!simd_level_supported(level)) continue;
             SCOPED_TRACE(simd_level_name(level));
-            std::memcpy(got.get(), input.get(), sizeof(detail::ShadeLanes));
+            std::memcpy(got.get(), input.get(), sizeof(detail::BlockLanes));
             LaneShader(scene, level).shade(*got, count, true);
             for (int i = 0; i < count; ++i) {
                 const int j = detail::lane_in_chunk(i);
-                const detail::ShadeChunk& want = expected->chunk(i);
-                const detail::ShadeChunk& have = got->chunk(i);
+                const detail::LaneChunk& want = expected->chunk(i);
+                const detail::LaneChunk& have = got->chunk(i);
                 if (!input->chunk(i).active[j]) continue;
                 ASSERT_EQ(want.shadow_rays[j], have.shadow_rays[j]);
                 ASSERT_EQ(want.scalar_specular[j], have.scalar_specular[j]);

@@ -11,20 +11,62 @@ namespace hikari {
 
 namespace detail {
 
-void primary_directions_portable(const PrimaryCamera& cam, PrimaryLanes& lanes) {
-    directions_kernel(cam, lanes);
+void primary_directions_portable(const PrimaryCamera& cam, int chunks, BlockLanes& lanes) {
+    directions_kernel(cam, chunks, lanes);
 }
 
-void primary_analytic_portable(const PrimaryAnalytic& a, int count, PrimaryLanes& lanes) {
-    analytic_kernel(a, count, lanes);
+void primary_analytic_portable(const PrimaryAnalytic& a, int chunks, BlockLanes& lanes) {
+    analytic_kernel(a, chunks, lanes);
+}
+
+void primary_describe_portable(const PrimaryObjects& o, int chunks, BlockLanes& lanes) {
+    describe_kernel(o, chunks, lanes);
 }
 
 void primary_shadows_portable(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
-                              int count, ShadowLanes& lanes) {
-    shadow_kernel(light, casters, count, lanes);
+                              int chunks, BlockLanes& lanes) {
+    shadow_kernel(light, casters, chunks, lanes);
 }
 
 }  // namespace detail
+
+namespace {
+
+/// The kernel of `level` among one kernel's three builds.
+template <class Kernel>
+Kernel* pick(SimdLevel level, Kernel* portable, Kernel* avx2, Kernel* avx512) {
+    switch (level) {
+        case SimdLevel::avx512:
+            return avx512;
+        case SimdLevel::avx2:
+            return avx2;
+        default:
+            return portable;
+    }
+}
+
+}  // namespace
+
+Ray PrimaryBlock::ray(int k) const {
+    const detail::LaneChunk& c = lanes.chunk(k);
+    const int j = detail::lane_in_chunk(k);
+    return {{c.origin[0][j], c.origin[1][j], c.origin[2][j]},
+            {c.direction[0][j], c.direction[1][j], c.direction[2][j]}};
+}
+
+SurfaceHit PrimaryBlock::hit(int k) const {
+    const detail::LaneChunk& c = lanes.chunk(k);
+    const int j = detail::lane_in_chunk(k);
+    SurfaceHit hit;
+    hit.t = c.t[j];
+    hit.position = {c.position[0][j], c.position[1][j], c.position[2][j]};
+    hit.geometric_normal = {c.geometric_normal[0][j], c.geometric_normal[1][j],
+                            c.geometric_normal[2][j]};
+    hit.shading_normal = {c.shading_normal[0][j], c.shading_normal[1][j], c.shading_normal[2][j]};
+    hit.material = static_cast<uint32_t>(c.material[j]);
+    hit.id = c.id[j];
+    return hit;
+}
 
 void PrimaryHitTracer::Analytic::add(const Sphere& s) {
     for (int a = 0; a < 3; ++a) sphere_center[a].push_back(s.center[a]);
@@ -51,16 +93,41 @@ detail::PrimaryAnalytic PrimaryHitTracer::Analytic::view() const {
     return v;
 }
 
+void PrimaryHitTracer::Objects::add(int32_t sphere, Vec3 c, float inverse_r, Vec3 n,
+                                    uint32_t object_material, PrimitiveId object_id) {
+    is_sphere.push_back(sphere);
+    for (int a = 0; a < 3; ++a) center[a].push_back(c[a]), normal[a].push_back(n[a]);
+    inverse_radius.push_back(inverse_r);
+    material.push_back(static_cast<int32_t>(object_material));
+    id.push_back(object_id);
+}
+
+detail::PrimaryObjects PrimaryHitTracer::Objects::view() const {
+    detail::PrimaryObjects v{};
+    v.is_sphere = is_sphere.data();
+    for (int a = 0; a < 3; ++a) v.center[a] = center[a].data(), v.normal[a] = normal[a].data();
+    v.inverse_radius = inverse_radius.data();
+    v.material = material.data();
+    v.id = id.data();
+    return v;
+}
+
 PrimaryHitTracer::PrimaryHitTracer(const SceneIntersector& intersector, const Scene& scene,
                                    const CameraFrame& frame, SimdLevel level)
     : m_intersector(intersector), m_scene(scene), m_frame(frame), m_level(level) {
+    // Object codes 0 (no hit) and 1 (triangle) first, then spheres, then planes. A sphere's
+    // normal is (p - centre) / radius, which Vec3's operator/ computes as (p - centre) * (1 /
+    // radius).
+    for (int none = 0; none < 2; ++none) m_objects.add(0, Vec3(0.0f), 0.0f, Vec3(0.0f), 0, 0);
     for (const Sphere& s : scene.spheres) {
         m_analytic.add(s);
         if (s.casts_shadow) m_casters.add(s);
+        m_objects.add(1, s.center, 1.0f / s.radius, Vec3(0.0f), s.material, s.id);
     }
     for (const Plane& p : scene.planes) {
         m_analytic.add(p);
         if (p.casts_shadow) m_casters.add(p);
+        m_objects.add(0, Vec3(0.0f), 0.0f, p.normal, p.material, p.id);
     }
     for (const Light& light : scene.lights) {
         detail::PrimaryShadowLight l{};
@@ -90,140 +157,115 @@ void PrimaryHitTracer::trace(int x0, int y0, int width, int height, PrimaryBlock
     cam.x0 = x0;
     cam.y0 = y0;
 
-    // 1. The camera rays, all lanes at once.
-    detail::PrimaryLanes lanes;
-    switch (m_level) {
-        case SimdLevel::avx512:
-            detail::primary_directions_avx512(cam, lanes);
-            break;
-        case SimdLevel::avx2:
-            detail::primary_directions_avx2(cam, lanes);
-            break;
-        default:
-            detail::primary_directions_portable(cam, lanes);
-    }
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            const int i = y * k_primary_block + x;
-            block.rays[i] = {m_frame.eye,
-                             {lanes.direction[0][i], lanes.direction[1][i], lanes.direction[2][i]}};
-        }
+    // 1. The camera rays, one chunk per row.
+    block.chunks = height;
+    pick(m_level, detail::primary_directions_portable, detail::primary_directions_avx2,
+         detail::primary_directions_avx512)(cam, height, block.lanes);
 
     // 2. Triangles: the block as 4x4 packets through the wide BVH.
     TriangleHit triangle_hits[k_primary_block_rays];
     if (m_scene.triangles.size() > 0) {
-        uint8_t* found = block.found;
-        intersect_closest_tile(m_intersector.bvh(), block.rays, k_primary_block,
+        Ray rays[k_primary_block_rays];
+        uint8_t found[k_primary_block_rays];
+        for (int k = 0; k < height * k_primary_block; ++k) rays[k] = block.ray(k);
+        intersect_closest_tile(m_intersector.bvh(), rays, k_primary_block,
                                static_cast<uint32_t>(width), static_cast<uint32_t>(height),
                                {0.0f, k_infinity}, triangle_hits, found, m_level);
         for (int y = 0; y < height; ++y)
             for (int x = 0; x < width; ++x) {
-                const int i = y * k_primary_block + x;
-                if (found[i]) lanes.t[i] = triangle_hits[i].t, lanes.object[i] = 1;
+                const int k = y * k_primary_block + x;
+                if (!found[k]) continue;
+                detail::LaneChunk& chunk = block.lanes.chunks[y];
+                chunk.t[x] = triangle_hits[k].t, chunk.object[x] = 1;
             }
     }
-    finish(
-        lanes, triangle_hits, height * k_primary_block,
-        [&](int i) { return i % k_primary_block < width && i / k_primary_block < height; }, block);
+
+    // 3. Spheres and planes; pixels right of the image's edge hold no ray of the block.
+    pick(m_level, detail::primary_analytic_portable, detail::primary_analytic_avx2,
+         detail::primary_analytic_avx512)(m_analytic.view(), height, block.lanes);
+    if (width < k_primary_block)
+        for (int y = 0; y < height; ++y)
+            std::fill(block.lanes.chunks[y].object + width,
+                      block.lanes.chunks[y].object + k_lane_chunk, 0);
+    finish(triangle_hits, block);
 }
 
-void PrimaryHitTracer::trace_rays(int count, PrimaryBlock& block) const {
-    detail::PrimaryLanes lanes;
+void PrimaryHitTracer::trace_rays(const Ray* rays, int count, PrimaryBlock& block) const {
     TriangleHit triangle_hits[k_primary_block_rays];
     const bool triangles = m_scene.triangles.size() > 0;
-    for (int i = 0; i < lanes_for(count); ++i) {
-        const Ray ray = i < count ? block.rays[i] : Ray{m_frame.eye, {0.0f, 0.0f, 1.0f}};
-        for (int a = 0; a < 3; ++a) lanes.origin[a][i] = ray.origin[a];
-        for (int a = 0; a < 3; ++a) lanes.direction[a][i] = ray.direction[a];
-        lanes.t[i] = k_infinity;
-        lanes.object[i] = 0;
-        if (triangles && i < count &&
-            intersect_closest(m_intersector.bvh(), ray, {0.0f, k_infinity}, triangle_hits[i]))
-            lanes.t[i] = triangle_hits[i].t, lanes.object[i] = 1;
+    const int used = lanes_for(count);
+    block.chunks = used / k_lane_chunk;
+    for (int k = 0; k < used; ++k) {
+        // The last chunk's spare lanes: a harmless finite ray, its hit dropped below.
+        const Ray ray = k < count ? rays[k] : Ray{m_frame.eye, {0.0f, 0.0f, 1.0f}};
+        detail::LaneChunk& chunk = block.lanes.chunk(k);
+        const int j = detail::lane_in_chunk(k);
+        for (int a = 0; a < 3; ++a) {
+            chunk.origin[a][j] = ray.origin[a];
+            chunk.direction[a][j] = ray.direction[a];
+        }
+        chunk.t[j] = k_infinity;
+        chunk.object[j] = 0;
+        if (triangles && k < count &&
+            intersect_closest(m_intersector.bvh(), ray, {0.0f, k_infinity}, triangle_hits[k]))
+            chunk.t[j] = triangle_hits[k].t, chunk.object[j] = 1;
     }
-    finish(
-        lanes, triangle_hits, count, [&](int i) { return i < count; }, block);
+    pick(m_level, detail::primary_analytic_portable, detail::primary_analytic_avx2,
+         detail::primary_analytic_avx512)(m_analytic.view(), block.chunks, block.lanes);
+    for (int k = count; k < used; ++k) block.lanes.chunk(k).object[detail::lane_in_chunk(k)] = 0;
+    finish(triangle_hits, block);
 }
 
-template <class ValidLane>
-void PrimaryHitTracer::finish(detail::PrimaryLanes& lanes, const TriangleHit* triangle_hits,
-                              int count, ValidLane valid, PrimaryBlock& block) const {
-    const int used = lanes_for(count);
-    // 3. Spheres and planes, each against every chunk of lanes that holds rays.
-    const detail::PrimaryAnalytic analytic = m_analytic.view();
-    switch (m_level) {
-        case SimdLevel::avx512:
-            detail::primary_analytic_avx512(analytic, count, lanes);
-            break;
-        case SimdLevel::avx2:
-            detail::primary_analytic_avx2(analytic, count, lanes);
-            break;
-        default:
-            detail::primary_analytic_portable(analytic, count, lanes);
-    }
-
-    // 4. Each hit described as SceneIntersector::closest describes it.
-    const auto spheres = static_cast<int32_t>(m_scene.spheres.size());
-    for (int i = 0; i < used; ++i) {
-        const int32_t object = valid(i) ? lanes.object[i] : 0;
-        block.found[i] = object != 0 ? 1 : 0;
-        if (object == 0) continue;
-        const HitKind kind = object == 1            ? HitKind::triangle
-                             : object < 2 + spheres ? HitKind::sphere
-                                                    : HitKind::plane;
-        const size_t index = kind == HitKind::sphere  ? static_cast<size_t>(object - 2)
-                             : kind == HitKind::plane ? static_cast<size_t>(object - 2 - spheres)
-                                                      : 0;
-        m_intersector.describe_hit(block.rays[i], lanes.t[i], kind, index, triangle_hits[i],
-                                   block.hits[i]);
-    }
-
-    std::fill(block.found + used, block.found + k_primary_block_rays, uint8_t{0});
+void PrimaryHitTracer::finish(const TriangleHit* triangle_hits, PrimaryBlock& block) const {
+    const int chunks = block.chunks;
+    detail::BlockLanes& lanes = block.lanes;
+    // 4. Each hit described as SceneIntersector::closest describes it: spheres and planes in the
+    // lanes, triangles one at a time.
+    pick(m_level, detail::primary_describe_portable, detail::primary_describe_avx2,
+         detail::primary_describe_avx512)(m_objects.view(), chunks, lanes);
+    const bool triangles = m_scene.triangles.size() > 0;
+    if (triangles)
+        for (int k = 0; k < chunks * k_lane_chunk; ++k) {
+            detail::LaneChunk& chunk = lanes.chunk(k);
+            const int j = detail::lane_in_chunk(k);
+            if (chunk.object[j] != 1) continue;
+            SurfaceHit hit;
+            m_intersector.describe_hit(block.ray(k), chunk.t[j], HitKind::triangle, 0,
+                                       triangle_hits[k], hit);
+            for (int a = 0; a < 3; ++a) {
+                chunk.position[a][j] = hit.position[a];
+                chunk.geometric_normal[a][j] = hit.geometric_normal[a];
+                chunk.shading_normal[a][j] = hit.shading_normal[a];
+            }
+            chunk.material[j] = static_cast<int32_t>(hit.material);
+            chunk.id[j] = hit.id;
+        }
 
     // 5. The hits' shadow rays, one light at a time against all of them (Boulos et al. 2007 trace
     // shadow rays as packets too: from nearby points toward one light they stay coherent).
     block.shadows_known = m_lights.size() <= k_max_block_lights;
     if (!block.shadows_known) return;
-    // The hits packed into the shadow lanes (lane k is block entry hit_of[k]): the kernel's
-    // work follows the hits, and a block of sky traces no shadow rays at all.
-    detail::ShadowLanes shadow;
-    int32_t hit_of[k_primary_block_rays];
-    int hits = 0;
-    for (int i = 0; i < used; ++i) {
-        block.lit[i] = 0;
-        if (!block.found[i]) continue;
-        const SurfaceHit& hit = block.hits[i];
-        // The geometric normal facing the incoming ray, as shade() takes it.
-        const Vec3 ng = dot(hit.geometric_normal, block.rays[i].direction) < 0.0f
-                            ? hit.geometric_normal
-                            : -hit.geometric_normal;
-        for (int a = 0; a < 3; ++a)
-            shadow.position[a][hits] = hit.position[a], shadow.normal[a][hits] = ng[a];
-        hit_of[hits++] = i;
-    }
-    if (hits == 0) return;
-    for (int k = hits; k < lanes_for(hits); ++k)  // the last chunk's spare lanes: harmless rays
-        for (int a = 0; a < 3; ++a) shadow.position[a][k] = 0.0f, shadow.normal[a][k] = 0.0f;
+    for (int c = 0; c < chunks; ++c) std::fill_n(lanes.chunks[c].lit, k_lane_chunk, 0);
+    const auto shadows = pick(m_level, detail::primary_shadows_portable,
+                              detail::primary_shadows_avx2, detail::primary_shadows_avx512);
     const detail::PrimaryAnalytic casters = m_casters.view();
-    const bool triangles = m_scene.triangles.size() > 0;
     for (size_t l = 0; l < m_lights.size(); ++l) {
-        switch (m_level) {
-            case SimdLevel::avx512:
-                detail::primary_shadows_avx512(m_lights[l], casters, hits, shadow);
-                break;
-            case SimdLevel::avx2:
-                detail::primary_shadows_avx2(m_lights[l], casters, hits, shadow);
-                break;
-            default:
-                detail::primary_shadows_portable(m_lights[l], casters, hits, shadow);
-        }
-        for (int k = 0; k < hits; ++k) {
-            if (shadow.blocked[k]) continue;
-            const Ray ray{{shadow.origin[0][k], shadow.origin[1][k], shadow.origin[2][k]},
-                          {shadow.to_light[0][k], shadow.to_light[1][k], shadow.to_light[2][k]}};
-            if (triangles && m_intersector.occluded_by_triangles(ray, {0.0f, shadow.distance[k]}))
-                continue;
-            block.lit[hit_of[k]] |= static_cast<uint8_t>(1u << l);
+        shadows(m_lights[l], casters, chunks, lanes);
+        const int32_t bit = 1 << l;
+        for (int c = 0; c < chunks; ++c) {
+            detail::LaneChunk& chunk = lanes.chunks[c];
+            if (!any_active(chunk)) continue;  // the kernel skipped it
+            for (int j = 0; j < k_lane_chunk; ++j) {
+                if (!chunk.active[j] || chunk.blocked[j]) continue;
+                const Ray ray{{chunk.shadow_origin[0][j], chunk.shadow_origin[1][j],
+                               chunk.shadow_origin[2][j]},
+                              {chunk.shadow_direction[0][j], chunk.shadow_direction[1][j],
+                               chunk.shadow_direction[2][j]}};
+                if (triangles &&
+                    m_intersector.occluded_by_triangles(ray, {0.0f, chunk.shadow_distance[j]}))
+                    continue;
+                chunk.lit[j] |= bit;
+            }
         }
     }
 }

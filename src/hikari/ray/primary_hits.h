@@ -16,37 +16,35 @@
 #include <vector>
 
 #include "hikari/core/ray.h"
+#include "hikari/ray/block_lanes.h"
 #include "hikari/ray/scene_intersector.h"
 #include "hikari/ray/simd_level.h"
 #include "hikari/scene/camera.h"
 
 namespace hikari {
 
-/// Edge of the largest block of camera rays traced at once, in pixels.
-inline constexpr int k_primary_block = 16;
-/// Rays in a full block.
-inline constexpr int k_primary_block_rays = k_primary_block * k_primary_block;
-/// Lanes the kernels compute together: their loops run over whole chunks (a constant trip count,
-/// which is what lets g++ vectorise them), only as many chunks as hold rays.
-inline constexpr int k_lane_chunk = 16;
-/// Lanes that hold `count` rays: count rounded up to whole chunks.
-constexpr int lanes_for(int count) {
-    return (count + k_lane_chunk - 1) / k_lane_chunk * k_lane_chunk;
-}
-/// The most lights whose shadow rays a block traces (one bit each in PrimaryBlock::lit).
-inline constexpr size_t k_max_block_lights = 8;
-
-/// The camera rays of a block of at most 16 x 16 pixels and their nearest hits, row-major with
-/// a row stride of k_primary_block: entry y * k_primary_block + x is pixel (x0 + x, y0 + y).
+/// The rays of a block (at most 16 x 16 camera rays, or any k_primary_block_rays rays) and their
+/// nearest hits, in lanes (ray/block_lanes.h). For camera rays, lane y * k_primary_block + x is
+/// pixel (x0 + x, y0 + y).
 struct PrimaryBlock {
-    Ray rays[k_primary_block_rays];         ///< the ray through each pixel centre
-    SurfaceHit hits[k_primary_block_rays];  ///< its nearest hit, where found
-    uint8_t found[k_primary_block_rays];    ///< 1 where the ray hits something (t in (0, ∞))
-    /// Where found and `shadows_known`: bit l set when the shadow ray of the hit toward light l
-    /// (from offset_ray_origin(position, geometric normal facing the ray), as shade_local
-    /// builds it) is unblocked, as SceneIntersector::occluded answers.
-    uint8_t lit[k_primary_block_rays];
+    detail::BlockLanes lanes;
+    /// Chunks of `lanes` that hold rays (camera rays: the block's rows); the others hold none.
+    int chunks = 0;
+    /// Where a hit and `shadows_known`: bit l of lit set when the shadow ray of the hit toward
+    /// light l (from offset_ray_origin(position, geometric normal facing the ray), as
+    /// shade_local builds it) is unblocked, as SceneIntersector::occluded answers.
     bool shadows_known = false;  ///< false: `lit` not filled (more than k_max_block_lights)
+
+    /// Whether lane k's ray hits something (t in (0, ∞)).
+    bool found(int k) const { return lanes.chunk(k).active[detail::lane_in_chunk(k)] != 0; }
+    /// Lane k's ray.
+    Ray ray(int k) const;
+    /// Lane k's nearest hit, where found.
+    SurfaceHit hit(int k) const;
+    /// Lane k's shadow answers (bit l: light l unblocked), where found and shadows_known.
+    uint8_t lit(int k) const {
+        return static_cast<uint8_t>(lanes.chunk(k).lit[detail::lane_in_chunk(k)]);
+    }
 };
 
 namespace detail {
@@ -61,7 +59,17 @@ struct PrimaryAnalytic {
     int32_t planes;
 };
 
-struct PrimaryLanes;
+/// What describing a hit reads per object code (LaneChunk::object): for spheres the centre and
+/// 1 / radius, for planes the normal, and every object's material and id. Codes 0 (no hit) and
+/// 1 (triangle, described one lane at a time) hold zeros.
+struct PrimaryObjects {
+    const int32_t* is_sphere;
+    const float* center[3];
+    const float* inverse_radius;
+    const float* normal[3];
+    const int32_t* material;
+    const uint32_t* id;
+};
 
 /// One light as the shadow kernel reads it.
 struct PrimaryShadowLight {
@@ -87,11 +95,11 @@ class PrimaryHitTracer {
     /// lights each hit sees (the shadow rays of the hits traced together too).
     void trace(int x0, int y0, int width, int height, PrimaryBlock& block) const;
 
-    /// The same for any rays (a Whitted tracer's mirror and refracted rays): block.rays[0,
-    /// count) are given (count at most k_primary_block_rays, unit directions), and entry i of
-    /// hits, found and lit is filled for each, as trace() fills them; entries past `count` get
-    /// found = 0. Triangles are found one ray at a time (such rays are rarely coherent).
-    void trace_rays(int count, PrimaryBlock& block) const;
+    /// The same for any rays (a Whitted tracer's mirror and refracted rays): `rays[0, count)`
+    /// (count in [1, k_primary_block_rays], unit directions) go to lanes [0, count) of `block`,
+    /// each with its hit and lit filled as trace() fills them; the rest of the last chunk holds
+    /// no hit. Triangles are found one ray at a time (such rays are rarely coherent).
+    void trace_rays(const Ray* rays, int count, PrimaryBlock& block) const;
 
   private:
     /// Spheres and planes in structure-of-arrays form, one entry per primitive, for the lanes.
@@ -105,12 +113,20 @@ class PrimaryHitTracer {
         detail::PrimaryAnalytic view() const;
     };
 
-    /// Steps shared by trace() and trace_rays(): spheres and planes after the triangles already
-    /// in `lanes`, each hit described into `block`, and the hits' shadow rays, for the lanes
-    /// [0, lanes_for(count)). `valid(i)` says whether lane i is a ray of the block.
-    template <class ValidLane>
-    void finish(detail::PrimaryLanes& lanes, const TriangleHit* triangle_hits, int count,
-                ValidLane valid, PrimaryBlock& block) const;
+    /// Per object code, what describing a hit reads (detail::PrimaryObjects).
+    struct Objects {
+        std::vector<int32_t> is_sphere, material;
+        std::vector<float> center[3], inverse_radius, normal[3];
+        std::vector<uint32_t> id;
+
+        void add(int32_t sphere, Vec3 center, float inverse_radius, Vec3 normal, uint32_t material,
+                 PrimitiveId id);
+        detail::PrimaryObjects view() const;
+    };
+
+    /// Steps shared by trace() and trace_rays() once every lane's nearest hit is known (object 0
+    /// in lanes that hold no ray): each hit described, and the hits' shadow rays.
+    void finish(const TriangleHit* triangle_hits, PrimaryBlock& block) const;
 
     const SceneIntersector& m_intersector;
     const Scene& m_scene;
@@ -118,22 +134,11 @@ class PrimaryHitTracer {
     SimdLevel m_level;
     Analytic m_analytic;
     Analytic m_casters;  ///< the spheres and planes that cast shadows
+    Objects m_objects;
     std::vector<detail::PrimaryShadowLight> m_lights;
 };
 
 namespace detail {
-
-/// What the lane kernels (primary_hits_kernel.h) read and write for one block. Lane i is pixel
-/// (x0 + i % 16, y0 + i / 16) for camera rays, entry i of the block for trace_rays(). The kernels
-/// compute whole chunks of k_lane_chunk lanes, so the lanes past the last ray in its chunk hold
-/// harmless finite rays, never read back.
-struct alignas(64) PrimaryLanes {
-    float origin[3][k_primary_block_rays];     ///< ray origin per lane
-    float direction[3][k_primary_block_rays];  ///< unit ray direction per lane
-    float t[k_primary_block_rays];             ///< in: nearest triangle t or ∞; out: nearest t
-    /// in: 0 none, 1 triangle; out: also 2 + i for sphere i, 2 + spheres + j for plane j.
-    int32_t object[k_primary_block_rays];
-};
 
 /// Camera parameters the kernel needs, as plain floats.
 struct PrimaryCamera {
@@ -142,34 +147,29 @@ struct PrimaryCamera {
     int x0, y0;
 };
 
-/// The shadow rays of a block's hits toward one light, lane by lane.
-struct alignas(64) ShadowLanes {
-    float position[3][k_primary_block_rays];  ///< in: hit point
-    float normal[3][k_primary_block_rays];    ///< in: geometric normal facing the camera ray
-    float origin[3][k_primary_block_rays];    ///< out: shadow-ray origin, offset off the surface
-    float to_light[3][k_primary_block_rays];  ///< out: unit direction toward the light
-    float distance[k_primary_block_rays];     ///< out: distance to the light (∞: directional)
-    int32_t blocked[k_primary_block_rays];    ///< out: 1 where a casting sphere or plane blocks
-};
+// The kernels for each SIMD level; each works on the first `chunks` chunks of `lanes`.
 
-/// Camera rays of a block, without hits yet (kernel for each SIMD level).
-void primary_directions_portable(const PrimaryCamera& cam, PrimaryLanes& lanes);
-void primary_directions_avx2(const PrimaryCamera& cam, PrimaryLanes& lanes);
-void primary_directions_avx512(const PrimaryCamera& cam, PrimaryLanes& lanes);
-/// Spheres and planes against lanes [0, lanes_for(count)), after the triangles (kernel for
-/// each SIMD level). Lanes past `count` must hold a harmless finite ray.
-void primary_analytic_portable(const PrimaryAnalytic& a, int count, PrimaryLanes& lanes);
-void primary_analytic_avx2(const PrimaryAnalytic& a, int count, PrimaryLanes& lanes);
-void primary_analytic_avx512(const PrimaryAnalytic& a, int count, PrimaryLanes& lanes);
-
-/// Shadow rays of lanes [0, lanes_for(count)) toward one light against the casting spheres and
-/// planes (each SIMD level).
+/// Camera rays of a block, one chunk per row, without hits yet (t = ∞, object 0).
+void primary_directions_portable(const PrimaryCamera& cam, int chunks, BlockLanes& lanes);
+void primary_directions_avx2(const PrimaryCamera& cam, int chunks, BlockLanes& lanes);
+void primary_directions_avx512(const PrimaryCamera& cam, int chunks, BlockLanes& lanes);
+/// Spheres and planes after the triangles (t, object). Every lane must hold a finite ray.
+void primary_analytic_portable(const PrimaryAnalytic& a, int chunks, BlockLanes& lanes);
+void primary_analytic_avx2(const PrimaryAnalytic& a, int chunks, BlockLanes& lanes);
+void primary_analytic_avx512(const PrimaryAnalytic& a, int chunks, BlockLanes& lanes);
+/// Each lane's hit described from its t and object (active, position, normals, material, id;
+/// zeros where no hit). Triangle hits get only active and a position, to be described apart.
+void primary_describe_portable(const PrimaryObjects& o, int chunks, BlockLanes& lanes);
+void primary_describe_avx2(const PrimaryObjects& o, int chunks, BlockLanes& lanes);
+void primary_describe_avx512(const PrimaryObjects& o, int chunks, BlockLanes& lanes);
+/// The hits' shadow rays toward one light against the casting spheres and planes (shadow_*
+/// and blocked), in the chunks that hold a hit.
 void primary_shadows_portable(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
-                              int count, ShadowLanes& lanes);
+                              int chunks, BlockLanes& lanes);
 void primary_shadows_avx2(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
-                          int count, ShadowLanes& lanes);
+                          int chunks, BlockLanes& lanes);
 void primary_shadows_avx512(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
-                            int count, ShadowLanes& lanes);
+                            int chunks, BlockLanes& lanes);
 
 }  // namespace detail
 

@@ -14,32 +14,39 @@
 
 namespace hikari::detail {
 
-void primary_directions_avx512(const PrimaryCamera& cam, PrimaryLanes& lanes) {
-    directions_kernel(cam, lanes);
+void primary_directions_avx512(const PrimaryCamera& cam, int chunks, BlockLanes& lanes) {
+    directions_kernel(cam, chunks, lanes);
 }
 
-void primary_analytic_avx512(const PrimaryAnalytic& a, int count, PrimaryLanes& lanes) {
-    analytic_kernel(a, count, lanes);
+void primary_analytic_avx512(const PrimaryAnalytic& a, int chunks, BlockLanes& lanes) {
+    analytic_kernel(a, chunks, lanes);
+}
+
+void primary_describe_avx512(const PrimaryObjects& o, int chunks, BlockLanes& lanes) {
+    describe_kernel(o, chunks, lanes);
 }
 
 void primary_shadows_avx512(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
-                            int count, ShadowLanes& lanes) {
-    shadow_kernel(light, casters, count, lanes);
+                            int chunks, BlockLanes& lanes) {
+    shadow_kernel(light, casters, chunks, lanes);
 }
 
 }  // namespace hikari::detail
 #else
 namespace hikari::detail {
 // Never called: best_simd_level() is portable where the kernels are not compiled.
-void primary_directions_avx512(const PrimaryCamera& cam, PrimaryLanes& lanes) {
-    primary_directions_portable(cam, lanes);
+void primary_directions_avx512(const PrimaryCamera& cam, int chunks, BlockLanes& lanes) {
+    primary_directions_portable(cam, chunks, lanes);
 }
-void primary_analytic_avx512(const PrimaryAnalytic& a, int count, PrimaryLanes& lanes) {
-    primary_analytic_portable(a, count, lanes);
+void primary_analytic_avx512(const PrimaryAnalytic& a, int chunks, BlockLanes& lanes) {
+    primary_analytic_portable(a, chunks, lanes);
+}
+void primary_describe_avx512(const PrimaryObjects& o, int chunks, BlockLanes& lanes) {
+    primary_describe_portable(o, chunks, lanes);
 }
 void primary_shadows_avx512(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
-                            int count, ShadowLanes& lanes) {
-    primary_shadows_portable(light, casters, count, lanes);
+                            int chunks, BlockLanes& lanes) {
+    primary_shadows_portable(light, casters, chunks, lanes);
 }
 }  // namespace hikari::detail
 #endif

@@ -15,36 +15,36 @@
 namespace hikari::detail {
 namespace {
 
-constexpr int k_lanes = k_primary_block_rays;
-
 /// camera_ray(frame, x + 0.5, y + 0.5) for every lane: direction = normalize(forward + x right +
 /// y up) with x, y the pixel centre on the image plane one unit in front of the eye; no hit yet
-/// (t = ∞, object 0).
-[[maybe_unused]] void directions_kernel(const PrimaryCamera& cam, PrimaryLanes& lanes) {
-    float* __restrict dx = lanes.direction[0];
-    float* __restrict dy = lanes.direction[1];
-    float* __restrict dz = lanes.direction[2];
-    float* __restrict ox = lanes.origin[0];
-    float* __restrict oy = lanes.origin[1];
-    float* __restrict oz = lanes.origin[2];
-    float* __restrict t = lanes.t;
-    int32_t* __restrict object = lanes.object;
+/// (t = ∞, object 0). Chunk c is row y0 + c, lane i column x0 + i.
+[[maybe_unused]] void directions_kernel(const PrimaryCamera& cam, int chunks, BlockLanes& lanes) {
     const PrimaryCamera c = cam;  // a local copy: the stores below cannot change it
-    for (int i = 0; i < k_lanes; ++i) {
-        const int column = i % k_primary_block, row = i / k_primary_block;  // lane i's pixel
-        const float px = static_cast<float>(c.x0 + column) + 0.5f;
+    for (int row = 0; row < chunks; ++row) {
+        LaneChunk& chunk = lanes.chunks[row];
+        float* __restrict dx = chunk.direction[0];
+        float* __restrict dy = chunk.direction[1];
+        float* __restrict dz = chunk.direction[2];
+        float* __restrict ox = chunk.origin[0];
+        float* __restrict oy = chunk.origin[1];
+        float* __restrict oz = chunk.origin[2];
+        float* __restrict t = chunk.t;
+        int32_t* __restrict object = chunk.object;
         const float py = static_cast<float>(c.y0 + row) + 0.5f;
-        const float x = (2.0f * px / c.width - 1.0f) * c.tan_half_fov_y * c.aspect;
         const float y = (1.0f - 2.0f * py / c.height) * c.tan_half_fov_y;
-        const float vx = c.forward[0] + c.right[0] * x + c.up[0] * y;
-        const float vy = c.forward[1] + c.right[1] * x + c.up[1] * y;
-        const float vz = c.forward[2] + c.right[2] * x + c.up[2] * y;
-        const float inv_length = 1.0f / __builtin_sqrtf(vx * vx + vy * vy + vz * vz);
-        dx[i] = vx * inv_length;
-        dy[i] = vy * inv_length;
-        dz[i] = vz * inv_length;
-        ox[i] = c.eye[0], oy[i] = c.eye[1], oz[i] = c.eye[2];
-        t[i] = __builtin_inff(), object[i] = 0;
+        for (int i = 0; i < k_lane_chunk; ++i) {
+            const float px = static_cast<float>(c.x0 + i) + 0.5f;
+            const float x = (2.0f * px / c.width - 1.0f) * c.tan_half_fov_y * c.aspect;
+            const float vx = c.forward[0] + c.right[0] * x + c.up[0] * y;
+            const float vy = c.forward[1] + c.right[1] * x + c.up[1] * y;
+            const float vz = c.forward[2] + c.right[2] * x + c.up[2] * y;
+            const float inv_length = 1.0f / __builtin_sqrtf(vx * vx + vy * vy + vz * vz);
+            dx[i] = vx * inv_length;
+            dy[i] = vy * inv_length;
+            dz[i] = vz * inv_length;
+            ox[i] = c.eye[0], oy[i] = c.eye[1], oz[i] = c.eye[2];
+            t[i] = __builtin_inff(), object[i] = 0;
+        }
     }
 }
 
@@ -69,18 +69,18 @@ constexpr int k_lanes = k_primary_block_rays;
     return hit ? (near_in ? near : far) : __builtin_nanf("");
 }
 
-/// The nearest of the lanes' triangle hit (already in lanes.t / lanes.object), the spheres and
-/// the planes, tested in SceneIntersector::closest's order: a later primitive wins only when
-/// strictly nearer.
-inline void analytic_chunk(const PrimaryAnalytic& a, PrimaryLanes& lanes, int base) {
-    const float* __restrict ox = lanes.origin[0] + base;
-    const float* __restrict oy = lanes.origin[1] + base;
-    const float* __restrict oz = lanes.origin[2] + base;
-    const float* __restrict dx = lanes.direction[0] + base;
-    const float* __restrict dy = lanes.direction[1] + base;
-    const float* __restrict dz = lanes.direction[2] + base;
-    float* __restrict t_max = lanes.t + base;
-    int32_t* __restrict object = lanes.object + base;
+/// The nearest of the lanes' triangle hit (already in t / object), the spheres and the planes,
+/// tested in SceneIntersector::closest's order: a later primitive wins only when strictly
+/// nearer.
+inline void analytic_chunk(const PrimaryAnalytic& a, LaneChunk& chunk) {
+    const float* __restrict ox = chunk.origin[0];
+    const float* __restrict oy = chunk.origin[1];
+    const float* __restrict oz = chunk.origin[2];
+    const float* __restrict dx = chunk.direction[0];
+    const float* __restrict dy = chunk.direction[1];
+    const float* __restrict dz = chunk.direction[2];
+    float* __restrict t_max = chunk.t;
+    int32_t* __restrict object = chunk.object;
     const int32_t spheres = a.spheres, planes = a.planes;
 
     for (int32_t s = 0; s < spheres; ++s) {
@@ -112,9 +112,74 @@ inline void analytic_chunk(const PrimaryAnalytic& a, PrimaryLanes& lanes, int ba
     }
 }
 
-/// analytic_chunk for every chunk of lanes that holds one of the first `count`.
-[[maybe_unused]] void analytic_kernel(const PrimaryAnalytic& a, int count, PrimaryLanes& lanes) {
-    for (int base = 0; base < count; base += k_lane_chunk) analytic_chunk(a, lanes, base);
+/// analytic_chunk for the first `chunks` chunks.
+[[maybe_unused]] void analytic_kernel(const PrimaryAnalytic& a, int chunks, BlockLanes& lanes) {
+    for (int c = 0; c < chunks; ++c) analytic_chunk(a, lanes.chunks[c]);
+}
+
+/// SceneIntersector::describe_hit for sphere and plane hits: position = origin + direction t,
+/// a sphere's normal (position - centre) (1 / radius), a plane's its own. Each object present in
+/// the chunk (usually one or two) has its values broadcast into its lanes: g++ vectorises such
+/// selects but emulates table lookups one lane at a time.
+inline void describe_chunk(const PrimaryObjects& o, LaneChunk& chunk) {
+    const float* __restrict ox = chunk.origin[0];
+    const float* __restrict oy = chunk.origin[1];
+    const float* __restrict oz = chunk.origin[2];
+    const float* __restrict dx = chunk.direction[0];
+    const float* __restrict dy = chunk.direction[1];
+    const float* __restrict dz = chunk.direction[2];
+    const float* __restrict t = chunk.t;
+    const int32_t* __restrict object = chunk.object;
+    int32_t* __restrict active = chunk.active;
+    float* __restrict px = chunk.position[0];
+    float* __restrict py = chunk.position[1];
+    float* __restrict pz = chunk.position[2];
+    float* __restrict gx = chunk.geometric_normal[0];
+    float* __restrict gy = chunk.geometric_normal[1];
+    float* __restrict gz = chunk.geometric_normal[2];
+    float* __restrict sx = chunk.shading_normal[0];
+    float* __restrict sy = chunk.shading_normal[1];
+    float* __restrict sz = chunk.shading_normal[2];
+    int32_t* __restrict material = chunk.material;
+    uint32_t* __restrict id = chunk.id;
+    for (int i = 0; i < k_lane_chunk; ++i) {
+        const bool hit = object[i] != 0;
+        active[i] = hit ? 1 : 0;
+        px[i] = hit ? ox[i] + dx[i] * t[i] : 0.0f;
+        py[i] = hit ? oy[i] + dy[i] * t[i] : 0.0f;
+        pz[i] = hit ? oz[i] + dz[i] * t[i] : 0.0f;
+    }
+    int32_t present[k_lane_chunk];
+    int32_t present_count = 0;
+    for (int i = 0; i < k_lane_chunk; ++i) {
+        bool seen = false;
+        for (int32_t k = 0; k < present_count; ++k) seen = seen || present[k] == object[i];
+        if (!seen) present[present_count++] = object[i];
+    }
+    for (int32_t k = 0; k < present_count; ++k) {
+        const int32_t m = present[k];
+        const bool sphere = o.is_sphere[m] != 0;
+        const float cx = o.center[0][m], cy = o.center[1][m], cz = o.center[2][m];
+        const float inverse_radius = o.inverse_radius[m];
+        const float nx = o.normal[0][m], ny = o.normal[1][m], nz = o.normal[2][m];
+        const int32_t object_material = o.material[m];
+        const uint32_t object_id = o.id[m];
+        for (int i = 0; i < k_lane_chunk; ++i) {
+            const bool mine = object[i] == m;
+            const float ax = sphere ? (px[i] - cx) * inverse_radius : nx;
+            const float ay = sphere ? (py[i] - cy) * inverse_radius : ny;
+            const float az = sphere ? (pz[i] - cz) * inverse_radius : nz;
+            gx[i] = mine ? ax : gx[i], gy[i] = mine ? ay : gy[i], gz[i] = mine ? az : gz[i];
+            material[i] = mine ? object_material : material[i];
+            id[i] = mine ? object_id : id[i];
+        }
+    }
+    for (int i = 0; i < k_lane_chunk; ++i) sx[i] = gx[i], sy[i] = gy[i], sz[i] = gz[i];
+}
+
+/// describe_chunk for the first `chunks` chunks.
+[[maybe_unused]] void describe_kernel(const PrimaryObjects& o, int chunks, BlockLanes& lanes) {
+    for (int c = 0; c < chunks; ++c) describe_chunk(o, lanes.chunks[c]);
 }
 
 /// offset_ray_origin (ray/ray_offset.h) for one coordinate: p moved by 256 n ulps away from
@@ -130,30 +195,35 @@ inline void analytic_chunk(const PrimaryAnalytic& a, PrimaryLanes& lanes, int ba
 }
 
 /// Shadow rays from the lanes' hit points toward one light: shade_local's sample_light, the
-/// Wächter & Binder origin offset of offset_ray_origin (ray/ray_offset.h) and
-/// SceneIntersector::occluded's sphere and plane tests, per lane. Sets bit `light_bit` of
-/// lanes.lit where no shadow-casting sphere or plane blocks the ray.
+/// Wächter & Binder origin offset of offset_ray_origin (ray/ray_offset.h) from the geometric
+/// normal turned toward the camera ray (as shade() turns it), and SceneIntersector::occluded's
+/// sphere and plane tests, per lane. Lanes without a hit (zero position and normal) get
+/// harmless finite rays.
 inline void shadow_chunk(const PrimaryShadowLight& light, const PrimaryAnalytic& a,
-                         ShadowLanes& lanes, int base) {
-    const float* __restrict px = lanes.position[0] + base;
-    const float* __restrict py = lanes.position[1] + base;
-    const float* __restrict pz = lanes.position[2] + base;
-    const float* __restrict nx = lanes.normal[0] + base;
-    const float* __restrict ny = lanes.normal[1] + base;
-    const float* __restrict nz = lanes.normal[2] + base;
-    float* __restrict ox = lanes.origin[0] + base;
-    float* __restrict oy = lanes.origin[1] + base;
-    float* __restrict oz = lanes.origin[2] + base;
-    float* __restrict dx = lanes.to_light[0] + base;
-    float* __restrict dy = lanes.to_light[1] + base;
-    float* __restrict dz = lanes.to_light[2] + base;
-    float* __restrict distance = lanes.distance + base;
-    int32_t* __restrict blocked = lanes.blocked + base;
+                         LaneChunk& chunk) {
+    const float* __restrict px = chunk.position[0];
+    const float* __restrict py = chunk.position[1];
+    const float* __restrict pz = chunk.position[2];
+    const float* __restrict gx = chunk.geometric_normal[0];
+    const float* __restrict gy = chunk.geometric_normal[1];
+    const float* __restrict gz = chunk.geometric_normal[2];
+    const float* __restrict rx = chunk.direction[0];
+    const float* __restrict ry = chunk.direction[1];
+    const float* __restrict rz = chunk.direction[2];
+    float* __restrict ox = chunk.shadow_origin[0];
+    float* __restrict oy = chunk.shadow_origin[1];
+    float* __restrict oz = chunk.shadow_origin[2];
+    float* __restrict dx = chunk.shadow_direction[0];
+    float* __restrict dy = chunk.shadow_direction[1];
+    float* __restrict dz = chunk.shadow_direction[2];
+    float* __restrict distance = chunk.shadow_distance;
+    int32_t* __restrict blocked = chunk.blocked;
     const PrimaryShadowLight l = light;
     for (int i = 0; i < k_lane_chunk; ++i) {
-        ox[i] = offset_origin_lane(px[i], nx[i]);
-        oy[i] = offset_origin_lane(py[i], ny[i]);
-        oz[i] = offset_origin_lane(pz[i], nz[i]);
+        const bool facing = gx[i] * rx[i] + gy[i] * ry[i] + gz[i] * rz[i] < 0.0f;
+        ox[i] = offset_origin_lane(px[i], facing ? gx[i] : -gx[i]);
+        oy[i] = offset_origin_lane(py[i], facing ? gy[i] : -gy[i]);
+        oz[i] = offset_origin_lane(pz[i], facing ? gz[i] : -gz[i]);
     }
     // sample_light: unit direction toward the light and the distance to it.
     if (l.directional) {
@@ -196,10 +266,15 @@ inline void shadow_chunk(const PrimaryShadowLight& light, const PrimaryAnalytic&
     }
 }
 
-/// shadow_chunk for every chunk of lanes that holds one of the first `count`.
+/// shadow_chunk for each of the first `chunks` chunks that holds a hit.
 [[maybe_unused]] void shadow_kernel(const PrimaryShadowLight& light, const PrimaryAnalytic& a,
-                                    int count, ShadowLanes& lanes) {
-    for (int base = 0; base < count; base += k_lane_chunk) shadow_chunk(light, a, lanes, base);
+                                    int chunks, BlockLanes& lanes) {
+    for (int c = 0; c < chunks; ++c) {
+        LaneChunk& chunk = lanes.chunks[c];
+        int32_t any = 0;
+        for (int i = 0; i < k_lane_chunk; ++i) any |= chunk.active[i];
+        if (any != 0) shadow_chunk(light, a, chunk);
+    }
 }
 
 }  // namespace

@@ -65,9 +65,9 @@ const Material& material_at(const Material& m, Vec3 p, Material& storage) {
 
 Vec3 trace(TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* first_hit = nullptr);
 
-/// What a ray that hits nothing sees.
-Vec3 sky(const TraceContext& ctx, const Ray& ray) {
-    return ctx.scene.sky.colour(ray.direction, ctx.scene.background);
+/// What a ray along `direction` that hits nothing sees.
+Vec3 sky(const TraceContext& ctx, Vec3 direction) {
+    return ctx.scene.sky.colour(direction, ctx.scene.background);
 }
 
 /// Colour seen along `ray` (segment number `segment` of its path, primary = 1) whose nearest
@@ -107,7 +107,7 @@ Vec3 shade(TraceContext& ctx, const Ray& ray, const SurfaceHit& hit, int segment
 Vec3 trace(TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* first_hit) {
     ++ctx.rays;
     SurfaceHit hit;
-    if (!ctx.intersector.closest(ray, {0.0f, k_infinity}, hit)) return sky(ctx, ray);
+    if (!ctx.intersector.closest(ray, {0.0f, k_infinity}, hit)) return sky(ctx, ray.direction);
     if (first_hit) *first_hit = hit;
     return shade(ctx, ray, hit, segment);
 }
@@ -123,7 +123,6 @@ struct PathNode {
 /// What one thread keeps between tiles (the blocks are too big for a worker's stack).
 struct WaveScratch {
     PrimaryBlock block;
-    detail::ShadeLanes lanes;
     std::vector<std::vector<PathNode>> levels;
     std::vector<Ray> rays, next_rays;
 };
@@ -155,10 +154,7 @@ class WaveTracer {
         else
             level(0).resize(k_primary_block_rays);
         m_s.next_rays.clear();
-        shade_block(
-            block,
-            [&](int i) { return i % k_primary_block < width && i / k_primary_block < height; }, 1,
-            level(0).data());
+        shade_block(block, width, k_primary_block_rays, 1, level(0).data());
         int depth = 1;
         while (!m_s.next_rays.empty()) {
             std::swap(m_s.rays, m_s.next_rays);
@@ -169,11 +165,8 @@ class WaveTracer {
             for (size_t first = 0; first < m_s.rays.size(); first += k_primary_block_rays) {
                 const int count = static_cast<int>(
                     std::min<size_t>(k_primary_block_rays, m_s.rays.size() - first));
-                std::copy_n(m_s.rays.begin() + static_cast<std::ptrdiff_t>(first), count,
-                            block.rays);
-                m_hits.trace_rays(count, block);
-                shade_block(
-                    block, [&](int i) { return i < count; }, depth, nodes.data() + first);
+                m_hits.trace_rays(m_s.rays.data() + first, count, block);
+                shade_block(block, k_lane_chunk, count, depth, nodes.data() + first);
             }
         }
         fold(depth);
@@ -186,84 +179,59 @@ class WaveTracer {
         return m_s.levels[index];
     }
 
-    /// Shades the block's lanes that hold rays of path segment `segment` into `nodes` (one per
-    /// lane; every field of the node of each ray is set) and appends the rays they spawn to
-    /// next_rays.
-    template <class ValidLane>
-    void shade_block(const PrimaryBlock& block, ValidLane valid, int segment, PathNode* nodes) {
-        // The hits go to the lanes packed (lane k is block entry hit_of[k]), so the kernel's
-        // work follows the hits, not the block; misses see the sky.
-        detail::ShadeLanes& lanes = m_s.lanes;
-        int32_t hit_of[k_primary_block_rays];
-        int count = 0;
-        for (int i = 0; i < k_primary_block_rays; ++i) {
-            if (!valid(i)) continue;
-            ++m_ctx.rays;
-            if (!block.found[i]) {
-                nodes[i] = PathNode{sky(m_ctx, block.rays[i])};
-                continue;
-            }
-            const SurfaceHit& hit = block.hits[i];
-            const int k = count++;
-            hit_of[k] = i;
-            detail::ShadeChunk& lane = lanes.chunk(k);
-            const int j = detail::lane_in_chunk(k);
-            lane.active[j] = 1;
-            for (int a = 0; a < 3; ++a) {
-                lane.direction[a][j] = block.rays[i].direction[a];
-                lane.position[a][j] = hit.position[a];
-                lane.geometric_normal[a][j] = hit.geometric_normal[a];
-                lane.shading_normal[a][j] = hit.shading_normal[a];
-            }
-            lane.material[j] = static_cast<int32_t>(hit.material);
-            lane.lit[j] = block.lit[i];
-        }
-        if (count == 0) return;
-        // The rest of the last chunk's lanes are left as they are, only marked inactive: the
-        // kernel runs whole chunks of lanes and ignores their values.
-        for (int k = count; k < lanes_for(count); ++k) {
-            const int j = detail::lane_in_chunk(k);
-            lanes.chunk(k).active[j] = 0, lanes.chunk(k).material[j] = 0;
-        }
+    /// Shades the block's rays, which are of path segment `segment`, in place in its lanes, and
+    /// sets every field of their nodes in `nodes` (one per lane) and appends the rays they spawn
+    /// to next_rays. The rays are the lanes k < count whose lane in their chunk is < width.
+    void shade_block(PrimaryBlock& block, int width, int count, int segment, PathNode* nodes) {
         const bool spawn = segment < m_ctx.max_depth;
-        m_shader.shade(lanes, count, spawn);
-        for (int k = 0; k < count; ++k) {
-            const int i = hit_of[k];
-            const Ray& ray = block.rays[i];
-            PathNode& node = nodes[i];
-            const detail::ShadeChunk& lane = lanes.chunk(k);
-            const int j = detail::lane_in_chunk(k);
-            m_ctx.rays += lane.shadow_rays[j];
-            node = PathNode{{lane.colour[0][j], lane.colour[1][j], lane.colour[2][j]}};
-            if (lane.scalar_specular[j]) {
-                // A Phong exponent the lanes cannot raise exactly: the scalar code shades it
-                // (its ray count is already in shadow_rays).
-                TraceContext scalar = m_ctx;
-                const SurfaceHit& hit = block.hits[i];
-                Material storage;
-                const Material& m =
-                    material_at(m_ctx.scene.materials[hit.material], hit.position, storage);
-                node.colour = shade_local(
-                    scalar, m, hit.position,
-                    {lane.normal[0][j], lane.normal[1][j], lane.normal[2][j]},
-                    {lane.facing_normal[0][j], lane.facing_normal[1][j], lane.facing_normal[2][j]},
-                    -ray.direction, &block.lit[i]);
-            }
-            if (!spawn) continue;
-            // The next level's rays, in the order shade() traces them: mirror, then refracted.
-            const auto spawn_ray = [&](const float(&origin)[3][k_lane_chunk],
-                                       const float(&direction)[3][k_lane_chunk]) {
-                m_s.next_rays.push_back({{origin[0][j], origin[1][j], origin[2][j]},
-                                         {direction[0][j], direction[1][j], direction[2][j]}});
-                return static_cast<int32_t>(m_s.next_rays.size() - 1);
-            };
-            if (lane.mirror_weight[j] > 0.0f) {
-                node.mirror = spawn_ray(lane.mirror_origin, lane.mirror_direction);
-                node.mirror_weight = lane.mirror_weight[j];
-            }
-            if (lane.refract_weight[j] > 0.0f) {
-                node.refract = spawn_ray(lane.refract_origin, lane.refract_direction);
-                node.refract_weight = lane.refract_weight[j];
+        m_shader.shade(block.lanes, block.chunks * k_lane_chunk, spawn);
+        for (int c = 0; c < block.chunks; ++c) {
+            const detail::LaneChunk& lane = block.lanes.chunks[c];
+            for (int j = 0; j < width && c * k_lane_chunk + j < count; ++j) {
+                const int i = c * k_lane_chunk + j;
+                ++m_ctx.rays;
+                PathNode& node = nodes[i];
+                const Vec3 direction{lane.direction[0][j], lane.direction[1][j],
+                                     lane.direction[2][j]};
+                if (!lane.active[j]) {
+                    node = PathNode{sky(m_ctx, direction)};
+                    continue;
+                }
+                m_ctx.rays += lane.shadow_rays[j];
+                node = PathNode{{lane.colour[0][j], lane.colour[1][j], lane.colour[2][j]}};
+                if (lane.scalar_specular[j]) {
+                    // A Phong exponent the lanes cannot raise exactly: the scalar code shades
+                    // it (its ray count is already in shadow_rays).
+                    TraceContext scalar = m_ctx;
+                    const SurfaceHit hit = block.hit(i);
+                    const uint8_t lit = block.lit(i);
+                    Material storage;
+                    const Material& m =
+                        material_at(m_ctx.scene.materials[hit.material], hit.position, storage);
+                    node.colour =
+                        shade_local(scalar, m, hit.position,
+                                    {lane.normal[0][j], lane.normal[1][j], lane.normal[2][j]},
+                                    {lane.facing_normal[0][j], lane.facing_normal[1][j],
+                                     lane.facing_normal[2][j]},
+                                    -direction, &lit);
+                }
+                if (!spawn) continue;
+                // The next level's rays, in the order shade() traces them: mirror, then
+                // refracted.
+                const auto spawn_ray = [&](const float(&origin)[3][k_lane_chunk],
+                                           const float(&dir)[3][k_lane_chunk]) {
+                    m_s.next_rays.push_back({{origin[0][j], origin[1][j], origin[2][j]},
+                                             {dir[0][j], dir[1][j], dir[2][j]}});
+                    return static_cast<int32_t>(m_s.next_rays.size() - 1);
+                };
+                if (lane.mirror_weight[j] > 0.0f) {
+                    node.mirror = spawn_ray(lane.mirror_origin, lane.mirror_direction);
+                    node.mirror_weight = lane.mirror_weight[j];
+                }
+                if (lane.refract_weight[j] > 0.0f) {
+                    node.refract = spawn_ray(lane.refract_origin, lane.refract_direction);
+                    node.refract_weight = lane.refract_weight[j];
+                }
             }
         }
     }
@@ -340,9 +308,9 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
                     for (int y = tile.y0; y < tile.y1; ++y)
                         for (int x = tile.x0; x < tile.x1; ++x) {
                             const int k = (y - tile.y0) * k_primary_block + (x - tile.x0);
-                            if (block.found[k])
-                                store_aovs(static_cast<size_t>(y) * cam.width + x, block.rays[k],
-                                           block.hits[k]);
+                            if (block.found(k))
+                                store_aovs(static_cast<size_t>(y) * cam.width + x, block.ray(k),
+                                           block.hit(k));
                         }
                 });
             for (int y = tile.y0; y < tile.y1; ++y) {

@@ -10,7 +10,7 @@ namespace hikari {
 
 namespace detail {
 
-void shade_lanes_portable(const ShadeScene& scene, int spawn, int count, ShadeLanes& lanes) {
+void shade_lanes_portable(const ShadeScene& scene, int spawn, int count, BlockLanes& lanes) {
     shade_kernel(scene, spawn, count, lanes);
 }
 
@@ -97,7 +97,7 @@ LaneShader::LaneShader(const Scene& scene, SimdLevel level) : m_level(level) {
     for (int a = 0; a < 3; ++a) m_scene.ambient[a] = scene.ambient[a];
 }
 
-void LaneShader::shade(detail::ShadeLanes& lanes, int count, bool spawn) const {
+void LaneShader::shade(detail::BlockLanes& lanes, int count, bool spawn) const {
     switch (m_level) {
         case SimdLevel::avx512:
             detail::shade_lanes_avx512(m_scene, spawn ? 1 : 0, count, lanes);

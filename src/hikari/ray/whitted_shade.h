@@ -16,7 +16,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "hikari/ray/primary_hits.h"
+#include "hikari/ray/block_lanes.h"
 #include "hikari/ray/simd_level.h"
 #include "hikari/scene/scene.h"
 #include "hikari/shading/phong.h"
@@ -63,75 +63,16 @@ struct ShadeLight {
 struct ShadeScene {
     ShadeMaterials materials;
     const ShadeLight* lights;
-    int32_t light_count;  ///< at most k_max_block_lights (one bit each in ShadeLanes::lit)
+    int32_t light_count;  ///< at most k_max_block_lights (one bit each in BlockLanes::lit)
     float ambient[3];
 };
 
-/// The hits of k_lane_chunk lanes, structure-of-arrays, and what shading them gives.
-struct alignas(64) ShadeChunk {
-    // In: lane i is one ray and its nearest hit.
-    float direction[3][k_lane_chunk];         ///< unit direction of the incoming ray
-    float position[3][k_lane_chunk];          ///< hit point
-    float geometric_normal[3][k_lane_chunk];  ///< as SurfaceHit has it (not turned)
-    float shading_normal[3][k_lane_chunk];
-    int32_t material[k_lane_chunk];
-    int32_t lit[k_lane_chunk];  ///< bit l: the shadow ray toward light l is unblocked
-    /// 0: no hit in this lane; its outputs are not read and its other inputs may be anything
-    /// (NaN included) but its material must be a valid index.
-    int32_t active[k_lane_chunk];
-
-    // Out.
-    float colour[3][k_lane_chunk];          ///< local illumination (ambient + lit lights)
-    int32_t shadow_rays[k_lane_chunk];      ///< lights facing the point (shadow rays cast)
-    int32_t scalar_specular[k_lane_chunk];  ///< 1: colour must be recomputed by the scalar code
-    float normal[3][k_lane_chunk];          ///< shading normal turned toward the ray
-    float facing_normal[3][k_lane_chunk];   ///< geometric normal turned toward the ray
-    /// Only with spawning: weight of the mirror and refracted rays (0: no such ray) and the rays.
-    float mirror_weight[k_lane_chunk];
-    float refract_weight[k_lane_chunk];
-    float mirror_origin[3][k_lane_chunk];
-    float mirror_direction[3][k_lane_chunk];
-    float refract_origin[3][k_lane_chunk];
-    float refract_direction[3][k_lane_chunk];
-
-    // Scratch between the kernel's loops: each lane's material, then what shading it needs.
-    float ka[3][k_lane_chunk];
-    float kd[3][k_lane_chunk];
-    float ks[3][k_lane_chunk];
-    float offset[3][k_lane_chunk];
-    float color_a[3][k_lane_chunk];
-    float color_b[3][k_lane_chunk];
-    float inverse_size[k_lane_chunk];
-    float reflectivity[k_lane_chunk];
-    float transparency[k_lane_chunk];
-    float ior[k_lane_chunk];
-    int32_t textured[k_lane_chunk];
-    int32_t exponent[k_lane_chunk];
-    float to_light[3][k_lane_chunk];
-    float irradiance[3][k_lane_chunk];
-    float cos_gamma[k_lane_chunk];
-    float power[k_lane_chunk];
-    int32_t entering[k_lane_chunk];
-};
-
-/// The hits of one block in chunks: lane k is entry k % k_lane_chunk of chunk k / k_lane_chunk
-/// (a chunk's arrays at constant offsets from one another are what g++ vectorises).
-struct ShadeLanes {
-    ShadeChunk chunks[k_shade_lanes / k_lane_chunk];
-
-    ShadeChunk& chunk(int lane) { return chunks[lane / k_lane_chunk]; }
-    const ShadeChunk& chunk(int lane) const { return chunks[lane / k_lane_chunk]; }
-};
-
-/// Lane k's index inside its chunk.
-constexpr int lane_in_chunk(int lane) { return lane % k_lane_chunk; }
-
-/// The shading kernel for each SIMD level: fills the outputs of every active lane among the
-/// chunks of k_lane_chunk lanes that hold the first `count`, and the secondary rays when `spawn`
-/// is nonzero.
-void shade_lanes_portable(const ShadeScene& scene, int spawn, int count, ShadeLanes& lanes);
-void shade_lanes_avx2(const ShadeScene& scene, int spawn, int count, ShadeLanes& lanes);
-void shade_lanes_avx512(const ShadeScene& scene, int spawn, int count, ShadeLanes& lanes);
+/// The shading kernel for each SIMD level: fills the outputs (LaneChunk's "shading's results")
+/// of every active lane of the chunks that hold one of the first `count` lanes and an active
+/// one, and the secondary rays when `spawn` is nonzero.
+void shade_lanes_portable(const ShadeScene& scene, int spawn, int count, BlockLanes& lanes);
+void shade_lanes_avx2(const ShadeScene& scene, int spawn, int count, BlockLanes& lanes);
+void shade_lanes_avx512(const ShadeScene& scene, int spawn, int count, BlockLanes& lanes);
 
 }  // namespace detail
 
@@ -148,7 +89,7 @@ class LaneShader {
     /// Shades every active lane among the first round_up(count, k_lane_chunk) of `lanes` (and
     /// spawns their secondary rays when `spawn`); the lanes past `count` in the last chunk must
     /// be marked inactive.
-    void shade(detail::ShadeLanes& lanes, int count, bool spawn) const;
+    void shade(detail::BlockLanes& lanes, int count, bool spawn) const;
 
   private:
     std::vector<float> m_floats;  ///< backing store of the material columns

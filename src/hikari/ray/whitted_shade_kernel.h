@@ -38,7 +38,7 @@ void broadcast_lanes(const int32_t* __restrict material, int32_t m, bool first, 
 /// sample_light for every lane: the unit direction toward the light and I0 after falloff (a
 /// template per kind of light, as GCC does not vectorise selects on a loop-invariant flag).
 template <bool Directional, bool InverseSquare>
-void sample_light_lanes(const ShadeLight& light, ShadeChunk& lanes) {
+void sample_light_lanes(const ShadeLight& light, LaneChunk& lanes) {
     const float* __restrict px = lanes.position[0];
     const float* __restrict py = lanes.position[1];
     const float* __restrict pz = lanes.position[2];
@@ -73,7 +73,7 @@ void sample_light_lanes(const ShadeLight& light, ShadeChunk& lanes) {
 
 /// One chunk of lanes (the struct's constant offsets and constant trip counts are what lets g++
 /// vectorise every arithmetic loop below).
-inline void shade_chunk(const ShadeScene& scene, int spawn, ShadeChunk& lanes) {
+inline void shade_chunk(const ShadeScene& scene, int spawn, LaneChunk& lanes) {
     // Every lane array through a restrict pointer: they never overlap, and g++ needs telling.
     const ShadeMaterials mt = scene.materials;
     auto* __restrict dx = lanes.direction[0];
@@ -283,10 +283,15 @@ inline void shade_chunk(const ShadeScene& scene, int spawn, ShadeChunk& lanes) {
     }
 }
 
-/// Every chunk that holds one of the first `count` lanes.
+/// Every chunk that holds one of the first `count` lanes and an active one.
 [[maybe_unused]] void shade_kernel(const ShadeScene& scene, int spawn, int count,
-                                   ShadeLanes& lanes) {
-    for (int c = 0; c * k_lane_chunk < count; ++c) shade_chunk(scene, spawn, lanes.chunks[c]);
+                                   BlockLanes& lanes) {
+    for (int c = 0; c * k_lane_chunk < count; ++c) {
+        LaneChunk& chunk = lanes.chunks[c];
+        int32_t any = 0;
+        for (int i = 0; i < k_lane_chunk; ++i) any |= chunk.active[i];
+        if (any != 0) shade_chunk(scene, spawn, chunk);
+    }
 }
 
 }  // namespace
