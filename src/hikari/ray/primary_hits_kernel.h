@@ -117,6 +117,24 @@ inline void analytic_chunk(const PrimaryAnalytic& a, LaneChunk& chunk) {
     for (int c = 0; c < chunks; ++c) analytic_chunk(a, lanes.chunks[c]);
 }
 
+/// The distinct values of a chunk's lanes into `out`, in order of first appearance; returns
+/// how many. One vector compare answers the common chunk of a single value.
+[[maybe_unused]] inline int32_t distinct_values(const int32_t* __restrict values,
+                                                int32_t* __restrict out) {
+    const int32_t first = values[0];
+    int32_t same = 1;
+    for (int i = 0; i < k_lane_chunk; ++i) same &= values[i] == first ? 1 : 0;
+    out[0] = first;
+    if (same != 0) return 1;
+    int32_t count = 1;
+    for (int i = 1; i < k_lane_chunk; ++i) {
+        bool seen = false;
+        for (int32_t k = 0; k < count; ++k) seen = seen || out[k] == values[i];
+        if (!seen) out[count++] = values[i];
+    }
+    return count;
+}
+
 /// SceneIntersector::describe_hit for sphere and plane hits: position = origin + direction t,
 /// a sphere's normal (position - centre) (1 / radius), a plane's its own. Each object present in
 /// the chunk (usually one or two) has its values broadcast into its lanes: g++ vectorises such
@@ -150,12 +168,7 @@ inline void describe_chunk(const PrimaryObjects& o, LaneChunk& chunk) {
         pz[i] = hit ? oz[i] + dz[i] * t[i] : 0.0f;
     }
     int32_t present[k_lane_chunk];
-    int32_t present_count = 0;
-    for (int i = 0; i < k_lane_chunk; ++i) {
-        bool seen = false;
-        for (int32_t k = 0; k < present_count; ++k) seen = seen || present[k] == object[i];
-        if (!seen) present[present_count++] = object[i];
-    }
+    const int32_t present_count = distinct_values(object, present);
     for (int32_t k = 0; k < present_count; ++k) {
         const int32_t m = present[k];
         const bool sphere = o.is_sphere[m] != 0;
@@ -164,17 +177,30 @@ inline void describe_chunk(const PrimaryObjects& o, LaneChunk& chunk) {
         const float nx = o.normal[0][m], ny = o.normal[1][m], nz = o.normal[2][m];
         const int32_t object_material = o.material[m];
         const uint32_t object_id = o.id[m];
+        // The first object's values go to every lane (the later ones overwrite theirs), which
+        // saves reading the outputs.
+        if (k == 0) {
+            for (int i = 0; i < k_lane_chunk; ++i) {
+                const float qx = (px[i] - cx) * inverse_radius, qy = (py[i] - cy) * inverse_radius,
+                            qz = (pz[i] - cz) * inverse_radius;
+                gx[i] = sphere ? qx : nx, gy[i] = sphere ? qy : ny, gz[i] = sphere ? qz : nz;
+                sx[i] = gx[i], sy[i] = gy[i], sz[i] = gz[i];
+                material[i] = object_material;
+                id[i] = object_id;
+            }
+            continue;
+        }
         for (int i = 0; i < k_lane_chunk; ++i) {
             const bool mine = object[i] == m;
-            const float ax = sphere ? (px[i] - cx) * inverse_radius : nx;
-            const float ay = sphere ? (py[i] - cy) * inverse_radius : ny;
-            const float az = sphere ? (pz[i] - cz) * inverse_radius : nz;
+            const float qx = (px[i] - cx) * inverse_radius, qy = (py[i] - cy) * inverse_radius,
+                        qz = (pz[i] - cz) * inverse_radius;
+            const float ax = sphere ? qx : nx, ay = sphere ? qy : ny, az = sphere ? qz : nz;
             gx[i] = mine ? ax : gx[i], gy[i] = mine ? ay : gy[i], gz[i] = mine ? az : gz[i];
+            sx[i] = mine ? ax : sx[i], sy[i] = mine ? ay : sy[i], sz[i] = mine ? az : sz[i];
             material[i] = mine ? object_material : material[i];
             id[i] = mine ? object_id : id[i];
         }
     }
-    for (int i = 0; i < k_lane_chunk; ++i) sx[i] = gx[i], sy[i] = gy[i], sz[i] = gz[i];
 }
 
 /// describe_chunk for the first `chunks` chunks.

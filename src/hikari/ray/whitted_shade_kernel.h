@@ -127,12 +127,7 @@ inline void shade_chunk(const ShadeScene& scene, int spawn, LaneChunk& lanes) {
     auto* __restrict ks_b = lanes.ks[2];
     auto* __restrict exponent = lanes.exponent;
     int32_t present[k_lane_chunk];
-    int32_t present_count = 0;
-    for (int i = 0; i < k_lane_chunk; ++i) {
-        bool seen = false;
-        for (int32_t k = 0; k < present_count; ++k) seen = seen || present[k] == material[i];
-        if (!seen) present[present_count++] = material[i];
-    }
+    const int32_t present_count = distinct_values(material, present);
     for (int32_t k = 0; k < present_count; ++k) {
         const int32_t m = present[k];
         for (int c = 0; c < 3; ++c) {
