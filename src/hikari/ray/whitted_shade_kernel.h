@@ -71,6 +71,39 @@ void sample_light_lanes(const ShadeLight& light, LaneChunk& lanes) {
     }
 }
 
+/// The specular factor's parts for every lane toward the light in to_light: cos γ = R·V with
+/// R = reflect(-L, N) and V = -direction, and phong_power(cos γ, exponent) by repeated squaring
+/// (the exponent's bits in the scalar order; always all k_exponent_bits steps, as a constant
+/// count keeps the lane in registers and the steps past the top bit leave the power as it is).
+inline void phong_highlight_lanes(LaneChunk& lanes) {
+    const float* __restrict dx = lanes.direction[0];
+    const float* __restrict dy = lanes.direction[1];
+    const float* __restrict dz = lanes.direction[2];
+    const float* __restrict nx = lanes.normal[0];
+    const float* __restrict ny = lanes.normal[1];
+    const float* __restrict nz = lanes.normal[2];
+    const float* __restrict lx = lanes.to_light[0];
+    const float* __restrict ly = lanes.to_light[1];
+    const float* __restrict lz = lanes.to_light[2];
+    const int32_t* __restrict exponent = lanes.exponent;
+    float* __restrict cos_gamma = lanes.cos_gamma;
+    float* __restrict power = lanes.power;
+    for (int i = 0; i < k_lane_chunk; ++i) {
+        const float a = 2.0f * -(-lx[i] * nx[i] + -ly[i] * ny[i] + -lz[i] * nz[i]);
+        const float rx = -lx[i] + nx[i] * a, ry = -ly[i] + ny[i] * a, rz = -lz[i] + nz[i] * a;
+        cos_gamma[i] = rx * -dx[i] + ry * -dy[i] + rz * -dz[i];
+    }
+    for (int i = 0; i < k_lane_chunk; ++i) {
+        const int32_t e = exponent[i];
+        float p = 1.0f, squared = cos_gamma[i];
+        for (int b = 0; b < k_exponent_bits; ++b) {
+            p = (e >> b) & 1 ? p * squared : p;
+            squared = squared * squared;
+        }
+        power[i] = p;
+    }
+}
+
 /// One chunk of lanes (the struct's constant offsets and constant trip counts are what lets g++
 /// vectorise every arithmetic loop below).
 inline void shade_chunk(const ShadeScene& scene, int spawn, LaneChunk& lanes) {
@@ -102,6 +135,8 @@ inline void shade_chunk(const ShadeScene& scene, int spawn, LaneChunk& lanes) {
     auto* __restrict shadow_rays = lanes.shadow_rays;
     auto* __restrict lit_bits = lanes.lit;
 
+    int32_t filler = 0;
+    for (int i = k_lane_chunk - 1; i >= 0; --i) filler = active[i] ? material[i] : filler;
     // 1. shade(): normals turned toward the ray.
     for (int i = 0; i < k_lane_chunk; ++i) {
         const float gx = lanes.geometric_normal[0][i], gy = lanes.geometric_normal[1][i],
@@ -116,7 +151,9 @@ inline void shade_chunk(const ShadeScene& scene, int spawn, LaneChunk& lanes) {
         fx[i] = ax, fy[i] = ay, fz[i] = az;
         entering[i] = enter ? 1 : 0;
         shadow_rays[i] = 0;
-        material[i] = active[i] ? material[i] : 0;  // lanes without a hit read material 0
+        // Lanes without a hit read the first hit's material: one material fewer to broadcast in
+        // chunks that are partly sky.
+        material[i] = active[i] ? material[i] : filler;
     }
     // The lanes' material parameters: for each material present in the chunk (usually one or
     // two), its values broadcast into the lanes that hold it. GCC vectorises selects like these
@@ -187,6 +224,19 @@ inline void shade_chunk(const ShadeScene& scene, int spawn, LaneChunk& lanes) {
         scalar_specular[i] = active[i] && exponent[i] < 0 ? 1 : 0;
     }
 
+    // What the chunk's materials need at all: a chunk of matte, opaque surfaces (most of them)
+    // skips the highlight and the secondary rays. Skipping the highlight changes no bit: with
+    // ks = 0 the term ks * specular is +0 whatever the specular factor (>= 0) is.
+    int32_t any_specular = 0, any_secondary = 0, any_transparent = 0;
+    for (int i = 0; i < k_lane_chunk; ++i) {
+        const bool shiny = (ks_r[i] != 0.0f) | (ks_g[i] != 0.0f) | (ks_b[i] != 0.0f);
+        const bool transparent = lanes.transparency[i] > 0.0f;
+        const bool reflective = lanes.reflectivity[i] > 0.0f;
+        any_specular |= active[i] & (shiny ? 1 : 0);
+        any_transparent |= active[i] & (transparent ? 1 : 0);
+        any_secondary |= active[i] & (transparent | reflective ? 1 : 0);
+    }
+
     // 2. shade_local(): each light that faces the point and whose shadow ray was found unblocked
     // adds shade_direct(), lights in the scalar order.
     auto* __restrict lx = lanes.to_light[0];
@@ -204,22 +254,10 @@ inline void shade_chunk(const ShadeScene& scene, int spawn, LaneChunk& lanes) {
         else
             sample_light_lanes<false, false>(light, lanes);
         // The highlight's cos γ = R·V with R = reflect(-L, N) and V = -direction.
-        for (int i = 0; i < k_lane_chunk; ++i) {
-            const float a = 2.0f * -(-lx[i] * nx[i] + -ly[i] * ny[i] + -lz[i] * nz[i]);
-            const float rx = -lx[i] + nx[i] * a, ry = -ly[i] + ny[i] * a, rz = -lz[i] + nz[i] * a;
-            cos_gamma[i] = rx * -dx[i] + ry * -dy[i] + rz * -dz[i];
-        }
-        // phong_power by repeated squaring: the exponent's bits in the scalar order. Always all
-        // k_exponent_bits steps (a constant count keeps the lane in registers; the steps past
-        // the exponent's top bit leave the power as it is).
-        for (int i = 0; i < k_lane_chunk; ++i) {
-            const int32_t e = exponent[i];
-            float p = 1.0f, squared = cos_gamma[i];
-            for (int b = 0; b < k_exponent_bits; ++b) {
-                p = (e >> b) & 1 ? p * squared : p;
-                squared = squared * squared;
-            }
-            power[i] = p;
+        if (any_specular == 0) {
+            for (int i = 0; i < k_lane_chunk; ++i) cos_gamma[i] = 0.0f, power[i] = 0.0f;
+        } else {
+            phong_highlight_lanes(lanes);
         }
         const int32_t bit = 1 << l;
         for (int i = 0; i < k_lane_chunk; ++i) {
@@ -238,6 +276,11 @@ inline void shade_chunk(const ShadeScene& scene, int spawn, LaneChunk& lanes) {
         }
     }
     if (!spawn) return;
+    if (any_secondary == 0) {
+        for (int i = 0; i < k_lane_chunk; ++i)
+            lanes.mirror_weight[i] = 0.0f, lanes.refract_weight[i] = 0.0f;
+        return;
+    }
 
     // 3. shade()'s secondary rays: the mirror ray, the refracted ray (refract(), Snell's law)
     // and POV-Ray's total-internal-reflection rule, each from offset_ray_origin.
@@ -249,6 +292,14 @@ inline void shade_chunk(const ShadeScene& scene, int spawn, LaneChunk& lanes) {
         lanes.mirror_origin[0][i] = offset_origin_lane(px[i], fx[i]);
         lanes.mirror_origin[1][i] = offset_origin_lane(py[i], fy[i]);
         lanes.mirror_origin[2][i] = offset_origin_lane(pz[i], fz[i]);
+    }
+    if (any_transparent == 0) {
+        // No refraction, no total internal reflection: the mirror ray has the reflectivity.
+        for (int i = 0; i < k_lane_chunk; ++i) {
+            lanes.mirror_weight[i] = active[i] ? lanes.reflectivity[i] : 0.0f;
+            lanes.refract_weight[i] = 0.0f;
+        }
+        return;
     }
     for (int i = 0; i < k_lane_chunk; ++i) {
         const float ior = lanes.ior[i];
