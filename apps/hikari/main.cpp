@@ -168,9 +168,19 @@ void check_output_path(const std::filesystem::path& output) {
         throw InputError(fmt::format("{}: cannot write: it is a directory", output.string()));
 }
 
-/// `--stats`: render time, rays per second and the BVH's figures, on stderr.
-void print_stats(double seconds) {
+/// Wall times of run_render's phases, for `--stats`.
+struct PhaseTimes {
+    double load = 0;    ///< reading and checking the scene, in seconds
+    double render = 0;  ///< the method's render (BVH build included)
+    double write = 0;   ///< encoding and writing the output file
+};
+
+/// `--stats`: phase times, rays per second and the BVH's figures, on stderr.
+void print_stats(const PhaseTimes& times) {
     const uint64_t rays = g_control.rays_traced.load();
+    const double seconds = times.render;
+    fmt::print(stderr, "hikari: stats: load {:.1f} ms, render {:.1f} ms, write {:.1f} ms\n",
+               1e3 * times.load, 1e3 * times.render, 1e3 * times.write);
     fmt::print(stderr, "hikari: stats: render {:.3f} s", seconds);
     if (rays > 0)
         fmt::print(stderr, ", {} rays, {:.2f} Mrays/s", rays, 1e-6 * double(rays) / seconds);
@@ -189,6 +199,7 @@ void print_stats(double seconds) {
 int run_render(const RenderOptions& o) {
     const Method* method = find_method(o.method);  // validated by CLI11 already
     const std::string output = o.output.empty() ? default_output(o) : o.output;
+    const auto load_start = Clock::now();
     check_output_path(output);
 
     std::vector<std::string> warnings;
@@ -217,12 +228,16 @@ int run_render(const RenderOptions& o) {
         thread_limit.emplace(tbb::global_control::max_allowed_parallelism,
                              static_cast<size_t>(o.threads));
     const auto start = Clock::now();
+    PhaseTimes times;
+    times.load = std::chrono::duration<double>(start - load_start).count();
     Framebuffer fb;
     {
         ProgressReporter progress(!o.quiet);
         fb = method->render(scene, settings);
     }
-    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    const auto rendered = Clock::now();
+    const double seconds = std::chrono::duration<double>(rendered - start).count();
+    times.render = seconds;
     const int width = fb.width(), height = fb.height();
     g_writing = true;
     if (g_control.cancel.load()) throw Interrupted();
@@ -231,10 +246,11 @@ int run_render(const RenderOptions& o) {
     else
         write_image(output, aov_image(std::move(fb), parse_aov(o.aov)));
     g_writing = false;
+    times.write = std::chrono::duration<double>(Clock::now() - rendered).count();
     if (!o.quiet)
         fmt::print(stderr, "hikari: wrote {} ({}x{}, {}, {:.3f} s)\n", output, width, height,
                    method->name, seconds);
-    if (o.stats) print_stats(seconds);
+    if (o.stats) print_stats(times);
     return 0;
 }
 
