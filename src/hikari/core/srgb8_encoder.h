@@ -22,13 +22,14 @@ class Srgb8Encoder {
 
     /// Same as linear_to_srgb8(v) for every float v, NaN and infinities included.
     uint8_t encode(float v) const {
-        if (!(v > 0.0f)) return 0;  // also NaN
-        if (v >= 1.0f) return 255;
-        // One step, without a branch: no bucket holds more than one threshold (checked when
-        // the table is built).
-        unsigned code = m_bucket_start[std::bit_cast<uint32_t>(v) >> k_bucket_shift];
-        code += v >= m_threshold[code + 1] ? 1 : 0;
-        return static_cast<uint8_t>(code);
+        // No branch on the value (a picture's values mispredict): v outside (0, 1), NaN
+        // included, is looked up as 0 (code 0), and v >= 1 is 255. One lookup step: no bucket
+        // holds more than one threshold (checked when the table is built).
+        const bool inside = (v > 0.0f) & (v < 1.0f);
+        const uint32_t key = inside ? std::bit_cast<uint32_t>(v) : 0u;
+        unsigned code = m_bucket_start[key >> k_bucket_shift];
+        code += inside & (v >= m_threshold[code + 1]) ? 1 : 0;
+        return v >= 1.0f ? uint8_t{255} : static_cast<uint8_t>(code);
     }
 
     /// The three codes of a linear RGB colour, written to out[0..2].

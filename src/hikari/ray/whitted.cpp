@@ -112,18 +112,25 @@ Vec3 trace(TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* first_hit
     return shade(ctx, ray, hit, segment);
 }
 
-/// One ray of a tile's ray tree, breadth first: its own contribution (local illumination at its
-/// hit, or the sky) and where its mirror and refracted rays sit in the next level.
-struct PathNode {
-    Vec3 colour;  ///< own contribution; after fold(), the whole colour seen along the ray
-    int32_t mirror = -1, refract = -1;  ///< indices of the child rays in the next level, or -1
-    float mirror_weight = 0.0f, refract_weight = 0.0f;
+/// One level of a tile's ray tree, breadth first, one array per field: each ray's own
+/// contribution (local illumination at its hit, or the sky) and where its mirror and refracted
+/// rays sit in the next level.
+struct PathLevel {
+    std::vector<float> colour[3];  ///< own contribution; after fold(), the whole colour seen
+    std::vector<int32_t> mirror, refract;  ///< indices of the child rays in the next level, or -1
+    std::vector<float> mirror_weight, refract_weight;  ///< where the child exists
+
+    void resize(size_t n) {
+        for (std::vector<float>& c : colour) c.resize(n);
+        mirror.resize(n), refract.resize(n), mirror_weight.resize(n), refract_weight.resize(n);
+    }
+    Vec3 colour_at(size_t i) const { return {colour[0][i], colour[1][i], colour[2][i]}; }
 };
 
 /// What one thread keeps between tiles (the blocks are too big for a worker's stack).
 struct WaveScratch {
     PrimaryBlock block;
-    std::vector<std::vector<PathNode>> levels;
+    std::vector<PathLevel> levels;
     std::vector<Ray> rays, next_rays;
 };
 
@@ -139,34 +146,36 @@ class WaveTracer {
         : m_ctx(ctx), m_hits(hits), m_shader(shader), m_s(scratch) {}
 
     /// Traces the camera rays of `tile` (at most one block); AOVs via `first_hits(block)` right
-    /// after the camera rays' hits are known. Colour of lane y * k_primary_block + x in
-    /// `levels[0]`.
+    /// after the camera rays' hits are known. Returns the level of the camera rays: the colour
+    /// of pixel (x0 + x, y0 + y) is entry y * k_primary_block + x.
     template <class FirstHits>
-    const std::vector<PathNode>& trace_tile(const Tile& tile, FirstHits&& first_hits) {
+    const PathLevel& trace_tile(const Tile& tile, FirstHits&& first_hits) {
         const int width = tile.x1 - tile.x0, height = tile.y1 - tile.y0;
         PrimaryBlock& block = m_s.block;
         m_hits.trace(tile.x0, tile.y0, width, height, block);
         first_hits(block);
-        // shade_block sets every node of a ray; a clipped tile's other nodes must read as leaves
-        // for fold().
-        if (width < k_primary_block || height < k_primary_block)
-            level(0).assign(k_primary_block_rays, PathNode{});
-        else
-            level(0).resize(k_primary_block_rays);
+        PathLevel& camera = level(0);
+        camera.resize(k_primary_block_rays);
+        // shade_block sets the nodes of the block's rays; a clipped tile's others must read as
+        // leaves for fold().
+        if (width < k_primary_block || height < k_primary_block) {
+            std::fill(camera.mirror.begin(), camera.mirror.end(), -1);
+            std::fill(camera.refract.begin(), camera.refract.end(), -1);
+        }
         m_s.next_rays.clear();
-        shade_block(block, width, k_primary_block_rays, 1, level(0).data());
+        shade_block(block, width, k_primary_block_rays, 1, camera, 0);
         int depth = 1;
         while (!m_s.next_rays.empty()) {
             std::swap(m_s.rays, m_s.next_rays);
             m_s.next_rays.clear();
-            std::vector<PathNode>& nodes = level(depth);
+            PathLevel& nodes = level(depth);
             nodes.resize(m_s.rays.size());
             ++depth;
             for (size_t first = 0; first < m_s.rays.size(); first += k_primary_block_rays) {
                 const int count = static_cast<int>(
                     std::min<size_t>(k_primary_block_rays, m_s.rays.size() - first));
                 m_hits.trace_rays(m_s.rays.data() + first, count, block);
-                shade_block(block, k_lane_chunk, count, depth, nodes.data() + first);
+                shade_block(block, k_lane_chunk, count, depth, nodes, first);
             }
         }
         fold(depth);
@@ -174,64 +183,90 @@ class WaveTracer {
     }
 
   private:
-    std::vector<PathNode>& level(int index) {
+    PathLevel& level(int index) {
         if (m_s.levels.size() <= static_cast<size_t>(index)) m_s.levels.resize(index + 1);
         return m_s.levels[index];
     }
 
-    /// Shades the block's rays, which are of path segment `segment`, in place in its lanes, and
-    /// sets every field of their nodes in `nodes` (one per lane) and appends the rays they spawn
-    /// to next_rays. The rays are the lanes k < count whose lane in their chunk is < width.
-    void shade_block(PrimaryBlock& block, int width, int count, int segment, PathNode* nodes) {
+    /// Shades the block's rays, which are of path segment `segment`, in place in its lanes, sets
+    /// every field of their nodes (lane k is node first + k of `nodes`) and appends the rays they
+    /// spawn to next_rays. The rays are the lanes k < count whose lane in their chunk is < width.
+    void shade_block(PrimaryBlock& block, int width, int count, int segment, PathLevel& nodes,
+                     size_t first) {
         const bool spawn = segment < m_ctx.max_depth;
         m_shader.shade(block.lanes, block.chunks * k_lane_chunk, spawn);
         for (int c = 0; c < block.chunks; ++c) {
             const detail::LaneChunk& lane = block.lanes.chunks[c];
-            for (int j = 0; j < width && c * k_lane_chunk + j < count; ++j) {
-                const int i = c * k_lane_chunk + j;
-                ++m_ctx.rays;
-                PathNode& node = nodes[i];
-                const Vec3 direction{lane.direction[0][j], lane.direction[1][j],
-                                     lane.direction[2][j]};
-                if (!lane.active[j]) {
-                    node = PathNode{sky(m_ctx, direction)};
-                    continue;
-                }
-                m_ctx.rays += lane.shadow_rays[j];
-                node = PathNode{{lane.colour[0][j], lane.colour[1][j], lane.colour[2][j]}};
-                if (lane.scalar_specular[j]) {
-                    // A Phong exponent the lanes cannot raise exactly: the scalar code shades
-                    // it (its ray count is already in shadow_rays).
-                    TraceContext scalar = m_ctx;
-                    const SurfaceHit hit = block.hit(i);
-                    const uint8_t lit = block.lit(i);
-                    Material storage;
-                    const Material& m =
-                        material_at(m_ctx.scene.materials[hit.material], hit.position, storage);
-                    node.colour =
-                        shade_local(scalar, m, hit.position,
-                                    {lane.normal[0][j], lane.normal[1][j], lane.normal[2][j]},
-                                    {lane.facing_normal[0][j], lane.facing_normal[1][j],
-                                     lane.facing_normal[2][j]},
-                                    -direction, &lit);
-                }
-                if (!spawn) continue;
-                // The next level's rays, in the order shade() traces them: mirror, then
-                // refracted.
-                const auto spawn_ray = [&](const float(&origin)[3][k_lane_chunk],
-                                           const float(&dir)[3][k_lane_chunk]) {
-                    m_s.next_rays.push_back({{origin[0][j], origin[1][j], origin[2][j]},
-                                             {dir[0][j], dir[1][j], dir[2][j]}});
-                    return static_cast<int32_t>(m_s.next_rays.size() - 1);
-                };
-                if (lane.mirror_weight[j] > 0.0f) {
-                    node.mirror = spawn_ray(lane.mirror_origin, lane.mirror_direction);
-                    node.mirror_weight = lane.mirror_weight[j];
-                }
-                if (lane.refract_weight[j] > 0.0f) {
-                    node.refract = spawn_ray(lane.refract_origin, lane.refract_direction);
-                    node.refract_weight = lane.refract_weight[j];
-                }
+            const size_t base = first + static_cast<size_t>(c) * k_lane_chunk;
+            const int rays = std::min(width, count - c * k_lane_chunk);
+            m_ctx.rays += static_cast<uint64_t>(rays);
+            // Colours: the shaded ones, the sky where the ray hit nothing; no children yet.
+            float* __restrict red = nodes.colour[0].data() + base;
+            float* __restrict green = nodes.colour[1].data() + base;
+            float* __restrict blue = nodes.colour[2].data() + base;
+            int32_t* __restrict mirror = nodes.mirror.data() + base;
+            int32_t* __restrict refract = nodes.refract.data() + base;
+            int32_t shadow_rays = 0, children = 0, scalar = 0;
+            for (int j = 0; j < rays; ++j) {
+                const bool hit = lane.active[j] != 0;
+                const Vec3 background =
+                    sky(m_ctx, {lane.direction[0][j], lane.direction[1][j], lane.direction[2][j]});
+                red[j] = hit ? lane.colour[0][j] : background.x;
+                green[j] = hit ? lane.colour[1][j] : background.y;
+                blue[j] = hit ? lane.colour[2][j] : background.z;
+                mirror[j] = -1, refract[j] = -1;
+                shadow_rays += hit ? lane.shadow_rays[j] : 0;
+                scalar |= hit ? lane.scalar_specular[j] : 0;
+                children |=
+                    hit && (lane.mirror_weight[j] > 0.0f || lane.refract_weight[j] > 0.0f) ? 1 : 0;
+            }
+            m_ctx.rays += static_cast<uint64_t>(shadow_rays);
+            if (scalar != 0) shade_scalar_specular(block, c, rays, nodes, base);
+            if (spawn && children != 0) spawn_rays(lane, rays, nodes, base);
+        }
+    }
+
+    /// The lanes flagged scalar_specular in chunk c: a Phong exponent the lanes cannot raise
+    /// exactly, shaded by the scalar code (their ray count is already in shadow_rays).
+    void shade_scalar_specular(const PrimaryBlock& block, int c, int rays, PathLevel& nodes,
+                               size_t base) {
+        const detail::LaneChunk& lane = block.lanes.chunks[c];
+        for (int j = 0; j < rays; ++j) {
+            if (!lane.active[j] || !lane.scalar_specular[j]) continue;
+            const int i = c * k_lane_chunk + j;
+            TraceContext scalar = m_ctx;
+            const SurfaceHit hit = block.hit(i);
+            const uint8_t lit = block.lit(i);
+            const Ray ray = block.ray(i);
+            Material storage;
+            const Material& m =
+                material_at(m_ctx.scene.materials[hit.material], hit.position, storage);
+            const Vec3 colour = shade_local(
+                scalar, m, hit.position, {lane.normal[0][j], lane.normal[1][j], lane.normal[2][j]},
+                {lane.facing_normal[0][j], lane.facing_normal[1][j], lane.facing_normal[2][j]},
+                -ray.direction, &lit);
+            for (int a = 0; a < 3; ++a) nodes.colour[a][base + j] = colour[a];
+        }
+    }
+
+    /// The next level's rays of a chunk's lanes, in the order shade() traces them: mirror, then
+    /// refracted.
+    void spawn_rays(const detail::LaneChunk& lane, int rays, PathLevel& nodes, size_t base) {
+        for (int j = 0; j < rays; ++j) {
+            if (!lane.active[j]) continue;
+            const auto spawn_ray = [&](const float(&origin)[3][k_lane_chunk],
+                                       const float(&dir)[3][k_lane_chunk]) {
+                m_s.next_rays.push_back({{origin[0][j], origin[1][j], origin[2][j]},
+                                         {dir[0][j], dir[1][j], dir[2][j]}});
+                return static_cast<int32_t>(m_s.next_rays.size() - 1);
+            };
+            if (lane.mirror_weight[j] > 0.0f) {
+                nodes.mirror[base + j] = spawn_ray(lane.mirror_origin, lane.mirror_direction);
+                nodes.mirror_weight[base + j] = lane.mirror_weight[j];
+            }
+            if (lane.refract_weight[j] > 0.0f) {
+                nodes.refract[base + j] = spawn_ray(lane.refract_origin, lane.refract_direction);
+                nodes.refract_weight[base + j] = lane.refract_weight[j];
             }
         }
     }
@@ -240,12 +275,18 @@ class WaveTracer {
     /// colour += mirror_weight * mirror colour, then += transparency * refracted colour.
     void fold(int depth) {
         for (int d = depth - 2; d >= 0; --d) {
-            const std::vector<PathNode>& children = m_s.levels[d + 1];
-            for (PathNode& node : m_s.levels[d]) {
-                if (node.mirror >= 0)
-                    node.colour += node.mirror_weight * children[node.mirror].colour;
-                if (node.refract >= 0)
-                    node.colour += node.refract_weight * children[node.refract].colour;
+            const PathLevel& children = m_s.levels[d + 1];
+            PathLevel& nodes = m_s.levels[d];
+            for (size_t i = 0; i < nodes.mirror.size(); ++i) {
+                if (nodes.mirror[i] < 0 && nodes.refract[i] < 0) continue;
+                Vec3 colour = nodes.colour_at(i);
+                if (nodes.mirror[i] >= 0)
+                    colour += nodes.mirror_weight[i] *
+                              children.colour_at(static_cast<size_t>(nodes.mirror[i]));
+                if (nodes.refract[i] >= 0)
+                    colour += nodes.refract_weight[i] *
+                              children.colour_at(static_cast<size_t>(nodes.refract[i]));
+                for (int a = 0; a < 3; ++a) nodes.colour[a][i] = colour[a];
             }
         }
     }
@@ -302,23 +343,21 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
             thread_local std::unique_ptr<WaveScratch> scratch;
             if (!scratch) scratch = std::make_unique<WaveScratch>();
             WaveTracer wave(ctx, primary, shader, *scratch);
-            const std::vector<PathNode>& colours =
-                wave.trace_tile(tile, [&](const PrimaryBlock& block) {
-                    if (!settings.aov_buffers) return;
-                    for (int y = tile.y0; y < tile.y1; ++y)
-                        for (int x = tile.x0; x < tile.x1; ++x) {
-                            const int k = (y - tile.y0) * k_primary_block + (x - tile.x0);
-                            if (block.found(k))
-                                store_aovs(static_cast<size_t>(y) * cam.width + x, block.ray(k),
-                                           block.hit(k));
-                        }
-                });
+            const PathLevel& colours = wave.trace_tile(tile, [&](const PrimaryBlock& block) {
+                if (!settings.aov_buffers) return;
+                for (int y = tile.y0; y < tile.y1; ++y)
+                    for (int x = tile.x0; x < tile.x1; ++x) {
+                        const int k = (y - tile.y0) * k_primary_block + (x - tile.x0);
+                        if (block.found(k))
+                            store_aovs(static_cast<size_t>(y) * cam.width + x, block.ray(k),
+                                       block.hit(k));
+                    }
+            });
             for (int y = tile.y0; y < tile.y1; ++y) {
-                Vec3 row[k_tile_size];
-                for (int x = tile.x0; x < tile.x1; ++x)
-                    row[x - tile.x0] =
-                        colours[(y - tile.y0) * k_primary_block + (x - tile.x0)].colour;
-                fb.set_colors(static_cast<size_t>(y) * cam.width + tile.x0, row,
+                const auto row = static_cast<size_t>((y - tile.y0) * k_primary_block);
+                fb.set_colors(static_cast<size_t>(y) * cam.width + tile.x0,
+                              colours.colour[0].data() + row, colours.colour[1].data() + row,
+                              colours.colour[2].data() + row,
                               static_cast<size_t>(tile.x1 - tile.x0));
             }
             if (settings.control) settings.control->rays_traced += ctx.rays;

@@ -48,6 +48,23 @@ struct Framebuffer {
             encoder.encode(c[i], srgb8.bytes.data() + 3 * (first + i));
     }
 
+    /// The same from one array per channel (a row of a renderer that keeps colours that way).
+    void set_colors(size_t first, const float* red, const float* green, const float* blue,
+                    size_t count) {
+        if (srgb8.bytes.empty()) {
+            for (size_t i = 0; i < count; ++i)
+                color.pixels[first + i] = Vec3(red[i], green[i], blue[i]);
+            return;
+        }
+        const Srgb8Encoder& encoder = Srgb8Encoder::instance();
+        uint8_t* out = srgb8.bytes.data() + 3 * first;
+        for (size_t i = 0; i < count; ++i) {
+            out[3 * i] = encoder.encode(red[i]);
+            out[3 * i + 1] = encoder.encode(green[i]);
+            out[3 * i + 2] = encoder.encode(blue[i]);
+        }
+    }
+
     /// Pixel i's colour := c (in whichever form the framebuffer keeps it).
     void set_color(size_t i, Vec3 c) { set_colors(i, &c, 1); }
 };
