@@ -60,8 +60,9 @@ TEST(PngWrite, RoundTripsOddSizes) {
     expect_round_trip(test_card(517, 2), dir);
 }
 
-TEST(PngWrite, ChunksCarryValidCrcsAndTheStreamValidAdler) {
-    const std::vector<uint8_t> png = encode_png(encode_srgb8(test_card(64, 100)));
+/// Checks every chunk's CRC of `png` and inflates its zlib stream with zlib's uncompress, which
+/// checks the Adler-32 trailer; `raw_size` bytes (rows with their filter bytes) must come out.
+void expect_valid_chunks_and_stream(const std::vector<uint8_t>& png, size_t raw_size) {
     ASSERT_GT(png.size(), 8u);
     std::vector<uint8_t> zlib_stream;
     size_t at = 8;
@@ -78,11 +79,28 @@ TEST(PngWrite, ChunksCarryValidCrcsAndTheStreamValidAdler) {
         at += 12 + length;
     }
     EXPECT_EQ(at, png.size());
-    // zlib's uncompress checks the Adler-32 trailer; 100 rows of 1 + 64·3 bytes come out.
-    std::vector<uint8_t> raw(100 * (1 + 64 * 3));
-    uLongf raw_size = raw.size();
-    EXPECT_EQ(uncompress(raw.data(), &raw_size, zlib_stream.data(), zlib_stream.size()), Z_OK);
-    EXPECT_EQ(raw_size, raw.size());
+    std::vector<uint8_t> raw(raw_size);
+    uLongf inflated = raw.size();
+    EXPECT_EQ(uncompress(raw.data(), &inflated, zlib_stream.data(), zlib_stream.size()), Z_OK);
+    EXPECT_EQ(inflated, raw.size());
+}
+
+TEST(PngWrite, ChunksCarryValidCrcsAndTheStreamValidAdler) {
+    // 100 rows of 1 + 64·3 bytes.
+    expect_valid_chunks_and_stream(encode_png(encode_srgb8(test_card(64, 100))),
+                                   100 * (1 + 64 * 3));
+}
+
+TEST(PngWrite, AdlerHoldsOverLongRowsOfLargeBytes) {
+    // Noise filters to bytes up to 255, and rows of 9004 bytes run past the 5552 bytes between
+    // the checksum's modulo reductions: the sums' worst case.
+    for (const int width : {3001, 3000, 11}) {
+        Srgb8Image image(width, 70);
+        Pcg32 rng(static_cast<uint64_t>(width), 7);
+        for (uint8_t& byte : image.bytes) byte = static_cast<uint8_t>(rng.next_u32());
+        expect_valid_chunks_and_stream(encode_png(image),
+                                       70 * (1 + static_cast<size_t>(width) * 3));
+    }
 }
 
 }  // namespace
