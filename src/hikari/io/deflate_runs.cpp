@@ -185,20 +185,34 @@ class BitWriter {
 }  // namespace
 
 void deflate_runs(std::span<const uint8_t> data, bool last, std::vector<uint8_t>& out) {
-    // Pass 1: symbol frequencies, and from them the literal/length code.
+    // Pass 1: the data as tokens (a literal byte b as b, a run of r repeats as 256 + r), and the
+    // symbol frequencies, from which the literal/length code follows. Pass 2 then codes the
+    // tokens without scanning the data again.
+    const auto tokens = std::make_unique_for_overwrite<uint16_t[]>(data.size());
+    size_t token_count = 0;
     std::array<uint32_t, k_litlen_symbols> freq{};
     tokenize(
-        data, [&](uint8_t b) { ++freq[b]; }, [&](int run) { ++freq[k_length_codes[run].symbol]; });
+        data,
+        [&](uint8_t b) {
+            ++freq[b];
+            tokens[token_count++] = b;
+        },
+        [&](int run) {
+            ++freq[k_length_codes[run].symbol];
+            tokens[token_count++] = static_cast<uint16_t>(256 + run);
+        });
     freq[k_end_of_block] = 1;
     const auto lengths = huffman_lengths(freq, k_max_code_bits);
     const auto codes = canonical_codes(lengths);
-    // A run is its length code, its extra bits and distance code 0 (one 0 bit), sent together.
-    std::array<uint32_t, k_max_run + 1> run_bits{};
-    std::array<uint8_t, k_max_run + 1> run_count{};
+    // Each token's bits and bit count: a literal's code, or a run's length code, its extra bits
+    // and distance code 0 (one 0 bit), sent together.
+    std::array<uint32_t, 256 + k_max_run + 1> token_bits{};
+    std::array<uint8_t, 256 + k_max_run + 1> token_count_bits{};
+    for (int b = 0; b < 256; ++b) token_bits[b] = codes[b], token_count_bits[b] = lengths[b];
     for (int run = k_min_run; run <= k_max_run; ++run) {
         const LengthCode& lc = k_length_codes[run];
-        run_bits[run] = codes[lc.symbol] | uint32_t{lc.extra} << lengths[lc.symbol];
-        run_count[run] = static_cast<uint8_t>(lengths[lc.symbol] + lc.extra_bits + 1);
+        token_bits[256 + run] = codes[lc.symbol] | uint32_t{lc.extra} << lengths[lc.symbol];
+        token_count_bits[256 + run] = static_cast<uint8_t>(lengths[lc.symbol] + lc.extra_bits + 1);
     }
 
     // Worst case: 15 bits per byte, plus the header (under 200 bytes) and the flush. The
@@ -222,10 +236,9 @@ void deflate_runs(std::span<const uint8_t> data, bool last, std::vector<uint8_t>
     for (int s = 0; s < litlen_count; ++s) bits.put(reverse_bits(lengths[s], 4), 4);
     for (int s = 0; s < 2; ++s) bits.put(reverse_bits(1, 4), 4);
 
-    // Pass 2: the data.
-    tokenize(
-        data, [&](uint8_t b) { bits.put(codes[b], lengths[b]); },
-        [&](int run) { bits.put(run_bits[run], run_count[run]); });
+    // Pass 2: the tokens.
+    for (size_t t = 0; t < token_count; ++t)
+        bits.put(token_bits[tokens[t]], token_count_bits[tokens[t]]);
     bits.put(codes[k_end_of_block], lengths[k_end_of_block]);
     if (!last) bits.put(0, 3);  // an empty stored block: BFINAL 0, BTYPE 0, ...
     uint8_t* end = bits.finish();

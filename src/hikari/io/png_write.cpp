@@ -35,14 +35,16 @@ void put_u32_be(uint8_t* p, uint32_t v) {
 
 /// Appends a chunk: length, type, data, CRC-32 of type and data (§5.3).
 void append_chunk(Bytes& out, std::string_view type, std::span<const uint8_t> data) {
-    const size_t at = out.size();
-    out.resize(at + 8 + data.size() + 4);
-    uint8_t* p = out.data() + at;
-    put_u32_be(p, static_cast<uint32_t>(data.size()));
-    std::memcpy(p + 4, type.data(), 4);
-    if (!data.empty()) std::memcpy(p + 8, data.data(), data.size());
-    const uLong crc = crc32(0L, p + 4, static_cast<uInt>(4 + data.size()));
-    put_u32_be(p + 8 + data.size(), static_cast<uint32_t>(crc));
+    std::array<uint8_t, 8> head{};
+    put_u32_be(head.data(), static_cast<uint32_t>(data.size()));
+    std::memcpy(head.data() + 4, type.data(), 4);
+    out.insert(out.end(), head.begin(), head.end());
+    out.insert(out.end(), data.begin(), data.end());
+    uLong crc = crc32(0L, head.data() + 4, 4);
+    if (!data.empty()) crc = crc32(crc, data.data(), static_cast<uInt>(data.size()));
+    std::array<uint8_t, 4> tail{};
+    put_u32_be(tail.data(), static_cast<uint32_t>(crc));
+    out.insert(out.end(), tail.begin(), tail.end());
 }
 
 /// Paeth's predictor (§9.4): whichever of left a, up b, upper-left c is nearest to
@@ -203,7 +205,12 @@ Bytes encode_png(const Srgb8Image& image) {
                         b == band_count - 1);
     });
 
-    Bytes png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    // The file's size is known now: one allocation, no copying as it grows.
+    size_t size = 8 + 3 * 12 + 13 + 2 + 4 + 12;  // signature, IHDR, header, trailer, IEND
+    for (const Band& band : bands) size += 12 + band.deflated.size();
+    Bytes png;
+    png.reserve(size);
+    png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
     // IHDR (§11.2.2): size, bit depth 8, colour type 2 (RGB), deflate, adaptive filters, no
     // interlace.
     std::array<uint8_t, 13> header{};
