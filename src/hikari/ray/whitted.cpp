@@ -200,21 +200,14 @@ class WaveTracer {
             const size_t base = first + static_cast<size_t>(c) * k_lane_chunk;
             const int rays = std::min(width, count - c * k_lane_chunk);
             m_ctx.rays += static_cast<uint64_t>(rays);
-            // Colours: the shaded ones, the sky where the ray hit nothing; no children yet.
-            float* __restrict red = nodes.colour[0].data() + base;
-            float* __restrict green = nodes.colour[1].data() + base;
-            float* __restrict blue = nodes.colour[2].data() + base;
-            int32_t* __restrict mirror = nodes.mirror.data() + base;
-            int32_t* __restrict refract = nodes.refract.data() + base;
+            // Colours (the kernel's, shaded or the sky's); no children yet.
+            for (int a = 0; a < 3; ++a)
+                std::copy_n(lane.colour[a], rays, nodes.colour[a].begin() + base);
+            std::fill_n(nodes.mirror.begin() + base, rays, -1);
+            std::fill_n(nodes.refract.begin() + base, rays, -1);
             int32_t shadow_rays = 0, children = 0, scalar = 0;
             for (int j = 0; j < rays; ++j) {
                 const bool hit = lane.active[j] != 0;
-                const Vec3 background =
-                    sky(m_ctx, {lane.direction[0][j], lane.direction[1][j], lane.direction[2][j]});
-                red[j] = hit ? lane.colour[0][j] : background.x;
-                green[j] = hit ? lane.colour[1][j] : background.y;
-                blue[j] = hit ? lane.colour[2][j] : background.z;
-                mirror[j] = -1, refract[j] = -1;
                 shadow_rays += hit ? lane.shadow_rays[j] : 0;
                 scalar |= hit ? lane.scalar_specular[j] : 0;
                 children |=

@@ -94,7 +94,13 @@ LaneShader::LaneShader(const Scene& scene, SimdLevel level) : m_level(level) {
     }
     m_scene.lights = m_lights.data();
     m_scene.light_count = static_cast<int32_t>(m_lights.size());
-    for (int a = 0; a < 3; ++a) m_scene.ambient[a] = scene.ambient[a];
+    m_scene.gradient = scene.sky.gradient ? 1 : 0;
+    for (int a = 0; a < 3; ++a) {
+        m_scene.ambient[a] = scene.ambient[a];
+        m_scene.horizon[a] = scene.sky.horizon[a];
+        m_scene.zenith[a] = scene.sky.zenith[a];
+        m_scene.background[a] = scene.background[a];
+    }
 }
 
 void LaneShader::shade(detail::BlockLanes& lanes, int count, bool spawn) const {

@@ -65,11 +65,15 @@ struct ShadeScene {
     const ShadeLight* lights;
     int32_t light_count;  ///< at most k_max_block_lights (one bit each in BlockLanes::lit)
     float ambient[3];
+    /// What rays that hit nothing see (Sky::colour): the gradient when `gradient`, else the
+    /// background colour.
+    int32_t gradient;
+    float horizon[3], zenith[3], background[3];
 };
 
 /// The shading kernel for each SIMD level: fills the outputs (LaneChunk's "shading's results")
-/// of every active lane of the chunks that hold one of the first `count` lanes and an active
-/// one, and the secondary rays when `spawn` is nonzero.
+/// of every active lane of the chunks that hold one of the first `count` lanes, and the
+/// secondary rays when `spawn` is nonzero. Lanes without a hit get only their colour: the sky's.
 void shade_lanes_portable(const ShadeScene& scene, int spawn, int count, BlockLanes& lanes);
 void shade_lanes_avx2(const ShadeScene& scene, int spawn, int count, BlockLanes& lanes);
 void shade_lanes_avx512(const ShadeScene& scene, int spawn, int count, BlockLanes& lanes);

@@ -329,7 +329,25 @@ inline void shade_chunk(const ShadeScene& scene, int spawn, LaneChunk& lanes) {
     }
 }
 
-/// Every chunk that holds one of the first `count` lanes and an active one.
+/// The sky's colour (Sky::colour) in the lanes without a hit.
+inline void sky_chunk(const ShadeScene& scene, LaneChunk& lanes) {
+    const float* __restrict up = lanes.direction[1];
+    const int32_t* __restrict active = lanes.active;
+    const bool gradient = scene.gradient != 0;
+    for (int c = 0; c < 3; ++c) {
+        float* __restrict colour = lanes.colour[c];
+        const float horizon = scene.horizon[c], zenith = scene.zenith[c];
+        const float background = scene.background[c];
+        for (int i = 0; i < k_lane_chunk; ++i) {
+            const float t = up[i] < 0.0f ? 0.0f : (up[i] > 1.0f ? 1.0f : up[i]);
+            const float sky = gradient ? horizon * (1.0f - t) + zenith * t : background;
+            colour[i] = active[i] ? colour[i] : sky;
+        }
+    }
+}
+
+/// Every chunk that holds one of the first `count` lanes: shading where a lane has a hit, the
+/// sky's colour where not.
 [[maybe_unused]] void shade_kernel(const ShadeScene& scene, int spawn, int count,
                                    BlockLanes& lanes) {
     for (int c = 0; c * k_lane_chunk < count; ++c) {
@@ -337,6 +355,7 @@ inline void shade_chunk(const ShadeScene& scene, int spawn, LaneChunk& lanes) {
         int32_t any = 0;
         for (int i = 0; i < k_lane_chunk; ++i) any |= chunk.active[i];
         if (any != 0) shade_chunk(scene, spawn, chunk);
+        sky_chunk(scene, chunk);
     }
 }
 
