@@ -73,6 +73,7 @@ struct alignas(64) LaneChunk {
     float mirror_direction[3][k_lane_chunk];
     float refract_origin[3][k_lane_chunk];
     float refract_direction[3][k_lane_chunk];
+    int32_t children[k_lane_chunk];  ///< secondary rays the lane spawns (0, 1 or 2)
 
     // Shading's scratch between its loops: each lane's material, then what shading it needs.
     float ka[3][k_lane_chunk];

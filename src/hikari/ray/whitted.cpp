@@ -207,15 +207,13 @@ class WaveTracer {
             std::fill_n(nodes.refract.begin() + base, rays, -1);
             int32_t shadow_rays = 0, children = 0, scalar = 0;
             for (int j = 0; j < rays; ++j) {
-                const bool hit = lane.active[j] != 0;
-                shadow_rays += hit ? lane.shadow_rays[j] : 0;
-                scalar |= hit ? lane.scalar_specular[j] : 0;
-                children |=
-                    hit && (lane.mirror_weight[j] > 0.0f || lane.refract_weight[j] > 0.0f) ? 1 : 0;
+                shadow_rays += lane.shadow_rays[j];
+                scalar |= lane.scalar_specular[j];
+                children += lane.children[j];
             }
             m_ctx.rays += static_cast<uint64_t>(shadow_rays);
             if (scalar != 0) shade_scalar_specular(block, c, rays, nodes, base);
-            if (spawn && children != 0) spawn_rays(lane, rays, nodes, base);
+            if (children != 0) spawn_rays(lane, rays, nodes, base);
         }
     }
 

@@ -275,8 +275,7 @@ inline void shade_chunk(const ShadeScene& scene, int spawn, LaneChunk& lanes) {
             blue[i] = lit ? blue[i] + term_b : blue[i];
         }
     }
-    if (!spawn) return;
-    if (any_secondary == 0) {
+    if (!spawn || any_secondary == 0) {
         for (int i = 0; i < k_lane_chunk; ++i)
             lanes.mirror_weight[i] = 0.0f, lanes.refract_weight[i] = 0.0f;
         return;
@@ -347,14 +346,25 @@ inline void sky_chunk(const ShadeScene& scene, LaneChunk& lanes) {
 }
 
 /// Every chunk that holds one of the first `count` lanes: shading where a lane has a hit, the
-/// sky's colour where not.
+/// sky's colour where not, and every lane's count of shadow rays, scalar flag and children
+/// (zero where no hit).
 [[maybe_unused]] void shade_kernel(const ShadeScene& scene, int spawn, int count,
                                    BlockLanes& lanes) {
     for (int c = 0; c * k_lane_chunk < count; ++c) {
         LaneChunk& chunk = lanes.chunks[c];
         int32_t any = 0;
         for (int i = 0; i < k_lane_chunk; ++i) any |= chunk.active[i];
-        if (any != 0) shade_chunk(scene, spawn, chunk);
+        if (any != 0) {
+            shade_chunk(scene, spawn, chunk);
+        } else {
+            for (int i = 0; i < k_lane_chunk; ++i) {
+                chunk.shadow_rays[i] = 0, chunk.scalar_specular[i] = 0;
+                chunk.mirror_weight[i] = 0.0f, chunk.refract_weight[i] = 0.0f;
+            }
+        }
+        for (int i = 0; i < k_lane_chunk; ++i)
+            chunk.children[i] =
+                (chunk.mirror_weight[i] > 0.0f ? 1 : 0) + (chunk.refract_weight[i] > 0.0f ? 1 : 0);
         sky_chunk(scene, chunk);
     }
 }
