@@ -5,8 +5,10 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "hikari/core/color.h"
+#include "hikari/core/rng.h"
 
 namespace hikari {
 namespace {
@@ -38,6 +40,53 @@ TEST(Srgb8Encoder, ClampsLikeTheReference) {
          {-inf, -1.0f, -0.0f, 0.0f, 1.0f, 1.5f, 1e30f, inf, std::numeric_limits<float>::quiet_NaN(),
           std::numeric_limits<float>::denorm_min()})
         EXPECT_EQ(srgb.encode(v), linear_to_srgb8(v)) << "v = " << v;
+}
+
+/// The row kernels this CPU runs.
+std::vector<Srgb8Encoder::RowKernel> row_kernels() {
+    using Kernel = Srgb8Encoder::RowKernel;
+    std::vector<Kernel> kernels = {Kernel::portable};
+    if (__builtin_cpu_supports("avx2")) kernels.push_back(Kernel::avx2);
+    if (Srgb8Encoder::best_row_kernel() == Kernel::avx512) kernels.push_back(Kernel::avx512);
+    return kernels;
+}
+
+TEST(Srgb8Encoder, RowsEqualEncodeOfEachValueOnEveryKernel) {
+    const Srgb8Encoder& encoder = Srgb8Encoder::instance();
+    // Values at and beside every threshold, random ones, and the special cases; lengths that
+    // are not multiples of the SIMD widths.
+    std::vector<float> values = {0.0f,
+                                 -0.0f,
+                                 -1.0f,
+                                 1.0f,
+                                 2.0f,
+                                 std::numeric_limits<float>::infinity(),
+                                 -std::numeric_limits<float>::infinity(),
+                                 std::numeric_limits<float>::quiet_NaN(),
+                                 std::numeric_limits<float>::denorm_min()};
+    for (int code = 1; code <= 255; ++code) {
+        const float t = encoder.threshold(code);
+        values.push_back(t);
+        values.push_back(std::nextafter(t, 0.0f));
+        values.push_back(std::nextafter(t, 2.0f));
+    }
+    Pcg32 rng(3, 5);
+    while (values.size() < 3000) values.push_back(1.1f * rng.next_float());
+    for (const Srgb8Encoder::RowKernel kernel : row_kernels())
+        for (const size_t n : {values.size() / 3, size_t{17}, size_t{15}, size_t{1}}) {
+            SCOPED_TRACE(static_cast<int>(kernel));
+            // Channels from rotations of the values, so every value visits every channel.
+            const float* red = values.data();
+            const float* green = values.data() + values.size() / 3;
+            const float* blue = values.data() + 2 * (values.size() / 3);
+            std::vector<uint8_t> rgb(3 * n);
+            encoder.encode_row(red, green, blue, n, rgb.data(), kernel);
+            for (size_t i = 0; i < n; ++i) {
+                ASSERT_EQ(rgb[3 * i], encoder.encode(red[i])) << red[i];
+                ASSERT_EQ(rgb[3 * i + 1], encoder.encode(green[i])) << green[i];
+                ASSERT_EQ(rgb[3 * i + 2], encoder.encode(blue[i])) << blue[i];
+            }
+        }
 }
 
 }  // namespace

@@ -56,13 +56,8 @@ struct Framebuffer {
                 color.pixels[first + i] = Vec3(red[i], green[i], blue[i]);
             return;
         }
-        const Srgb8Encoder& encoder = Srgb8Encoder::instance();
-        uint8_t* out = srgb8.bytes.data() + 3 * first;
-        for (size_t i = 0; i < count; ++i) {
-            out[3 * i] = encoder.encode(red[i]);
-            out[3 * i + 1] = encoder.encode(green[i]);
-            out[3 * i + 2] = encoder.encode(blue[i]);
-        }
+        Srgb8Encoder::instance().encode_row(red, green, blue, count,
+                                            srgb8.bytes.data() + 3 * first);
     }
 
     /// Pixel i's colour := c (in whichever form the framebuffer keeps it).
