@@ -109,7 +109,7 @@ constexpr int lane_in_chunk(int lane) { return lane % k_lane_chunk; }
 /// Whether any lane of the chunk holds a hit.
 inline bool any_active(const LaneChunk& chunk) {
     int32_t any = 0;
-    for (int i = 0; i < k_lane_chunk; ++i) any |= chunk.active[i];
+    for (const int32_t active : chunk.active) any |= active;
     return any != 0;
 }
 

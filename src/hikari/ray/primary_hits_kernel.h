@@ -5,8 +5,10 @@
 // body is the scalar code's arithmetic (camera_ray, intersect_sphere, intersect_plane in
 // ray/intersect.h) in the same order, with branches turned into selects, so every level rounds
 // exactly as the scalar path does (-ffp-contract=off: no FMA). Only float arithmetic and
-// builtins appear here, no shared inline functions, so no wider code can leak into them; the
-// functions have internal linkage (one copy per including file).
+// builtins appear here, so no wider code can leak into shared inline functions: the one shared
+// helper, any_active (block_lanes.h), is defined before the target pragma and so compiled for
+// the baseline wherever it is emitted. The functions here have internal linkage (one copy per
+// including file).
 
 #include <cstdint>
 
@@ -297,9 +299,7 @@ inline void shadow_chunk(const PrimaryShadowLight& light, const PrimaryAnalytic&
                                     int chunks, BlockLanes& lanes) {
     for (int c = 0; c < chunks; ++c) {
         LaneChunk& chunk = lanes.chunks[c];
-        int32_t any = 0;
-        for (int i = 0; i < k_lane_chunk; ++i) any |= chunk.active[i];
-        if (any != 0) shadow_chunk(light, a, chunk);
+        if (any_active(chunk)) shadow_chunk(light, a, chunk);
     }
 }
 

@@ -345,7 +345,7 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
                     }
             });
             for (int y = tile.y0; y < tile.y1; ++y) {
-                const auto row = static_cast<size_t>((y - tile.y0) * k_primary_block);
+                const size_t row = static_cast<size_t>(y - tile.y0) * k_primary_block;
                 fb.set_colors(static_cast<size_t>(y) * cam.width + tile.x0,
                               colours.colour[0].data() + row, colours.colour[1].data() + row,
                               colours.colour[2].data() + row,

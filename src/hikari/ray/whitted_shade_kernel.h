@@ -352,9 +352,7 @@ inline void sky_chunk(const ShadeScene& scene, LaneChunk& lanes) {
                                    BlockLanes& lanes) {
     for (int c = 0; c * k_lane_chunk < count; ++c) {
         LaneChunk& chunk = lanes.chunks[c];
-        int32_t any = 0;
-        for (int i = 0; i < k_lane_chunk; ++i) any |= chunk.active[i];
-        if (any != 0) {
+        if (any_active(chunk)) {
             shade_chunk(scene, spawn, chunk);
         } else {
             for (int i = 0; i < k_lane_chunk; ++i) {
