@@ -71,6 +71,26 @@ namespace {
     return hit ? (near_in ? near : far) : __builtin_nanf("");
 }
 
+/// Whether any of the chunk's 16 rays can hit the sphere (centre c, radius² r2): sphere_lane's
+/// first tests, without its square root and division. Where no ray passes, sphere_lane would
+/// miss in every lane, so the chunk skips it; most chunks miss most spheres.
+[[maybe_unused]] inline bool sphere_may_hit(const float* __restrict ox, const float* __restrict oy,
+                                            const float* __restrict oz, const float* __restrict dx,
+                                            const float* __restrict dy, const float* __restrict dz,
+                                            float cx, float cy, float cz, float r2) {
+    int32_t any = 0;
+    for (int i = 0; i < k_lane_chunk; ++i) {
+        const float fx = ox[i] - cx, fy = oy[i] - cy, fz = oz[i] - cz;
+        const float b = -(fx * dx[i] + fy * dy[i] + fz * dz[i]);
+        const float qx = fx + dx[i] * b, qy = fy + dy[i] * b, qz = fz + dz[i] * b;
+        const float discriminant = r2 - (qx * qx + qy * qy + qz * qz);
+        const float c = fx * fx + fy * fy + fz * fz - r2;
+        const bool behind = c > 0.0f && b <= 0.0f;
+        any |= !(discriminant < 0.0f) && !behind ? 1 : 0;
+    }
+    return any != 0;
+}
+
 /// The nearest of the lanes' triangle hit (already in t / object), the spheres and the planes,
 /// tested in SceneIntersector::closest's order: a later primitive wins only when strictly
 /// nearer.
@@ -90,6 +110,7 @@ inline void analytic_chunk(const PrimaryAnalytic& a, LaneChunk& chunk) {
                     cz = a.sphere_center[2][s];
         const float radius = a.sphere_radius[s];
         const float r2 = radius * radius;
+        if (!sphere_may_hit(ox, oy, oz, dx, dy, dz, cx, cy, cz, r2)) continue;
         for (int i = 0; i < k_lane_chunk; ++i) {
             const float t =
                 sphere_lane(ox[i] - cx, oy[i] - cy, oz[i] - cz, dx[i], dy[i], dz[i], r2, t_max[i]);
@@ -275,6 +296,7 @@ inline void shadow_chunk(const PrimaryShadowLight& light, const PrimaryAnalytic&
                     cz = a.sphere_center[2][s];
         const float radius = a.sphere_radius[s];
         const float r2 = radius * radius;
+        if (!sphere_may_hit(ox, oy, oz, dx, dy, dz, cx, cy, cz, r2)) continue;
         for (int i = 0; i < k_lane_chunk; ++i) {
             const float t = sphere_lane(ox[i] - cx, oy[i] - cy, oz[i] - cz, dx[i], dy[i], dz[i], r2,
                                         distance[i]);
