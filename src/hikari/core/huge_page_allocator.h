@@ -12,6 +12,8 @@
 #include <cstdlib>
 #include <memory>
 #include <new>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #if defined(__linux__)
@@ -76,5 +78,30 @@ struct HugePageAllocator {
 /// A vector whose large buffers use huge pages.
 template <class T>
 using HugePageVector = std::vector<T, HugePageAllocator<T>>;
+
+/// HugePageAllocator whose vectors leave new elements default-initialised (for a byte or a float:
+/// not written at all), for buffers whose every element is written before it is read: a pass of
+/// zeros first would only cost time.
+template <class T>
+struct UninitializedHugePageAllocator : HugePageAllocator<T> {
+    using value_type = T;
+    template <class U>
+    struct rebind {
+        using other = UninitializedHugePageAllocator<U>;
+    };
+
+    UninitializedHugePageAllocator() = default;
+    template <class U>
+    UninitializedHugePageAllocator(const UninitializedHugePageAllocator<U>&) noexcept {}
+
+    template <class U>
+    void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+        ::new (static_cast<void*>(p)) U;
+    }
+    template <class U, class... Args>
+    void construct(U* p, Args&&... args) {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+};
 
 }  // namespace hikari

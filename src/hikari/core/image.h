@@ -30,9 +30,11 @@ struct Image {
 struct Srgb8Image {
     int width = 0;
     int height = 0;
-    HugePageVector<uint8_t> bytes;  ///< 3 per pixel
+    /// 3 per pixel. A new image's bytes are not initialised: whoever makes one writes them all.
+    std::vector<uint8_t, UninitializedHugePageAllocator<uint8_t>> bytes;
 
     Srgb8Image() = default;
+    /// An image whose bytes the caller must all write.
     Srgb8Image(int w, int h)
         : width(w), height(h), bytes(static_cast<size_t>(w) * static_cast<size_t>(h) * 3) {}
 

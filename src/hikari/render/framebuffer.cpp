@@ -9,10 +9,10 @@
 namespace hikari {
 
 Framebuffer::Framebuffer(int width, int height, Vec3 background, bool aov_buffers,
-                         bool srgb8_output) {
+                         bool srgb8_output, bool every_pixel_set) {
     if (srgb8_output) {
         srgb8 = Srgb8Image(width, height);
-        if (height > 0) {
+        if (height > 0 && !every_pixel_set) {
             // One row pixel by pixel, then the others copied from it a row at a time.
             uint8_t code[3];
             Srgb8Encoder::instance().encode(background, code);

@@ -31,9 +31,11 @@ struct Framebuffer {
 
     Framebuffer() = default;
     /// Colour filled with `background` (as `srgb8` when `srgb8_output`, `color` left empty);
-    /// the AOV buffers cleared to "nothing seen" when `aov_buffers`, else left empty.
+    /// the AOV buffers cleared to "nothing seen" when `aov_buffers`, else left empty. A
+    /// renderer that sets every pixel's colour may pass `every_pixel_set`: the 8-bit colour is
+    /// then left unwritten (the background would be written only to be overwritten).
     Framebuffer(int width, int height, Vec3 background, bool aov_buffers = true,
-                bool srgb8_output = false);
+                bool srgb8_output = false, bool every_pixel_set = false);
 
     int width() const { return srgb8.bytes.empty() ? color.width : srgb8.width; }
     int height() const { return srgb8.bytes.empty() ? color.height : srgb8.height; }
