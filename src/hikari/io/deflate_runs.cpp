@@ -6,6 +6,8 @@
 #include <cstring>
 #include <memory>
 
+#include "hikari/core/thread_scratch.h"
+
 namespace hikari {
 
 namespace {
@@ -188,7 +190,7 @@ void deflate_runs(std::span<const uint8_t> data, bool last, std::vector<uint8_t>
     // Pass 1: the data as tokens (a literal byte b as b, a run of r repeats as 256 + r), and the
     // symbol frequencies, from which the literal/length code follows. Pass 2 then codes the
     // tokens without scanning the data again.
-    const auto tokens = std::make_unique_for_overwrite<uint16_t[]>(data.size());
+    uint16_t* const tokens = thread_scratch<uint16_t, 0>(data.size());
     size_t token_count = 0;
     std::array<uint32_t, k_litlen_symbols> freq{};
     tokenize(
@@ -217,8 +219,8 @@ void deflate_runs(std::span<const uint8_t> data, bool last, std::vector<uint8_t>
 
     // Worst case: 15 bits per byte, plus the header (under 200 bytes) and the flush. The
     // scratch is left uninitialised: only what is written is touched.
-    const auto scratch = std::make_unique_for_overwrite<uint8_t[]>(data.size() * 2 + 256);
-    BitWriter bits(scratch.get());
+    uint8_t* const scratch = thread_scratch<uint8_t, 2>(data.size() * 2 + 256);
+    BitWriter bits(scratch);
 
     // Block header (RFC 1951 §3.2.7): BFINAL, BTYPE = 2 (dynamic), HLIT, HDIST, HCLEN. The
     // code-length code gives the lengths 0..15 four bits each (16 codes of 4 bits: complete);
@@ -247,7 +249,7 @@ void deflate_runs(std::span<const uint8_t> data, bool last, std::vector<uint8_t>
         const std::array<uint8_t, 4> empty_stored = {0x00, 0x00, 0xFF, 0xFF};
         end = std::copy(empty_stored.begin(), empty_stored.end(), end);
     }
-    out.insert(out.end(), scratch.get(), end);
+    out.insert(out.end(), scratch, end);
 }
 
 }  // namespace hikari

@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "hikari/core/parallel.h"
+#include "hikari/core/thread_scratch.h"
 #include "hikari/io/deflate_runs.h"
 
 namespace hikari {
@@ -181,16 +182,16 @@ Band encode_band(const Srgb8Image& image, int y0, int y1, bool last) {
     Band band;
     band.filtered_size = (n + 1) * static_cast<size_t>(y1 - y0);
     // Every byte is written before it is read: no zero fill.
-    const auto filtered = std::make_unique_for_overwrite<uint8_t[]>(band.filtered_size);
-    const auto scratch = std::make_unique_for_overwrite<uint8_t[]>(3 * n);
+    uint8_t* const filtered = thread_scratch<uint8_t, 0>(band.filtered_size);
+    uint8_t* const scratch = thread_scratch<uint8_t, 1>(3 * n);
     for (int y = y0; y < y1; ++y) {
         // Up and Paeth predict from the row above, also across the band's top edge.
         const uint8_t* above = y > 0 ? image.row(y - 1) : zeros.data();
-        filter_row(image.row(y), above, n, scratch.get(),
-                   filtered.get() + (n + 1) * static_cast<size_t>(y - y0));
+        filter_row(image.row(y), above, n, scratch,
+                   filtered + (n + 1) * static_cast<size_t>(y - y0));
     }
-    band.adler = adler32_update(1, filtered.get(), band.filtered_size);
-    deflate_runs({filtered.get(), band.filtered_size}, last, band.deflated);
+    band.adler = adler32_update(1, filtered, band.filtered_size);
+    deflate_runs({filtered, band.filtered_size}, last, band.deflated);
     return band;
 }
 

@@ -1,0 +1,25 @@
+#pragma once
+// Scratch buffers kept per thread between calls: big temporary arrays (an encoder's per-band
+// buffers) allocated once per thread rather than once per call, which on Linux means fresh pages
+// from the kernel, each zeroed and faulted in, every time.
+
+#include <cstddef>
+#include <memory>
+
+namespace hikari {
+
+/// At least `n` elements of T, uninitialised, owned by the calling thread and reused by its next
+/// call with the same T and Tag (one Tag per buffer a caller needs at once). Valid until that
+/// next call.
+template <class T, int Tag>
+T* thread_scratch(size_t n) {
+    thread_local std::unique_ptr<T[]> buffer;
+    thread_local size_t capacity = 0;
+    if (capacity < n) {
+        buffer = std::make_unique_for_overwrite<T[]>(n);
+        capacity = n;
+    }
+    return buffer.get();
+}
+
+}  // namespace hikari
