@@ -65,9 +65,9 @@ const Material& material_at(const Material& m, Vec3 p, Material& storage) {
 
 Vec3 trace(TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* first_hit = nullptr);
 
-/// What a ray along `direction` that hits nothing sees.
-Vec3 sky(const TraceContext& ctx, Vec3 direction) {
-    return ctx.scene.sky.colour(direction, ctx.scene.background);
+/// What a ray that hits nothing sees.
+Vec3 sky(const TraceContext& ctx, const Ray& ray) {
+    return ctx.scene.sky.colour(ray.direction, ctx.scene.background);
 }
 
 /// Colour seen along `ray` (segment number `segment` of its path, primary = 1) whose nearest
@@ -107,7 +107,7 @@ Vec3 shade(TraceContext& ctx, const Ray& ray, const SurfaceHit& hit, int segment
 Vec3 trace(TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* first_hit) {
     ++ctx.rays;
     SurfaceHit hit;
-    if (!ctx.intersector.closest(ray, {0.0f, k_infinity}, hit)) return sky(ctx, ray.direction);
+    if (!ctx.intersector.closest(ray, {0.0f, k_infinity}, hit)) return sky(ctx, ray);
     if (first_hit) *first_hit = hit;
     return shade(ctx, ray, hit, segment);
 }
