@@ -42,16 +42,7 @@ TEST(Srgb8Encoder, ClampsLikeTheReference) {
         EXPECT_EQ(srgb.encode(v), linear_to_srgb8(v)) << "v = " << v;
 }
 
-/// The row kernels this CPU runs.
-std::vector<Srgb8Encoder::RowKernel> row_kernels() {
-    using Kernel = Srgb8Encoder::RowKernel;
-    std::vector<Kernel> kernels = {Kernel::portable};
-    if (__builtin_cpu_supports("avx2")) kernels.push_back(Kernel::avx2);
-    if (Srgb8Encoder::best_row_kernel() == Kernel::avx512) kernels.push_back(Kernel::avx512);
-    return kernels;
-}
-
-TEST(Srgb8Encoder, RowsEqualEncodeOfEachValueOnEveryKernel) {
+TEST(Srgb8Encoder, RowsEqualEncodeOfEachValueAtEverySimdLevel) {
     const Srgb8Encoder& encoder = Srgb8Encoder::instance();
     // Values at and beside every threshold, random ones, and the special cases; lengths that
     // are not multiples of the SIMD widths.
@@ -72,15 +63,15 @@ TEST(Srgb8Encoder, RowsEqualEncodeOfEachValueOnEveryKernel) {
     }
     Pcg32 rng(3, 5);
     while (values.size() < 3000) values.push_back(1.1f * rng.next_float());
-    for (const Srgb8Encoder::RowKernel kernel : row_kernels())
+    for (const SimdLevel level : supported_simd_levels())
         for (const size_t n : {values.size() / 3, size_t{17}, size_t{15}, size_t{1}}) {
-            SCOPED_TRACE(static_cast<int>(kernel));
+            SCOPED_TRACE(simd_level_name(level));
             // Channels from rotations of the values, so every value visits every channel.
             const float* red = values.data();
             const float* green = values.data() + values.size() / 3;
             const float* blue = values.data() + 2 * (values.size() / 3);
             std::vector<uint8_t> rgb(3 * n);
-            encoder.encode_row(red, green, blue, n, rgb.data(), kernel);
+            encoder.encode_row(red, green, blue, n, rgb.data(), level);
             for (size_t i = 0; i < n; ++i) {
                 ASSERT_EQ(rgb[3 * i], encoder.encode(red[i])) << red[i];
                 ASSERT_EQ(rgb[3 * i + 1], encoder.encode(green[i])) << green[i];

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "hikari/bench/bench_work.h"
-#include "hikari/ray/simd_level.h"
+#include "hikari/core/simd_level.h"
 #include "hikari/ray/wide_bvh.h"
 
 namespace hikari {

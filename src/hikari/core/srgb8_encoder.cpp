@@ -149,27 +149,17 @@ constexpr auto k_interleave = make_interleave_masks();
 
 }  // namespace
 
-Srgb8Encoder::RowKernel Srgb8Encoder::best_row_kernel() {
-    static const RowKernel kernel = __builtin_cpu_supports("avx512f") &&
-                                            __builtin_cpu_supports("avx512bw") &&
-                                            __builtin_cpu_supports("avx512vl")
-                                        ? RowKernel::avx512
-                                    : __builtin_cpu_supports("avx2") ? RowKernel::avx2
-                                                                     : RowKernel::portable;
-    return kernel;
-}
-
 void Srgb8Encoder::encode_row(const float* red, const float* green, const float* blue, size_t n,
                               uint8_t* rgb) const {
-    encode_row(red, green, blue, n, rgb, best_row_kernel());
+    encode_row(red, green, blue, n, rgb, best_simd_level());
 }
 
 void Srgb8Encoder::encode_row(const float* red, const float* green, const float* blue, size_t n,
-                              uint8_t* rgb, RowKernel kernel) const {
+                              uint8_t* rgb, SimdLevel level) const {
     size_t done = 0;
-    if (kernel == RowKernel::avx512)
+    if (level == SimdLevel::avx512)
         done = encode_row_avx512(m_bucket.data(), red, green, blue, n, rgb);
-    else if (kernel == RowKernel::avx2)
+    else if (level == SimdLevel::avx2)
         done = encode_row_avx2(m_bucket.data(), red, green, blue, n, rgb);
     for (size_t i = done; i < n; ++i) {
         rgb[3 * i] = encode(red[i]);

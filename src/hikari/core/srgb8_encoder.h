@@ -12,6 +12,7 @@
 #include <cstdint>
 
 #include "hikari/core/image.h"
+#include "hikari/core/simd_level.h"
 
 namespace hikari {
 
@@ -39,13 +40,10 @@ class Srgb8Encoder {
     void encode_row(const float* red, const float* green, const float* blue, size_t n,
                     uint8_t* rgb) const;
 
-    /// encode_row's code paths: every one gives the same bytes.
-    enum class RowKernel { portable, avx2, avx512 };
-    /// The widest path this CPU runs.
-    static RowKernel best_row_kernel();
-    /// encode_row through a given path (which this CPU must support).
+    /// encode_row at a given SIMD level (which this CPU must support); every level gives the
+    /// same bytes.
     void encode_row(const float* red, const float* green, const float* blue, size_t n, uint8_t* rgb,
-                    RowKernel kernel) const;
+                    SimdLevel level) const;
 
     /// The three codes of a linear RGB colour, written to out[0..2].
     void encode(Vec3 c, uint8_t* out) const {

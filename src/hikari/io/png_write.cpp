@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "hikari/core/parallel.h"
+#include "hikari/core/simd_level.h"
 #include "hikari/core/thread_scratch.h"
 #include "hikari/io/deflate_runs.h"
 
@@ -90,16 +91,17 @@ inline int paeth(int a, int b, int c) {
     std::memcpy(out + 1, best, n);
 }
 
-// filter_row_body compiled for AVX-512 and AVX2 as well: the loop then vectorises 16 or 8 pixels
-// wide instead of 4, with the same bytes. Chosen at run time rather than by a target_clones
-// ifunc, whose resolver runs before ThreadSanitizer's runtime is up.
-[[gnu::target("arch=x86-64-v4")]] void filter_row_v4(const uint8_t* row, const uint8_t* prev,
-                                                     size_t n, uint8_t* scratch, uint8_t* out) {
+// filter_row_body compiled for AVX-512 and AVX2 as well (the instruction sets of SimdLevel's
+// checks): the loop then vectorises 16 or 8 pixels wide instead of 4, with the same bytes.
+// Chosen at run time rather than by a target_clones ifunc, whose resolver runs before
+// ThreadSanitizer's runtime is up.
+[[gnu::target("avx2,avx512f,avx512vl,avx512dq,avx512bw")]] void filter_row_avx512(
+    const uint8_t* row, const uint8_t* prev, size_t n, uint8_t* scratch, uint8_t* out) {
     filter_row_body(row, prev, n, scratch, out);
 }
 
-[[gnu::target("arch=x86-64-v3")]] void filter_row_v3(const uint8_t* row, const uint8_t* prev,
-                                                     size_t n, uint8_t* scratch, uint8_t* out) {
+[[gnu::target("avx2")]] void filter_row_avx2(const uint8_t* row, const uint8_t* prev, size_t n,
+                                             uint8_t* scratch, uint8_t* out) {
     filter_row_body(row, prev, n, scratch, out);
 }
 
@@ -129,44 +131,35 @@ inline int paeth(int a, int b, int c) {
     return (b % k_modulus) << 16 | (a % k_modulus);
 }
 
-[[gnu::target("arch=x86-64-v4")]] uint32_t adler32_v4(uint32_t adler, const uint8_t* data,
-                                                      size_t n) {
+[[gnu::target("avx2,avx512f,avx512vl,avx512dq,avx512bw")]] uint32_t adler32_avx512(
+    uint32_t adler, const uint8_t* data, size_t n) {
     return adler32_body(adler, data, n);
 }
 
-[[gnu::target("arch=x86-64-v3")]] uint32_t adler32_v3(uint32_t adler, const uint8_t* data,
-                                                      size_t n) {
+[[gnu::target("avx2")]] uint32_t adler32_avx2(uint32_t adler, const uint8_t* data, size_t n) {
     return adler32_body(adler, data, n);
-}
-
-/// The widest of the per-ISA copies this CPU runs: 4 (x86-64-v4), 3 (x86-64-v3) or 1.
-int isa_level() {
-    static const int level = __builtin_cpu_supports("avx512f") &&
-                                     __builtin_cpu_supports("avx512bw") &&
-                                     __builtin_cpu_supports("avx512vl")
-                                 ? 4
-                             : __builtin_cpu_supports("avx2") && __builtin_cpu_supports("bmi2") &&
-                                     __builtin_cpu_supports("fma")
-                                 ? 3
-                                 : 1;
-    return level;
 }
 
 void filter_row(const uint8_t* row, const uint8_t* prev, size_t n, uint8_t* scratch, uint8_t* out) {
-    const int level = isa_level();
-    if (level == 4)
-        filter_row_v4(row, prev, n, scratch, out);
-    else if (level == 3)
-        filter_row_v3(row, prev, n, scratch, out);
-    else
-        filter_row_body(row, prev, n, scratch, out);
+    switch (best_simd_level()) {
+        case SimdLevel::avx512:
+            return filter_row_avx512(row, prev, n, scratch, out);
+        case SimdLevel::avx2:
+            return filter_row_avx2(row, prev, n, scratch, out);
+        default:
+            return filter_row_body(row, prev, n, scratch, out);
+    }
 }
 
 uint32_t adler32_update(uint32_t adler, const uint8_t* data, size_t n) {
-    const int level = isa_level();
-    if (level == 4) return adler32_v4(adler, data, n);
-    if (level == 3) return adler32_v3(adler, data, n);
-    return adler32_body(adler, data, n);
+    switch (best_simd_level()) {
+        case SimdLevel::avx512:
+            return adler32_avx512(adler, data, n);
+        case SimdLevel::avx2:
+            return adler32_avx2(adler, data, n);
+        default:
+            return adler32_body(adler, data, n);
+    }
 }
 
 /// One band of rows [y0, y1), encoded: filtered, compressed.

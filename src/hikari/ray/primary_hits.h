@@ -16,9 +16,9 @@
 #include <vector>
 
 #include "hikari/core/ray.h"
+#include "hikari/core/simd_level.h"
 #include "hikari/ray/block_lanes.h"
 #include "hikari/ray/scene_intersector.h"
-#include "hikari/ray/simd_level.h"
 #include "hikari/scene/camera.h"
 
 namespace hikari {

@@ -16,8 +16,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "hikari/core/simd_level.h"
 #include "hikari/ray/block_lanes.h"
-#include "hikari/ray/simd_level.h"
 #include "hikari/scene/scene.h"
 #include "hikari/shading/phong.h"
 

@@ -13,8 +13,8 @@
 #include <cstdint>
 
 #include "hikari/core/ray.h"
+#include "hikari/core/simd_level.h"
 #include "hikari/ray/bvh_traversal.h"
-#include "hikari/ray/simd_level.h"
 #include "hikari/ray/wide_bvh.h"
 
 namespace hikari {

@@ -11,8 +11,8 @@
 #include <limits>
 
 #include "hikari/core/ray.h"
+#include "hikari/core/simd_level.h"
 #include "hikari/ray/bvh_traversal.h"
-#include "hikari/ray/simd_level.h"
 #include "hikari/ray/triangle_intersect.h"
 #include "hikari/ray/wide_bvh.h"
 #include "hikari/ray/wide_bvh_packet.h"

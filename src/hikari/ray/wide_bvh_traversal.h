@@ -5,8 +5,8 @@
 // intersect_triangle (watertight, Woop et al. 2013).
 
 #include "hikari/core/ray.h"
+#include "hikari/core/simd_level.h"
 #include "hikari/ray/bvh_traversal.h"
-#include "hikari/ray/simd_level.h"
 #include "hikari/ray/wide_bvh.h"
 
 namespace hikari {

@@ -1,4 +1,4 @@
-#include "hikari/ray/simd_level.h"
+#include "hikari/core/simd_level.h"
 
 namespace hikari {
 
