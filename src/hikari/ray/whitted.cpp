@@ -299,10 +299,10 @@ void strata(int n, int& cols, int& rows) {
 
 Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
     const Camera& cam = scene.camera;
-    // Every pixel is set below (by its tile), so the 8-bit colour starts unwritten: its pages
-    // are first touched by the tiles, in parallel.
+    // Every pixel is set below (by its tile), so 8-bit colour may start unwritten: its pages are
+    // first touched by the tiles, in parallel.
     Framebuffer fb(cam.width, cam.height, scene.background, settings.aov_buffers,
-                   settings.srgb8_output && !settings.aov_buffers, true);
+                   settings.srgb8_output && !settings.aov_buffers);
     const SceneIntersector intersector(scene);
     const TraceContext shared{scene, intersector, settings.max_depth};
     if (RenderControl* control = settings.control) {

@@ -1,6 +1,5 @@
 #include "hikari/render/framebuffer.h"
 
-#include <cstring>
 #include <stdexcept>
 #include <utility>
 
@@ -9,20 +8,11 @@
 namespace hikari {
 
 Framebuffer::Framebuffer(int width, int height, Vec3 background, bool aov_buffers,
-                         bool srgb8_output, bool every_pixel_set) {
-    if (srgb8_output) {
+                         bool srgb8_output) {
+    if (srgb8_output)
         srgb8 = Srgb8Image(width, height);
-        if (height > 0 && !every_pixel_set) {
-            // One row pixel by pixel, then the others copied from it a row at a time.
-            uint8_t code[3];
-            Srgb8Encoder::instance().encode(background, code);
-            for (int x = 0; x < width; ++x) std::memcpy(srgb8.row(0) + 3 * x, code, 3);
-            for (int y = 1; y < height; ++y)
-                std::memcpy(srgb8.row(y), srgb8.row(0), static_cast<size_t>(width) * 3);
-        }
-    } else {
+    else
         color = Image(width, height, background);
-    }
     if (!aov_buffers) return;
     const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
     depth.assign(pixels, k_infinity);

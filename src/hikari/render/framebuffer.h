@@ -19,7 +19,7 @@ inline constexpr uint32_t k_background_id = 0;
 /// empty when the render was asked for colour only (RenderSettings::aov_buffers false).
 struct Framebuffer {
     Image color;  ///< linear RGB; empty when the method filled `srgb8` instead
-    /// The colour as 8-bit sRGB, filled instead of `color` by a method that honours
+    /// The colour as 8-bit sRGB, set pixel by pixel instead of `color` by a method that honours
     /// RenderSettings::srgb8_output (a quarter of the memory); else empty.
     Srgb8Image srgb8;
     HugePageVector<float> depth;  ///< eye-space distance to the surface seen at the pixel centre;
@@ -30,12 +30,11 @@ struct Framebuffer {
                                   ///< the eye; zero for background
 
     Framebuffer() = default;
-    /// Colour filled with `background` (as `srgb8` when `srgb8_output`, `color` left empty);
-    /// the AOV buffers cleared to "nothing seen" when `aov_buffers`, else left empty. A
-    /// renderer that sets every pixel's colour may pass `every_pixel_set`: the 8-bit colour is
-    /// then left unwritten (the background would be written only to be overwritten).
+    /// Colour filled with `background`, or with `srgb8_output` 8-bit colour (`srgb8`) left
+    /// unwritten, for a method that sets every pixel (`color` then stays empty); the AOV buffers
+    /// cleared to "nothing seen" when `aov_buffers`, else left empty.
     Framebuffer(int width, int height, Vec3 background, bool aov_buffers = true,
-                bool srgb8_output = false, bool every_pixel_set = false);
+                bool srgb8_output = false);
 
     int width() const { return srgb8.bytes.empty() ? color.width : srgb8.width; }
     int height() const { return srgb8.bytes.empty() ? color.height : srgb8.height; }
