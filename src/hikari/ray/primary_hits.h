@@ -1,6 +1,7 @@
 #pragma once
-// The nearest hits of a whole block of camera rays at once: the front end of the Whitted ray
-// tracer (whitted.cpp), which then shades each pixel from its hit.
+// The nearest hits of a whole block of rays at once, described in the block's lanes
+// (ray/block_lanes.h), with their shadow rays: the front end of the Whitted ray tracer
+// (whitted.cpp), which then shades the hits where they lie (ray/whitted_shade.h).
 //
 // Why a block: camera rays through neighbouring pixels share their origin and nearly their
 // direction (Wald, Slusallek, Benthin & Wagner 2001, "Interactive Rendering with Coherent Ray

@@ -51,7 +51,26 @@ bool SceneIntersector::closest(const Ray& ray, Interval range, SurfaceHit& hit) 
     return true;
 }
 
-void SceneIntersector::describe_triangle_hit(const TriangleHit& triangle, SurfaceHit& hit) const {
+void SceneIntersector::describe_hit(const Ray& ray, float t, HitKind kind, size_t index,
+                                    const TriangleHit& triangle, SurfaceHit& hit) const {
+    hit.t = t;
+    hit.position = ray.at(t);
+    if (kind == HitKind::sphere) {
+        const Sphere& s = m_scene.spheres[index];
+        hit.geometric_normal = (hit.position - s.center) / s.radius;
+        hit.shading_normal = hit.geometric_normal;
+        hit.material = s.material;
+        hit.id = s.id;
+        return;
+    }
+    if (kind == HitKind::plane) {
+        const Plane& p = m_scene.planes[index];
+        hit.geometric_normal = p.normal;
+        hit.shading_normal = hit.geometric_normal;
+        hit.material = p.material;
+        hit.id = p.id;
+        return;
+    }
     const TriangleSet& tris = m_scene.triangles;
     const auto& [i0, i1, i2] = tris.indices[triangle.triangle];
     const Vec3 p0 = tris.positions[i0], p1 = tris.positions[i1], p2 = tris.positions[i2];

@@ -41,27 +41,8 @@ class SceneIntersector {
     /// kind `kind` (Scene::spheres or Scene::planes; for triangles, `triangle` says which and
     /// where). What closest() does once it knows the nearest hit, for callers that searched
     /// another way (e.g. the bulk camera-ray front end, ray/primary_hits.h).
-    /// Inline: the bulk callers describe millions of sphere and plane hits.
     void describe_hit(const Ray& ray, float t, HitKind kind, size_t index,
-                      const TriangleHit& triangle, SurfaceHit& hit) const {
-        hit.t = t;
-        hit.position = ray.at(t);
-        if (kind == HitKind::sphere) {
-            const Sphere& s = m_scene.spheres[index];
-            hit.geometric_normal = (hit.position - s.center) / s.radius;
-            hit.shading_normal = hit.geometric_normal;
-            hit.material = s.material;
-            hit.id = s.id;
-        } else if (kind == HitKind::plane) {
-            const Plane& p = m_scene.planes[index];
-            hit.geometric_normal = p.normal;
-            hit.shading_normal = hit.geometric_normal;
-            hit.material = p.material;
-            hit.id = p.id;
-        } else {
-            describe_triangle_hit(triangle, hit);
-        }
-    }
+                      const TriangleHit& triangle, SurfaceHit& hit) const;
 
     /// The wide BVH over the scene's triangles.
     const WideBvh& bvh() const { return m_bvh; }
@@ -69,9 +50,6 @@ class SceneIntersector {
     double build_ms() const { return m_build_ms; }
 
   private:
-    /// describe_hit's triangle case.
-    void describe_triangle_hit(const TriangleHit& triangle, SurfaceHit& hit) const;
-
     const Scene& m_scene;
     WideBvh m_bvh;
     WideBvh m_shadow_bvh;    ///< the shadow-casting triangles, when some do not cast
