@@ -223,7 +223,7 @@ class WaveTracer {
                                size_t base) {
         const detail::LaneChunk& lane = block.lanes.chunks[c];
         for (int j = 0; j < rays; ++j) {
-            if (!lane.active[j] || !lane.scalar_specular[j]) continue;
+            if (!lane.scalar_specular[j]) continue;  // 0 in lanes without a hit
             const int i = c * k_lane_chunk + j;
             TraceContext scalar = m_ctx;
             const SurfaceHit hit = block.hit(i);
@@ -244,7 +244,7 @@ class WaveTracer {
     /// refracted.
     void spawn_rays(const detail::LaneChunk& lane, int rays, PathLevel& nodes, size_t base) {
         for (int j = 0; j < rays; ++j) {
-            if (!lane.active[j]) continue;
+            if (lane.children[j] == 0) continue;  // 0 in lanes without a hit
             const auto spawn_ray = [&](const float(&origin)[3][k_lane_chunk],
                                        const float(&dir)[3][k_lane_chunk]) {
                 m_s.next_rays.push_back({{origin[0][j], origin[1][j], origin[2][j]},
