@@ -178,12 +178,10 @@ struct PhaseTimes {
 /// `--stats`: phase times, rays per second and the BVH's figures, on stderr.
 void print_stats(const PhaseTimes& times) {
     const uint64_t rays = g_control.rays_traced.load();
-    const double seconds = times.render;
-    fmt::print(stderr, "hikari: stats: load {:.1f} ms, render {:.1f} ms, write {:.1f} ms\n",
+    fmt::print(stderr, "hikari: stats: load {:.1f} ms, render {:.1f} ms, write {:.1f} ms",
                1e3 * times.load, 1e3 * times.render, 1e3 * times.write);
-    fmt::print(stderr, "hikari: stats: render {:.3f} s", seconds);
     if (rays > 0)
-        fmt::print(stderr, ", {} rays, {:.2f} Mrays/s", rays, 1e-6 * double(rays) / seconds);
+        fmt::print(stderr, "; {} rays, {:.2f} Mrays/s", rays, 1e-6 * double(rays) / times.render);
     fmt::print(stderr, "\n");
     const uint64_t triangles = g_control.bvh_triangles.load();
     if (triangles > 0)
