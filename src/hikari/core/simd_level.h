@@ -30,4 +30,17 @@ std::vector<SimdLevel> supported_simd_levels();
 /// A short name: "portable", "avx2" or "avx512".
 const char* simd_level_name(SimdLevel level);
 
+/// The one of a function's three builds (portable, AVX2, AVX-512) that runs at `level`.
+template <class Function>
+Function* simd_pick(SimdLevel level, Function* portable, Function* avx2, Function* avx512) {
+    switch (level) {
+        case SimdLevel::avx512:
+            return avx512;
+        case SimdLevel::avx2:
+            return avx2;
+        default:
+            return portable;
+    }
+}
+
 }  // namespace hikari

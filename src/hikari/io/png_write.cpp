@@ -95,6 +95,11 @@ inline int paeth(int a, int b, int c) {
 // checks): the loop then vectorises 16 or 8 pixels wide instead of 4, with the same bytes.
 // Chosen at run time rather than by a target_clones ifunc, whose resolver runs before
 // ThreadSanitizer's runtime is up.
+void filter_row_portable(const uint8_t* row, const uint8_t* prev, size_t n, uint8_t* scratch,
+                         uint8_t* out) {
+    filter_row_body(row, prev, n, scratch, out);
+}
+
 [[gnu::target("avx2,avx512f,avx512vl,avx512dq,avx512bw")]] void filter_row_avx512(
     const uint8_t* row, const uint8_t* prev, size_t n, uint8_t* scratch, uint8_t* out) {
     filter_row_body(row, prev, n, scratch, out);
@@ -131,6 +136,10 @@ inline int paeth(int a, int b, int c) {
     return (b % k_modulus) << 16 | (a % k_modulus);
 }
 
+uint32_t adler32_portable(uint32_t adler, const uint8_t* data, size_t n) {
+    return adler32_body(adler, data, n);
+}
+
 [[gnu::target("avx2,avx512f,avx512vl,avx512dq,avx512bw")]] uint32_t adler32_avx512(
     uint32_t adler, const uint8_t* data, size_t n) {
     return adler32_body(adler, data, n);
@@ -141,25 +150,13 @@ inline int paeth(int a, int b, int c) {
 }
 
 void filter_row(const uint8_t* row, const uint8_t* prev, size_t n, uint8_t* scratch, uint8_t* out) {
-    switch (best_simd_level()) {
-        case SimdLevel::avx512:
-            return filter_row_avx512(row, prev, n, scratch, out);
-        case SimdLevel::avx2:
-            return filter_row_avx2(row, prev, n, scratch, out);
-        default:
-            return filter_row_body(row, prev, n, scratch, out);
-    }
+    simd_pick(best_simd_level(), filter_row_portable, filter_row_avx2, filter_row_avx512)(
+        row, prev, n, scratch, out);
 }
 
 uint32_t adler32_update(uint32_t adler, const uint8_t* data, size_t n) {
-    switch (best_simd_level()) {
-        case SimdLevel::avx512:
-            return adler32_avx512(adler, data, n);
-        case SimdLevel::avx2:
-            return adler32_avx2(adler, data, n);
-        default:
-            return adler32_body(adler, data, n);
-    }
+    return simd_pick(best_simd_level(), adler32_portable, adler32_avx2, adler32_avx512)(adler, data,
+                                                                                        n);
 }
 
 /// One band of rows [y0, y1), encoded: filtered, compressed.

@@ -30,23 +30,6 @@ void primary_shadows_portable(const PrimaryShadowLight& light, const PrimaryAnal
 
 }  // namespace detail
 
-namespace {
-
-/// The kernel of `level` among one kernel's three builds.
-template <class Kernel>
-Kernel* pick(SimdLevel level, Kernel* portable, Kernel* avx2, Kernel* avx512) {
-    switch (level) {
-        case SimdLevel::avx512:
-            return avx512;
-        case SimdLevel::avx2:
-            return avx2;
-        default:
-            return portable;
-    }
-}
-
-}  // namespace
-
 Ray PrimaryBlock::ray(int k) const {
     const detail::LaneChunk& c = lanes.chunk(k);
     const int j = detail::lane_in_chunk(k);
@@ -159,8 +142,8 @@ void PrimaryHitTracer::trace(int x0, int y0, int width, int height, PrimaryBlock
 
     // 1. The camera rays, one chunk per row.
     block.chunks = height;
-    pick(m_level, detail::primary_directions_portable, detail::primary_directions_avx2,
-         detail::primary_directions_avx512)(cam, height, block.lanes);
+    simd_pick(m_level, detail::primary_directions_portable, detail::primary_directions_avx2,
+              detail::primary_directions_avx512)(cam, height, block.lanes);
 
     // 2. Triangles: the block as 4x4 packets through the wide BVH.
     TriangleHit triangle_hits[k_primary_block_rays];
@@ -181,8 +164,8 @@ void PrimaryHitTracer::trace(int x0, int y0, int width, int height, PrimaryBlock
     }
 
     // 3. Spheres and planes; pixels right of the image's edge hold no ray of the block.
-    pick(m_level, detail::primary_analytic_portable, detail::primary_analytic_avx2,
-         detail::primary_analytic_avx512)(m_analytic.view(), height, block.lanes);
+    simd_pick(m_level, detail::primary_analytic_portable, detail::primary_analytic_avx2,
+              detail::primary_analytic_avx512)(m_analytic.view(), height, block.lanes);
     if (width < k_primary_block)
         for (int y = 0; y < height; ++y)
             std::fill(block.lanes.chunks[y].object + width,
@@ -210,8 +193,8 @@ void PrimaryHitTracer::trace_rays(const Ray* rays, int count, PrimaryBlock& bloc
             intersect_closest(m_intersector.bvh(), ray, {0.0f, k_infinity}, triangle_hits[k]))
             chunk.t[j] = triangle_hits[k].t, chunk.object[j] = 1;
     }
-    pick(m_level, detail::primary_analytic_portable, detail::primary_analytic_avx2,
-         detail::primary_analytic_avx512)(m_analytic.view(), block.chunks, block.lanes);
+    simd_pick(m_level, detail::primary_analytic_portable, detail::primary_analytic_avx2,
+              detail::primary_analytic_avx512)(m_analytic.view(), block.chunks, block.lanes);
     for (int k = count; k < used; ++k) block.lanes.chunk(k).object[detail::lane_in_chunk(k)] = 0;
     finish(triangle_hits, block);
 }
@@ -221,8 +204,8 @@ void PrimaryHitTracer::finish(const TriangleHit* triangle_hits, PrimaryBlock& bl
     detail::BlockLanes& lanes = block.lanes;
     // 4. Each hit described as SceneIntersector::closest describes it: spheres and planes in the
     // lanes, triangles one at a time.
-    pick(m_level, detail::primary_describe_portable, detail::primary_describe_avx2,
-         detail::primary_describe_avx512)(m_objects.view(), chunks, lanes);
+    simd_pick(m_level, detail::primary_describe_portable, detail::primary_describe_avx2,
+              detail::primary_describe_avx512)(m_objects.view(), chunks, lanes);
     const bool triangles = m_scene.triangles.size() > 0;
     if (triangles)
         for (int k = 0; k < chunks * k_lane_chunk; ++k) {
@@ -246,8 +229,8 @@ void PrimaryHitTracer::finish(const TriangleHit* triangle_hits, PrimaryBlock& bl
     block.shadows_known = m_lights.size() <= k_max_block_lights;
     if (!block.shadows_known) return;
     for (int c = 0; c < chunks; ++c) std::fill_n(lanes.chunks[c].lit, k_lane_chunk, 0);
-    const auto shadows = pick(m_level, detail::primary_shadows_portable,
-                              detail::primary_shadows_avx2, detail::primary_shadows_avx512);
+    const auto shadows = simd_pick(m_level, detail::primary_shadows_portable,
+                                   detail::primary_shadows_avx2, detail::primary_shadows_avx512);
     const detail::PrimaryAnalytic casters = m_casters.view();
     for (size_t l = 0; l < m_lights.size(); ++l) {
         shadows(m_lights[l], casters, chunks, lanes);

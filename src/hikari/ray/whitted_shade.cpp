@@ -104,16 +104,8 @@ LaneShader::LaneShader(const Scene& scene, SimdLevel level) : m_level(level) {
 }
 
 void LaneShader::shade(detail::BlockLanes& lanes, int count, bool spawn) const {
-    switch (m_level) {
-        case SimdLevel::avx512:
-            detail::shade_lanes_avx512(m_scene, spawn ? 1 : 0, count, lanes);
-            break;
-        case SimdLevel::avx2:
-            detail::shade_lanes_avx2(m_scene, spawn ? 1 : 0, count, lanes);
-            break;
-        default:
-            detail::shade_lanes_portable(m_scene, spawn ? 1 : 0, count, lanes);
-    }
+    simd_pick(m_level, detail::shade_lanes_portable, detail::shade_lanes_avx2,
+              detail::shade_lanes_avx512)(m_scene, spawn ? 1 : 0, count, lanes);
 }
 
 }  // namespace hikari
