@@ -357,8 +357,9 @@ int main(int argc, char** argv) {
                      "(default: half the machine's memory)")
         ->check(CLI::PositiveNumber);
     render->add_flag("-q,--quiet", o.quiet, "No progress or summary on stderr");
-    render->add_flag("--stats", o.stats,
-                     "Print render time, rays per second and BVH figures on stderr");
+    render->add_flag(
+        "--stats", o.stats,
+        "Print the load, render and write times, rays per second and BVH figures on stderr");
     render->footer(method_list());
 
     BenchOptions b;
