@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
 #include "hikari/ray/wide_bvh_builder.h"
+#include "hikari/ray/wide_bvh_kernel.h"
 #include "test_meshes.h"
 
 namespace hikari {
@@ -49,6 +51,30 @@ void expect_matches_brute_force(const WideBvh& bvh, const TestMesh& mesh, const 
                                             mesh.positions[tri[2]], {valid.min, k_infinity});
         ASSERT_TRUE(own) << "ray " << ray_index;
         EXPECT_EQ(own->t, hit.t) << "ray " << ray_index;
+    }
+}
+
+TEST(WideBvhTraversal, LeafRayEqualsWatertightRay) {
+    // The kernels' branch-free axis choice must be WatertightRay's, ties and signs included:
+    // every combination of components from {0, -0, +-1, +-2} and random directions.
+    const std::array<float, 7> values{0.0f, -0.0f, 1.0f, -1.0f, 2.0f, -2.0f, 1.0f};
+    std::vector<Vec3> directions;
+    for (float x : values)
+        for (float y : values)
+            for (float z : values) directions.push_back({x, y, z});
+    Pcg32 rng(7, 3);
+    for (int i = 0; i < 1000; ++i) directions.push_back(testing::random_direction(rng));
+    for (const Vec3& d : directions) {
+        if (d == Vec3(0.0f)) continue;
+        const Ray ray{{0.5f, -1.5f, 2.5f}, d};
+        const WatertightRay expected(ray);
+        const WatertightRay got = wide_kernel::LeafRay(ray).watertight();
+        EXPECT_TRUE(got.kx == expected.kx && got.ky == expected.ky && got.kz == expected.kz)
+            << d.x << " " << d.y << " " << d.z;
+        EXPECT_EQ(got.sx, expected.sx);
+        EXPECT_EQ(got.sy, expected.sy);
+        EXPECT_EQ(got.sz, expected.sz);
+        EXPECT_EQ(got.origin, expected.origin);
     }
 }
 

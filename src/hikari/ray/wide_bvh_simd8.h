@@ -75,8 +75,8 @@ struct Simd8Ops {
             /* steps 1-2: vertices relative to the origin, sheared so the ray runs along +z */
             const __m256 ox = _mm256_set1_ps(ray.ox), oy = _mm256_set1_ps(ray.oy),
                          oz = _mm256_set1_ps(ray.oz);
-            const __m256 sx = _mm256_set1_ps(ray.shear.sx), sy = _mm256_set1_ps(ray.shear.sy),
-                         sz = _mm256_set1_ps(ray.shear.sz);
+            const __m256 sx = _mm256_set1_ps(ray.sx), sy = _mm256_set1_ps(ray.sy),
+                         sz = _mm256_set1_ps(ray.sz);
             const __m256 az = _mm256_sub_ps(row(0, ray.kz), oz);
             const __m256 bz = _mm256_sub_ps(row(1, ray.kz), oz);
             const __m256 cz = _mm256_sub_ps(row(2, ray.kz), oz);
