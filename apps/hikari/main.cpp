@@ -234,8 +234,7 @@ int run_render(const RenderOptions& o) {
         fb = method->render(scene, settings);
     }
     const auto rendered = Clock::now();
-    const double seconds = std::chrono::duration<double>(rendered - start).count();
-    times.render = seconds;
+    times.render = std::chrono::duration<double>(rendered - start).count();
     const int width = fb.width(), height = fb.height();
     g_writing = true;
     if (g_control.cancel.load()) throw Interrupted();
@@ -247,7 +246,7 @@ int run_render(const RenderOptions& o) {
     times.write = std::chrono::duration<double>(Clock::now() - rendered).count();
     if (!o.quiet)
         fmt::print(stderr, "hikari: wrote {} ({}x{}, {}, {:.3f} s)\n", output, width, height,
-                   method->name, seconds);
+                   method->name, times.render);
     if (o.stats) print_stats(times);
     return 0;
 }
@@ -289,8 +288,6 @@ std::string method_list() {
     return text;
 }
 
-}  // namespace
-
 /// Ends the process once a render's work is done: the streams are flushed, then the system
 /// takes back the memory and TBB's worker threads at once (running every destructor first,
 /// TBB's joining its workers among them, costs milliseconds and changes nothing).
@@ -298,6 +295,8 @@ std::string method_list() {
     std::fflush(nullptr);
     std::_Exit(code);
 }
+
+}  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"hikari: every classic rendering method of the lecture, in one renderer.",

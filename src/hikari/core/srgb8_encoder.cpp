@@ -91,9 +91,11 @@ constexpr auto k_interleave = make_interleave_masks();
                              _mm512_cmp_ps_mask(x, _mm512_set1_ps(1.0f), _CMP_LT_OQ);
     const __mmask16 saturated = _mm512_cmp_ps_mask(x, _mm512_set1_ps(1.0f), _CMP_GE_OQ);
     const __m512i bits = _mm512_maskz_mov_epi32(inside, _mm512_castps_si512(x));
-    const __m512i entry = _mm512_i32gather_epi32(_mm512_srli_epi32(bits, 15), table, 4);
-    const __mmask16 step = _mm512_cmpge_epu32_mask(
-        _mm512_and_si512(bits, _mm512_set1_epi32(0x7FFF)), _mm512_srli_epi32(entry, 8));
+    const __m512i entry =
+        _mm512_i32gather_epi32(_mm512_srli_epi32(bits, Srgb8Encoder::k_bucket_shift), table, 4);
+    const __mmask16 step =
+        _mm512_cmpge_epu32_mask(_mm512_and_si512(bits, _mm512_set1_epi32(Srgb8Encoder::k_low_mask)),
+                                _mm512_srli_epi32(entry, 8));
     __m512i code = _mm512_and_si512(entry, _mm512_set1_epi32(0xFF));
     code = _mm512_mask_add_epi32(code, step, code, _mm512_set1_epi32(1));
     code = _mm512_mask_mov_epi32(code, saturated, _mm512_set1_epi32(255));
@@ -121,9 +123,10 @@ constexpr auto k_interleave = make_interleave_masks();
     const __m256i saturated = _mm256_castps_si256(_mm256_cmp_ps(x, one, _CMP_GE_OQ));
     const __m256i bits = _mm256_and_si256(_mm256_castps_si256(x), _mm256_castps_si256(inside));
     const __m256i entry =
-        _mm256_i32gather_epi32(reinterpret_cast<const int*>(table), _mm256_srli_epi32(bits, 15), 4);
+        _mm256_i32gather_epi32(reinterpret_cast<const int*>(table),
+                               _mm256_srli_epi32(bits, Srgb8Encoder::k_bucket_shift), 4);
     // Unsigned low >= threshold as signed (both below 2^16): not (threshold > low).
-    const __m256i low = _mm256_and_si256(bits, _mm256_set1_epi32(0x7FFF));
+    const __m256i low = _mm256_and_si256(bits, _mm256_set1_epi32(Srgb8Encoder::k_low_mask));
     const __m256i below = _mm256_cmpgt_epi32(_mm256_srli_epi32(entry, 8), low);
     __m256i code = _mm256_and_si256(entry, _mm256_set1_epi32(0xFF));
     code = _mm256_sub_epi32(code, _mm256_andnot_si256(below, _mm256_set1_epi32(-1)));
@@ -147,6 +150,12 @@ constexpr auto k_interleave = make_interleave_masks();
     return i;
 }
 
+/// No row kernel: every value goes to encode_row's scalar loop.
+size_t encode_row_portable(const uint32_t*, const float*, const float*, const float*, size_t,
+                           uint8_t*) {
+    return 0;
+}
+
 }  // namespace
 
 void Srgb8Encoder::encode_row(const float* red, const float* green, const float* blue, size_t n,
@@ -156,11 +165,9 @@ void Srgb8Encoder::encode_row(const float* red, const float* green, const float*
 
 void Srgb8Encoder::encode_row(const float* red, const float* green, const float* blue, size_t n,
                               uint8_t* rgb, SimdLevel level) const {
-    size_t done = 0;
-    if (level == SimdLevel::avx512)
-        done = encode_row_avx512(m_bucket.data(), red, green, blue, n, rgb);
-    else if (level == SimdLevel::avx2)
-        done = encode_row_avx2(m_bucket.data(), red, green, blue, n, rgb);
+    // The kernel encodes whole steps of 16 values; the rest one at a time.
+    const size_t done = simd_pick(level, encode_row_portable, encode_row_avx2, encode_row_avx512)(
+        m_bucket.data(), red, green, blue, n, rgb);
     for (size_t i = done; i < n; ++i) {
         rgb[3 * i] = encode(red[i]);
         rgb[3 * i + 1] = encode(green[i]);

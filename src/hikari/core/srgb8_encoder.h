@@ -53,16 +53,18 @@ class Srgb8Encoder {
     /// The smallest float whose code is `code` (1 ≤ code ≤ 255); threshold(0) is 0.
     float threshold(int code) const { return m_threshold[code]; }
 
-  private:
-    Srgb8Encoder();
-
     // Buckets of floats sharing their top bits: 2^8 per octave (0.4% of the value), finer than
     // the spacing of the codes (at least 0.9% of the value), so a bucket holds at most one
     // threshold; the table is 128 KiB, of which renders touch the few KiB of values above 2^-13.
+    // Public for the row kernels, which read the table the same way.
     static constexpr int k_bucket_shift = 15;
+    static constexpr uint32_t k_low_mask = (1u << k_bucket_shift) - 1;
+
+  private:
+    Srgb8Encoder();
+
     static constexpr uint32_t k_one_bits = 0x3F800000;  // 1.0f
     static constexpr size_t k_buckets = (k_one_bits >> k_bucket_shift) + 1;
-    static constexpr uint32_t k_low_mask = (1u << k_bucket_shift) - 1;
 
     std::array<float, 257> m_threshold{};  ///< [256] = infinity ends every search
     /// Per bucket: the code of its first float, plus 256 × the low bits of the next code's

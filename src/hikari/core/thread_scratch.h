@@ -9,9 +9,10 @@
 namespace hikari {
 
 /// At least `n` elements of T, uninitialised, owned by the calling thread and reused by its next
-/// call with the same T and Tag (one Tag per buffer a caller needs at once). Valid until that
-/// next call.
-template <class T, int Tag>
+/// call with the same T and Tag. Valid until that next call. Tag is a type of the caller's own
+/// (an empty struct per buffer), so buffers of different callers never coincide, even when one
+/// calls the other while its buffer is in use.
+template <class T, class Tag>
 T* thread_scratch(size_t n) {
     thread_local std::unique_ptr<T[]> buffer;
     thread_local size_t capacity = 0;

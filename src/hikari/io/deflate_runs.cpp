@@ -184,13 +184,17 @@ class BitWriter {
     int m_count = 0;
 };
 
+// thread_scratch buffers of deflate_runs.
+struct TokensTag {};
+struct CodedBitsTag {};
+
 }  // namespace
 
 void deflate_runs(std::span<const uint8_t> data, bool last, std::vector<uint8_t>& out) {
     // Pass 1: the data as tokens (a literal byte b as b, a run of r repeats as 256 + r), and the
     // symbol frequencies, from which the literal/length code follows. Pass 2 then codes the
     // tokens without scanning the data again.
-    uint16_t* const tokens = thread_scratch<uint16_t, 0>(data.size());
+    uint16_t* const tokens = thread_scratch<uint16_t, TokensTag>(data.size());
     size_t token_count = 0;
     std::array<uint32_t, k_litlen_symbols> freq{};
     tokenize(
@@ -219,7 +223,7 @@ void deflate_runs(std::span<const uint8_t> data, bool last, std::vector<uint8_t>
 
     // Worst case: 15 bits per byte, plus the header (under 200 bytes) and the flush. The
     // scratch is left uninitialised: only what is written is touched.
-    uint8_t* const scratch = thread_scratch<uint8_t, 2>(data.size() * 2 + 256);
+    uint8_t* const scratch = thread_scratch<uint8_t, CodedBitsTag>(data.size() * 2 + 256);
     BitWriter bits(scratch);
 
     // Block header (RFC 1951 §3.2.7): BFINAL, BTYPE = 2 (dynamic), HLIT, HDIST, HCLEN. The

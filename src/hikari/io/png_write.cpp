@@ -159,6 +159,10 @@ uint32_t adler32_update(uint32_t adler, const uint8_t* data, size_t n) {
                                                                                         n);
 }
 
+// thread_scratch buffers of encode_band.
+struct FilteredRowsTag {};
+struct FilterScratchTag {};
+
 /// One band of rows [y0, y1), encoded: filtered, compressed.
 struct Band {
     Bytes deflated;      ///< this band's DEFLATE piece
@@ -172,8 +176,8 @@ Band encode_band(const Srgb8Image& image, int y0, int y1, bool last) {
     Band band;
     band.filtered_size = (n + 1) * static_cast<size_t>(y1 - y0);
     // Every byte is written before it is read: no zero fill.
-    uint8_t* const filtered = thread_scratch<uint8_t, 0>(band.filtered_size);
-    uint8_t* const scratch = thread_scratch<uint8_t, 1>(3 * n);
+    uint8_t* const filtered = thread_scratch<uint8_t, FilteredRowsTag>(band.filtered_size);
+    uint8_t* const scratch = thread_scratch<uint8_t, FilterScratchTag>(3 * n);
     for (int y = y0; y < y1; ++y) {
         // Up and Paeth predict from the row above, also across the band's top edge.
         const uint8_t* above = y > 0 ? image.row(y - 1) : zeros.data();
