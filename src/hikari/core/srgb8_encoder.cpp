@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "hikari/core/color.h"
+#include "hikari/core/huge_page_allocator.h"
 #include "hikari/core/parallel.h"
 
 namespace hikari {
@@ -17,6 +18,7 @@ const Srgb8Encoder& Srgb8Encoder::instance() {
 }
 
 Srgb8Encoder::Srgb8Encoder() {
+    populate_pages(m_bucket.data(), sizeof(m_bucket));
     // Positive floats order like their bit patterns, so bisect on the bits in (0, 1]: the
     // threshold of code k is the first float whose reference code reaches k.
     m_threshold[0] = 0.0f;

@@ -69,7 +69,9 @@ class Srgb8Encoder {
     std::array<float, 257> m_threshold{};  ///< [256] = infinity ends every search
     /// Per bucket: the code of its first float, plus 256 × the low bits of the next code's
     /// threshold when that lies in the bucket, else 256 × 2^k_bucket_shift (never reached).
-    std::array<uint32_t, k_buckets> m_bucket{};
+    /// Written whole by the constructor, after populate_pages: no zero fill first, which would
+    /// fault the 128 KiB in page by page (the table is built inside a render's first tile).
+    std::array<uint32_t, k_buckets> m_bucket;
 };
 
 /// `image` encoded pixel by pixel (rows in parallel).

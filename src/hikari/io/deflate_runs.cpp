@@ -6,6 +6,7 @@
 #include <cstring>
 #include <memory>
 
+#include "hikari/core/huge_page_allocator.h"
 #include "hikari/core/thread_scratch.h"
 
 namespace hikari {
@@ -253,6 +254,9 @@ void deflate_runs(std::span<const uint8_t> data, bool last, std::vector<uint8_t>
         const std::array<uint8_t, 4> empty_stored = {0x00, 0x00, 0xFF, 0xFF};
         end = std::copy(empty_stored.begin(), empty_stored.end(), end);
     }
+    const auto coded = static_cast<size_t>(end - scratch);
+    out.reserve(out.size() + coded);
+    populate_pages(out.data() + out.size(), coded);
     out.insert(out.end(), scratch, end);
 }
 

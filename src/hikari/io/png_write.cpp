@@ -10,6 +10,7 @@
 #include <span>
 #include <string_view>
 
+#include "hikari/core/huge_page_allocator.h"
 #include "hikari/core/parallel.h"
 #include "hikari/core/simd_level.h"
 #include "hikari/core/thread_scratch.h"
@@ -205,6 +206,7 @@ Bytes encode_png(const Srgb8Image& image) {
     for (const Band& band : bands) size += 12 + band.deflated.size();
     Bytes png;
     png.reserve(size);
+    populate_pages(png.data(), size);
     png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
     // IHDR (§11.2.2): size, bit depth 8, colour type 2 (RGB), deflate, adaptive filters, no
     // interlace.
