@@ -254,8 +254,11 @@ void deflate_runs(std::span<const uint8_t> data, bool last, std::vector<uint8_t>
         const std::array<uint8_t, 4> empty_stored = {0x00, 0x00, 0xFF, 0xFF};
         end = std::copy(empty_stored.begin(), empty_stored.end(), end);
     }
+    // Room for the piece, mapped in one call (populate_pages), growing geometrically when a
+    // caller appends piece after piece.
     const auto coded = static_cast<size_t>(end - scratch);
-    out.reserve(out.size() + coded);
+    if (out.capacity() - out.size() < coded)
+        out.reserve(std::max(out.size() + coded, 2 * out.capacity()));
     populate_pages(out.data() + out.size(), coded);
     out.insert(out.end(), scratch, end);
 }
