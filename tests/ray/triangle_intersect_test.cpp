@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -121,6 +123,64 @@ TEST(TriangleIntersect, RaysThroughSharedVertexOfFanNeverSlipBetween) {
         }
         ASSERT_GE(hits, 1) << "ray " << i << " slipped through the fan's vertex";
     }
+}
+
+}  // namespace
+}  // namespace hikari
+
+namespace hikari {
+namespace {
+
+/// The any-hit test's open interval, on both sides of the triangle (det of either sign).
+TEST(TriangleOccludes, IntervalIsOpenOnBothSides) {
+    const WatertightRay down(Ray{{0.2f, 0.2f, 1}, {0, 0, -1}});
+    for (const bool flipped : {false, true}) {
+        const Vec3& b = flipped ? k_p2 : k_p1;
+        const Vec3& c = flipped ? k_p1 : k_p2;
+        EXPECT_FALSE(triangle_occludes(down, k_p0, b, c, {0.0f, 1.0f}));  // t = 1 = max
+        EXPECT_FALSE(triangle_occludes(down, k_p0, b, c, {1.0f, 2.0f}));  // t = 1 = min
+        EXPECT_TRUE(triangle_occludes(down, k_p0, b, c, {0.5f, 1.5f}));
+        EXPECT_TRUE(triangle_occludes(down, k_p0, b, c, {}));
+        EXPECT_FALSE(triangle_occludes(WatertightRay(Ray{{0.2f, 0.2f, 1}, {0, 0, 1}}), k_p0, b, c,
+                                       {}));  // behind
+        EXPECT_FALSE(triangle_occludes(WatertightRay(Ray{{0.6f, 0.6f, 1}, {0, 0, -1}}), k_p0, b, c,
+                                       {}));  // beside
+    }
+}
+
+/// Without the division, the same answers as intersect_triangle's distance test, except where
+/// the distance lies within a few ulps of a bound.
+TEST(TriangleOccludes, AgreesWithTheDistanceAwayFromTheBounds) {
+    Pcg32 rng(2013, 5);
+    const auto point = [&](float scale) {
+        return Vec3{rng.next_float() - 0.5f, rng.next_float() - 0.5f, rng.next_float() - 0.5f} *
+               scale;
+    };
+    int hits = 0, misses_by_distance = 0;
+    for (int k = 0; k < 20000; ++k) {
+        const Vec3 p0 = point(2), p1 = point(2), p2 = point(2);
+        // Aimed near the triangle (barycentrics in [-0.2, 1.2]), so lines meet it about half
+        // the time; the hit lies at t = 1 / scale.
+        const float s = 1.4f * rng.next_float() - 0.2f, t = 1.4f * rng.next_float() - 0.2f;
+        const Vec3 origin = point(8), target = p0 + s * (p1 - p0) + t * (p2 - p0);
+        const Ray ray{origin, (target - origin) * (0.3f + 2.7f * rng.next_float())};
+        const float a = 4 * rng.next_float(), b = 4 * rng.next_float();
+        const Interval valid{std::min(a, b), std::max(a, b)};
+        const WatertightRay shear(ray);
+        const auto line = intersect_triangle(shear, p0, p1, p2, {-k_infinity, k_infinity});
+        if (line) {
+            const float near = std::abs(line->t - valid.min), far = std::abs(line->t - valid.max);
+            if (std::min(near, far) <=
+                8 * std::numeric_limits<float>::epsilon() * std::max(std::abs(line->t), 1.0f))
+                continue;
+        }
+        const bool expected = intersect_triangle(shear, p0, p1, p2, valid).has_value();
+        EXPECT_EQ(triangle_occludes(shear, p0, p1, p2, valid), expected) << k;
+        hits += expected;
+        misses_by_distance += line && !expected;
+    }
+    EXPECT_GT(hits, 500);  // both outcomes seen, including lines that meet the triangle
+    EXPECT_GT(misses_by_distance, 500);  // outside the interval
 }
 
 }  // namespace

@@ -163,7 +163,7 @@ bool intersect_any(const Bvh& bvh, const Ray& ray, Interval valid) {
     const auto leaf_test = [&](const BvhNode& leaf, Interval range) {
         for (uint32_t i = leaf.index, end = leaf.index + leaf.triangle_count; i < end; ++i) {
             const BvhTriangle& tri = triangles[i];
-            if (intersect_triangle(shear, tri.p0, tri.p1, tri.p2, range)) return true;
+            if (triangle_occludes(shear, tri.p0, tri.p1, tri.p2, range)) return true;
         }
         return false;
     };

@@ -52,12 +52,21 @@ struct WatertightRay {
     }
 };
 
-/// Intersects a ray (as its precomputed WatertightRay) with triangle p0 p1 p2, both sides
-/// (no culling). Returns the hit when its distance lies inside the open interval `valid`;
-/// degenerate (zero-area) triangles and NaN inputs never hit.
-inline std::optional<TriangleIntersection> intersect_triangle(const WatertightRay& ray,
-                                                              const Vec3& p0, const Vec3& p1,
-                                                              const Vec3& p2, Interval valid) {
+/// A triangle the ray's line passes through, before the division: Woop et al. 2013's scaled
+/// barycentrics (e0, e1, e2 weigh p0, p1, p2), their sum det (never 0), and the hit distance
+/// times det.
+struct ScaledTriangleHit {
+    float e0 = 0, e1 = 0, e2 = 0;
+    float det = 0;
+    float t_scaled = 0;
+};
+
+/// Steps 1-5 of the watertight test for triangle p0 p1 p2, both sides (no culling), up to the
+/// division: nothing when the ray's line misses it; degenerate (zero-area) triangles and NaN
+/// inputs never hit.
+inline std::optional<ScaledTriangleHit> scaled_triangle_hit(const WatertightRay& ray,
+                                                            const Vec3& p0, const Vec3& p1,
+                                                            const Vec3& p2) {
     // Steps 1-2: vertices relative to the origin, sheared so the ray runs along +z.
     const Vec3& o = ray.origin;
     const float az = p0.*ray.kz - o.*ray.kz;
@@ -90,12 +99,43 @@ inline std::optional<TriangleIntersection> intersect_triangle(const WatertightRa
     const float det = e0 + e1 + e2;
     if (det == 0.0f) return std::nullopt;
 
-    // Step 5: the hit distance, interpolated from the vertices' scaled z.
+    // Step 5: the hit distance times det, interpolated from the vertices' scaled z.
     const float t_scaled = e0 * (ray.sz * az) + e1 * (ray.sz * bz) + e2 * (ray.sz * cz);
-    const float inv_det = 1.0f / det;
-    const float t = t_scaled * inv_det;
+    return ScaledTriangleHit{e0, e1, e2, det, t_scaled};
+}
+
+/// Intersects a ray (as its precomputed WatertightRay) with triangle p0 p1 p2, both sides
+/// (no culling). Returns the hit when its distance lies inside the open interval `valid`;
+/// degenerate (zero-area) triangles and NaN inputs never hit.
+inline std::optional<TriangleIntersection> intersect_triangle(const WatertightRay& ray,
+                                                              const Vec3& p0, const Vec3& p1,
+                                                              const Vec3& p2, Interval valid) {
+    const auto hit = scaled_triangle_hit(ray, p0, p1, p2);
+    if (!hit) return std::nullopt;
+    const float inv_det = 1.0f / hit->det;
+    const float t = hit->t_scaled * inv_det;
     if (!valid.surrounds(t)) return std::nullopt;
-    return TriangleIntersection{t, e1 * inv_det, e2 * inv_det};
+    return TriangleIntersection{t, hit->e1 * inv_det, hit->e2 * inv_det};
+}
+
+/// Whether t_scaled / det lies inside the open interval `valid`, decided without the division
+/// (the depth test of Woop et al. 2013's listing): t_scaled with det's sign against the bounds
+/// times |det|. A shadow ray needs no distance, and most triangles its line meets lie outside
+/// its interval. Up to rounding the same answer as dividing; at a bound the two may differ by
+/// an ulp of t.
+inline bool scaled_distance_inside(float t_scaled, float det, Interval valid) {
+    const float abs_det = std::abs(det);
+    const float t_signed = det < 0.0f ? -t_scaled : t_scaled;
+    return valid.min * abs_det < t_signed && t_signed < valid.max * abs_det;
+}
+
+/// The any-hit form of intersect_triangle (shadow rays): whether the ray meets triangle p0 p1
+/// p2 inside `valid`, with the distance compared before the division, not computed
+/// (scaled_distance_inside).
+inline bool triangle_occludes(const WatertightRay& ray, const Vec3& p0, const Vec3& p1,
+                              const Vec3& p2, Interval valid) {
+    const auto hit = scaled_triangle_hit(ray, p0, p1, p2);
+    return hit && scaled_distance_inside(hit->t_scaled, hit->det, valid);
 }
 
 /// Convenience form for a single test: precomputes the WatertightRay for `ray` first.

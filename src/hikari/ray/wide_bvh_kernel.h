@@ -134,8 +134,9 @@ bool test_leaf_scalar(const LeafRay& ray, const float* block, uint32_t count, ui
     for (uint32_t i = begin; i < end; ++i) {
         Vec3 p0, p1, p2;
         load_triangle(block, count, i, p0, p1, p2);
-        if (const auto h = intersect_triangle(watertight, p0, p1, p2, valid)) {
-            if constexpr (k_any_hit) return true;
+        if constexpr (k_any_hit) {
+            if (triangle_occludes(watertight, p0, p1, p2, valid)) return true;
+        } else if (const auto h = intersect_triangle(watertight, p0, p1, p2, valid)) {
             hit = {h->t, h->u, h->v, first + i};
             valid.max = h->t;
             found = true;
