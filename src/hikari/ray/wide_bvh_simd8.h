@@ -119,7 +119,7 @@ struct Simd8Ops {
             uint32_t inside = ~(negative & positive) & lane_mask;
             // A shadow ray goes on without this branch, which it would mispredict often: the
             // line through a leaf meets its triangles about as often as not, and without the
-            // division the rest costs a few instructions (any hit +5-9%).
+            // division the rest costs a few instructions (B2 +3-10%, docs/performance.md).
             if (!k_any_hit && inside == 0) continue;
             const __m256 det = _mm256_add_ps(_mm256_add_ps(e0, e1), e2);
             inside &= HIKARI_CMP_MASK(det, zero, _CMP_NEQ_UQ);
