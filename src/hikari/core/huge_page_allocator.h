@@ -22,20 +22,26 @@
 
 namespace hikari {
 
-/// Maps the pages of [p, p + bytes) now, in one call, instead of faulting them in one by one as
-/// they are first written. For memory about to be filled: on the SPEC's virtual machine a fault
-/// costs some 13 us and population about 2 us a page (docs/performance.md). Advice only: where
-/// it is refused (Linux before 5.14, other systems) the memory faults in as usual.
-inline void populate_pages([[maybe_unused]] void* p, [[maybe_unused]] size_t bytes) {
 #if defined(__linux__)
+/// madvise over every page that [p, p + bytes) touches: its start rounded down to a page (the
+/// kernel rounds the length up). Advice only: a refusal leaves the memory as it was.
+inline void advise_pages(void* p, size_t bytes, int advice) {
     constexpr uintptr_t k_page = 4096;
     if (bytes == 0) return;
-    // Every page the range touches. Population writes nothing, so a page shared with another
-    // allocation is only mapped early.
     char* const start = static_cast<char*>(p) - reinterpret_cast<uintptr_t>(p) % k_page;
-    const size_t length = static_cast<size_t>(static_cast<char*>(p) - start) + bytes;
+    madvise(start, static_cast<size_t>(static_cast<char*>(p) - start) + bytes, advice);
+}
+#endif
+
+/// Maps the pages of [p, p + bytes) now, in one call, instead of faulting them in one by one as
+/// they are first written. For memory about to be filled: on the SPEC's virtual machine a fault
+/// costs some 13 us and population about 2 us a page (docs/performance.md). Population writes
+/// nothing, so a page shared with another allocation is only mapped early. Where it is refused
+/// (Linux before 5.14, other systems) the memory faults in as usual.
+inline void populate_pages([[maybe_unused]] void* p, [[maybe_unused]] size_t bytes) {
+#if defined(__linux__)
     constexpr int k_populate_write = 23;  // MADV_POPULATE_WRITE, Linux 5.14
-    madvise(start, length, k_populate_write);
+    advise_pages(p, bytes, k_populate_write);
 #endif
 }
 
@@ -47,10 +53,8 @@ inline void prepare_huge_pages([[maybe_unused]] void* p, [[maybe_unused]] size_t
 #if defined(__linux__)
     constexpr size_t k_huge_page = size_t{2} << 20;
     if (bytes < k_huge_page) return;
-    char* const start = static_cast<char*>(p) - reinterpret_cast<uintptr_t>(p) % 4096;
-    const size_t length = static_cast<size_t>(static_cast<char*>(p) - start) + bytes;
-    madvise(start, length, MADV_HUGEPAGE);
-    if (populate) populate_pages(start, length);
+    advise_pages(p, bytes, MADV_HUGEPAGE);
+    if (populate) populate_pages(p, bytes);
 #endif
 }
 
