@@ -57,7 +57,7 @@ void expect_matches_brute_force(const WideBvh& bvh, const TestMesh& mesh, const 
 TEST(WideBvhTraversal, LeafRayEqualsWatertightRay) {
     // The kernels' branch-free axis choice must be WatertightRay's, ties and signs included:
     // every combination of components from {0, -0, +-1, +-2} and random directions.
-    const std::array<float, 7> values{0.0f, -0.0f, 1.0f, -1.0f, 2.0f, -2.0f, 1.0f};
+    const std::array<float, 6> values{0.0f, -0.0f, 1.0f, -1.0f, 2.0f, -2.0f};
     std::vector<Vec3> directions;
     for (float x : values)
         for (float y : values)
