@@ -132,6 +132,7 @@ struct WaveScratch {
     PrimaryBlock block;
     std::vector<PathLevel> levels;
     std::vector<Ray> rays, next_rays;
+    std::vector<Ray> next_refracted;  ///< the next level's refracted rays, until join_refracted
 };
 
 /// A tile's rays traced level by level (Boulos et al. 2007): the camera rays' hits as a block,
@@ -164,6 +165,7 @@ class WaveTracer {
         }
         m_s.next_rays.clear();
         shade_block(block, width, k_primary_block_rays, 1, camera, 0);
+        join_refracted(camera);
         int depth = 1;
         while (!m_s.next_rays.empty()) {
             std::swap(m_s.rays, m_s.next_rays);
@@ -177,6 +179,7 @@ class WaveTracer {
                 m_hits.trace_rays(m_s.rays.data() + first, count, block);
                 shade_block(block, k_lane_chunk, count, depth, nodes, first);
             }
+            join_refracted(nodes);
         }
         fold(depth);
         return level(0);
@@ -240,26 +243,43 @@ class WaveTracer {
         }
     }
 
-    /// The next level's rays of a chunk's lanes, in the order shade() traces them: mirror, then
-    /// refracted.
+    /// The next level's rays of a chunk's lanes: mirror rays to next_rays, refracted rays to
+    /// next_refracted (numbered there until join_refracted). Kept apart, the next level's blocks
+    /// hold rays of one kind each: a glass surface's mirror rays mostly leave it and its
+    /// refracted rays all meet it again from inside, so interleaved they would mix materials in
+    /// every chunk of lanes.
     void spawn_rays(const detail::LaneChunk& lane, int rays, PathLevel& nodes, size_t base) {
         for (int j = 0; j < rays; ++j) {
             if (lane.children[j] == 0) continue;  // 0 in lanes without a hit
-            const auto spawn_ray = [&](const float(&origin)[3][k_lane_chunk],
+            const auto spawn_ray = [&](std::vector<Ray>& to, const float(&origin)[3][k_lane_chunk],
                                        const float(&dir)[3][k_lane_chunk]) {
-                m_s.next_rays.push_back({{origin[0][j], origin[1][j], origin[2][j]},
-                                         {dir[0][j], dir[1][j], dir[2][j]}});
-                return static_cast<int32_t>(m_s.next_rays.size() - 1);
+                to.push_back({{origin[0][j], origin[1][j], origin[2][j]},
+                              {dir[0][j], dir[1][j], dir[2][j]}});
+                return static_cast<int32_t>(to.size() - 1);
             };
             if (lane.mirror_weight[j] > 0.0f) {
-                nodes.mirror[base + j] = spawn_ray(lane.mirror_origin, lane.mirror_direction);
+                nodes.mirror[base + j] =
+                    spawn_ray(m_s.next_rays, lane.mirror_origin, lane.mirror_direction);
                 nodes.mirror_weight[base + j] = lane.mirror_weight[j];
             }
             if (lane.refract_weight[j] > 0.0f) {
-                nodes.refract[base + j] = spawn_ray(lane.refract_origin, lane.refract_direction);
+                nodes.refract[base + j] =
+                    spawn_ray(m_s.next_refracted, lane.refract_origin, lane.refract_direction);
                 nodes.refract_weight[base + j] = lane.refract_weight[j];
             }
         }
+    }
+
+    /// Once a level is shaded: its refracted rays appended after its mirror rays, and the
+    /// nodes' refract indices moved with them.
+    void join_refracted(PathLevel& nodes) {
+        if (m_s.next_refracted.empty()) return;
+        const auto offset = static_cast<int32_t>(m_s.next_rays.size());
+        for (int32_t& index : nodes.refract)
+            if (index >= 0) index += offset;
+        m_s.next_rays.insert(m_s.next_rays.end(), m_s.next_refracted.begin(),
+                             m_s.next_refracted.end());
+        m_s.next_refracted.clear();
     }
 
     /// Adds each level's colours into their parents', deepest first, as shade() adds them:
