@@ -120,27 +120,36 @@ void resize_on_huge_pages(std::vector<T, Allocator>& v, size_t n) {
     v.resize(n);
 }
 
-/// Uninitialized scratch memory, 2 MiB aligned. On Linux a mapping of its own, so no 4 KiB page
-/// left over from earlier use keeps the kernel from backing it with 2 MiB pages.
+/// Uninitialized scratch memory: of 2 MiB or more, 2 MiB aligned on 2 MiB pages; smaller, on
+/// whole 4 KiB pages (a 2 MiB page for a small mesh, zeroed by the kernel, would cost more than
+/// the build). On Linux a mapping of its own, so no 4 KiB page left over from earlier use keeps
+/// the kernel from backing it with 2 MiB pages.
 class ScratchBlock {
   public:
     ScratchBlock(size_t bytes, bool populate) {
-        m_size = (std::max<size_t>(bytes, 1) + k_huge_page - 1) / k_huge_page * k_huge_page;
+        constexpr size_t k_small_page = 4096;
+        const bool huge = bytes >= k_huge_page;
+        const size_t page = huge ? k_huge_page : k_small_page;
+        m_size = (std::max<size_t>(bytes, 1) + page - 1) / page * page;
 #if defined(__linux__)
-        m_mapped = mmap(nullptr, m_size + k_huge_page, PROT_READ | PROT_WRITE,
+        m_mapped_size = m_size + (huge ? k_huge_page : 0);
+        m_mapped = mmap(nullptr, m_mapped_size, PROT_READ | PROT_WRITE,
                         MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
         if (m_mapped == MAP_FAILED) throw std::bad_alloc();
-        const size_t misalignment = reinterpret_cast<uintptr_t>(m_mapped) % k_huge_page;
-        m_data = static_cast<char*>(m_mapped) + (k_huge_page - misalignment) % k_huge_page;
+        const size_t misalignment = reinterpret_cast<uintptr_t>(m_mapped) % page;
+        m_data = static_cast<char*>(m_mapped) + (page - misalignment) % page;
 #else
-        m_data = std::aligned_alloc(k_huge_page, m_size);
+        m_data = std::aligned_alloc(page, m_size);
         if (m_data == nullptr) throw std::bad_alloc();
 #endif
-        prepare_huge_pages(m_data, m_size, populate);
+        if (huge)
+            prepare_huge_pages(m_data, m_size, populate);
+        else if (populate)
+            populate_pages(m_data, m_size);
     }
     ~ScratchBlock() {
 #if defined(__linux__)
-        munmap(m_mapped, m_size + k_huge_page);
+        munmap(m_mapped, m_mapped_size);
 #else
         std::free(m_data);
 #endif
@@ -153,6 +162,7 @@ class ScratchBlock {
 
   private:
     void* m_mapped = nullptr;
+    size_t m_mapped_size = 0;
     void* m_data = nullptr;
     size_t m_size = 0;
 };
@@ -855,6 +865,7 @@ WideBvh build_wide_bvh(std::span<const Vec3> positions,
                        const BvhBuildSettings& settings) {
     if (indices.size() >= WideBvhRef::k_max_triangles)
         throw std::length_error("build_wide_bvh: too many triangles for the reference encoding");
+    if (indices.empty()) return {};
     const ScratchBlock refs_block(indices.size() * sizeof(PrimRef), true);
     auto* const refs = static_cast<PrimRef*>(refs_block.data());
     const BuildRange root = make_prim_refs(positions, indices, refs);
