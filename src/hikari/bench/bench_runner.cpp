@@ -30,10 +30,15 @@ double ms_since(Clock::time_point start) {
 
 /// SPEC §3: N threads pull chunks [b, b + chunk) of [0, n) from an atomic counter. Each item's
 /// result depends only on the item, so the outcome is the same for any thread count.
+/// Each thread runs its own copy of `work`, whose captures should be values (pointers, not
+/// references to the caller's locals): a helper thread that reads, on every ray, a line of the
+/// calling thread's stack that the caller writes on every ray of its own (a hit record one frame
+/// down) runs at half speed. It did in about a third of B1's 2-thread runs, as the stack's
+/// random offset decided whether the two shared a cache line.
 template <typename Work>
 void parallel_chunks(int threads, size_t n, size_t chunk, const Work& work) {
     std::atomic<size_t> next{0};
-    const auto worker = [&] {
+    const auto worker = [&next, n, chunk, work] {
         for (size_t b; (b = next.fetch_add(chunk)) < n;) work(b, std::min(n, b + chunk));
     };
     std::vector<std::thread> pool;
@@ -82,12 +87,17 @@ void trace_closest(const WideBvh& bvh, const BenchRays& rays, int threads, size_
                    SimdLevel simd, std::vector<float>& hit_t, std::vector<uint32_t>& hit_triangle) {
     hit_t.resize(rays.rays.size());
     hit_triangle.resize(rays.rays.size());
-    parallel_chunks(threads, rays.rays.size(), chunk, [&](size_t b, size_t e) {
+    const WideBvh* tree = &bvh;
+    const Ray* ray = rays.rays.data();
+    const float t_far = rays.t_far;
+    float* t_out = hit_t.data();
+    uint32_t* triangle_out = hit_triangle.data();
+    parallel_chunks(threads, rays.rays.size(), chunk, [=](size_t b, size_t e) {
         for (size_t i = b; i < e; ++i) {
             TriangleHit hit;
-            const bool found = intersect_closest(bvh, rays.rays[i], {0.0f, rays.t_far}, hit, simd);
-            hit_t[i] = found ? hit.t : k_infinity;
-            hit_triangle[i] = found ? hit.triangle : ~0u;
+            const bool found = intersect_closest(*tree, ray[i], {0.0f, t_far}, hit, simd);
+            t_out[i] = found ? hit.t : k_infinity;
+            triangle_out[i] = found ? hit.triangle : ~0u;
         }
     });
 }
@@ -99,7 +109,12 @@ void trace_closest_packets(const WideBvh& bvh, const BenchRays& rays, uint32_t w
     hit_t.resize(n);
     hit_triangle.resize(n);
     const size_t height = width ? n / width : 0;
-    parallel_chunks(threads, height, chunk_rows, [&](size_t y0, size_t y1) {
+    const WideBvh* tree = &bvh;
+    const Ray* ray = rays.rays.data();
+    const float t_far = rays.t_far;
+    float* t_out = hit_t.data();
+    uint32_t* triangle_out = hit_triangle.data();
+    parallel_chunks(threads, height, chunk_rows, [=](size_t y0, size_t y1) {
         // The tile loop of intersect_closest_tile, writing B1's outputs directly.
         RayPacket packet{};
         PacketHit hits;
@@ -107,15 +122,16 @@ void trace_closest_packets(const WideBvh& bvh, const BenchRays& rays, uint32_t w
             for (uint32_t x = 0; x < width; x += 4) {
                 const size_t first = y * width + x;
                 const uint32_t active =
-                    packet.load_block(rays.rays.data() + first, width, width - x,
-                                      uint32_t(std::min<size_t>(4, y1 - y)), {0.0f, rays.t_far});
-                const uint32_t hit_mask = intersect_closest_packet(bvh, packet, active, hits, simd);
+                    packet.load_block(ray + first, width, width - x,
+                                      uint32_t(std::min<size_t>(4, y1 - y)), {0.0f, t_far});
+                const uint32_t hit_mask =
+                    intersect_closest_packet(*tree, packet, active, hits, simd);
                 for (uint32_t k = 0; k < k_packet_size; ++k) {
                     if (!(active & (1u << k))) continue;
                     const size_t i = first + (k / 4) * width + k % 4;
                     const bool hit = (hit_mask >> k) & 1u;
-                    hit_t[i] = hit ? hits.t[k] : k_infinity;
-                    hit_triangle[i] = hit ? hits.triangle[k] : ~0u;
+                    t_out[i] = hit ? hits.t[k] : k_infinity;
+                    triangle_out[i] = hit ? hits.triangle[k] : ~0u;
                 }
             }
     });
@@ -124,9 +140,13 @@ void trace_closest_packets(const WideBvh& bvh, const BenchRays& rays, uint32_t w
 void trace_occluded(const WideBvh& bvh, const BenchRays& rays, int threads, size_t chunk,
                     SimdLevel simd, std::vector<uint8_t>& occluded) {
     occluded.resize(rays.rays.size());
-    parallel_chunks(threads, rays.rays.size(), chunk, [&](size_t b, size_t e) {
+    const WideBvh* tree = &bvh;
+    const Ray* ray = rays.rays.data();
+    const float t_far = rays.t_far;
+    uint8_t* out = occluded.data();
+    parallel_chunks(threads, rays.rays.size(), chunk, [=](size_t b, size_t e) {
         for (size_t i = b; i < e; ++i)
-            occluded[i] = intersect_any(bvh, rays.rays[i], {0.0f, rays.t_far}, simd) ? 1 : 0;
+            out[i] = intersect_any(*tree, ray[i], {0.0f, t_far}, simd) ? 1 : 0;
     });
 }
 

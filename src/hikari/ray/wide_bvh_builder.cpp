@@ -133,8 +133,8 @@ class ScratchBlock {
         m_size = (std::max<size_t>(bytes, 1) + page - 1) / page * page;
 #if defined(__linux__)
         m_mapped_size = m_size + (huge ? k_huge_page : 0);
-        m_mapped = mmap(nullptr, m_mapped_size, PROT_READ | PROT_WRITE,
-                        MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        m_mapped = mmap(nullptr, m_mapped_size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS,
+                        -1, 0);
         if (m_mapped == MAP_FAILED) throw std::bad_alloc();
         const size_t misalignment = reinterpret_cast<uintptr_t>(m_mapped) % page;
         m_data = static_cast<char*>(m_mapped) + (page - misalignment) % page;
