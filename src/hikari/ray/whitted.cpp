@@ -203,11 +203,9 @@ class WaveTracer {
             const size_t base = first + static_cast<size_t>(c) * k_lane_chunk;
             const int rays = std::min(width, count - c * k_lane_chunk);
             m_ctx.rays += static_cast<uint64_t>(rays);
-            // Colours (the kernel's, shaded or the sky's); no children yet.
+            // Colours (the kernel's, shaded or the sky's).
             for (int a = 0; a < 3; ++a)
                 std::copy_n(lane.colour[a], rays, nodes.colour[a].begin() + base);
-            std::fill_n(nodes.mirror.begin() + base, rays, -1);
-            std::fill_n(nodes.refract.begin() + base, rays, -1);
             int32_t shadow_rays = 0, children = 0, scalar = 0;
             for (int j = 0; j < rays; ++j) {
                 shadow_rays += lane.shadow_rays[j];
@@ -216,7 +214,12 @@ class WaveTracer {
             }
             m_ctx.rays += static_cast<uint64_t>(shadow_rays);
             if (scalar != 0) shade_scalar_specular(block, c, rays, nodes, base);
-            if (children != 0) spawn_rays(lane, rays, nodes, base);
+            if (children != 0) {
+                spawn_rays(lane, rays, nodes, base);
+            } else {
+                std::fill_n(nodes.mirror.begin() + base, rays, -1);
+                std::fill_n(nodes.refract.begin() + base, rays, -1);
+            }
         }
     }
 
@@ -243,31 +246,44 @@ class WaveTracer {
         }
     }
 
-    /// The next level's rays of a chunk's lanes: mirror rays to next_rays, refracted rays to
-    /// next_refracted (numbered there until join_refracted). Kept apart, the next level's blocks
-    /// hold rays of one kind each: a glass surface's mirror rays mostly leave it and its
-    /// refracted rays all meet it again from inside, so interleaved they would mix materials in
-    /// every chunk of lanes.
+    /// The next level's rays of a chunk's lanes, and their nodes' indices and weights: mirror
+    /// rays to next_rays, refracted rays to next_refracted (numbered there until
+    /// join_refracted). Kept apart, the next level's blocks hold rays of one kind each: a glass
+    /// surface's mirror rays mostly leave it and its refracted rays all meet it again from
+    /// inside, so interleaved they would mix materials in every chunk of lanes.
     void spawn_rays(const detail::LaneChunk& lane, int rays, PathLevel& nodes, size_t base) {
-        for (int j = 0; j < rays; ++j) {
-            if (lane.children[j] == 0) continue;  // 0 in lanes without a hit
-            const auto spawn_ray = [&](std::vector<Ray>& to, const float(&origin)[3][k_lane_chunk],
-                                       const float(&dir)[3][k_lane_chunk]) {
-                to.push_back({{origin[0][j], origin[1][j], origin[2][j]},
-                              {dir[0][j], dir[1][j], dir[2][j]}});
-                return static_cast<int32_t>(to.size() - 1);
-            };
-            if (lane.mirror_weight[j] > 0.0f) {
-                nodes.mirror[base + j] =
-                    spawn_ray(m_s.next_rays, lane.mirror_origin, lane.mirror_direction);
-                nodes.mirror_weight[base + j] = lane.mirror_weight[j];
-            }
-            if (lane.refract_weight[j] > 0.0f) {
-                nodes.refract[base + j] =
-                    spawn_ray(m_s.next_refracted, lane.refract_origin, lane.refract_direction);
-                nodes.refract_weight[base + j] = lane.refract_weight[j];
-            }
+        append_rays(lane.mirror_origin, lane.mirror_direction, lane.mirror_weight, rays,
+                    m_s.next_rays, nodes.mirror.data() + base);
+        append_rays(lane.refract_origin, lane.refract_direction, lane.refract_weight, rays,
+                    m_s.next_refracted, nodes.refract.data() + base);
+        std::copy_n(lane.mirror_weight, rays, nodes.mirror_weight.begin() + base);
+        std::copy_n(lane.refract_weight, rays, nodes.refract_weight.begin() + base);
+    }
+
+    /// Appends to `to`, in lane order, the rays of lanes [0, rays) whose weight is positive, and
+    /// sets index[j] to lane j's ray's place in `to`, or -1 for none. Every lane's ray is
+    /// written and only the existing ones are kept: no branch per lane, whose outcome changes
+    /// from lane to lane along an object's outline.
+    static void append_rays(const float (&origin)[3][k_lane_chunk],
+                            const float (&direction)[3][k_lane_chunk], const float* weight,
+                            int rays, std::vector<Ray>& to, int32_t* index) {
+        int32_t any = 0;
+        for (int j = 0; j < rays; ++j) any |= weight[j] > 0.0f ? 1 : 0;
+        if (any == 0) {
+            std::fill_n(index, rays, -1);
+            return;
         }
+        size_t count = to.size();
+        to.resize(count + static_cast<size_t>(rays));
+        Ray* const out = to.data();
+        for (int j = 0; j < rays; ++j) {
+            out[count] = {{origin[0][j], origin[1][j], origin[2][j]},
+                          {direction[0][j], direction[1][j], direction[2][j]}};
+            const bool exists = weight[j] > 0.0f;
+            index[j] = exists ? static_cast<int32_t>(count) : -1;
+            count += exists ? 1 : 0;
+        }
+        to.resize(count);
     }
 
     /// Once a level is shaded: its refracted rays appended after its mirror rays, and the
