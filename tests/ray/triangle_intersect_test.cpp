@@ -125,12 +125,6 @@ TEST(TriangleIntersect, RaysThroughSharedVertexOfFanNeverSlipBetween) {
     }
 }
 
-}  // namespace
-}  // namespace hikari
-
-namespace hikari {
-namespace {
-
 /// The any-hit test's open interval, on both sides of the triangle (det of either sign).
 TEST(TriangleOccludes, IntervalIsOpenOnBothSides) {
     const WatertightRay down(Ray{{0.2f, 0.2f, 1}, {0, 0, -1}});
