@@ -103,5 +103,22 @@ TEST(PngWrite, AdlerHoldsOverLongRowsOfLargeBytes) {
     }
 }
 
+TEST(PngWrite, EverySimdLevelWritesTheSameBytes) {
+    // Rows shorter than one 16-byte step, rows that end mid-step, and rows long enough for the
+    // checksum's reductions; smooth ramps, flat runs and noise (test_card), then pure noise.
+    for (const int width : {1, 5, 6, 11, 64, 517, 3001}) {
+        const Srgb8Image card = encode_srgb8(test_card(width, 75));
+        Srgb8Image noise(width, 40);
+        Pcg32 rng(static_cast<uint64_t>(width), 11);
+        for (uint8_t& byte : noise.bytes) byte = static_cast<uint8_t>(rng.next_u32());
+        for (const Srgb8Image* image : {&card, static_cast<const Srgb8Image*>(&noise)}) {
+            const std::vector<uint8_t> reference = encode_png(*image, SimdLevel::portable);
+            for (const SimdLevel level : supported_simd_levels())
+                EXPECT_EQ(encode_png(*image, level), reference)
+                    << simd_level_name(level) << ", width " << width;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace hikari

@@ -154,34 +154,37 @@ std::array<uint16_t, N> canonical_codes(const std::array<uint8_t, N>& lengths) {
     return codes;
 }
 
-/// Writes bits least significant first into a buffer sized in advance.
+/// Writes bits least significant first into a buffer sized in advance, with at least 8 bytes
+/// to spare after the last byte written. Each put stores the whole 64-bit accumulator and moves
+/// on by the bytes it completed: no branch on whether a word is full, which a stream of codes of
+/// random lengths mispredicts every few codes.
 class BitWriter {
   public:
     explicit BitWriter(uint8_t* out) : m_out(out) {}
 
-    /// Appends the low `count` bits of `bits` (count + pending ≤ 64 holds: count ≤ 32).
+    /// Appends the low `count` bits of `bits` (count ≤ 56, and no higher bit set); with the
+    /// fewer than 8 bits pending, at most 63 are then held.
     void put(uint64_t bits, int count) {
         m_acc |= bits << m_count;
         m_count += count;
-        if (m_count >= 32) {
-            const auto word = static_cast<uint32_t>(m_acc);
-            std::memcpy(m_out, &word, 4);  // little-endian host: bytes in stream order
-            m_out += 4;
-            m_acc >>= 32;
-            m_count -= 32;
-        }
+        std::memcpy(m_out, &m_acc, 8);  // little-endian host: bytes in stream order
+        const int whole_bytes = m_count >> 3;
+        m_out += whole_bytes;
+        m_acc >>= 8 * whole_bytes;  // at most 56: m_count stays under 64
+        m_count &= 7;
     }
 
     /// Pads with zero bits to a byte boundary and returns the end of the written bytes.
     uint8_t* finish() {
-        for (; m_count > 0; m_count -= 8, m_acc >>= 8) *m_out++ = static_cast<uint8_t>(m_acc);
+        if (m_count > 0) *m_out++ = static_cast<uint8_t>(m_acc);
         m_count = 0;
+        m_acc = 0;
         return m_out;
     }
 
   private:
     uint8_t* m_out;
-    uint64_t m_acc = 0;
+    uint64_t m_acc = 0;  ///< bits not yet in a whole byte: fewer than 8 between puts
     int m_count = 0;
 };
 

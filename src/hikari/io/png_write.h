@@ -6,11 +6,12 @@
 #include <vector>
 
 #include "hikari/core/image.h"
+#include "hikari/core/simd_level.h"
 
 namespace hikari {
 
-/// The sRGB `image` (non-empty) as the bytes of an 8-bit RGB PNG file. The bytes do not depend
-/// on the thread count.
-std::vector<uint8_t> encode_png(const Srgb8Image& image);
+/// The sRGB `image` (non-empty) as the bytes of an 8-bit RGB PNG file. The bytes depend neither
+/// on the thread count nor on the SIMD `level` the row filters and checksum run at.
+std::vector<uint8_t> encode_png(const Srgb8Image& image, SimdLevel level = best_simd_level());
 
 }  // namespace hikari
