@@ -1,12 +1,8 @@
 #include "hikari/io/scene_json.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -15,6 +11,7 @@
 #include "hikari/io/default_scene.h"
 #include "hikari/io/json_reader.h"
 #include "hikari/io/obj_loader.h"
+#include "hikari/io/read_file.h"
 
 namespace hikari {
 
@@ -325,14 +322,9 @@ Scene load_scene_file(const std::filesystem::path& path, std::vector<std::string
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
         throw InputError(fmt::format("{}: is a directory, not a scene file", path.string()));
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw InputError(
-            fmt::format("{}: cannot open scene file: {}", path.string(), std::strerror(errno)));
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) throw InputError(fmt::format("{}: cannot read scene file", path.string()));
-    return parse_scene(text.str(), path.string(), path.parent_path(), warnings);
+    // stdio, not iostreams: a render that loads no other file then never pays for iostreams'
+    // locale set-up (some 15 page faults, 0.3 ms on a virtual machine).
+    return parse_scene(read_file_bytes(path), path.string(), path.parent_path(), warnings);
 }
 
 Scene load_default_scene() {
