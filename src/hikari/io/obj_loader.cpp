@@ -172,9 +172,21 @@ struct ParsedObj {
     std::vector<std::string> warnings;
 };
 
+/// A read-only stream buffer over text that outlives it: tinyobjloader reads from a stream, and
+/// an istringstream would first copy the whole file.
+class TextStreambuf : public std::streambuf {
+  public:
+    explicit TextStreambuf(const std::string& text) {
+        // The get area only: nothing is ever written through these pointers.
+        char* const begin = const_cast<char*>(text.data());
+        setg(begin, begin, begin + text.size());
+    }
+};
+
 ParsedObj parse_with_tinyobj(const std::filesystem::path& file, const std::string& text) {
     ParsedObj parsed;
-    std::istringstream stream(text);
+    TextStreambuf text_buffer(text);
+    std::istream stream(&text_buffer);
     MtlReader mtl_reader(file.parent_path());
     std::string warn, err;
     // triangulate = false: rc10 splits quads along the shorter diagonal and ear-clips larger
@@ -275,7 +287,13 @@ std::vector<PendingTriangle> triangulate(const std::filesystem::path& file, cons
     for (const auto& shape : parsed.shapes) face_count += shape.mesh.num_face_vertices.size();
     const bool know_lines = face_count == lines.f.size();
 
+    // A fan of n corners makes n - 2 triangles: one allocation, no copying as the list grows.
+    size_t fan_triangles = 0;
+    for (const auto& shape : parsed.shapes)
+        for (const unsigned char n : shape.mesh.num_face_vertices)
+            fan_triangles += n >= 3 ? n - 2 : 0;
     std::vector<PendingTriangle> triangles;
+    triangles.reserve(fan_triangles);
     size_t face = 0;
     for (const auto& shape : parsed.shapes) {
         size_t offset = 0;
