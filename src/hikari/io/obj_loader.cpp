@@ -15,6 +15,7 @@
 #include <unordered_map>
 
 #include "hikari/core/error.h"
+#include "hikari/core/huge_page_allocator.h"
 #include "hikari/io/read_file.h"
 
 namespace hikari {
@@ -294,6 +295,7 @@ std::vector<PendingTriangle> triangulate(const std::filesystem::path& file, cons
             fan_triangles += n >= 3 ? n - 2 : 0;
     std::vector<PendingTriangle> triangles;
     triangles.reserve(fan_triangles);
+    populate_pages(triangles.data(), fan_triangles * sizeof(PendingTriangle));
     size_t face = 0;
     for (const auto& shape : parsed.shapes) {
         size_t offset = 0;
@@ -362,16 +364,33 @@ void flatten(const tinyobj::attrib_t& attrib, const std::vector<PendingTriangle>
     for (const PendingTriangle& t : triangles) {
         for (const Corner& c : t.c) has_uvs |= c.vt >= 0;
     }
+    // A corner with neither vn nor vt is its position alone: a flat table finds its vertex
+    // (the common case, and a hash map's node per vertex costs a million allocations on a big
+    // mesh). Corners with either go through the map. Vertices are numbered in order of first use
+    // either way.
+    constexpr uint32_t k_none = UINT32_MAX;
+    std::vector<uint32_t> vertex_of_position(attrib.vertices.size() / 3, k_none);
     std::unordered_map<Corner, uint32_t, CornerHash> vertex_of;
     mesh.indices.reserve(triangles.size());
     mesh.material.reserve(triangles.size());
+    mesh.positions.reserve(vertex_of_position.size());
+    mesh.normals.reserve(vertex_of_position.size());
     for (const PendingTriangle& t : triangles) {
         std::array<uint32_t, 3> tri{};
         for (int k = 0; k < 3; ++k) {
             const Corner& c = t.c[k];
-            const auto [it, inserted] =
-                vertex_of.try_emplace(c, static_cast<uint32_t>(mesh.positions.size()));
-            tri[k] = it->second;
+            const auto next = static_cast<uint32_t>(mesh.positions.size());
+            bool inserted = false;
+            if (c.vn < 0 && c.vt < 0) {
+                uint32_t& vertex = vertex_of_position[static_cast<size_t>(c.v)];
+                inserted = vertex == k_none;
+                if (inserted) vertex = next;
+                tri[k] = vertex;
+            } else {
+                const auto found = vertex_of.try_emplace(c, next);
+                inserted = found.second;
+                tri[k] = found.first->second;
+            }
             if (!inserted) continue;
             mesh.positions.push_back(vec3_at(attrib.vertices, c.v));
             mesh.normals.push_back(c.vn >= 0 ? normalize(vec3_at(attrib.normals, c.vn))
