@@ -96,6 +96,24 @@ TEST(ObjLoader, SeamCornersShareSmoothNormal) {
     EXPECT_FLOAT_EQ(mesh.uvs[b].x, 1.0f);
 }
 
+TEST(ObjLoader, CornersMergeOnlyWithEqualIndicesNumberedByFirstUse) {
+    TempDir dir;
+    // Bare corners of one position share a vertex; a corner of the same position with a vt is
+    // another vertex. Vertices are numbered in the order corners first name them.
+    write_text(dir / "mix.obj",
+               std::string(k_quad) + "vt 0.5 0.5\nf 1 2 3\nf 2/1 4 3\nf 3 4 2/1\n");
+    const MeshData mesh = load_obj(dir / "mix.obj");
+    ASSERT_EQ(mesh.indices.size(), 3u);
+    ASSERT_EQ(mesh.positions.size(), 5u);
+    EXPECT_EQ(mesh.indices[0], (std::array<uint32_t, 3>{0, 1, 2}));
+    EXPECT_EQ(mesh.indices[1], (std::array<uint32_t, 3>{3, 4, 2}));
+    EXPECT_EQ(mesh.indices[2], (std::array<uint32_t, 3>{2, 4, 3}));
+    EXPECT_EQ(mesh.positions[3], mesh.positions[1]);
+    ASSERT_EQ(mesh.uvs.size(), 5u);
+    EXPECT_FLOAT_EQ(mesh.uvs[3].x, 0.5f);
+    EXPECT_FLOAT_EQ(mesh.uvs[1].x, 0.0f);  // a bare corner in a file with vt: (0, 0)
+}
+
 TEST(ObjLoader, GivenNormalsAreUsedAndNormalized) {
     TempDir dir;
     write_text(dir / "n.obj", std::string(k_quad) +
