@@ -220,6 +220,19 @@ bool traverse(const WideBvh& bvh, const Ray& ray, Interval valid, LeafHit& hit) 
     }
 }
 
+/// Starts loading the first four cache lines of a child pushed for later: an inner node (224
+/// bytes) or a leaf's triangle rows (up to 7 triangles), so that its misses overlap the walk of
+/// the siblings before it, as Embree's traversal does for the children it pushes. Measured on
+/// the any-hit walk (both walks alternated in one process over all B2 rays): +1 to +6% on
+/// bumpy1m, level to +7% on the bunny; 3-10% in separate processes in the VM's slow phases.
+inline void prefetch_child(const WideBvhNode* nodes, const float* triangle_data, uint32_t ref) {
+    const char* line =
+        WideBvhRef::is_leaf(ref)
+            ? reinterpret_cast<const char*>(triangle_data + 9 * size_t(WideBvhRef::leaf_first(ref)))
+            : reinterpret_cast<const char*>(nodes + ref);
+    for (int k = 0; k < 4; ++k) __builtin_prefetch(line + 64 * k);
+}
+
 /// The any-hit loop (shadow rays): children in slot order, a stack of bare references. A
 /// hit ends the walk, so valid.max never shrinks, and every pushed child (entered before
 /// valid.max) stays worth visiting: no entry distances, no test when popping.
@@ -245,8 +258,11 @@ bool occluded(const WideBvh& bvh, const Ray& ray, Interval valid) {
             uint32_t mask = Ops::test_node_any(node, node_ray, valid.min, t_max_far);
             if (mask != 0) {
                 current = node.child[std::countr_zero(mask)];
-                for (mask &= mask - 1; mask != 0; mask &= mask - 1)
-                    stack[stack_size++] = node.child[std::countr_zero(mask)];
+                for (mask &= mask - 1; mask != 0; mask &= mask - 1) {
+                    const uint32_t deferred = node.child[std::countr_zero(mask)];
+                    stack[stack_size++] = deferred;
+                    prefetch_child(nodes, triangle_data, deferred);
+                }
                 continue;
             }
         } else {
