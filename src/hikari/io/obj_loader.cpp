@@ -284,15 +284,15 @@ int usable_normal(const tinyobj::attrib_t& attrib, int vn) {
 /// Fans every face into triangles in file order, checking indices and dropping degenerate ones.
 std::vector<PendingTriangle> triangulate(const std::filesystem::path& file, const ParsedObj& parsed,
                                          const LineTable& lines, MeshData& mesh) {
-    size_t face_count = 0;
-    for (const auto& shape : parsed.shapes) face_count += shape.mesh.num_face_vertices.size();
-    const bool know_lines = face_count == lines.f.size();
-
-    // A fan of n corners makes n - 2 triangles: one allocation, no copying as the list grows.
-    size_t fan_triangles = 0;
-    for (const auto& shape : parsed.shapes)
+    // A fan of n corners makes n - 2 triangles: counted first, the list is one allocation, with
+    // no copying as it grows.
+    size_t face_count = 0, fan_triangles = 0;
+    for (const auto& shape : parsed.shapes) {
+        face_count += shape.mesh.num_face_vertices.size();
         for (const unsigned char n : shape.mesh.num_face_vertices)
             fan_triangles += n >= 3 ? n - 2 : 0;
+    }
+    const bool know_lines = face_count == lines.f.size();
     std::vector<PendingTriangle> triangles;
     triangles.reserve(fan_triangles);
     populate_pages(triangles.data(), fan_triangles * sizeof(PendingTriangle));
