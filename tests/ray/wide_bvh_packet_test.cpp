@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -207,6 +208,71 @@ TEST(WideBvhPacket, VerticesEdgesAndTiesMatchSingleRays) {
         for (int px = 0; px < 16; px += 4)
             expect_matches_single_rays(bvh_doubled, camera_block(eye, 16, px, py, {}), 0xffffu,
                                        "doubled camera");
+}
+
+/// A root with two leaves and the given boxes (which must hold their triangles). Leaf i holds
+/// triangles `leaves[i]` (three vertices each), with input indices numbered in order.
+WideBvh two_leaf_tree(const std::array<std::vector<std::array<Vec3, 3>>, 2>& leaves,
+                      const std::array<Aabb, 2>& boxes) {
+    WideBvh bvh;
+    WideBvhNode root{};
+    for (uint32_t slot = 0; slot < k_wide_bvh_width; ++slot) {
+        const Aabb box = slot < 2 ? boxes[slot] : Aabb{};
+        for (int a = 0; a < 3; ++a) {
+            root.bounds[2 * a][slot] = box.min[a];
+            root.bounds[2 * a + 1][slot] = box.max[a];
+        }
+        root.child[slot] = WideBvhRef::k_empty;
+    }
+    uint32_t first = 0;
+    for (uint32_t i = 0; i < 2; ++i) {
+        const auto count = static_cast<uint32_t>(leaves[i].size());
+        root.child[i] = WideBvhRef::leaf(first, count);
+        for (int row = 0; row < 9; ++row)
+            for (const auto& triangle : leaves[i])
+                bvh.triangle_data.push_back(triangle[row / 3][row % 3]);
+        for (uint32_t k = 0; k < count; ++k) bvh.triangle_ids.push_back(first + k);
+        first += count;
+    }
+    bvh.triangle_data.resize(bvh.triangle_data.size() + 8, 0.0f);
+    bvh.nodes.push_back(root);
+    bvh.root = WideBvhRef::inner(0);
+    bvh.root_bounds = boxes[0];
+    bvh.root_bounds.extend(boxes[1]);
+    return bvh;
+}
+
+/// Two leaves hold the same triangle, so a ray meets both copies at exactly the same t, and the
+/// single-ray kernel reports the copy in the leaf it enters first. Each of two rays starts
+/// inside one leaf's box and enters the other's later, so their orders differ; the packet's
+/// frustum enters both boxes at once and takes them in slot order. The packet kernel must hand
+/// the tied lane back (GroupHits::ties). With and without other triangles in the leaves.
+TEST(WideBvhPacket, TiesBetweenLeavesMatchSingleRays) {
+    const std::array<Vec3, 3> shared{Vec3{-2, -2, 0}, Vec3{4, -2, 0}, Vec3{-2, 4, 0}};
+    const std::array<Aabb, 2> boxes{Aabb{{-10, -2, 0}, {4, 4, 25}}, Aabb{{-2, -10, 0}, {4, 4, 25}}};
+    // Rays toward (0.5, 0.5, 0), from inside box 0 only (lane 0) and inside box 1 only (lane 1).
+    RayPacket packet{};
+    const Vec3 target{0.5f, 0.5f, 0.0f};
+    packet.set(0, {{-8.0f, 0.0f, 20.0f}, target - Vec3{-8.0f, 0.0f, 20.0f}}, {});
+    packet.set(1, {{0.0f, -8.0f, 20.0f}, target - Vec3{0.0f, -8.0f, 20.0f}}, {});
+    for (const uint32_t fillers : {0u, 2u}) {
+        std::array<std::vector<std::array<Vec3, 3>>, 2> leaves;
+        for (auto& leaf : leaves) {
+            leaf.push_back(shared);
+            for (uint32_t k = 0; k < fillers; ++k) {
+                const float x = 3.0f + 0.3f * float(k);  // inside the boxes, on neither ray
+                leaf.push_back(
+                    {Vec3{x, 3.0f, 0.0f}, Vec3{x + 0.2f, 3.0f, 0.0f}, Vec3{x, 3.2f, 0.0f}});
+            }
+        }
+        const WideBvh bvh = two_leaf_tree(leaves, boxes);
+        SCOPED_TRACE(::testing::Message() << fillers << " other triangles per leaf");
+        TriangleHit hit0, hit1;
+        ASSERT_TRUE(intersect_closest(bvh, packet.ray(0), {}, hit0));
+        ASSERT_TRUE(intersect_closest(bvh, packet.ray(1), {}, hit1));
+        EXPECT_NE(hit0.triangle, hit1.triangle);  // the rays' own orders differ
+        EXPECT_EQ(expect_matches_single_rays(bvh, packet, 0b11u, "tied leaves"), 2);
+    }
 }
 
 TEST(WideBvhPacket, EmptyTreeHitsNothing) {
