@@ -304,7 +304,8 @@ std::string method_list() {
 /// loader's or a tracer's growing arrays then refill pages that are already mapped, where each
 /// fresh page costs a fault (some 13 us on a virtual machine). Big blocks come from the heap up
 /// to glibc's limit for the mmap threshold (32 MiB); bigger ones, and the arrays of
-/// core/huge_page_allocator.h, are mapped as before.
+/// core/huge_page_allocator.h, are mapped as before. The OBJ loader's reserve_heap relies on
+/// both settings.
 void keep_freed_memory() {
 #if defined(__GLIBC__)
     mallopt(M_MMAP_THRESHOLD, 32 << 20);
