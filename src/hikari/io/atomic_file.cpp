@@ -88,13 +88,15 @@ struct Outcome {
     bool created = false;  ///< the temporary exists on disk and is ours to remove
 };
 
-/// Creates `temporary`, fills it, flushes it to disk and closes it.
+/// Creates `temporary`, fills it and closes it. No fsync: the rename already keeps readers from
+/// a partial file while the system runs, which is what an image writer owes them. Waiting for
+/// the disk as well cost B3's process 2-3 ms (median of 25 runs, each after a POV-Ray render
+/// had written its own PNG: the fsync commits the file system's journal, with other programs'
+/// pending writes in it). POV-Ray does not sync its output either.
 Outcome fill_temporary(const std::string& temporary, std::span<const uint8_t> bytes) {
     const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd < 0) return {errno, "cannot create temporary file", false};
     Outcome out{write_all(fd, bytes), "write failed", true};
-    // fsync before rename: otherwise a crash can leave the new name pointing at empty data.
-    if (out.error == 0 && ::fsync(fd) != 0) out = {errno, "fsync failed", true};
     if (::close(fd) != 0 && out.error == 0) out = {errno, "close failed", true};
     return out;
 }

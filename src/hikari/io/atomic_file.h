@@ -8,8 +8,9 @@
 namespace hikari {
 
 /// Writes `bytes` to `path` atomically: the data goes to a uniquely named temporary file in the
-/// same directory (`.NAME.tmp-<pid>-<n>`), which is flushed to disk, closed and then renamed over
-/// `path`. Readers see either the old file or the complete new one, never a partial file.
+/// same directory (`.NAME.tmp-<pid>-<n>`), which is closed and then renamed over `path`. Readers
+/// see either the old file or the complete new one, never a partial file. The data is not
+/// forced to disk (no fsync): a crash of the operating system soon after may lose the file.
 /// On any failure the temporary is removed, an existing `path` is left untouched, and InputError
 /// is thrown naming `path` and the OS reason. Thread-safe.
 void write_file_atomically(const std::filesystem::path& path, std::span<const uint8_t> bytes);
