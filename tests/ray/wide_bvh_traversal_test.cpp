@@ -177,6 +177,29 @@ TEST(WideBvhTraversal, MatchesBruteForceOnSphereIncludingVertexRays) {
     }
 }
 
+TEST(WideBvhTraversal, LeavesOfMoreThanEightTrianglesMatchBruteForce) {
+    // Leaves of 9 to 16 triangles: the SIMD leaf tests take them in two blocks of lanes, the
+    // second one out of line.
+    const TestMesh mesh = testing::random_soup(3000, 0.3f, 24);
+    BvhBuildSettings settings;
+    settings.max_leaf_size = WideBvhRef::k_max_leaf_size;
+    const WideBvh bvh = build_wide_bvh(mesh.positions, mesh.indices, settings);
+    uint32_t big_leaves = 0;
+    for (const WideBvhNode& node : bvh.nodes)
+        for (uint32_t child : node.child)
+            if (child != WideBvhRef::k_empty && WideBvhRef::is_leaf(child) &&
+                WideBvhRef::leaf_count(child) > 8)
+                ++big_leaves;
+    ASSERT_GT(big_leaves, 100u);
+    Pcg32 rng(25, 1);
+    for (int i = 0; i < 3000; ++i) {
+        const Ray ray{testing::random_point(rng, 1.5f), testing::random_direction(rng)};
+        const Interval valid = i % 2 ? Interval{} : Interval{0.0f, 0.3f * rng.next_float()};
+        expect_matches_brute_force(bvh, mesh, ray, valid, i);
+        if (::testing::Test::HasFatalFailure()) return;
+    }
+}
+
 TEST(WideBvhTraversal, AxisAlignedRaysThroughGridEdges) {
     // A flat grid hit by rays along -z exactly through its shared edges and vertices: no ray
     // may slip through (watertightness survives the SIMD leaf test).

@@ -10,10 +10,11 @@
 //   static uint32_t test_node_any(const WideBvhNode&, const NodeRay&, float t_min,
 //                                 float t_max_far) -> the same mask with the exits widened
 //                                 through NodeRay::inv_dir_far (see k_far_scale), no entries
-//   template <bool k_any_hit> static bool test_leaf(const LeafRay&, const float* block,
-//                             uint32_t count, uint32_t first, Interval& valid, LeafHit& hit)
-//                             -> nearest (or any) triangle of the leaf inside valid; shrinks
-//                             valid.max and fills hit for the nearest
+//   class LeafTest, built once per ray from a LeafRay, with
+//     template <bool k_any_hit> bool test(const float* block, uint32_t count, uint32_t first,
+//                                         Interval& valid, LeafHit& hit) const
+//     -> nearest (or any) triangle of the leaf inside valid; shrinks valid.max and fills hit
+//        for the nearest
 
 #include <array>
 #include <bit>
@@ -89,7 +90,7 @@ struct LeafRay {
         const int x_wins = int(ax >= ay) & int(ax >= az);
         const int y_wins = int(ay >= az) & (x_wins ^ 1);
         kz = 2 - 2 * x_wins - y_wins;
-        constexpr std::array<int, 6> k_x_axis{1, 2, 0, 2, 0, 1}, k_y_axis{2, 0, 1, 1, 2, 0};
+        static constexpr std::array<int, 6> k_x_axis{1, 2, 0, 2, 0, 1}, k_y_axis{2, 0, 1, 1, 2, 0};
         const int row = kz + 3 * int(d[kz] < 0.0f);
         kx = k_x_axis[row];
         ky = k_y_axis[row];
@@ -157,6 +158,7 @@ bool traverse(const WideBvh& bvh, const Ray& ray, Interval valid, LeafHit& hit) 
     if (bvh.empty() || !is_traceable(ray)) return false;
     const NodeRay node_ray(ray);
     const LeafRay leaf_ray(ray);
+    const typename Ops::LeafTest leaf_test(leaf_ray);
     const WideBvhNode* nodes = bvh.nodes.data();
     const float* triangle_data = bvh.triangle_data.data();
 
@@ -204,8 +206,7 @@ bool traverse(const WideBvh& bvh, const Ray& ray, Interval valid, LeafHit& hit) 
             const uint32_t first = WideBvhRef::leaf_first(current);
             const uint32_t count = WideBvhRef::leaf_count(current);
             const float* block = triangle_data + 9 * size_t(first);
-            if (Ops::template test_leaf<false>(leaf_ray, block, count, first, valid, hit))
-                found = true;
+            if (leaf_test.template test<false>(block, count, first, valid, hit)) found = true;
         }
 
         /* pop the next node that starts before the nearest hit so far */
@@ -241,6 +242,7 @@ bool occluded(const WideBvh& bvh, const Ray& ray, Interval valid) {
     if (bvh.empty() || !is_traceable(ray)) return false;
     const NodeRay node_ray(ray);
     const LeafRay leaf_ray(ray);
+    const typename Ops::LeafTest leaf_test(leaf_ray);
     const WideBvhNode* nodes = bvh.nodes.data();
     const float* triangle_data = bvh.triangle_data.data();
 
@@ -270,8 +272,7 @@ bool occluded(const WideBvh& bvh, const Ray& ray, Interval valid) {
             const uint32_t first = WideBvhRef::leaf_first(current);
             const uint32_t count = WideBvhRef::leaf_count(current);
             const float* block = triangle_data + 9 * size_t(first);
-            if (Ops::template test_leaf<true>(leaf_ray, block, count, first, valid, unused))
-                return true;
+            if (leaf_test.template test<true>(block, count, first, valid, unused)) return true;
         }
 
         /* pop the next node */

@@ -60,12 +60,20 @@ struct PortableOps {
         return mask;
     }
 
-    template <bool k_any_hit>
-    static bool test_leaf(const LeafRay& ray, const float* block, uint32_t count, uint32_t first,
-                          Interval& valid, LeafHit& hit) {
-        return wide_kernel::test_leaf_scalar<k_any_hit>(ray, block, count, first, 0, count, valid,
-                                                        hit);
-    }
+    /// The reference test, one triangle at a time.
+    class LeafTest {
+      public:
+        explicit LeafTest(const LeafRay& ray) : ray_(ray) {}
+        template <bool k_any_hit>
+        bool test(const float* block, uint32_t count, uint32_t first, Interval& valid,
+                  LeafHit& hit) const {
+            return wide_kernel::test_leaf_scalar<k_any_hit>(ray_, block, count, first, 0, count,
+                                                            valid, hit);
+        }
+
+      private:
+        const LeafRay& ray_;
+    };
 };
 
 bool closest_portable(const WideBvh& bvh, const Ray& ray, Interval valid, TriangleHit& hit) {
