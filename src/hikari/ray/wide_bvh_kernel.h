@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 
 #include "hikari/core/ray.h"
 #include "hikari/ray/bvh_traversal.h"
@@ -157,8 +158,10 @@ template <typename Ops>
 bool traverse(const WideBvh& bvh, const Ray& ray, Interval valid, LeafHit& hit) {
     if (bvh.empty() || !is_traceable(ray)) return false;
     const NodeRay node_ray(ray);
-    const LeafRay leaf_ray(ray);
-    const typename Ops::LeafTest leaf_test(leaf_ray);
+    // Built at the first leaf: a ray that reaches none (most camera rays beside a model) never
+    // pays for the triangle test's set-up.
+    std::optional<LeafRay> leaf_ray;
+    std::optional<typename Ops::LeafTest> leaf_test;
     const WideBvhNode* nodes = bvh.nodes.data();
     const float* triangle_data = bvh.triangle_data.data();
 
@@ -206,7 +209,8 @@ bool traverse(const WideBvh& bvh, const Ray& ray, Interval valid, LeafHit& hit) 
             const uint32_t first = WideBvhRef::leaf_first(current);
             const uint32_t count = WideBvhRef::leaf_count(current);
             const float* block = triangle_data + 9 * size_t(first);
-            if (leaf_test.template test<false>(block, count, first, valid, hit)) found = true;
+            if (!leaf_test) leaf_test.emplace(leaf_ray.emplace(ray));
+            if (leaf_test->template test<false>(block, count, first, valid, hit)) found = true;
         }
 
         /* pop the next node that starts before the nearest hit so far */
