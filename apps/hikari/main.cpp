@@ -385,9 +385,9 @@ int main(int argc, char** argv) {
     bench->add_option("name", b.bench, "B1 (primary rays, closest hit) or B2 (occlusion rays)")
         ->required()
         ->check(CLI::IsMember({"B1", "B2"}));
-    bench->add_option("--mesh", b.mesh, "OBJ mesh (positions and faces are read)")
-        ->required()
-        ->check(CLI::ExistingFile);
+    // No CLI::ExistingFile: a missing or unreadable mesh is an input error (exit 1), as for
+    // a render's scene file, reported by the loader.
+    bench->add_option("--mesh", b.mesh, "OBJ mesh (positions and faces are read)")->required();
     bench->add_option("--threads", b.threads, "Threads for build and trace")
         ->check(CLI::Range(1, 1024))
         ->capture_default_str();

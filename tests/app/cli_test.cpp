@@ -10,6 +10,7 @@
 #include <fstream>
 #include <string>
 #include <thread>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -189,9 +190,38 @@ TEST_F(Cli, BenchPrintsOneJsonObject) {
 TEST_F(Cli, BenchUsageErrorsExitTwo) {
     EXPECT_EQ(run("bench B9 --mesh x.obj").status, 2);
     EXPECT_EQ(run("bench B1").status, 2);
-    EXPECT_EQ(run("bench B1 --mesh " + path("missing.obj")).status, 2);
     write("quad.obj", "v 0 0 0\n");
     EXPECT_EQ(run("bench B1 --mesh " + path("quad.obj") + " --threads 0").status, 2);
+}
+
+// A mesh that cannot be used is bad input, as a scene file is: one line naming it, status 1.
+TEST_F(Cli, BenchInputErrorsExitOne) {
+    write("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+    write("bad_face.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n");
+    const std::pair<std::string, std::string> cases[] = {
+        {path("missing.obj"), "cannot read"},
+        {m_dir.string(), "cannot read"},
+        {path("points.obj"), "no triangles"},
+        {path("bad_face.obj"), "line 4"},
+    };
+    for (const auto& [mesh, reason] : cases) {
+        const Result r = run("bench B1 --reps 1 --mesh " + mesh);
+        EXPECT_EQ(r.status, 1) << mesh << ": " << r.output;
+        EXPECT_EQ(r.output.rfind("hikari: error: " + mesh + ": ", 0), 0u) << r.output;
+        EXPECT_NE(r.output.find(reason), std::string::npos) << r.output;
+        EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << "one line: " << r.output;
+    }
+}
+
+// More threads than the machine has cores: the build and the trace run that many, and nothing
+// but the JSON object is printed (TBB warns when an arena asks for more than its pool allows).
+TEST_F(Cli, BenchWithMoreThreadsThanCoresPrintsOnlyJson) {
+    write("quad.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n");
+    const Result r = run("bench B1 --mesh " + path("quad.obj") + " --threads 64 --reps 1");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(r.output.front(), '{') << r.output;
+    EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << r.output;
+    EXPECT_NE(r.output.find("\"threads\": 64"), std::string::npos) << r.output;
 }
 
 }  // namespace

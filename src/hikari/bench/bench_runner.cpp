@@ -1,5 +1,6 @@
 #include "hikari/bench/bench_runner.h"
 
+#include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
 #include <fmt/format.h>
@@ -57,6 +58,10 @@ double median(std::vector<double> v) {
 
 /// Builds the wide BVH on `threads` threads: one warm-up build, then `reps` timed ones.
 WideBvh timed_builds(const BenchMesh& mesh, int threads, int reps, std::vector<double>& ms) {
+    // TBB's default pool has one thread per core: more threads than cores must be allowed
+    // first, or the arena runs with fewer and TBB prints a warning.
+    const tbb::global_control allow(tbb::global_control::max_allowed_parallelism,
+                                    static_cast<size_t>(threads));
     tbb::task_arena arena(threads);
     WideBvh bvh;
     for (int r = 0; r <= reps; ++r) {

@@ -4,10 +4,13 @@
 
 #include <fmt/format.h>
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <string>
 
 #include "hikari/core/error.h"
 #include "hikari/core/rng.h"
+#include "hikari/io/read_file.h"
 
 namespace hikari {
 
@@ -16,8 +19,15 @@ BenchMesh load_bench_mesh(const std::filesystem::path& file) {
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;
-    if (!reader.ParseFromFile(file.string(), config))
-        throw InputError(fmt::format("{}: {}", file.string(), reader.Error()));
+    // Read first, so a missing file or a directory gets the OS's reason, as a scene file does;
+    // the peers' materials are never read, so none are looked up.
+    const std::string text = read_file_bytes(file);
+    if (!reader.ParseFromString(text, "", config)) {
+        std::string reason = reader.Error();
+        while (!reason.empty() && std::isspace(static_cast<unsigned char>(reason.back())))
+            reason.pop_back();
+        throw InputError(fmt::format("{}: {}", file.string(), reason));
+    }
     const auto& attrib = reader.GetAttrib();
     BenchMesh mesh;
     mesh.positions.resize(attrib.vertices.size() / 3);
