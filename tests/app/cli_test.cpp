@@ -198,11 +198,15 @@ TEST_F(Cli, BenchUsageErrorsExitTwo) {
 TEST_F(Cli, BenchInputErrorsExitOne) {
     write("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
     write("bad_face.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n");
+    write("far_vertex.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 9\n");
+    write("before_first.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -9\n");
     const std::pair<std::string, std::string> cases[] = {
         {path("missing.obj"), "cannot read"},
         {m_dir.string(), "cannot read"},
         {path("points.obj"), "no triangles"},
         {path("bad_face.obj"), "line 4"},
+        {path("far_vertex.obj"), "triangle 2 refers to a vertex out of range"},
+        {path("before_first.obj"), "triangle 1 refers to a vertex out of range"},
     };
     for (const auto& [mesh, reason] : cases) {
         const Result r = run("bench B1 --reps 1 --mesh " + mesh);

@@ -42,6 +42,14 @@ BenchMesh load_bench_mesh(const std::filesystem::path& file) {
                                     static_cast<uint32_t>(idx[f + 2].vertex_index)});
     }
     if (mesh.indices.empty()) throw InputError(fmt::format("{}: no triangles", file.string()));
+    // tinyobjloader passes indices beyond the vertex list through; the peers would read past
+    // their buffers, so such a mesh is refused rather than measured.
+    for (size_t t = 0; t < mesh.indices.size(); ++t)
+        for (const uint32_t v : mesh.indices[t])
+            if (v >= mesh.positions.size())
+                throw InputError(fmt::format(
+                    "{}: triangle {} refers to a vertex out of range (the file has {} vertices)",
+                    file.string(), t + 1, mesh.positions.size()));
     set_bench_bounds(mesh);
     return mesh;
 }
