@@ -201,6 +201,25 @@ TEST(ObjLoader, OutOfRangeRelativeAndNormalIndices) {
         << load_error(dir / "zero.obj");
 }
 
+// Lines end at \n, \r\n or a lone \r (tinyobjloader's rule): the mesh and the line numbers of
+// errors come out the same whichever the file uses, and an \r\n pair is one line end.
+TEST(ObjLoader, LineEndingsAreLfCrLfOrLoneCr) {
+    TempDir dir;
+    write_text(dir / "mixed.obj", "v 0 0 0\r\nv 1 0 0\rv 1 1 0\nv 0 1 0\r\n\r\nf 1 2 3 4\r");
+    const MeshData mesh = load_obj(dir / "mixed.obj");
+    EXPECT_EQ(mesh.indices.size(), 2u);
+    EXPECT_EQ(mesh.positions.size(), 4u);
+    write_text(dir / "crlf.obj", "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\n\r\nf 1 2 9\r\n");
+    write_text(dir / "cr.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\r\rf 1 2 9\r");
+    write_text(dir / "number.obj", "v 0 0 0\r\nv 1 0 0\rv 0 x 0\nf 1 2 3\n");
+    EXPECT_NE(load_error(dir / "crlf.obj").find("crlf.obj:5: "), std::string::npos)
+        << load_error(dir / "crlf.obj");
+    EXPECT_NE(load_error(dir / "cr.obj").find("cr.obj:5: "), std::string::npos)
+        << load_error(dir / "cr.obj");
+    EXPECT_NE(load_error(dir / "number.obj").find("number.obj:3: 'v': 'x'"), std::string::npos)
+        << load_error(dir / "number.obj");
+}
+
 TEST(ObjLoader, MissingFileIsAnError) {
     TempDir dir;
     const std::string message = load_error(dir / "missing.obj");
