@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -18,17 +19,43 @@ using testing::TestMesh;
 
 WideBvh build(const TestMesh& mesh) { return build_wide_bvh(mesh.positions, mesh.indices); }
 
+/// Checks occluded_packet against the single-ray any-hit kernel on every active lane, with every
+/// group forced through the packet kernel (smallest group 1) and through the public entry;
+/// returns the number of occluded lanes.
+int expect_occlusion_matches_single_rays(const WideBvh& bvh, const RayPacket& packet,
+                                         uint32_t active, SimdLevel level) {
+    int occluded = 0;
+    for (uint32_t min_group : {1u, 4u}) {
+        SCOPED_TRACE(::testing::Message() << "any hit, min_group " << min_group);
+        const uint32_t mask = min_group == 4
+                                  ? occluded_packet(bvh, packet, active, level)
+                                  : detail::occluded_packet(bvh, packet, active, level, min_group);
+        EXPECT_EQ(mask & ~active, 0u);
+        occluded = 0;
+        for (uint32_t lane = 0; lane < k_packet_size; ++lane) {
+            if (!(active & (1u << lane))) continue;
+            const bool want = intersect_any(bvh, packet.ray(lane),
+                                            {packet.t_min[lane], packet.t_max[lane]}, level);
+            EXPECT_EQ((mask >> lane) & 1u, want ? 1u : 0u) << "lane " << lane;
+            occluded += want ? 1 : 0;
+        }
+    }
+    return occluded;
+}
+
 /// Traces `packet` at every level, through the public entry (smallest group 4) and with every
 /// group forced through the packet kernel (smallest group 1), and checks every active lane
-/// against the single-ray kernel: same hit or miss, same triangle, bit-identical t, u, v.
-/// Returns the number of lanes that hit.
+/// against the single-ray kernel: same hit or miss, same triangle, bit-identical t, u, v; and
+/// the same as shadow rays (expect_occlusion_matches_single_rays). Returns the number of lanes
+/// that hit.
 int expect_matches_single_rays(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
                                const char* what) {
     int hits = 0;
     for (SimdLevel level : supported_simd_levels()) {
+        SCOPED_TRACE(::testing::Message() << what << ", " << simd_level_name(level));
+        expect_occlusion_matches_single_rays(bvh, packet, active, level);
         for (uint32_t min_group : {1u, 4u}) {
-            SCOPED_TRACE(::testing::Message()
-                         << what << ", " << simd_level_name(level) << ", min_group " << min_group);
+            SCOPED_TRACE(::testing::Message() << "min_group " << min_group);
             PacketHit got;
             const uint32_t mask =
                 detail::intersect_closest_packet(bvh, packet, active, got, level, min_group);
@@ -275,12 +302,49 @@ TEST(WideBvhPacket, TiesBetweenLeavesMatchSingleRays) {
     }
 }
 
+/// Shadow rays as the ray tracer makes them: from the visible points of a mesh toward one
+/// point light, in rows of 16 pixels, with a cloud of triangles between the mesh and the light.
+/// Some lanes are blocked and some are not, and each answers as its single ray does.
+TEST(WideBvhPacket, ShadowRaysTowardALightMatchSingleRays) {
+    TestMesh mesh = testing::uv_sphere(40, 20, 1.0f);
+    const TestMesh soup = testing::random_soup(300, 0.15f, 4);
+    const auto base = static_cast<uint32_t>(mesh.positions.size());
+    for (const Vec3& p : soup.positions)
+        mesh.positions.push_back(p * 0.6f + Vec3(0.9f, 1.2f, 0.9f));
+    for (const auto& t : soup.indices)
+        mesh.indices.push_back({t[0] + base, t[1] + base, t[2] + base});
+    const WideBvh bvh = build(mesh);
+    const Vec3 eye{0.0f, 0.0f, 3.0f}, light{2.0f, 3.0f, 2.5f};
+    int rays = 0, occluded = 0;
+    for (int y = 0; y < 32; ++y) {
+        RayPacket shadows{};
+        uint32_t active = 0;
+        for (uint32_t x = 0; x < k_packet_size; ++x) {
+            const Vec3 d = normalize(Vec3(float(x) / 16.0f - 0.5f, 0.5f - float(y) / 32.0f, -1.0f));
+            TriangleHit hit;
+            if (!intersect_closest(bvh, {eye, d}, {}, hit)) continue;
+            const Vec3 p = eye + d * hit.t;
+            const Vec3 to_light = light - p;
+            const float distance = length(to_light);
+            const Vec3 l = to_light / distance;
+            shadows.set(x, {p + l * 1e-3f, l}, {0.0f, distance});
+            active |= 1u << x;
+        }
+        for (SimdLevel level : supported_simd_levels())
+            occluded += expect_occlusion_matches_single_rays(bvh, shadows, active, level);
+        rays += std::popcount(active) * int(supported_simd_levels().size());
+    }
+    EXPECT_GT(occluded, rays / 10);
+    EXPECT_LT(occluded, rays - rays / 10);
+}
+
 TEST(WideBvhPacket, EmptyTreeHitsNothing) {
     const WideBvh empty;
     const RayPacket p = camera_block({0, 0, 3}, 8, 0, 0, {});
     for (SimdLevel level : supported_simd_levels()) {
         PacketHit h;
         EXPECT_EQ(intersect_closest_packet(empty, p, 0xffffu, h, level), 0u);
+        EXPECT_EQ(occluded_packet(empty, p, 0xffffu, level), 0u);
     }
     std::vector<Ray> rays(9, Ray{{0, 0, 3}, {0, 0, -1}});
     std::vector<TriangleHit> hits(9);

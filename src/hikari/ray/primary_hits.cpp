@@ -232,23 +232,29 @@ void PrimaryHitTracer::finish(const TriangleHit* triangle_hits, PrimaryBlock& bl
     const auto shadows = simd_pick(m_level, detail::primary_shadows_portable,
                                    detail::primary_shadows_avx2, detail::primary_shadows_avx512);
     const detail::PrimaryAnalytic casters = m_casters.view();
+    static_assert(k_lane_chunk == int(k_packet_size));
+    RayPacket packet;
+    std::fill_n(packet.t_min, k_packet_size, 0.0f);
     for (size_t l = 0; l < m_lights.size(); ++l) {
         shadows(m_lights[l], casters, chunks, lanes);
         const int32_t bit = 1 << l;
         for (int c = 0; c < chunks; ++c) {
             detail::LaneChunk& chunk = lanes.chunks[c];
             if (!any_active(chunk)) continue;  // the kernel skipped it
-            for (int j = 0; j < k_lane_chunk; ++j) {
-                if (!chunk.active[j] || chunk.blocked[j]) continue;
-                const Ray ray{{chunk.shadow_origin[0][j], chunk.shadow_origin[1][j],
-                               chunk.shadow_origin[2][j]},
-                              {chunk.shadow_direction[0][j], chunk.shadow_direction[1][j],
-                               chunk.shadow_direction[2][j]}};
-                if (triangles &&
-                    m_intersector.occluded_by_triangles(ray, {0.0f, chunk.shadow_distance[j]}))
-                    continue;
-                chunk.lit[j] |= bit;
+            uint32_t open = 0;                 // lanes whose shadow ray no sphere or plane blocks
+            for (int j = 0; j < k_lane_chunk; ++j)
+                if (chunk.active[j] && !chunk.blocked[j]) open |= 1u << j;
+            if (open != 0 && triangles) {
+                // A row of hits toward one light: coherent, so traced as one packet.
+                for (int a = 0; a < 3; ++a) {
+                    std::copy_n(chunk.shadow_origin[a], k_lane_chunk, packet.origin[a]);
+                    std::copy_n(chunk.shadow_direction[a], k_lane_chunk, packet.direction[a]);
+                }
+                std::copy_n(chunk.shadow_distance, k_lane_chunk, packet.t_max);
+                open &= ~m_intersector.occluded_by_triangles(packet, open);
             }
+            for (int j = 0; j < k_lane_chunk; ++j)
+                if (open & (1u << j)) chunk.lit[j] |= bit;
         }
     }
 }

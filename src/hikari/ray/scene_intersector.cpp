@@ -93,6 +93,11 @@ bool SceneIntersector::occluded_by_triangles(const Ray& ray, Interval range) con
            intersect_any(m_all_cast ? m_bvh : m_shadow_bvh, ray, range);
 }
 
+uint32_t SceneIntersector::occluded_by_triangles(const RayPacket& packet, uint32_t active) const {
+    if (m_scene.triangles.size() == 0) return 0;
+    return occluded_packet(m_all_cast ? m_bvh : m_shadow_bvh, packet, active);
+}
+
 bool SceneIntersector::occluded(const Ray& ray, Interval range) const {
     if (occluded_by_triangles(ray, range)) return true;
     for (const Sphere& s : m_scene.spheres)

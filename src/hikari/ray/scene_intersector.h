@@ -6,6 +6,7 @@
 #include "hikari/core/ray.h"
 #include "hikari/ray/bvh_traversal.h"
 #include "hikari/ray/wide_bvh.h"
+#include "hikari/ray/wide_bvh_packet.h"
 #include "hikari/scene/scene.h"
 
 namespace hikari {
@@ -36,6 +37,9 @@ class SceneIntersector {
 
     /// Whether a shadow-casting triangle blocks `ray` inside `range` (occluded's first part).
     bool occluded_by_triangles(const Ray& ray, Interval range) const;
+    /// occluded_by_triangles for the lanes `active` of a packet, each with its own interval:
+    /// the mask of blocked lanes, each lane's answer exactly the single ray's (wide_bvh_packet.h).
+    uint32_t occluded_by_triangles(const RayPacket& packet, uint32_t active) const;
 
     /// Fills `hit` for the nearest hit of `ray` found at distance `t` on primitive `index` of
     /// kind `kind` (Scene::spheres or Scene::planes; for triangles, `triangle` says which and

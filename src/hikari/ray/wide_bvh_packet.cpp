@@ -14,6 +14,10 @@ uint32_t packet_closest_avx2(const WideBvh& bvh, const RayPacket& packet, uint32
                              uint32_t min_group, PacketHit& hits, uint32_t& single);
 uint32_t packet_closest_avx512(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
                                uint32_t min_group, PacketHit& hits, uint32_t& single);
+uint32_t packet_occluded_avx2(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
+                              uint32_t min_group, uint32_t& single);
+uint32_t packet_occluded_avx512(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
+                                uint32_t min_group, uint32_t& single);
 }  // namespace detail
 
 namespace {
@@ -149,6 +153,22 @@ uint32_t packet_closest(const WideBvh& bvh, const RayPacket& packet, uint32_t ac
     return packet_kernel::trace_packet<PortableOps>(bvh, packet, active, min_group, hits, single);
 }
 
+uint32_t packet_occluded(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
+                         uint32_t min_group, uint32_t& single, SimdLevel level) {
+#if HIKARI_SIMD_KERNELS
+    switch (level) {
+        case SimdLevel::avx512:
+            return detail::packet_occluded_avx512(bvh, packet, active, min_group, single);
+        case SimdLevel::avx2:
+            return detail::packet_occluded_avx2(bvh, packet, active, min_group, single);
+        default:
+            break;
+    }
+#endif
+    (void)level;
+    return packet_kernel::trace_packet_any<PortableOps>(bvh, packet, active, min_group, single);
+}
+
 /// Smallest group traced as a packet by default: below it, single rays are faster.
 constexpr uint32_t k_min_group = 4;
 
@@ -189,6 +209,32 @@ uint32_t intersect_closest_packet(const WideBvh& bvh, const RayPacket& packet, u
                                   PacketHit& hits) {
     static const SimdLevel level = best_simd_level();
     return intersect_closest_packet(bvh, packet, active, hits, level);
+}
+
+uint32_t detail::occluded_packet(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
+                                 SimdLevel level, uint32_t min_group) {
+    active &= (1u << k_packet_size) - 1;
+    if (bvh.empty() || active == 0) return 0;
+    uint32_t single = 0;
+    uint32_t occluded =
+        packet_occluded(bvh, packet, active, std::max(1u, min_group), single, level);
+    /* the rest one by one */
+    for (uint32_t m = single; m != 0; m &= m - 1) {
+        const auto lane = static_cast<uint32_t>(std::countr_zero(m));
+        if (intersect_any(bvh, packet.ray(lane), {packet.t_min[lane], packet.t_max[lane]}, level))
+            occluded |= 1u << lane;
+    }
+    return occluded;
+}
+
+uint32_t occluded_packet(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
+                         SimdLevel level) {
+    return detail::occluded_packet(bvh, packet, active, level, k_min_group);
+}
+
+uint32_t occluded_packet(const WideBvh& bvh, const RayPacket& packet, uint32_t active) {
+    static const SimdLevel level = best_simd_level();
+    return occluded_packet(bvh, packet, active, level);
 }
 
 void intersect_closest_tile(const WideBvh& bvh, const Ray* rays, size_t stride, uint32_t width,

@@ -94,6 +94,17 @@ uint32_t intersect_closest_packet(const WideBvh& bvh, const RayPacket& packet, u
 uint32_t intersect_closest_packet(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
                                   PacketHit& hits, SimdLevel level);
 
+/// For every lane i set in `active`: whether some triangle lies inside ray i's open interval
+/// (shadow rays). Returns the mask of those lanes, each exactly intersect_any(bvh,
+/// packet.ray(i), ...)'s answer at every SIMD level. Fast for coherent rays, such as the
+/// shadow rays of a row of camera hits toward one light (Boulos et al. 2007 trace shadow rays
+/// as packets for that reason); any rays work. Uses the CPU's best SIMD level.
+uint32_t occluded_packet(const WideBvh& bvh, const RayPacket& packet, uint32_t active);
+
+/// occluded_packet with an explicit SIMD level (must be supported by this CPU).
+uint32_t occluded_packet(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
+                         SimdLevel level);
+
 /// A tile of camera rays: the nearest hit of each ray of a `width` x `height` block of rays
 /// stored row-major, `stride` rays from one row to the next (an image's rows: stride = image
 /// width), all with interval `valid`. Traced as 4x4 packets. found[y * stride + x] is 1 where
@@ -109,6 +120,9 @@ namespace detail {
 /// which set it to 1 to run the packet kernel on every group.
 uint32_t intersect_closest_packet(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
                                   PacketHit& hits, SimdLevel level, uint32_t min_group);
+/// occluded_packet with the smallest group traced as a packet (see above).
+uint32_t occluded_packet(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
+                         SimdLevel level, uint32_t min_group);
 }  // namespace detail
 
 }  // namespace hikari

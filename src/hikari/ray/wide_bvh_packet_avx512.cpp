@@ -34,5 +34,11 @@ uint32_t packet_closest_avx512(const WideBvh& bvh, const RayPacket& packet, uint
                                                                  hits, single);
 }
 
+uint32_t packet_occluded_avx512(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
+                                uint32_t min_group, uint32_t& single) {
+    return packet_kernel::trace_packet_any<packet_kernel::Simd16Ops>(bvh, packet, active, min_group,
+                                                                     single);
+}
+
 }  // namespace hikari::detail
 #endif

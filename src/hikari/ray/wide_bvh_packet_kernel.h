@@ -120,7 +120,7 @@ struct Nearest {
 /// single-ray kernel's arithmetic (wide_bvh_kernel.h's test_node) on each lane.
 template <typename Ops>
 uint32_t test_box_lanes(const WideBvhNode& node, uint32_t slot, const GroupRays& r,
-                        const GroupHits& h, uint32_t lanes) {
+                        const float* t_max, uint32_t lanes) {
     using V = typename Ops::V;
     const Frustum& f = r.frustum;
     const auto slab = [&](int a, int row) {
@@ -130,20 +130,26 @@ uint32_t test_box_lanes(const WideBvhNode& node, uint32_t slot, const GroupRays&
     V t0 = Ops::max(slab(0, f.near_row[0]), Ops::load(r.t_min));
     t0 = Ops::max(slab(1, f.near_row[1]), t0);
     t0 = Ops::max(slab(2, f.near_row[2]), t0);
-    V t1 = Ops::min(slab(0, f.far_row[0]), Ops::load(h.t));
+    V t1 = Ops::min(slab(0, f.far_row[0]), Ops::load(t_max));
     t1 = Ops::min(slab(1, f.far_row[1]), t1);
     t1 = Ops::min(slab(2, f.far_row[2]), t1);
     return lanes & Ops::le(t0, Ops::mul(t1, Ops::set1(k_exit_scale)));
 }
 
-/// Woop et al. 2013 for one triangle against the lanes in `lanes`, the steps and rounding as in
-/// triangle_intersect.h; lanes where an edge function is exactly zero take the reference test
-/// (its exact fallback, Sec 4). Updates the nearest hits: t, u, v in `near` (registers, while
-/// a leaf is tested), the rest in `h`. Returns the lanes whose nearest hit it became.
+/// Steps 1-4 of Woop et al. 2013 for triangle i of a leaf block against every lane, the steps
+/// and rounding as in triangle_intersect.h: the scaled barycentrics, their sum `det`, the
+/// scaled distance, which lanes meet the triangle's interior (`inside`, det non-zero) and which
+/// have an edge function exactly zero (`on_edge`: those need the reference test, Sec 4).
 template <typename Ops>
-uint32_t test_triangle(const RayPacket& packet, const GroupRays& r, const float* block,
-                       uint32_t count, uint32_t i, uint32_t slot, uint32_t lanes,
-                       Nearest<Ops>& near, GroupHits& h) {
+struct ScaledHits {
+    typename Ops::V e1, e2, det, t_scaled;
+    uint32_t inside, on_edge;
+};
+
+template <typename Ops>
+[[gnu::always_inline]] inline ScaledHits<Ops> scaled_hits(const GroupRays& r, const float* block,
+                                                          uint32_t count, uint32_t i,
+                                                          uint32_t lanes) {
     using V = typename Ops::V;
     const auto vertex = [&](int v, int axis) { return block[(3 * v + axis) * count + i]; };
     /* steps 1-2: vertices relative to the origins, sheared so each ray runs along +z */
@@ -168,24 +174,48 @@ uint32_t test_triangle(const RayPacket& packet, const GroupRays& r, const float*
     /* step 4: inside when all edge functions share a sign */
     const uint32_t negative = Ops::lt(e0, zero) | Ops::lt(e1, zero) | Ops::lt(e2, zero);
     const uint32_t positive = Ops::gt(e0, zero) | Ops::gt(e1, zero) | Ops::gt(e2, zero);
-    uint32_t inside = ~(negative & positive) & lanes & ~on_edge;
     // No branch on `inside`: for coherent rays whether a triangle is hit is a coin toss, and a
     // mispredicted branch costs more than the rest of the test.
     const V det = Ops::add(Ops::add(e0, e1), e2);
-    inside &= Ops::neq(det, zero);
-    /* step 5: the hit distance */
+    const uint32_t inside = ~(negative & positive) & lanes & ~on_edge & Ops::neq(det, zero);
+    /* step 5, scaled: the distance times det */
     const V sz = Ops::load(r.shear[2]);
     const V t_scaled =
         Ops::add(Ops::add(Ops::mul(e0, Ops::mul(sz, az)), Ops::mul(e1, Ops::mul(sz, bz))),
                  Ops::mul(e2, Ops::mul(sz, cz)));
-    const V inv_det = Ops::div(Ops::set1(1.0f), det);
-    const V t = Ops::mul(t_scaled, inv_det);
+    return {e1, e2, det, t_scaled, inside, on_edge};
+}
+
+/// Triangle i of a leaf block, its vertices as the reference tests take them.
+inline void block_triangle(const float* block, uint32_t count, uint32_t i, Vec3& p0, Vec3& p1,
+                           Vec3& p2) {
+    const auto vertex = [&](int v, int axis) { return block[(3 * v + axis) * count + i]; };
+    p0 = {vertex(0, 0), vertex(0, 1), vertex(0, 2)};
+    p1 = {vertex(1, 0), vertex(1, 1), vertex(1, 2)};
+    p2 = {vertex(2, 0), vertex(2, 1), vertex(2, 2)};
+}
+
+/// Woop et al. 2013 for one triangle against the lanes in `lanes` (scaled_hits, then the
+/// division); lanes where an edge function is exactly zero take the reference test (its exact
+/// fallback, Sec 4). Updates the nearest hits: t, u, v in `near` (registers, while a leaf is
+/// tested), the rest in `h`. Returns the lanes whose nearest hit it became.
+template <typename Ops>
+uint32_t test_triangle(const RayPacket& packet, const GroupRays& r, const float* block,
+                       uint32_t count, uint32_t i, uint32_t slot, uint32_t lanes,
+                       Nearest<Ops>& near, GroupHits& h) {
+    using V = typename Ops::V;
+    const ScaledHits<Ops> s = scaled_hits<Ops>(r, block, count, i, lanes);
+    uint32_t inside = s.inside;
+    const uint32_t on_edge = s.on_edge;
+    /* step 5: the hit distance */
+    const V inv_det = Ops::div(Ops::set1(1.0f), s.det);
+    const V t = Ops::mul(s.t_scaled, inv_det);
     inside &= Ops::lt(Ops::load(r.t_min), t);
     h.ties |= inside & h.found & Ops::eq(t, near.t);
     uint32_t nearer = inside & Ops::lt(t, near.t);
     near.t = Ops::select(nearer, t, near.t);
-    near.u = Ops::select(nearer, Ops::mul(e1, inv_det), near.u);
-    near.v = Ops::select(nearer, Ops::mul(e2, inv_det), near.v);
+    near.u = Ops::select(nearer, Ops::mul(s.e1, inv_det), near.u);
+    near.v = Ops::select(nearer, Ops::mul(s.e2, inv_det), near.v);
     Ops::store_masked(h.slot, nearer, slot);
     h.found |= nearer;
     if (on_edge == 0) return nearer;
@@ -193,9 +223,8 @@ uint32_t test_triangle(const RayPacket& packet, const GroupRays& r, const float*
     for (uint32_t m = on_edge; m != 0; m &= m - 1) {
         // A ray through an edge or vertex: rare, so the scalar reference test.
         const auto lane = static_cast<uint32_t>(std::countr_zero(m));
-        const Vec3 p0{vertex(0, 0), vertex(0, 1), vertex(0, 2)};
-        const Vec3 p1{vertex(1, 0), vertex(1, 1), vertex(1, 2)};
-        const Vec3 p2{vertex(2, 0), vertex(2, 1), vertex(2, 2)};
+        Vec3 p0, p1, p2;
+        block_triangle(block, count, i, p0, p1, p2);
         const auto hit = intersect_triangle(WatertightRay(packet.ray(lane)), p0, p1, p2,
                                             {r.t_min[lane], k_infinity});
         if (!hit) continue;
@@ -208,6 +237,23 @@ uint32_t test_triangle(const RayPacket& packet, const GroupRays& r, const float*
     }
     near = {Ops::load(h.t), Ops::load(h.u), Ops::load(h.v)};
     return nearer;
+}
+
+/// Fetches every child in `mask` of `node`, to be visited now: in a big mesh each is a cache
+/// miss, and the misses then overlap instead of stalling one after the other.
+inline void prefetch_children(const WideBvh& bvh, const WideBvhNode& node, uint32_t mask) {
+    for (uint32_t m = mask; m != 0; m &= m - 1) {
+        const uint32_t ref = node.child[std::countr_zero(m)];
+        if (WideBvhRef::is_leaf(ref)) {
+            const char* p = reinterpret_cast<const char*>(bvh.triangle_data.data() +
+                                                          9 * size_t(WideBvhRef::leaf_first(ref)));
+            const uint32_t bytes = 36 * WideBvhRef::leaf_count(ref);
+            for (uint32_t b = 0; b < bytes; b += 64) __builtin_prefetch(p + b);
+        } else {
+            const char* p = reinterpret_cast<const char*>(bvh.nodes.data() + ref);
+            for (uint32_t b = 0; b < sizeof(WideBvhNode); b += 64) __builtin_prefetch(p + b);
+        }
+    }
 }
 
 /// The traversal loop: a stack of (reference, entry bound, parent, slot). Inner nodes: the
@@ -244,21 +290,7 @@ void traverse(const WideBvh& bvh, const RayPacket& packet, uint32_t group, int a
             /* inner node: the frustum against eight boxes, nearest hit child first */
             const WideBvhNode& node = nodes[current.ref];
             uint32_t mask = Ops::test_frustum(node, r.frustum, t_lo, t_hi, entry.data());
-            // Fetch every child to visit now: in a big mesh each is a cache miss, and the
-            // misses then overlap instead of stalling one after the other.
-            for (uint32_t m = mask; m != 0; m &= m - 1) {
-                const uint32_t ref = node.child[std::countr_zero(m)];
-                if (WideBvhRef::is_leaf(ref)) {
-                    const char* p = reinterpret_cast<const char*>(
-                        triangle_data + 9 * size_t(WideBvhRef::leaf_first(ref)));
-                    const uint32_t bytes = 36 * WideBvhRef::leaf_count(ref);
-                    for (uint32_t b = 0; b < bytes; b += 64) __builtin_prefetch(p + b);
-                } else {
-                    const char* p = reinterpret_cast<const char*>(nodes + ref);
-                    for (uint32_t b = 0; b < sizeof(WideBvhNode); b += 64)
-                        __builtin_prefetch(p + b);
-                }
-            }
+            prefetch_children(bvh, node, mask);
             if (mask != 0) {
                 const auto first = static_cast<uint32_t>(std::countr_zero(mask));
                 mask &= mask - 1;
@@ -286,7 +318,7 @@ void traverse(const WideBvh& bvh, const RayPacket& packet, uint32_t group, int a
             /* leaf: the lanes whose own slab test keeps its box, then its triangles */
             uint32_t lanes = group;
             if (current.parent != k_no_parent)
-                lanes = test_box_lanes<Ops>(nodes[current.parent], current.slot, r, h, group);
+                lanes = test_box_lanes<Ops>(nodes[current.parent], current.slot, r, h.t, group);
             if (lanes != 0) {
                 const uint32_t first = WideBvhRef::leaf_first(current.ref);
                 const uint32_t count = WideBvhRef::leaf_count(current.ref);
@@ -312,14 +344,111 @@ void traverse(const WideBvh& bvh, const RayPacket& packet, uint32_t group, int a
     }
 }
 
-/// Traces the lanes `active` of `packet`: sorts them into groups of one direction octant and
-/// one watertight permutation and traces each group of at least `min_group` lanes as a packet.
-/// Fills the lanes of `out` that hit and returns them; `single` gets the lanes the caller must
-/// trace with the single-ray kernel instead (small groups, rays whose 1 / direction may
-/// overflow, odd intervals, and ties).
+/// Whether each lane in `lanes` meets triangle i of a leaf block inside its interval (t_min,
+/// t_max), exactly triangle_occludes's answer (ray/triangle_intersect.h): the distance compared
+/// before the division (scaled_distance_inside), lanes with an edge function exactly zero by
+/// the reference test itself.
 template <typename Ops>
-uint32_t trace_packet(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
-                      uint32_t min_group, PacketHit& out, uint32_t& single) {
+uint32_t occludes_triangle(const RayPacket& packet, const GroupRays& r, const float* t_max,
+                           const float* block, uint32_t count, uint32_t i, uint32_t lanes) {
+    using V = typename Ops::V;
+    const ScaledHits<Ops> s = scaled_hits<Ops>(r, block, count, i, lanes);
+    // scaled_distance_inside: the signed distance times |det| against the bounds times |det|.
+    const V abs_det = Ops::abs(s.det);
+    const V t_signed = Ops::select(Ops::lt(s.det, Ops::set1(0.0f)),
+                                   Ops::sub(Ops::set1(0.0f), s.t_scaled), s.t_scaled);
+    uint32_t occluded = s.inside & Ops::lt(Ops::mul(Ops::load(r.t_min), abs_det), t_signed) &
+                        Ops::lt(t_signed, Ops::mul(Ops::load(t_max), abs_det));
+    for (uint32_t m = s.on_edge; m != 0; m &= m - 1) {
+        // A ray through an edge or vertex: rare, so the scalar reference test.
+        const auto lane = static_cast<uint32_t>(std::countr_zero(m));
+        Vec3 p0, p1, p2;
+        block_triangle(block, count, i, p0, p1, p2);
+        if (triangle_occludes(WatertightRay(packet.ray(lane)), p0, p1, p2,
+                              {r.t_min[lane], t_max[lane]}))
+            occluded |= 1u << lane;
+    }
+    return occluded;
+}
+
+/// The any-hit loop (shadow rays): at an inner node the frustum test of all eight children,
+/// then each child the frustum keeps tested for the lanes still looking (Wald et al. 2001's
+/// active lanes): a child is entered only with the lanes whose own slab test keeps its box,
+/// and skipped when there are none. Shadow rays from a row of surface points do not share an
+/// origin, and their frustum alone keeps dozens of leaves near the surface that no single ray
+/// enters (0.2-0.3 lanes per leaf visit on the bunny and bumpy1m). A lane that meets a
+/// triangle is done; children are taken in slot order. Returns the lanes of `group` that met
+/// a triangle. Every lane's answer is its own any-hit answer: a box is skipped for a lane only
+/// when that lane's single-ray test would skip it, and which triangle answers does not matter.
+template <typename Ops>
+uint32_t traverse_any(const WideBvh& bvh, const RayPacket& packet, uint32_t group, int axes) {
+    GroupRays r;
+    prepare<Ops>(packet, group, axes, r);
+    const WideBvhNode* nodes = bvh.nodes.data();
+    const float* triangle_data = bvh.triangle_data.data();
+    const float t_lo = Ops::reduce_min(group, Ops::load(r.t_min));
+    const float t_hi = Ops::reduce_max(group, Ops::load(packet.t_max));
+
+    struct StackEntry {
+        uint32_t ref;
+        uint32_t lanes;  ///< the lanes whose slab test keeps its box
+    };
+    constexpr uint32_t k_stack_size = (k_wide_bvh_width - 1) * k_bvh_max_depth + 1;
+    std::array<StackEntry, k_stack_size> stack;
+    uint32_t stack_size = 0;
+    alignas(32) std::array<float, k_wide_bvh_width> entry;
+
+    uint32_t open = group;  // lanes that have met no triangle yet
+    StackEntry current{bvh.root, group};
+    for (;;) {
+        const uint32_t lanes = current.lanes & open;
+        if (lanes == 0) {
+            // every lane that entered this box has met a triangle since it was pushed
+        } else if (!WideBvhRef::is_leaf(current.ref)) {
+            /* inner node: the frustum against eight boxes, then each kept child per lane */
+            const WideBvhNode& node = nodes[current.ref];
+            uint32_t mask = Ops::test_frustum(node, r.frustum, t_lo, t_hi, entry.data());
+            std::array<StackEntry, k_wide_bvh_width> children;
+            uint32_t n = 0, entered = 0;
+            for (; mask != 0; mask &= mask - 1) {
+                const auto i = static_cast<uint32_t>(std::countr_zero(mask));
+                const uint32_t child_lanes = test_box_lanes<Ops>(node, i, r, packet.t_max, lanes);
+                if (child_lanes == 0) continue;
+                children[n++] = {node.child[i], child_lanes};
+                entered |= 1u << i;
+            }
+            prefetch_children(bvh, node, entered);
+            if (n != 0) {
+                for (uint32_t k = n - 1; k > 0; --k) stack[stack_size++] = children[k];
+                current = children[0];
+                continue;
+            }
+        } else {
+            /* leaf: its triangles against the lanes that entered its box */
+            const uint32_t first = WideBvhRef::leaf_first(current.ref);
+            const uint32_t count = WideBvhRef::leaf_count(current.ref);
+            const float* block = triangle_data + 9 * size_t(first);
+            uint32_t testing = lanes;
+            for (uint32_t i = 0; i < count && testing != 0; ++i) {
+                const uint32_t hit =
+                    occludes_triangle<Ops>(packet, r, packet.t_max, block, count, i, testing);
+                testing &= ~hit;
+                open &= ~hit;
+            }
+            if (open == 0) return group;
+        }
+        if (stack_size == 0) return group & ~open;
+        current = stack[--stack_size];
+    }
+}
+
+/// Sorts the lanes `active` of `packet` into groups of alike rays (one direction octant and
+/// one watertight permutation) and calls trace(group, axes) for each group of at least
+/// `min_group` lanes; `single` gets the lanes the caller must trace with the single-ray kernel
+/// instead (small groups, rays whose 1 / direction may overflow, odd intervals).
+template <typename Ops, typename Trace>
+void for_each_group(const RayPacket& packet, uint32_t active, uint32_t min_group, uint32_t& single,
+                    const Trace& trace) {
     using V = typename Ops::V;
     /* per lane: may it go in a packet, its direction's signs and its dominant axis */
     uint32_t ok = active & Ops::eq(Ops::load(packet.t_min), Ops::load(packet.t_min)) &
@@ -341,7 +470,6 @@ uint32_t trace_packet(const WideBvh& bvh, const RayPacket& packet, uint32_t acti
     const std::array<uint32_t, 5> traits = {negative[0], negative[1], negative[2], kz0, kz1};
     single = active & ~ok;
 
-    uint32_t found = 0;
     while (ok != 0) {
         /* the group of the first remaining lane: the lanes agreeing with it on every trait */
         const uint32_t lead = ok & -ok;
@@ -353,7 +481,20 @@ uint32_t trace_packet(const WideBvh& bvh, const RayPacket& packet, uint32_t acti
             continue;
         }
         const int kz = (kz0 & lead) ? 0 : (kz1 & lead) ? 1 : 2;
-        const int axes = kz + ((negative[kz] & lead) ? 3 : 0);
+        trace(group, kz + ((negative[kz] & lead) ? 3 : 0));
+    }
+}
+
+/// Traces the lanes `active` of `packet`: sorts them into groups of one direction octant and
+/// one watertight permutation and traces each group of at least `min_group` lanes as a packet.
+/// Fills the lanes of `out` that hit and returns them; `single` gets the lanes the caller must
+/// trace with the single-ray kernel instead (small groups, rays whose 1 / direction may
+/// overflow, odd intervals, and ties).
+template <typename Ops>
+uint32_t trace_packet(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
+                      uint32_t min_group, PacketHit& out, uint32_t& single) {
+    uint32_t found = 0, ties = 0;
+    for_each_group<Ops>(packet, active, min_group, single, [&](uint32_t group, int axes) {
         GroupHits h;
         traverse<Ops>(bvh, packet, group, axes, h);
         for (uint32_t m = h.found; m != 0; m &= m - 1) {
@@ -364,9 +505,22 @@ uint32_t trace_packet(const WideBvh& bvh, const RayPacket& packet, uint32_t acti
         found |= h.found;
         // Two triangles at exactly the nearest t: the single-ray kernel reports the first in
         // its own visiting order, so it must answer.
-        single |= h.ties;
-    }
+        ties |= h.ties;
+    });
+    single |= ties;
     return found & ~single;
+}
+
+/// The any-hit form of trace_packet: the lanes of `active` whose ray meets a triangle inside
+/// its interval; `single` as for trace_packet (no ties: any triangle answers).
+template <typename Ops>
+uint32_t trace_packet_any(const WideBvh& bvh, const RayPacket& packet, uint32_t active,
+                          uint32_t min_group, uint32_t& single) {
+    uint32_t occluded = 0;
+    for_each_group<Ops>(packet, active, min_group, single, [&](uint32_t group, int axes) {
+        occluded |= traverse_any<Ops>(bvh, packet, group, axes);
+    });
+    return occluded;
 }
 
 }  // namespace
