@@ -118,14 +118,6 @@ struct LeafHit {
     uint32_t slot = 0;  ///< triangle slot (index into WideBvh::triangle_ids)
 };
 
-/// Triangle i of a leaf block with `count` triangles.
-inline void load_triangle(const float* block, uint32_t count, uint32_t i, Vec3& p0, Vec3& p1,
-                          Vec3& p2) {
-    p0 = {block[0 * count + i], block[1 * count + i], block[2 * count + i]};
-    p1 = {block[3 * count + i], block[4 * count + i], block[5 * count + i]};
-    p2 = {block[6 * count + i], block[7 * count + i], block[8 * count + i]};
-}
-
 /// The reference leaf test: one watertight test per triangle, in slot order; the SIMD kernels
 /// fall back to it when an edge function is exactly zero (a ray through an edge or vertex).
 template <bool k_any_hit>
@@ -135,7 +127,7 @@ bool test_leaf_scalar(const LeafRay& ray, const float* block, uint32_t count, ui
     const WatertightRay watertight = ray.watertight();
     for (uint32_t i = begin; i < end; ++i) {
         Vec3 p0, p1, p2;
-        load_triangle(block, count, i, p0, p1, p2);
+        load_leaf_triangle(block, count, i, p0, p1, p2);
         if constexpr (k_any_hit) {
             if (triangle_occludes(watertight, p0, p1, p2, valid)) return true;
         } else if (const auto h = intersect_triangle(watertight, p0, p1, p2, valid)) {

@@ -186,15 +186,6 @@ template <typename Ops>
     return {e1, e2, det, t_scaled, inside, on_edge};
 }
 
-/// Triangle i of a leaf block, its vertices as the reference tests take them.
-inline void block_triangle(const float* block, uint32_t count, uint32_t i, Vec3& p0, Vec3& p1,
-                           Vec3& p2) {
-    const auto vertex = [&](int v, int axis) { return block[(3 * v + axis) * count + i]; };
-    p0 = {vertex(0, 0), vertex(0, 1), vertex(0, 2)};
-    p1 = {vertex(1, 0), vertex(1, 1), vertex(1, 2)};
-    p2 = {vertex(2, 0), vertex(2, 1), vertex(2, 2)};
-}
-
 /// Woop et al. 2013 for one triangle against the lanes in `lanes` (scaled_hits, then the
 /// division); lanes where an edge function is exactly zero take the reference test (its exact
 /// fallback, Sec 4). Updates the nearest hits: t, u, v in `near` (registers, while a leaf is
@@ -224,7 +215,7 @@ uint32_t test_triangle(const RayPacket& packet, const GroupRays& r, const float*
         // A ray through an edge or vertex: rare, so the scalar reference test.
         const auto lane = static_cast<uint32_t>(std::countr_zero(m));
         Vec3 p0, p1, p2;
-        block_triangle(block, count, i, p0, p1, p2);
+        load_leaf_triangle(block, count, i, p0, p1, p2);
         const auto hit = intersect_triangle(WatertightRay(packet.ray(lane)), p0, p1, p2,
                                             {r.t_min[lane], k_infinity});
         if (!hit) continue;
@@ -363,7 +354,7 @@ uint32_t occludes_triangle(const RayPacket& packet, const GroupRays& r, const fl
         // A ray through an edge or vertex: rare, so the scalar reference test.
         const auto lane = static_cast<uint32_t>(std::countr_zero(m));
         Vec3 p0, p1, p2;
-        block_triangle(block, count, i, p0, p1, p2);
+        load_leaf_triangle(block, count, i, p0, p1, p2);
         if (triangle_occludes(WatertightRay(packet.ray(lane)), p0, p1, p2,
                               {r.t_min[lane], t_max[lane]}))
             occluded |= 1u << lane;
