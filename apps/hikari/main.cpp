@@ -25,7 +25,7 @@
 #include "hikari/io/image_format.h"
 #include "hikari/io/image_write.h"
 #include "hikari/io/scene_json.h"
-#include "hikari/render/methods.h"
+#include "hikari/methods/registry.h"
 #include "hikari/version.h"
 
 namespace {

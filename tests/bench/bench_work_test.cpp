@@ -5,9 +5,9 @@
 #include <array>
 #include <bit>
 
-#include "../ray/test_meshes.h"
+#include "../bvh/test_meshes.h"
 #include "hikari/bench/bench_runner.h"
-#include "hikari/ray/wide_bvh_builder.h"
+#include "hikari/bvh/wide_bvh_builder.h"
 
 namespace hikari {
 namespace {

@@ -2,9 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include "hikari/integrators/whitted/whitted.h"
 #include "hikari/raster/vertex_pipeline.h"
 #include "hikari/raster/zbuffer.h"
-#include "hikari/ray/whitted.h"
 #include "raster_test_util.h"
 
 namespace hikari {

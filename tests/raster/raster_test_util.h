@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "hikari/frame/framebuffer.h"
 #include "hikari/io/scene_json.h"
-#include "hikari/render/framebuffer.h"
 
 namespace hikari::testing {
 

@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "hikari/integrators/whitted/whitted.h"
 #include "hikari/raster/zbuffer.h"
-#include "hikari/ray/whitted.h"
 #include "raster_test_util.h"
 
 namespace hikari {

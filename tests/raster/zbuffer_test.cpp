@@ -5,7 +5,7 @@
 #include <tbb/global_control.h>
 
 #include "hikari/core/rng.h"
-#include "hikari/ray/whitted.h"
+#include "hikari/integrators/whitted/whitted.h"
 #include "raster_test_util.h"
 
 namespace hikari {

@@ -12,9 +12,9 @@
 #include <stdexcept>
 #include <thread>
 
-#include "hikari/ray/wide_bvh_builder.h"
-#include "hikari/ray/wide_bvh_packet.h"
-#include "hikari/ray/wide_bvh_traversal.h"
+#include "hikari/bvh/wide_bvh_builder.h"
+#include "hikari/bvh/wide_bvh_packet.h"
+#include "hikari/bvh/wide_bvh_traversal.h"
 
 namespace hikari {
 namespace {

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "hikari/bench/bench_work.h"
+#include "hikari/bvh/wide_bvh.h"
 #include "hikari/core/simd_level.h"
-#include "hikari/ray/wide_bvh.h"
 
 namespace hikari {
 

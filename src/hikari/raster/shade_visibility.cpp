@@ -2,8 +2,8 @@
 
 #include <cmath>
 
+#include "hikari/frame/tiles.h"
 #include "hikari/raster/cull.h"
-#include "hikari/render/tiles.h"
 #include "hikari/shading/phong.h"
 
 namespace hikari {

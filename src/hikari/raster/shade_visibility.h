@@ -5,10 +5,10 @@
 
 #include <span>
 
+#include "hikari/frame/framebuffer.h"
+#include "hikari/frame/render_settings.h"
 #include "hikari/raster/screen_triangle.h"
 #include "hikari/raster/vertex_pipeline.h"
-#include "hikari/render/framebuffer.h"
-#include "hikari/render/render_settings.h"
 #include "hikari/scene/scene.h"
 
 namespace hikari {

@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "hikari/core/mat4.h"
+#include "hikari/frame/render_settings.h"
 #include "hikari/raster/raster_scene.h"
 #include "hikari/raster/screen_triangle.h"
-#include "hikari/render/render_settings.h"
 #include "hikari/scene/scene.h"
 
 namespace hikari {

@@ -4,10 +4,10 @@
 
 #include "hikari/core/parallel.h"
 #include "hikari/core/ray.h"
+#include "hikari/frame/tiles.h"
 #include "hikari/raster/half_space.h"
 #include "hikari/raster/shade_visibility.h"
 #include "hikari/raster/vertex_pipeline.h"
-#include "hikari/render/tiles.h"
 
 namespace hikari {
 

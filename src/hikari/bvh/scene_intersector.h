@@ -1,0 +1,64 @@
+#pragma once
+// Nearest-hit and shadow-ray queries against a whole scene: spheres and planes tested
+// directly, triangles through the wide
+// (8-child, SIMD) BVH. Built once per render, read by all threads.
+
+#include "hikari/bvh/bvh_traversal.h"
+#include "hikari/bvh/wide_bvh.h"
+#include "hikari/bvh/wide_bvh_packet.h"
+#include "hikari/core/ray.h"
+#include "hikari/scene/scene.h"
+
+namespace hikari {
+
+/// Where a ray meets a surface, with what the shading of that point needs.
+struct SurfaceHit {
+    float t = k_infinity;   ///< distance along the ray
+    Vec3 position;          ///< world space
+    Vec3 geometric_normal;  ///< unit, as the primitive defines it (not flipped)
+    Vec3 shading_normal;    ///< unit, interpolated for meshes; same side as geometric
+    uint32_t material = 0;  ///< index into Scene::materials
+    PrimitiveId id = 0;     ///< the primitive hit
+};
+
+/// Which kind of primitive a nearest-hit search found.
+enum class HitKind : uint8_t { none, triangle, sphere, plane };
+
+class SceneIntersector {
+  public:
+    /// Prepares acceleration structures for `scene`, which must outlive this object.
+    explicit SceneIntersector(const Scene& scene);
+
+    /// The nearest hit of `ray` inside `range`, if any (the lecture's 可視点, Alg 4.3).
+    bool closest(const Ray& ray, Interval range, SurfaceHit& hit) const;
+    /// Whether anything that casts shadows blocks `ray` inside `range` (shadow rays stop at the
+    /// first blocker; objects with casts_shadow false are ignored).
+    bool occluded(const Ray& ray, Interval range) const;
+
+    /// Whether a shadow-casting triangle blocks `ray` inside `range` (occluded's first part).
+    bool occluded_by_triangles(const Ray& ray, Interval range) const;
+    /// occluded_by_triangles for the lanes `active` of a packet, each with its own interval:
+    /// the mask of blocked lanes, each lane's answer exactly the single ray's (wide_bvh_packet.h).
+    uint32_t occluded_by_triangles(const RayPacket& packet, uint32_t active) const;
+
+    /// Fills `hit` for the nearest hit of `ray` found at distance `t` on primitive `index` of
+    /// kind `kind` (Scene::spheres or Scene::planes; for triangles, `triangle` says which and
+    /// where). What closest() does once it knows the nearest hit, for callers that searched
+    /// another way (e.g. the bulk camera-ray front end, integrators/whitted/primary_hits.h).
+    void describe_hit(const Ray& ray, float t, HitKind kind, size_t index,
+                      const TriangleHit& triangle, SurfaceHit& hit) const;
+
+    /// The wide BVH over the scene's triangles.
+    const WideBvh& bvh() const { return m_bvh; }
+    /// Wall time the BVH build took, in milliseconds.
+    double build_ms() const { return m_build_ms; }
+
+  private:
+    const Scene& m_scene;
+    WideBvh m_bvh;
+    WideBvh m_shadow_bvh;    ///< the shadow-casting triangles, when some do not cast
+    bool m_all_cast = true;  ///< every triangle casts: shadow rays use m_bvh
+    double m_build_ms = 0;
+};
+
+}  // namespace hikari

@@ -1,0 +1,30 @@
+#pragma once
+// Shooting single rays through the wide BVH: nearest hit (camera, reflection, refraction rays)
+// and any hit (shadow rays). Each query runs the kernel of the best SIMD level the CPU has;
+// every level returns bit-identical answers, equal to testing every triangle with
+// intersect_triangle (watertight, Woop et al. 2013).
+
+#include "hikari/bvh/bvh_traversal.h"
+#include "hikari/bvh/wide_bvh.h"
+#include "hikari/core/ray.h"
+#include "hikari/core/simd_level.h"
+
+namespace hikari {
+
+/// Finds the nearest triangle hit by `ray` with t inside the open interval `valid`, using the
+/// CPU's best SIMD level. Returns false (and leaves `hit` alone) when there is none. Of several
+/// triangles at exactly the same distance, one is reported (the same one at every level).
+bool intersect_closest(const WideBvh& bvh, const Ray& ray, Interval valid, TriangleHit& hit);
+
+/// True when `ray` hits any triangle with t inside the open interval `valid`.
+bool intersect_any(const WideBvh& bvh, const Ray& ray, Interval valid);
+
+/// intersect_closest with an explicit SIMD level (tests compare the levels; `level` must be
+/// supported by this CPU, see simd_level_supported).
+bool intersect_closest(const WideBvh& bvh, const Ray& ray, Interval valid, TriangleHit& hit,
+                       SimdLevel level);
+
+/// intersect_any with an explicit SIMD level.
+bool intersect_any(const WideBvh& bvh, const Ray& ray, Interval valid, SimdLevel level);
+
+}  // namespace hikari

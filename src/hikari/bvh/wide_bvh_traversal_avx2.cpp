@@ -1,0 +1,37 @@
+// The wide-BVH kernel compiled for AVX2 (chosen at run time by wide_bvh_traversal.cpp).
+// Everything the kernel includes comes first, compiled for the baseline; the kernel itself
+// follows the target pragma and has internal linkage, so no AVX2 code leaks into shared
+// inline functions.
+#include <immintrin.h>
+
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "hikari/bvh/bvh_traversal.h"
+#include "hikari/bvh/wide_bvh.h"
+#include "hikari/core/ray.h"
+#include "hikari/core/simd_level.h"
+#include "hikari/geometry/triangle_intersect.h"
+
+#if HIKARI_SIMD_KERNELS
+#pragma GCC target("avx2,popcnt,bmi,bmi2,lzcnt")
+#include "hikari/bvh/wide_bvh_simd8.h"
+
+namespace hikari::detail {
+
+bool wide_closest_avx2(const WideBvh& bvh, const Ray& ray, Interval valid, TriangleHit& hit) {
+    wide_kernel::LeafHit h;
+    if (!wide_kernel::traverse<wide_kernel::Simd8Ops>(bvh, ray, valid, h)) return false;
+    hit = wide_kernel::to_triangle_hit(bvh, h);
+    return true;
+}
+
+bool wide_any_avx2(const WideBvh& bvh, const Ray& ray, Interval valid) {
+    return wide_kernel::occluded<wide_kernel::Simd8Ops>(bvh, ray, valid);
+}
+
+}  // namespace hikari::detail
+#endif
