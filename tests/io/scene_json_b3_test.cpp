@@ -4,6 +4,8 @@
 
 #include "hikari/core/error.h"
 #include "hikari/io/scene_json.h"
+#include "hikari/shading/lights.h"
+#include "hikari/shading/textures/checker_texture.h"
 #include "scene_test_util.h"
 
 namespace hikari {
@@ -17,13 +19,18 @@ TEST(SceneJsonB3, CheckerTextureParsesAndAlternates) {
         {"type": "checker", "size": 2, "color_a": [1, 0, 0], "color_b": 0.5, "offset": [0, 0.5, 0]}}},
         "objects": []})");
     ASSERT_TRUE(s.materials[0].texture.has_value());
-    const CheckerTexture& t = *s.materials[0].texture;
+    const auto& t = std::get<CheckerTexture>(*s.materials[0].texture);
     EXPECT_EQ(t.size, 2.0f);
-    EXPECT_EQ(t.at({0.5f, 0, 0.5f}), Vec3(1, 0, 0));
-    EXPECT_EQ(t.at({2.5f, 0, 0.5f}), Vec3(0.5f));
-    EXPECT_EQ(t.at({-0.5f, 0, 0.5f}), Vec3(0.5f));
-    EXPECT_EQ(t.at({-0.5f, 0, -0.5f}), Vec3(1, 0, 0));
-    EXPECT_EQ(t.at({0.5f, -1e-7f, 0.5f}), Vec3(1, 0, 0));  // the offset keeps y = 0 in one cell
+    const auto at = [&](Vec3 p) {
+        SurfacePoint<float> point;
+        point.position = p;
+        return texture_colour(t, point);
+    };
+    EXPECT_EQ(at({0.5f, 0, 0.5f}), Vec3(1, 0, 0));
+    EXPECT_EQ(at({2.5f, 0, 0.5f}), Vec3(0.5f));
+    EXPECT_EQ(at({-0.5f, 0, 0.5f}), Vec3(0.5f));
+    EXPECT_EQ(at({-0.5f, 0, -0.5f}), Vec3(1, 0, 0));
+    EXPECT_EQ(at({0.5f, -1e-7f, 0.5f}), Vec3(1, 0, 0));  // the offset keeps y = 0 in one cell
 }
 
 TEST(SceneJsonB3, GradientSkyBlendsByDirection) {
@@ -53,7 +60,7 @@ TEST(SceneJsonB3, CastsShadowAndFalloff) {
     EXPECT_TRUE(s.planes[0].casts_shadow);
     ASSERT_EQ(s.triangles.casts_shadow.size(), 1u);
     EXPECT_EQ(s.triangles.casts_shadow[0], 0);
-    EXPECT_EQ(sample_light(s.lights[0], {0, 5, 0}).irradiance, Vec3(1));
+    EXPECT_EQ(sample_light<float>(s.lights[0], Vec3(0, 5, 0)).irradiance, Vec3(1));
 }
 
 TEST(SceneJsonB3, BadAdditionsNameTheirJsonPath) {

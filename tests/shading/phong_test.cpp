@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include "hikari/shading/direct.h"
+#include "hikari/shading/material_eval.h"
+
 namespace hikari {
 namespace {
 
@@ -16,8 +19,29 @@ Material clay() {
     return m;
 }
 
+/// The light reflected toward `v` from one light arriving from direction `l` with irradiance
+/// `irradiance` at a surface of normal `n`, through shading/direct.h (no ambient light).
+Vec3 shade_direct(const Material& m, Vec3 n, Vec3 l, Vec3 v, Vec3 irradiance) {
+    const Light light = DirectionalLight{-l, irradiance};
+    SurfacePoint<float> s;
+    s.normal = s.geometric_normal = n;
+    s.to_eye = v;
+    const MaterialSample<float> sample = evaluate_material<float>(&m, 0, s);
+    const auto lit = [](size_t, const LightSample&, const SurfacePoint<float>&, bool) {
+        return true;
+    };
+    return direct_lighting<float>({&light, 1, Vec3(0.0f)}, s, sample, true, lit).colour;
+}
+
 TEST(Phong, AmbientIsKaTimesIa) {
-    const Vec3 c = shade_ambient(clay(), Vec3(0.1f));
+    const Material m = clay();
+    const SurfacePoint<float> s;
+    const auto lit = [](size_t, const LightSample&, const SurfacePoint<float>&, bool) {
+        return true;
+    };
+    const Vec3 c = direct_lighting<float>({nullptr, 0, Vec3(0.1f)}, s,
+                                          evaluate_material<float>(&m, 0, s), true, lit)
+                       .colour;
     EXPECT_FLOAT_EQ(c.x, 0.08f);
     EXPECT_FLOAT_EQ(c.y, 0.03f);
     EXPECT_FLOAT_EQ(c.z, 0.02f);
@@ -86,12 +110,6 @@ TEST(Phong, PowerMatchesPowWithinNTimesFloatEpsilon) {
             EXPECT_NEAR(phong_power(c, n), want, (n + 2.0) * 1.2e-7 * want + 1e-38)
                 << c << "^" << n;
         }
-}
-
-TEST(CheckerTexture, FloorIntIsFloor) {
-    for (float v : {-2.5f, -2.0f, -1e-7f, -0.0f, 0.0f, 1e-7f, 0.999999f, 1.0f, 3.5f, -16777217.0f,
-                    16777216.0f, 1e12f, -1e12f})
-        EXPECT_EQ(CheckerTexture::floor_int(v), static_cast<long long>(std::floor(v))) << v;
 }
 
 }  // namespace

@@ -14,6 +14,9 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "hikari/core/lanes.h"
+#include "hikari/core/vec.h"
+
 namespace hikari {
 
 /// Edge of the largest block of camera rays traced at once, in pixels.
@@ -26,8 +29,9 @@ inline constexpr int k_lane_chunk = 16;
 constexpr int lanes_for(int count) {
     return (count + k_lane_chunk - 1) / k_lane_chunk * k_lane_chunk;
 }
-/// The most lights whose shadow rays a block traces (one bit each in LaneChunk::lit).
-inline constexpr size_t k_max_block_lights = 8;
+/// The most lights whose shadow rays a block traces (one bit each in LaneChunk::lit); with
+/// more, the Whitted tracer shades the block's hits with the one-ray code.
+inline constexpr size_t k_max_block_lights = 32;
 
 namespace detail {
 
@@ -62,11 +66,9 @@ struct alignas(64) LaneChunk {
     int32_t blocked[k_lane_chunk];            ///< 1 where a casting sphere or plane blocks
 
     // Shading's results (integrators/whitted/whitted_shade.h).
-    float colour[3][k_lane_chunk];          ///< local illumination (ambient + lit lights)
-    int32_t shadow_rays[k_lane_chunk];      ///< lights facing the point (shadow rays cast)
-    int32_t scalar_specular[k_lane_chunk];  ///< 1: colour must be recomputed by the scalar code
-    float normal[3][k_lane_chunk];          ///< shading normal turned toward the ray
-    float facing_normal[3][k_lane_chunk];   ///< geometric normal turned toward the ray
+    float colour[3][k_lane_chunk];      ///< local illumination (ambient + lit lights), or sky
+    int32_t shadow_rays[k_lane_chunk];  ///< lights facing the point (shadow rays cast)
+    int32_t scalar_only[k_lane_chunk];  ///< 1: colour must be recomputed by the one-ray code
     /// Only with spawning: weight of the mirror and refracted rays (0: no such ray) and the rays.
     float mirror_weight[k_lane_chunk];
     float refract_weight[k_lane_chunk];
@@ -75,25 +77,6 @@ struct alignas(64) LaneChunk {
     float refract_origin[3][k_lane_chunk];
     float refract_direction[3][k_lane_chunk];
     int32_t children[k_lane_chunk];  ///< secondary rays the lane spawns (0, 1 or 2)
-
-    // Shading's scratch between its loops: each lane's material, then what shading it needs.
-    float ka[3][k_lane_chunk];
-    float kd[3][k_lane_chunk];
-    float ks[3][k_lane_chunk];
-    float offset[3][k_lane_chunk];
-    float color_a[3][k_lane_chunk];
-    float color_b[3][k_lane_chunk];
-    float inverse_size[k_lane_chunk];
-    float reflectivity[k_lane_chunk];
-    float transparency[k_lane_chunk];
-    float ior[k_lane_chunk];
-    int32_t textured[k_lane_chunk];
-    int32_t exponent[k_lane_chunk];
-    float to_light[3][k_lane_chunk];
-    float irradiance[3][k_lane_chunk];
-    float cos_gamma[k_lane_chunk];
-    float power[k_lane_chunk];
-    int32_t entering[k_lane_chunk];
 };
 
 /// A block's lanes: lane k is entry k % k_lane_chunk of chunk k / k_lane_chunk.
@@ -112,6 +95,19 @@ inline bool any_active(const LaneChunk& chunk) {
     int32_t any = 0;
     for (const int32_t active : chunk.active) any |= active;
     return any != 0;
+}
+
+/// Three lane arrays (x, y, z) as a vector of packs.
+template <class Isa>
+HIKARI_INLINE Vec3T<LaneFloat<Isa>> load_lanes(const float (&a)[3][k_lane_chunk]) {
+    static_assert(k_lanes == k_lane_chunk);
+    return {LaneFloat<Isa>::load(a[0]), LaneFloat<Isa>::load(a[1]), LaneFloat<Isa>::load(a[2])};
+}
+
+/// A vector of packs into three lane arrays.
+template <class Isa>
+HIKARI_INLINE void store_lanes(const Vec3T<LaneFloat<Isa>>& v, float (&a)[3][k_lane_chunk]) {
+    v.x.store(a[0]), v.y.store(a[1]), v.z.store(a[2]);
 }
 
 }  // namespace detail

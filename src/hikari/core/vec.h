@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
+
+#include "hikari/core/lanes.h"
 
 namespace hikari {
 
@@ -12,35 +15,78 @@ struct Vec2 {
     float x = 0, y = 0;
 };
 
-/// A 3-vector of floats: a point, a direction, a normal or a linear RGB colour.
-struct Vec3 {
-    float x = 0, y = 0, z = 0;
+/// A 3-vector: a point, a direction, a normal or a linear RGB colour. `F` is the number type:
+/// float for one point (`Vec3`), or a pack of SIMD lanes (core/lanes.h) for many points at once,
+/// so that shading code written once over `F` serves both (as Mitsuba 3 templates on `Float`).
+template <class F>
+struct Vec3T {
+    F x = F(), y = F(), z = F();  ///< zero for float; packs stay unset until assigned
 
-    constexpr Vec3() = default;
-    constexpr Vec3(float x_, float y_, float z_) : x(x_), y(y_), z(z_) {}
+    constexpr Vec3T() = default;
+    HIKARI_INLINE constexpr Vec3T(F x_, F y_, F z_) : x(x_), y(y_), z(z_) {}
     /// A vector with all three components equal to `s`.
-    constexpr explicit Vec3(float s) : x(s), y(s), z(s) {}
+    HIKARI_INLINE constexpr explicit Vec3T(F s) : x(s), y(s), z(s) {}
+    /// Every lane of a pack holding the float vector `v` (or a copy, for F = float).
+    template <class G>
+    requires(!std::is_same_v<G, F>) HIKARI_INLINE constexpr explicit Vec3T(const Vec3T<G>& v)
+        : x(F(v.x)), y(F(v.y)), z(F(v.z)) {}
 
-    constexpr float operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
-    constexpr float& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
-
-    constexpr Vec3& operator+=(Vec3 b) { return *this = {x + b.x, y + b.y, z + b.z}; }
-    constexpr Vec3& operator-=(Vec3 b) { return *this = {x - b.x, y - b.y, z - b.z}; }
-    constexpr Vec3& operator*=(float s) { return *this = {x * s, y * s, z * s}; }
-    constexpr bool operator==(const Vec3&) const = default;
+    HIKARI_INLINE constexpr F operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
+    HIKARI_INLINE constexpr F& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
+    HIKARI_INLINE constexpr Vec3T& operator+=(const Vec3T& b) {
+        return *this = {x + b.x, y + b.y, z + b.z};
+    }
+    HIKARI_INLINE constexpr Vec3T& operator-=(const Vec3T& b) {
+        return *this = {x - b.x, y - b.y, z - b.z};
+    }
+    HIKARI_INLINE constexpr Vec3T& operator*=(F s) { return *this = {x * s, y * s, z * s}; }
+    constexpr bool operator==(const Vec3T&) const = default;
 };
 
-constexpr Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-constexpr Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-constexpr Vec3 operator-(Vec3 a) { return {-a.x, -a.y, -a.z}; }
-/// Component-wise product (colour times colour, or scaling per axis).
-constexpr Vec3 operator*(Vec3 a, Vec3 b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
-constexpr Vec3 operator*(Vec3 a, float s) { return {a.x * s, a.y * s, a.z * s}; }
-constexpr Vec3 operator*(float s, Vec3 a) { return a * s; }
-constexpr Vec3 operator/(Vec3 a, float s) { return a * (1.0f / s); }
-constexpr Vec3 operator/(Vec3 a, Vec3 b) { return {a.x / b.x, a.y / b.y, a.z / b.z}; }
+/// One point, direction, normal or colour.
+using Vec3 = Vec3T<float>;
 
-constexpr float dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+/// The scalar argument of a vector operation: not deduced, so `v * 2` and `0.5f * v` convert.
+template <class F>
+using ScalarOf = std::type_identity_t<F>;
+
+template <class F>
+HIKARI_INLINE constexpr Vec3T<F> operator+(const Vec3T<F>& a, const Vec3T<F>& b) {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+template <class F>
+HIKARI_INLINE constexpr Vec3T<F> operator-(const Vec3T<F>& a, const Vec3T<F>& b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+template <class F>
+HIKARI_INLINE constexpr Vec3T<F> operator-(const Vec3T<F>& a) {
+    return {-a.x, -a.y, -a.z};
+}
+/// Component-wise product (colour times colour, or scaling per axis).
+template <class F>
+HIKARI_INLINE constexpr Vec3T<F> operator*(const Vec3T<F>& a, const Vec3T<F>& b) {
+    return {a.x * b.x, a.y * b.y, a.z * b.z};
+}
+template <class F>
+HIKARI_INLINE constexpr Vec3T<F> operator*(const Vec3T<F>& a, ScalarOf<F> s) {
+    return {a.x * s, a.y * s, a.z * s};
+}
+template <class F>
+HIKARI_INLINE constexpr Vec3T<F> operator*(ScalarOf<F> s, const Vec3T<F>& a) {
+    return a * s;
+}
+template <class F>
+HIKARI_INLINE constexpr Vec3T<F> operator/(const Vec3T<F>& a, ScalarOf<F> s) {
+    return a * (F(1.0f) / s);
+}
+template <class F>
+HIKARI_INLINE constexpr Vec3T<F> operator/(const Vec3T<F>& a, const Vec3T<F>& b) {
+    return {a.x / b.x, a.y / b.y, a.z / b.z};
+}
+template <class F>
+HIKARI_INLINE constexpr F dot(const Vec3T<F>& a, const Vec3T<F>& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 constexpr Vec3 cross(Vec3 a, Vec3 b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
@@ -57,13 +103,23 @@ constexpr Vec3 max(Vec3 a, Vec3 b) {
 constexpr float max_component(Vec3 a) { return std::max(a.x, std::max(a.y, a.z)); }
 constexpr float min_component(Vec3 a) { return std::min(a.x, std::min(a.y, a.z)); }
 constexpr Vec3 lerp(Vec3 a, Vec3 b, float t) { return a * (1.0f - t) + b * t; }
+
 inline bool is_finite(Vec3 a) {
     return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
 }
 
+/// `a` where `m`, else `b`, per component (and per lane, for packs).
+template <class M, class F>
+HIKARI_INLINE Vec3T<F> select(const M& m, const Vec3T<F>& a, const Vec3T<F>& b) {
+    return {select(m, a.x, b.x), select(m, a.y, b.y), select(m, a.z, b.z)};
+}
+
 /// Mirror direction of `incident` (pointing toward the surface) about unit normal `n`:
 /// the lecture's R = L + 2aN with a = -L·N.
-constexpr Vec3 reflect(Vec3 incident, Vec3 n) { return incident + 2.0f * (-dot(incident, n)) * n; }
+template <class F>
+HIKARI_INLINE constexpr Vec3T<F> reflect(const Vec3T<F>& incident, const Vec3T<F>& n) {
+    return incident + F(2.0f) * (-dot(incident, n)) * n;
+}
 
 /// A 4-vector of floats: a point or direction in homogeneous coordinates.
 struct Vec4 {

@@ -4,7 +4,8 @@
 
 #include "hikari/frame/tiles.h"
 #include "hikari/raster/cull.h"
-#include "hikari/shading/phong.h"
+#include "hikari/shading/direct.h"
+#include "hikari/shading/material_eval.h"
 
 namespace hikari {
 
@@ -14,16 +15,23 @@ struct ShadeContext {
     const Scene& scene;
     const TriangleSet& tris;
     Interpolation interp;
+    LightingEnvironment lighting;
 };
 
-/// Ambient plus every light's Lambert and Phong terms at `p` (no shadows in the raster methods).
-Vec3 shade_point(const ShadeContext& ctx, const Material& m, Vec3 p, Vec3 n, Vec3 to_eye) {
-    Vec3 colour = shade_ambient(m, ctx.scene.ambient);
-    for (const Light& light : ctx.scene.lights) {
-        const LightSample ls = sample_light(light, p);
-        colour += shade_direct(m, n, ls.to_light, to_eye, ls.irradiance);
-    }
-    return colour;
+/// The material at `p` (its texture applied) lit by every light: the raster methods draw no
+/// shadows yet, so every light that faces the point reaches it.
+Vec3 shade_point(const ShadeContext& ctx, uint32_t material, Vec3 p, Vec3 n, Vec3 to_eye) {
+    SurfacePoint<float> s;
+    s.position = p;
+    s.normal = n;
+    s.geometric_normal = n;
+    s.to_eye = to_eye;
+    const MaterialSample<float> m =
+        evaluate_material<float>(ctx.scene.materials.data(), static_cast<int32_t>(material), s);
+    const auto lit = [](size_t, const LightSample&, const SurfacePoint<float>&, bool) {
+        return true;
+    };
+    return direct_lighting<float>(ctx.lighting, s, m, true, lit).colour;
 }
 
 /// `n` turned to the side of `ng_front` (the face normal facing the viewer), as the ray tracer
@@ -59,7 +67,10 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
                              const VisibilityBuffer& vis, const RenderSettings& settings) {
     const int width = vis.width, height = vis.height;
     Framebuffer fb(width, height, scene.background);
-    const ShadeContext ctx{scene, ps.scene.triangles, settings.interp};
+    const ShadeContext ctx{scene,
+                           ps.scene.triangles,
+                           settings.interp,
+                           {scene.lights.data(), scene.lights.size(), scene.ambient}};
     const CameraFrame frame = make_camera_frame(scene.camera);
     const Vec3 eye = scene.camera.eye;
 
@@ -92,7 +103,7 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
                 ng = ng_len > 0.0f ? ng / ng_len : -dir;
                 const bool entering = dot(ng, dir) < 0.0f;
                 const Vec3 ng_front = entering ? ng : -ng;
-                const Material& m = scene.materials[ctx.tris.material[src]];
+                const uint32_t m = ctx.tris.material[src];
 
                 Vec3 colour;
                 switch (ctx.interp) {

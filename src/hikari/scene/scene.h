@@ -54,12 +54,15 @@ struct Sky {
     Vec3 horizon{0.0f};     ///< colour for directions with y <= 0
     Vec3 zenith{0.0f};      ///< colour straight up; linear in between (POV-Ray's `gradient y`)
 
-    /// The colour seen along unit direction `dir`, or `background` without a gradient.
-    Vec3 colour(Vec3 dir, Vec3 background) const {
-        if (!gradient) return background;
-        const float t = dir.y < 0.0f ? 0.0f : (dir.y > 1.0f ? 1.0f : dir.y);
-        return horizon * (1.0f - t) + zenith * t;
+    /// The colour seen along unit direction `dir` (each lane's, for a pack), or `background`
+    /// without a gradient.
+    template <class F>
+    HIKARI_INLINE Vec3T<F> colour_toward(const Vec3T<F>& dir, Vec3 background) const {
+        if (!gradient) return Vec3T<F>(background);
+        const F t = select(dir.y < F(0.0f), F(0.0f), select(dir.y > F(1.0f), F(1.0f), dir.y));
+        return Vec3T<F>(horizon) * (F(1.0f) - t) + Vec3T<F>(zenith) * t;
     }
+    Vec3 colour(Vec3 dir, Vec3 background) const { return colour_toward<float>(dir, background); }
 };
 
 /// A whole scene: camera, lights, materials and geometry.

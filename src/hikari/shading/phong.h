@@ -1,59 +1,82 @@
 #pragma once
 // The lecture's one shading model (Fig 4.29), written once and used by every method:
 //   colour = ka Ia + Σ_lights I (kd max(0, N·L) + ks max(0, R·V)^n)
-// with R = L_in + 2aN, a = −L_in·N, where L_in is the light's direction of travel.
+// with R = L_in + 2aN, a = −L_in·N, where L_in is the light's direction of travel. Generic over
+// the number type (core/lanes.h): one point, or each lane of a pack.
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 
+#include "hikari/core/lanes.h"
 #include "hikari/core/vec.h"
-#include "hikari/scene/material.h"
+#include "hikari/shading/light_sample.h"
+#include "hikari/shading/material_sample.h"
+#include "hikari/shading/surface.h"
 
 namespace hikari {
 
-/// The ambient term ka·Ia ("環境光": light bounced so often it lights everything evenly).
-inline Vec3 shade_ambient(const Material& m, Vec3 ambient_intensity) {
-    return m.ka * ambient_intensity;
-}
-
 /// The largest Phong exponent phong_power raises by repeated squaring.
 inline constexpr int32_t k_max_integer_exponent = 1024;
+/// Squaring steps of phong_power for any exponent up to k_max_integer_exponent.
+inline constexpr int k_exponent_bits =
+    std::bit_width(static_cast<unsigned>(k_max_integer_exponent));
 
 /// The Phong exponent n as the integer phong_power raises by repeated squaring (n an integer in
 /// [0, k_max_integer_exponent]), or -1 where it calls std::pow instead.
-inline int32_t phong_integer_exponent(float n) {
+HIKARI_INLINE int32_t phong_integer_exponent(float n) {
     if (!(n >= 0.0f && n <= static_cast<float>(k_max_integer_exponent)) ||
         n != static_cast<float>(static_cast<unsigned>(n)))
         return -1;
     return static_cast<int32_t>(n);
 }
 
-/// cos^n for the Phong highlight. Integer exponents up to 1024 (the usual case) by repeated
-/// squaring, much cheaper than pow(): each squaring doubles the relative rounding error, so the
-/// result is within about n·2^-24 relative (1e-5 for n = 200, far below 8-bit output steps).
-/// Other exponents go through std::pow.
-inline float phong_power(float cos_gamma, float n) {
-    const int32_t exponent = phong_integer_exponent(n);
-    if (exponent < 0) return std::pow(cos_gamma, n);
-    float result = 1.0f, base = cos_gamma;
-    for (auto e = static_cast<unsigned>(exponent); e != 0; e >>= 1, base *= base)
-        if (e & 1u) result *= base;
-    return result;
+/// cos^n for the Phong highlight, n = `exponent` (phong_integer_exponent of `shininess`).
+/// Integer exponents up to 1024 (the usual case) by repeated squaring, much cheaper than pow():
+/// each squaring doubles the relative rounding error, so the result is within about n·2^-24
+/// relative (1e-5 for n = 200, far below 8-bit output steps). Always all k_exponent_bits steps:
+/// past the top bit they leave the power as it is, and a constant count keeps lanes in step.
+/// Other exponents go through std::pow, which has no lane form: a pack's lanes with exponent -1
+/// are shaded by the scalar code instead (MaterialSample::scalar_only).
+template <class F>
+HIKARI_INLINE F phong_power(F cos_gamma, IntOf<F> exponent, F shininess) {
+    if constexpr (k_is_scalar<F>)
+        if (exponent < 0) return std::pow(cos_gamma, shininess);
+    F power = F(1.0f), squared = cos_gamma;
+    for (int b = 0; b < k_exponent_bits; ++b) {
+        power = select(((exponent >> b) & IntOf<F>(1)) != IntOf<F>(0), power * squared, power);
+        squared = squared * squared;
+    }
+    return power;
 }
 
-/// Light from one source reflected toward the eye: Lambert diffuse I0 kd cos α plus Phong
-/// specular I0 ks cos^n γ. All vectors are unit length and world space: `n` the surface normal
-/// facing the viewer, `to_light` (L) from the point toward the light, `to_eye` (V) from the point
-/// toward the eye; `irradiance` is I0 at the point (after 1/d² falloff). There is no specular
-/// where N·L ≤ 0: light arriving from behind the surface cannot make a highlight.
-inline Vec3 shade_direct(const Material& m, Vec3 n, Vec3 to_light, Vec3 to_eye, Vec3 irradiance) {
-    const float cos_alpha = dot(n, to_light);
-    if (cos_alpha <= 0.0f) return Vec3(0.0f);
+/// phong_power for a float exponent n.
+HIKARI_INLINE float phong_power(float cos_gamma, float n) {
+    return phong_power<float>(cos_gamma, phong_integer_exponent(n), n);
+}
+
+/// The specular factor max(0, R·V)^n, R the mirror direction of the light about the normal.
+template <class F>
+HIKARI_INLINE F phong_specular(const MaterialSample<F>& m, const SurfacePoint<F>& s,
+                               const Vec3T<F>& to_light) {
     // R = L_in + 2aN with L_in = −L and a = −L_in·N = N·L: the mirror direction of the light.
-    const Vec3 r = reflect(-to_light, n);
-    const float cos_gamma = dot(r, to_eye);
-    const float specular = cos_gamma > 0.0f ? phong_power(cos_gamma, m.shininess) : 0.0f;
-    return irradiance * (m.kd * cos_alpha + m.ks * specular);
+    const Vec3T<F> r = reflect(-to_light, s.normal);
+    const F cos_gamma = dot(r, s.to_eye);
+    if constexpr (k_is_scalar<F>)
+        return cos_gamma > 0.0f ? phong_power(cos_gamma, m.exponent, m.shininess) : 0.0f;
+    else
+        return select(cos_gamma > F(0.0f), phong_power(cos_gamma, m.exponent, m.shininess),
+                      F(0.0f));
+}
+
+/// Light from one source reflected toward the eye where it faces the surface (cos α = N·L > 0):
+/// Lambert diffuse I0 kd cos α plus Phong specular I0 ks cos^n γ. `specular` false skips the
+/// highlight where no lane's ks is nonzero (ks · anything = 0 then: the same bits).
+template <class F>
+HIKARI_INLINE Vec3T<F> phong_reflected(const MaterialSample<F>& m, const SurfacePoint<F>& s,
+                                       const LightSampleT<F>& light, F cos_alpha, bool specular) {
+    const F spec = specular ? phong_specular(m, s, light.to_light) : F(0.0f);
+    return light.irradiance * (m.kd * cos_alpha + m.ks * spec);
 }
 
 }  // namespace hikari

@@ -15,6 +15,7 @@
 #include "hikari/geometry/ray_offset.h"
 #include "hikari/integrators/whitted/whitted.h"
 #include "hikari/io/scene_json.h"
+#include "recursive_whitted.h"
 
 namespace hikari {
 namespace {
@@ -205,21 +206,21 @@ void expect_same_framebuffer(const Framebuffer& a, const Framebuffer& b) {
     }
 }
 
-TEST(PrimaryHits, WhittedRenderEqualsRayAtATime) {
+TEST(PrimaryHits, WhittedRenderEqualsTheRecursiveOracle) {
     const Scene scene = scene_from(b3_scene_json(203, 117));
-    RenderSettings blocks, single;
-    single.primary_blocks = false;
-    expect_same_framebuffer(render_whitted(scene, blocks), render_whitted(scene, single));
+    const RenderSettings settings;
+    expect_same_framebuffer(render_whitted(scene, settings),
+                            testing::render_whitted_recursive(scene, settings));
 }
 
-TEST(PrimaryHits, MeshRenderEqualsRayAtATime) {
+TEST(PrimaryHits, MeshRenderEqualsTheRecursiveOracle) {
     std::vector<std::string> warnings;
     Scene scene = load_scene_file(std::string(HIKARI_SOURCE_DIR) + "/scenes/teapot.json", warnings);
     scene.camera.width = 150;
     scene.camera.height = 101;
-    RenderSettings blocks, single;
-    single.primary_blocks = false;
-    expect_same_framebuffer(render_whitted(scene, blocks), render_whitted(scene, single));
+    const RenderSettings settings;
+    expect_same_framebuffer(render_whitted(scene, settings),
+                            testing::render_whitted_recursive(scene, settings));
 }
 
 TEST(PrimaryHits, SameImageForAnyThreadCount) {

@@ -1,7 +1,7 @@
 // The Whitted shading lanes: every SIMD level gives the same lanes, and renders shaded in lanes
 // level by level are bit-identical to the recursive ray-at-a-time tracer, on scenes that use
 // every material feature (textures, mirrors, glass with total internal reflection, integer and
-// non-integer Phong exponents) under every kind of light.
+// non-integer Phong exponents) under every kind of light, with one or several samples per pixel.
 #include "hikari/integrators/whitted/whitted_shade.h"
 
 #include <gtest/gtest.h>
@@ -14,6 +14,7 @@
 #include "hikari/core/rng.h"
 #include "hikari/core/srgb8_encoder.h"
 #include "hikari/integrators/whitted/whitted.h"
+#include "recursive_whitted.h"
 
 namespace hikari {
 namespace {
@@ -114,7 +115,7 @@ TEST(WhittedShade, EveryLevelShadesAlike) {
                 const detail::LaneChunk& have = got->chunk(i);
                 if (!input->chunk(i).active[j]) continue;
                 ASSERT_EQ(want.shadow_rays[j], have.shadow_rays[j]);
-                ASSERT_EQ(want.scalar_specular[j], have.scalar_specular[j]);
+                ASSERT_EQ(want.scalar_only[j], have.scalar_only[j]);
                 for (int a = 0; a < 3; ++a) {
                     ASSERT_TRUE(same_bits(want.colour[a][j], have.colour[a][j])) << i;
                     // A secondary ray is only read where its weight is positive.
@@ -135,14 +136,6 @@ TEST(WhittedShade, EveryLevelShadesAlike) {
             }
         }
     }
-}
-
-TEST(WhittedShade, EightLightsAtMost) {
-    Scene scene;
-    scene.lights.assign(8, DirectionalLight{Vec3(0.0f, -1.0f, 0.0f), Vec3(1.0f)});
-    EXPECT_TRUE(LaneShader(scene).supported());
-    scene.lights.push_back(DirectionalLight{Vec3(0.0f, -1.0f, 0.0f), Vec3(1.0f)});
-    EXPECT_FALSE(LaneShader(scene).supported());
 }
 
 /// Spheres (some overlapping, some not casting shadows), a ground plane and a smooth-shaded
@@ -184,31 +177,44 @@ Scene random_scene(uint64_t seed) {
     return scene;
 }
 
-TEST(WhittedShade, RandomScenesRenderAsRayAtATime) {
+void expect_same_colours(const Framebuffer& a, const Framebuffer& b) {
+    ASSERT_EQ(a.color.pixels.size(), b.color.pixels.size());
+    for (size_t i = 0; i < a.color.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c)
+            ASSERT_TRUE(same_bits(a.color.pixels[i][c], b.color.pixels[i][c]))
+                << "pixel " << i << ": " << a.color.pixels[i][c] << " vs " << b.color.pixels[i][c];
+    ASSERT_EQ(a.depth.size(), b.depth.size());
+    for (size_t i = 0; i < a.depth.size(); ++i) {
+        ASSERT_TRUE(same_bits(a.depth[i], b.depth[i]));
+        ASSERT_EQ(a.id[i], b.id[i]);
+    }
+}
+
+TEST(WhittedShade, RandomScenesRenderAsTheRecursiveOracle) {
     for (uint64_t seed = 1; seed <= 6; ++seed)
-        for (int depth : {1, 2, 6}) {
-            SCOPED_TRACE(::testing::Message() << "seed " << seed << " depth " << depth);
-            const Scene scene = random_scene(seed);
-            RenderSettings lanes, single;
-            lanes.max_depth = single.max_depth = depth;
-            lanes.aov_buffers = single.aov_buffers = true;
-            single.primary_blocks = false;
-            RenderControl counted_lanes, counted_single;
-            lanes.control = &counted_lanes;
-            single.control = &counted_single;
-            const Framebuffer a = render_whitted(scene, lanes);
-            const Framebuffer b = render_whitted(scene, single);
-            for (size_t i = 0; i < a.color.pixels.size(); ++i)
-                for (int c = 0; c < 3; ++c)
-                    ASSERT_TRUE(same_bits(a.color.pixels[i][c], b.color.pixels[i][c]))
-                        << "pixel " << i << ": " << a.color.pixels[i][c] << " vs "
-                        << b.color.pixels[i][c];
-            for (size_t i = 0; i < a.depth.size(); ++i) {
-                ASSERT_TRUE(same_bits(a.depth[i], b.depth[i]));
-                ASSERT_EQ(a.id[i], b.id[i]);
+        for (int depth : {1, 2, 6})
+            for (int spp : {1, 4}) {
+                SCOPED_TRACE(::testing::Message()
+                             << "seed " << seed << " depth " << depth << " spp " << spp);
+                const Scene scene = random_scene(seed);
+                RenderSettings settings;
+                settings.max_depth = depth;
+                settings.samples_per_pixel = spp;
+                expect_same_colours(render_whitted(scene, settings),
+                                    testing::render_whitted_recursive(scene, settings));
             }
-            EXPECT_EQ(counted_lanes.rays_traced.load(), counted_single.rays_traced.load());
-        }
+}
+
+TEST(WhittedShade, ManyLightsAreShadedByTheOneRayCode) {
+    // More lights than a block's lit bits hold: every hit falls back to the one-ray code, which
+    // casts its own shadow rays; the image must not change.
+    Scene scene = random_scene(4);
+    Pcg32 rng(7, 9);
+    while (scene.lights.size() <= k_max_block_lights)
+        scene.lights.push_back(PointLight{testing::random_point(rng, 6.0f), Vec3(0.4f), true});
+    const RenderSettings settings;
+    expect_same_colours(render_whitted(scene, settings),
+                        testing::render_whitted_recursive(scene, settings));
 }
 
 TEST(WhittedShade, Srgb8OutputIsTheEncodedLinearRender) {

@@ -23,8 +23,8 @@ void primary_describe_portable(const PrimaryObjects& o, int chunks, BlockLanes& 
     describe_kernel(o, chunks, lanes);
 }
 
-void primary_shadows_portable(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
-                              int chunks, BlockLanes& lanes) {
+void primary_shadows_portable(const Light& light, const PrimaryAnalytic& casters, int chunks,
+                              BlockLanes& lanes) {
     shadow_kernel(light, casters, chunks, lanes);
 }
 
@@ -111,17 +111,6 @@ PrimaryHitTracer::PrimaryHitTracer(const SceneIntersector& intersector, const Sc
         m_analytic.add(p);
         if (p.casts_shadow) m_casters.add(p);
         m_objects.add(0, Vec3(0.0f), 0.0f, p.normal, p.material, p.id);
-    }
-    for (const Light& light : scene.lights) {
-        detail::PrimaryShadowLight l{};
-        if (const auto* point = std::get_if<PointLight>(&light)) {
-            for (int a = 0; a < 3; ++a) l.position[a] = point->position[a];
-        } else {
-            l.directional = true;
-            const Vec3 to_light = -std::get<DirectionalLight>(light).direction;
-            for (int a = 0; a < 3; ++a) l.to_light[a] = to_light[a];
-        }
-        m_lights.push_back(l);
     }
 }
 
@@ -226,7 +215,7 @@ void PrimaryHitTracer::finish(const TriangleHit* triangle_hits, PrimaryBlock& bl
 
     // 5. The hits' shadow rays, one light at a time against all of them (Boulos et al. 2007 trace
     // shadow rays as packets too: from nearby points toward one light they stay coherent).
-    block.shadows_known = m_lights.size() <= k_max_block_lights;
+    block.shadows_known = m_scene.lights.size() <= k_max_block_lights;
     if (!block.shadows_known) return;
     for (int c = 0; c < chunks; ++c) std::fill_n(lanes.chunks[c].lit, k_lane_chunk, 0);
     const auto shadows = simd_pick(m_level, detail::primary_shadows_portable,
@@ -235,8 +224,8 @@ void PrimaryHitTracer::finish(const TriangleHit* triangle_hits, PrimaryBlock& bl
     static_assert(k_lane_chunk == int(k_packet_size));
     RayPacket packet;
     std::fill_n(packet.t_min, k_packet_size, 0.0f);
-    for (size_t l = 0; l < m_lights.size(); ++l) {
-        shadows(m_lights[l], casters, chunks, lanes);
+    for (size_t l = 0; l < m_scene.lights.size(); ++l) {
+        shadows(m_scene.lights[l], casters, chunks, lanes);
         const int32_t bit = 1 << l;
         for (int c = 0; c < chunks; ++c) {
             detail::LaneChunk& chunk = lanes.chunks[c];

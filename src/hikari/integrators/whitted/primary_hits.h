@@ -43,8 +43,8 @@ struct PrimaryBlock {
     /// Lane k's nearest hit, where found.
     SurfaceHit hit(int k) const;
     /// Lane k's shadow answers (bit l: light l unblocked), where found and shadows_known.
-    uint8_t lit(int k) const {
-        return static_cast<uint8_t>(lanes.chunk(k).lit[detail::lane_in_chunk(k)]);
+    uint32_t lit(int k) const {
+        return static_cast<uint32_t>(lanes.chunk(k).lit[detail::lane_in_chunk(k)]);
     }
 };
 
@@ -70,13 +70,6 @@ struct PrimaryObjects {
     const float* normal[3];
     const int32_t* material;
     const uint32_t* id;
-};
-
-/// One light as the shadow kernel reads it.
-struct PrimaryShadowLight {
-    bool directional;
-    float position[3];  ///< point lights
-    float to_light[3];  ///< directional lights: the unit direction toward the light
 };
 
 }  // namespace detail
@@ -136,7 +129,6 @@ class PrimaryHitTracer {
     Analytic m_analytic;
     Analytic m_casters;  ///< the spheres and planes that cast shadows
     Objects m_objects;
-    std::vector<detail::PrimaryShadowLight> m_lights;
 };
 
 namespace detail {
@@ -165,12 +157,12 @@ void primary_describe_avx2(const PrimaryObjects& o, int chunks, BlockLanes& lane
 void primary_describe_avx512(const PrimaryObjects& o, int chunks, BlockLanes& lanes);
 /// The hits' shadow rays toward one light against the casting spheres and planes (shadow_*
 /// and blocked), in the chunks that hold a hit.
-void primary_shadows_portable(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
-                              int chunks, BlockLanes& lanes);
-void primary_shadows_avx2(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
-                          int chunks, BlockLanes& lanes);
-void primary_shadows_avx512(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
-                            int chunks, BlockLanes& lanes);
+void primary_shadows_portable(const Light& light, const PrimaryAnalytic& casters, int chunks,
+                              BlockLanes& lanes);
+void primary_shadows_avx2(const Light& light, const PrimaryAnalytic& casters, int chunks,
+                          BlockLanes& lanes);
+void primary_shadows_avx512(const Light& light, const PrimaryAnalytic& casters, int chunks,
+                            BlockLanes& lanes);
 
 }  // namespace detail
 

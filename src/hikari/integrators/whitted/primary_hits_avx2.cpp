@@ -25,8 +25,8 @@ void primary_describe_avx2(const PrimaryObjects& o, int chunks, BlockLanes& lane
     describe_kernel(o, chunks, lanes);
 }
 
-void primary_shadows_avx2(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
-                          int chunks, BlockLanes& lanes) {
+void primary_shadows_avx2(const Light& light, const PrimaryAnalytic& casters, int chunks,
+                          BlockLanes& lanes) {
     shadow_kernel(light, casters, chunks, lanes);
 }
 
@@ -43,8 +43,8 @@ void primary_analytic_avx2(const PrimaryAnalytic& a, int chunks, BlockLanes& lan
 void primary_describe_avx2(const PrimaryObjects& o, int chunks, BlockLanes& lanes) {
     primary_describe_portable(o, chunks, lanes);
 }
-void primary_shadows_avx2(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
-                          int chunks, BlockLanes& lanes) {
+void primary_shadows_avx2(const Light& light, const PrimaryAnalytic& casters, int chunks,
+                          BlockLanes& lanes) {
     primary_shadows_portable(light, casters, chunks, lanes);
 }
 }  // namespace hikari::detail

@@ -26,8 +26,8 @@ void primary_describe_avx512(const PrimaryObjects& o, int chunks, BlockLanes& la
     describe_kernel(o, chunks, lanes);
 }
 
-void primary_shadows_avx512(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
-                            int chunks, BlockLanes& lanes) {
+void primary_shadows_avx512(const Light& light, const PrimaryAnalytic& casters, int chunks,
+                            BlockLanes& lanes) {
     shadow_kernel(light, casters, chunks, lanes);
 }
 
@@ -44,8 +44,8 @@ void primary_analytic_avx512(const PrimaryAnalytic& a, int chunks, BlockLanes& l
 void primary_describe_avx512(const PrimaryObjects& o, int chunks, BlockLanes& lanes) {
     primary_describe_portable(o, chunks, lanes);
 }
-void primary_shadows_avx512(const PrimaryShadowLight& light, const PrimaryAnalytic& casters,
-                            int chunks, BlockLanes& lanes) {
+void primary_shadows_avx512(const Light& light, const PrimaryAnalytic& casters, int chunks,
+                            BlockLanes& lanes) {
     primary_shadows_portable(light, casters, chunks, lanes);
 }
 }  // namespace hikari::detail

@@ -4,18 +4,24 @@
 // their `#pragma GCC target`), which the compiler vectorises across 4, 8 or 16 rays. Each loop
 // body is the scalar code's arithmetic (camera_ray, intersect_sphere, intersect_plane in
 // geometry/intersect.h) in the same order, with branches turned into selects, so every level rounds
-// exactly as the scalar path does (-ffp-contract=off: no FMA). Only float arithmetic and
-// builtins appear here, so no wider code can leak into shared inline functions: the one shared
-// helper, any_active (block_lanes.h), is defined before the target pragma and so compiled for
-// the baseline wherever it is emitted. The functions here have internal linkage (one copy per
-// including file).
+// exactly as the scalar path does (-ffp-contract=off: no FMA). The shadow rays' light sampling
+// and origin offset are the generic code the one-ray path runs (shading/lights.h,
+// geometry/ray_offset.h), instantiated on packs (core/lanes.h) of the internal-linkage
+// `KernelIsa`, so no wider code can leak into shared inline functions: every function here and
+// every instantiation on these packs has internal linkage (one copy per including file).
 
 #include <cstdint>
 
+#include "hikari/core/lanes.h"
+#include "hikari/geometry/ray_offset.h"
 #include "hikari/integrators/whitted/primary_hits.h"
+#include "hikari/shading/lights.h"
 
 namespace hikari::detail {
 namespace {
+
+struct KernelIsa {};
+using LaneF = LaneFloat<KernelIsa>;
 
 /// camera_ray(frame, x + 0.5, y + 0.5) for every lane: direction = normalize(forward + x right +
 /// y up) with x, y the pixel centre on the image plane one unit in front of the eye; no hit yet
@@ -231,65 +237,28 @@ inline void describe_chunk(const PrimaryObjects& o, LaneChunk& chunk) {
     for (int c = 0; c < chunks; ++c) describe_chunk(o, lanes.chunks[c]);
 }
 
-/// offset_ray_origin (geometry/ray_offset.h) for one coordinate: p moved by 256 n ulps away from
-/// zero's side (the sign bit s of p gives -ulps as (ulps ^ s) - s; positions are finite, so the
-/// sign bit is p < 0 except for -0, which the |p| < 1/32 branch takes), or by n / 65536 near
-/// the origin.
-[[maybe_unused]] inline float offset_origin_lane(float p, float n) {
-    const auto ulps = static_cast<int32_t>(256.0f * n);
-    const auto bits = __builtin_bit_cast(int32_t, p);
-    const int32_t sign = bits >> 31;
-    const float moved = __builtin_bit_cast(float, bits + ((ulps ^ sign) - sign));
-    return __builtin_fabsf(p) < 1.0f / 32.0f ? p + 1.0f / 65536.0f * n : moved;
-}
+/// Shadow rays from the lanes' hit points toward one light, as the one-ray shading casts them
+/// (integrators/whitted/whitted_surface.h): from offset_ray_origin(position, the geometric
+/// normal turned toward the camera ray) along shading/lights.h's direction toward the light, up
+/// to its distance; then SceneIntersector::occluded's sphere and plane tests, per lane. Lanes
+/// without a hit (zero position and normal) get harmless finite rays.
+inline void shadow_chunk(const Light& light, const PrimaryAnalytic& a, LaneChunk& chunk) {
+    const Vec3T<LaneF> p = load_lanes<KernelIsa>(chunk.position);
+    const Vec3T<LaneF> g = load_lanes<KernelIsa>(chunk.geometric_normal);
+    const LaneMask<KernelIsa> facing = dot(g, load_lanes<KernelIsa>(chunk.direction)) < 0.0f;
+    store_lanes<KernelIsa>(offset_ray_origin(p, select(facing, g, -g)), chunk.shadow_origin);
+    const LightSampleT<LaneF> toward = sample_light<LaneF>(light, p);
+    store_lanes<KernelIsa>(toward.to_light, chunk.shadow_direction);
+    toward.distance.store(chunk.shadow_distance);
 
-/// Shadow rays from the lanes' hit points toward one light: shade_local's sample_light, the
-/// Wächter & Binder origin offset of offset_ray_origin (geometry/ray_offset.h) from the geometric
-/// normal turned toward the camera ray (as shade() turns it), and SceneIntersector::occluded's
-/// sphere and plane tests, per lane. Lanes without a hit (zero position and normal) get
-/// harmless finite rays.
-inline void shadow_chunk(const PrimaryShadowLight& light, const PrimaryAnalytic& a,
-                         LaneChunk& chunk) {
-    const float* __restrict px = chunk.position[0];
-    const float* __restrict py = chunk.position[1];
-    const float* __restrict pz = chunk.position[2];
-    const float* __restrict gx = chunk.geometric_normal[0];
-    const float* __restrict gy = chunk.geometric_normal[1];
-    const float* __restrict gz = chunk.geometric_normal[2];
-    const float* __restrict rx = chunk.direction[0];
-    const float* __restrict ry = chunk.direction[1];
-    const float* __restrict rz = chunk.direction[2];
-    float* __restrict ox = chunk.shadow_origin[0];
-    float* __restrict oy = chunk.shadow_origin[1];
-    float* __restrict oz = chunk.shadow_origin[2];
-    float* __restrict dx = chunk.shadow_direction[0];
-    float* __restrict dy = chunk.shadow_direction[1];
-    float* __restrict dz = chunk.shadow_direction[2];
-    float* __restrict distance = chunk.shadow_distance;
+    const float* __restrict ox = chunk.shadow_origin[0];
+    const float* __restrict oy = chunk.shadow_origin[1];
+    const float* __restrict oz = chunk.shadow_origin[2];
+    const float* __restrict dx = chunk.shadow_direction[0];
+    const float* __restrict dy = chunk.shadow_direction[1];
+    const float* __restrict dz = chunk.shadow_direction[2];
+    const float* __restrict distance = chunk.shadow_distance;
     int32_t* __restrict blocked = chunk.blocked;
-    const PrimaryShadowLight l = light;
-    for (int i = 0; i < k_lane_chunk; ++i) {
-        const bool facing = gx[i] * rx[i] + gy[i] * ry[i] + gz[i] * rz[i] < 0.0f;
-        ox[i] = offset_origin_lane(px[i], facing ? gx[i] : -gx[i]);
-        oy[i] = offset_origin_lane(py[i], facing ? gy[i] : -gy[i]);
-        oz[i] = offset_origin_lane(pz[i], facing ? gz[i] : -gz[i]);
-    }
-    // sample_light: unit direction toward the light and the distance to it.
-    if (l.directional) {
-        for (int i = 0; i < k_lane_chunk; ++i) {
-            dx[i] = l.to_light[0], dy[i] = l.to_light[1], dz[i] = l.to_light[2];
-            distance[i] = __builtin_inff();
-        }
-    } else {
-        for (int i = 0; i < k_lane_chunk; ++i) {
-            const float vx = l.position[0] - px[i], vy = l.position[1] - py[i],
-                        vz = l.position[2] - pz[i];
-            const float dist = __builtin_sqrtf(vx * vx + vy * vy + vz * vz);
-            const float inv = 1.0f / dist;
-            dx[i] = vx * inv, dy[i] = vy * inv, dz[i] = vz * inv;
-            distance[i] = dist;
-        }
-    }
     for (int i = 0; i < k_lane_chunk; ++i) blocked[i] = 0;
     for (int32_t s = 0; s < a.spheres; ++s) {
         const float cx = a.sphere_center[0][s], cy = a.sphere_center[1][s],
@@ -317,8 +286,8 @@ inline void shadow_chunk(const PrimaryShadowLight& light, const PrimaryAnalytic&
 }
 
 /// shadow_chunk for each of the first `chunks` chunks that holds a hit.
-[[maybe_unused]] void shadow_kernel(const PrimaryShadowLight& light, const PrimaryAnalytic& a,
-                                    int chunks, BlockLanes& lanes) {
+[[maybe_unused]] void shadow_kernel(const Light& light, const PrimaryAnalytic& a, int chunks,
+                                    BlockLanes& lanes) {
     for (int c = 0; c < chunks; ++c) {
         LaneChunk& chunk = lanes.chunks[c];
         if (any_active(chunk)) shadow_chunk(light, a, chunk);

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <optional>
 #include <vector>
 
 #include "hikari/bvh/scene_intersector.h"
@@ -12,8 +11,7 @@
 #include "hikari/geometry/ray_offset.h"
 #include "hikari/integrators/whitted/primary_hits.h"
 #include "hikari/integrators/whitted/whitted_shade.h"
-#include "hikari/shading/phong.h"
-#include "hikari/shading/refraction.h"
+#include "hikari/integrators/whitted/whitted_surface.h"
 
 namespace hikari {
 
@@ -24,93 +22,10 @@ namespace {
 struct TraceContext {
     const Scene& scene;
     const SceneIntersector& intersector;
+    const WhittedScene& shading;
     int max_depth;
     uint64_t rays = 0;
 };
-
-/// The local (direct) illumination of a hit: ambient, then each light that a shadow ray
-/// finds unblocked. `lit`, when given, holds the shadow rays' answers already (bit l: light l
-/// unblocked), found in bulk for camera-ray hits by integrators/whitted/primary_hits.h.
-Vec3 shade_local(TraceContext& ctx, const Material& m, Vec3 p, Vec3 n, Vec3 ng, Vec3 to_eye,
-                 const uint8_t* lit) {
-    Vec3 colour = shade_ambient(m, ctx.scene.ambient);
-    const Vec3 shadow_origin = offset_ray_origin(p, ng);
-    for (size_t l = 0; l < ctx.scene.lights.size(); ++l) {
-        const LightSample ls = sample_light(ctx.scene.lights[l], p);
-        if (dot(n, ls.to_light) <= 0.0f) continue;
-        ++ctx.rays;
-        const bool blocked =
-            lit ? (*lit & (1u << l)) == 0
-                : ctx.intersector.occluded({shadow_origin, ls.to_light}, {0.0f, ls.distance});
-        if (blocked) continue;
-        colour += shade_direct(m, n, ls.to_light, to_eye, ls.irradiance);
-    }
-    return colour;
-}
-
-/// The material at point p: `m` itself, or for a textured one a copy in `storage` with ka and kd
-/// scaled by the texture's colour there (without the name: an empty string allocates nothing).
-const Material& material_at(const Material& m, Vec3 p, Material& storage) {
-    if (!m.texture) return m;
-    const Vec3 c = m.texture->at(p);
-    storage.ka = m.ka * c;
-    storage.kd = m.kd * c;
-    storage.ks = m.ks;
-    storage.shininess = m.shininess;
-    storage.reflectivity = m.reflectivity;
-    storage.transparency = m.transparency;
-    storage.ior = m.ior;
-    return storage;
-}
-
-Vec3 trace(TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* first_hit = nullptr);
-
-/// What a ray that hits nothing sees.
-Vec3 sky(const TraceContext& ctx, const Ray& ray) {
-    return ctx.scene.sky.colour(ray.direction, ctx.scene.background);
-}
-
-/// Colour seen along `ray` (segment number `segment` of its path, primary = 1) whose nearest
-/// hit is `hit`: local illumination, then the mirror and refracted rays.
-Vec3 shade(TraceContext& ctx, const Ray& ray, const SurfaceHit& hit, int segment) {
-    // Face the normals toward the incoming ray: planes and triangles are two-sided, and a ray
-    // inside a sphere sees its inner side.
-    const bool entering = dot(hit.geometric_normal, ray.direction) < 0.0f;
-    const Vec3 ng = entering ? hit.geometric_normal : -hit.geometric_normal;
-    Vec3 n = entering ? hit.shading_normal : -hit.shading_normal;
-    if (dot(n, ray.direction) > 0.0f) n = ng;  // interpolated normal turned away: use the true one
-
-    Material storage;
-    const Material& m = material_at(ctx.scene.materials[hit.material], hit.position, storage);
-    Vec3 colour = shade_local(ctx, m, hit.position, n, ng, -ray.direction, nullptr);
-    if (segment >= ctx.max_depth) return colour;
-
-    const Vec3 mirror = reflect(ray.direction, n);
-    std::optional<Vec3> refracted;
-    if (m.transparency > 0.0f)
-        refracted = refract(ray.direction, n, entering ? 1.0f / m.ior : m.ior);
-    // On total internal reflection the mirror ray takes the transmitted weight and the
-    // reflectivity term is dropped (POV-Ray's rule), so the mirror ray is traced once.
-    const bool total_internal = m.transparency > 0.0f && !refracted;
-    const float mirror_weight = total_internal ? m.transparency : m.reflectivity;
-    if (mirror_weight > 0.0f)
-        colour +=
-            mirror_weight * trace(ctx, {offset_ray_origin(hit.position, ng), mirror}, segment + 1);
-    if (refracted)
-        colour += m.transparency *
-                  trace(ctx, {offset_ray_origin(hit.position, -ng), *refracted}, segment + 1);
-    return colour;
-}
-
-/// Colour seen along `ray`, which is segment number `segment` of its path (primary = 1).
-/// Returns the primary hit through `first_hit` when asked (for the AOVs).
-Vec3 trace(TraceContext& ctx, const Ray& ray, int segment, SurfaceHit* first_hit) {
-    ++ctx.rays;
-    SurfaceHit hit;
-    if (!ctx.intersector.closest(ray, {0.0f, k_infinity}, hit)) return sky(ctx, ray);
-    if (first_hit) *first_hit = hit;
-    return shade(ctx, ray, hit, segment);
-}
 
 /// One level of a tile's ray tree, breadth first, one array per field: each ray's own
 /// contribution (local illumination at its hit, or the sky) and where its mirror and refracted
@@ -133,22 +48,26 @@ struct WaveScratch {
     std::vector<PathLevel> levels;
     std::vector<Ray> rays, next_rays;
     std::vector<Ray> next_refracted;  ///< the next level's refracted rays, until join_refracted
+    // Jittered samples: each pixel's random stream, colour sum, and one sample's camera rays.
+    std::vector<Pcg32> streams;
+    std::vector<Vec3> sums;
+    std::vector<Ray> camera_rays;
 };
 
-/// A tile's rays traced level by level (Boulos et al. 2007): the camera rays' hits as a block,
-/// all hits of a level shaded together in lanes (integrators/whitted/whitted_shade.h), the mirror
-/// and refracted rays they spawn gathered into the next level and traced as blocks of their own.
-/// Then the colours are folded from the deepest level up in exactly the order shade() adds them, so
-/// every pixel is bit-identical to the recursive trace.
+/// A tile's rays traced level by level (Boulos et al. 2007): the first rays' hits as a block,
+/// all hits of a level shaded together in lanes (whitted_shade.h), the mirror and refracted
+/// rays they spawn gathered into the next level and traced as blocks of their own. Then the
+/// colours are folded from the deepest level up in the order Whitted's recursion adds them:
+/// colour = local + mirror_weight × mirror colour + refract_weight × refracted colour.
 class WaveTracer {
   public:
     WaveTracer(TraceContext& ctx, const PrimaryHitTracer& hits, const LaneShader& shader,
                WaveScratch& scratch)
         : m_ctx(ctx), m_hits(hits), m_shader(shader), m_s(scratch) {}
 
-    /// Traces the camera rays of `tile` (at most one block); AOVs via `first_hits(block)` right
-    /// after the camera rays' hits are known. Returns the level of the camera rays: the colour
-    /// of pixel (x0 + x, y0 + y) is entry y * k_primary_block + x.
+    /// Traces the camera rays through the pixel centres of `tile` (at most one block); AOVs via
+    /// `first_hits(block)` right after their hits are known. Returns the level of the camera
+    /// rays: the colour of pixel (x0 + x, y0 + y) is entry y * k_primary_block + x.
     template <class FirstHits>
     const PathLevel& trace_tile(const Tile& tile, FirstHits&& first_hits) {
         const int width = tile.x1 - tile.x0, height = tile.y1 - tile.y0;
@@ -165,7 +84,29 @@ class WaveTracer {
         }
         m_s.next_rays.clear();
         shade_block(block, width, k_primary_block_rays, 1, camera, 0);
-        join_refracted(camera);
+        return finish_paths(camera);
+    }
+
+    /// Traces `count` rays from the camera (jittered samples): their colours are entries
+    /// [0, count) of the level returned.
+    const PathLevel& trace_camera_rays(const Ray* rays, size_t count) {
+        PathLevel& camera = level(0);
+        camera.resize(count);
+        m_s.next_rays.clear();
+        trace_level(rays, count, 1, camera);
+        return finish_paths(camera);
+    }
+
+  private:
+    PathLevel& level(int index) {
+        if (m_s.levels.size() <= static_cast<size_t>(index)) m_s.levels.resize(index + 1);
+        return m_s.levels[index];
+    }
+
+    /// Once the first level is shaded: every deeper level traced and shaded, then the colours
+    /// folded up into the first level's.
+    const PathLevel& finish_paths(PathLevel& first) {
+        join_refracted(first);
         int depth = 1;
         while (!m_s.next_rays.empty()) {
             std::swap(m_s.rays, m_s.next_rays);
@@ -173,22 +114,22 @@ class WaveTracer {
             PathLevel& nodes = level(depth);
             nodes.resize(m_s.rays.size());
             ++depth;
-            for (size_t first = 0; first < m_s.rays.size(); first += k_primary_block_rays) {
-                const int count = static_cast<int>(
-                    std::min<size_t>(k_primary_block_rays, m_s.rays.size() - first));
-                m_hits.trace_rays(m_s.rays.data() + first, count, block);
-                shade_block(block, k_lane_chunk, count, depth, nodes, first);
-            }
+            trace_level(m_s.rays.data(), m_s.rays.size(), depth, nodes);
             join_refracted(nodes);
         }
         fold(depth);
         return level(0);
     }
 
-  private:
-    PathLevel& level(int index) {
-        if (m_s.levels.size() <= static_cast<size_t>(index)) m_s.levels.resize(index + 1);
-        return m_s.levels[index];
+    /// Traces and shades `rays[0, count)`, which are of path segment `segment`, block by block
+    /// into `nodes`.
+    void trace_level(const Ray* rays, size_t count, int segment, PathLevel& nodes) {
+        PrimaryBlock& block = m_s.block;
+        for (size_t first = 0; first < count; first += k_primary_block_rays) {
+            const int n = static_cast<int>(std::min<size_t>(k_primary_block_rays, count - first));
+            m_hits.trace_rays(rays + first, n, block);
+            shade_block(block, k_lane_chunk, n, segment, nodes, first);
+        }
     }
 
     /// Shades the block's rays, which are of path segment `segment`, in place in its lanes, sets
@@ -209,11 +150,11 @@ class WaveTracer {
             int32_t shadow_rays = 0, children = 0, scalar = 0;
             for (int j = 0; j < rays; ++j) {
                 shadow_rays += lane.shadow_rays[j];
-                scalar |= lane.scalar_specular[j];
+                scalar |= lane.scalar_only[j] | (block.shadows_known ? 0 : lane.active[j]);
                 children += lane.children[j];
             }
             m_ctx.rays += static_cast<uint64_t>(shadow_rays);
-            if (scalar != 0) shade_scalar_specular(block, c, rays, nodes, base);
+            if (scalar != 0) shade_one_ray_at_a_time(block, c, rays, nodes, base);
             if (children != 0) {
                 spawn_rays(lane, rays, nodes, base);
             } else {
@@ -223,27 +164,33 @@ class WaveTracer {
         }
     }
 
-    /// The lanes flagged scalar_specular in chunk c: a Phong exponent the lanes cannot raise
-    /// exactly, shaded by the scalar code (their ray count is already in shadow_rays).
-    void shade_scalar_specular(const PrimaryBlock& block, int c, int rays, PathLevel& nodes,
-                               size_t base) {
+    /// The colours of chunk c's hits that the lanes could not shade (a material without a lane
+    /// form, or shadow rays the block did not trace: more than k_max_block_lights lights),
+    /// from the same generic code on one ray at a time; their shadow rays are already counted.
+    void shade_one_ray_at_a_time(const PrimaryBlock& block, int c, int rays, PathLevel& nodes,
+                                 size_t base) {
         const detail::LaneChunk& lane = block.lanes.chunks[c];
         for (int j = 0; j < rays; ++j) {
-            if (!lane.scalar_specular[j]) continue;  // 0 in lanes without a hit
+            if (!lane.active[j] || (block.shadows_known && !lane.scalar_only[j])) continue;
             const int i = c * k_lane_chunk + j;
-            TraceContext scalar = m_ctx;
-            const SurfaceHit hit = block.hit(i);
-            const uint8_t lit = block.lit(i);
-            const Ray ray = block.ray(i);
-            Material storage;
-            const Material& m =
-                material_at(m_ctx.scene.materials[hit.material], hit.position, storage);
-            const Vec3 colour = shade_local(
-                scalar, m, hit.position, {lane.normal[0][j], lane.normal[1][j], lane.normal[2][j]},
-                {lane.facing_normal[0][j], lane.facing_normal[1][j], lane.facing_normal[2][j]},
-                -ray.direction, &lit);
+            const Vec3 colour =
+                shade_hit(block.ray(i).direction, block.hit(i), block.shadows_known, block.lit(i));
             for (int a = 0; a < 3; ++a) nodes.colour[a][base + j] = colour[a];
         }
+    }
+
+    /// The local illumination of one hit seen along `direction`; light l is visible where bit l
+    /// of `lit` is set when `lit_known`, else where its shadow ray finds nothing in the way.
+    Vec3 shade_hit(Vec3 direction, const SurfaceHit& hit, bool lit_known, uint32_t lit) const {
+        const WhittedHit<float> h{direction, hit.position, hit.geometric_normal, hit.shading_normal,
+                                  static_cast<int32_t>(hit.material)};
+        const auto visible = [&](size_t l, const LightSample& light, const SurfacePoint<float>& s,
+                                 bool) {
+            if (lit_known) return ((lit >> l) & 1u) != 0;
+            const Ray shadow{offset_ray_origin(s.position, s.geometric_normal), light.to_light};
+            return !m_ctx.intersector.occluded(shadow, {0.0f, light.distance});
+        };
+        return shade_whitted_hit<float>(m_ctx.shading, h, true, visible).direct.colour;
     }
 
     /// The next level's rays of a chunk's lanes, and their nodes' indices and weights: mirror
@@ -298,8 +245,8 @@ class WaveTracer {
         m_s.next_refracted.clear();
     }
 
-    /// Adds each level's colours into their parents', deepest first, as shade() adds them:
-    /// colour += mirror_weight * mirror colour, then += transparency * refracted colour.
+    /// Adds each level's colours into their parents', deepest first, as the recursion adds
+    /// them: colour += mirror_weight * mirror colour, then += refract_weight * refracted colour.
     void fold(int depth) {
         for (int d = depth - 2; d >= 0; --d) {
             const PathLevel& children = m_s.levels[d + 1];
@@ -331,6 +278,109 @@ void strata(int n, int& cols, int& rows) {
     rows = n / cols;
 }
 
+/// Everything a render's tiles share.
+struct WhittedRender {
+    const Scene& scene;
+    const RenderSettings& settings;
+    Framebuffer& fb;
+    const CameraFrame frame;
+    const SceneIntersector intersector;
+    const WhittedScene shading;
+    const PrimaryHitTracer primary;
+    const LaneShader shader;
+
+    WhittedRender(const Scene& s, const RenderSettings& r, Framebuffer& f)
+        : scene(s),
+          settings(r),
+          fb(f),
+          frame(make_camera_frame(s.camera)),
+          intersector(s),
+          shading(s),
+          primary(intersector, s, frame),
+          shader(s) {}
+
+    /// The AOVs of pixel i from the hit of the ray through its centre.
+    void store_aovs(size_t i, const Ray& centre, const SurfaceHit& first) const {
+        fb.depth[i] = first.t;
+        fb.id[i] = first.id + 1;
+        fb.normal[i] = dot(first.shading_normal, centre.direction) < 0.0f ? first.shading_normal
+                                                                          : -first.shading_normal;
+    }
+
+    /// The AOVs of the tile's pixels whose centre ray hit something.
+    void store_block_aovs(const Tile& tile, const PrimaryBlock& block) const {
+        if (!settings.aov_buffers) return;
+        for (int y = tile.y0; y < tile.y1; ++y)
+            for (int x = tile.x0; x < tile.x1; ++x) {
+                const int k = (y - tile.y0) * k_primary_block + (x - tile.x0);
+                if (block.found(k))
+                    store_aovs(static_cast<size_t>(y) * scene.camera.width + x, block.ray(k),
+                               block.hit(k));
+            }
+    }
+
+    /// One ray through each pixel centre.
+    void render_centres(const Tile& tile, WaveTracer& wave) const {
+        const PathLevel& colours = wave.trace_tile(
+            tile, [&](const PrimaryBlock& block) { store_block_aovs(tile, block); });
+        for (int y = tile.y0; y < tile.y1; ++y) {
+            const size_t row = static_cast<size_t>(y - tile.y0) * k_primary_block;
+            fb.set_colors(static_cast<size_t>(y) * scene.camera.width + tile.x0,
+                          colours.colour[0].data() + row, colours.colour[1].data() + row,
+                          colours.colour[2].data() + row, static_cast<size_t>(tile.x1 - tile.x0));
+        }
+    }
+
+    /// `spp` stratified jittered samples per pixel, one in each stratum, from a random stream
+    /// seeded by the pixel alone; the AOVs describe the pixel centre.
+    void render_samples(const Tile& tile, WaveTracer& wave, WaveScratch& scratch) const {
+        const int spp = settings.samples_per_pixel, width = scene.camera.width;
+        int cols = 1, rows = 1;
+        strata(spp, cols, rows);
+        if (settings.aov_buffers) {
+            primary.trace(tile.x0, tile.y0, tile.x1 - tile.x0, tile.y1 - tile.y0, scratch.block);
+            store_block_aovs(tile, scratch.block);
+        }
+        std::vector<Pcg32>& streams = scratch.streams;
+        std::vector<Vec3>& sums = scratch.sums;
+        streams.clear(), sums.assign(tile_pixels(tile), Vec3(0.0f));
+        for (int y = tile.y0; y < tile.y1; ++y)
+            for (int x = tile.x0; x < tile.x1; ++x)
+                streams.emplace_back(static_cast<size_t>(y) * width + x, 0x68696b617269ULL);
+        for (int s = 0; s < spp; ++s) {
+            std::vector<Ray>& rays = scratch.camera_rays;
+            rays.clear();
+            const int column = s % cols, row = s / cols;
+            for (int y = tile.y0, k = 0; y < tile.y1; ++y)
+                for (int x = tile.x0; x < tile.x1; ++x, ++k) {
+                    const float sx = (static_cast<float>(column) + streams[k].next_float()) / cols;
+                    const float sy = (static_cast<float>(row) + streams[k].next_float()) / rows;
+                    rays.push_back(
+                        camera_ray(frame, static_cast<float>(x) + sx, static_cast<float>(y) + sy));
+                }
+            const PathLevel& colours = wave.trace_camera_rays(rays.data(), rays.size());
+            for (size_t k = 0; k < sums.size(); ++k) sums[k] += colours.colour_at(k);
+        }
+        for (int y = tile.y0, k = 0; y < tile.y1; ++y)
+            for (int x = tile.x0; x < tile.x1; ++x, ++k)
+                fb.set_color(static_cast<size_t>(y) * width + x, sums[k] / static_cast<float>(spp));
+    }
+
+    static size_t tile_pixels(const Tile& tile) {
+        return static_cast<size_t>(tile.x1 - tile.x0) * static_cast<size_t>(tile.y1 - tile.y0);
+    }
+};
+
+/// The BVH's figures for `--stats`.
+void report_bvh(const SceneIntersector& intersector, RenderControl* control) {
+    if (!control) return;
+    const WideBvh& bvh = intersector.bvh();
+    control->bvh_triangles = bvh.triangle_count();
+    control->bvh_nodes = bvh.nodes.size();
+    control->bvh_bytes = bvh.memory_bytes();
+    control->bvh_build_us = static_cast<uint64_t>(intersector.build_ms() * 1000.0);
+}
+
 }  // namespace
 
 Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
@@ -339,87 +389,19 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
     // first touched by the tiles, in parallel.
     Framebuffer fb(cam.width, cam.height, scene.background, settings.aov_buffers,
                    settings.srgb8_output && !settings.aov_buffers);
-    const SceneIntersector intersector(scene);
-    const TraceContext shared{scene, intersector, settings.max_depth};
-    if (RenderControl* control = settings.control) {
-        const WideBvh& bvh = intersector.bvh();
-        control->bvh_triangles = bvh.triangle_count();
-        control->bvh_nodes = bvh.nodes.size();
-        control->bvh_bytes = bvh.memory_bytes();
-        control->bvh_build_us = static_cast<uint64_t>(intersector.build_ms() * 1000.0);
-    }
-    const CameraFrame frame = make_camera_frame(cam);
-    const int spp = settings.samples_per_pixel;
-    int cols = 1, rows = 1;
-    strata(spp, cols, rows);
-
-    // One ray per pixel: the tile's camera rays and their nearest hits are found together
-    // (integrators/whitted/primary_hits.h, SIMD), then each pixel is shaded from its hit as trace()
-    // would.
-    const PrimaryHitTracer primary(intersector, scene, frame);
-    const LaneShader shader(scene);
-    const auto store_aovs = [&](size_t i, const Ray& centre, const SurfaceHit& first) {
-        if (!settings.aov_buffers || !(first.t < k_infinity)) return;
-        fb.depth[i] = first.t;
-        fb.id[i] = first.id + 1;
-        fb.normal[i] = dot(first.shading_normal, centre.direction) < 0.0f ? first.shading_normal
-                                                                          : -first.shading_normal;
-    };
+    const WhittedRender render(scene, settings, fb);
+    report_bvh(render.intersector, settings.control);
     static_assert(k_tile_size <= k_primary_block);
 
     for_each_tile(cam.width, cam.height, settings.control, [&](const Tile& tile) {
-        TraceContext ctx = shared;
-        if (spp == 1 && settings.primary_blocks && shader.supported()) {
-            thread_local std::unique_ptr<WaveScratch> scratch;
-            if (!scratch) scratch = std::make_unique<WaveScratch>();
-            WaveTracer wave(ctx, primary, shader, *scratch);
-            const PathLevel& colours = wave.trace_tile(tile, [&](const PrimaryBlock& block) {
-                if (!settings.aov_buffers) return;
-                for (int y = tile.y0; y < tile.y1; ++y)
-                    for (int x = tile.x0; x < tile.x1; ++x) {
-                        const int k = (y - tile.y0) * k_primary_block + (x - tile.x0);
-                        if (block.found(k))
-                            store_aovs(static_cast<size_t>(y) * cam.width + x, block.ray(k),
-                                       block.hit(k));
-                    }
-            });
-            for (int y = tile.y0; y < tile.y1; ++y) {
-                const size_t row = static_cast<size_t>(y - tile.y0) * k_primary_block;
-                fb.set_colors(static_cast<size_t>(y) * cam.width + tile.x0,
-                              colours.colour[0].data() + row, colours.colour[1].data() + row,
-                              colours.colour[2].data() + row,
-                              static_cast<size_t>(tile.x1 - tile.x0));
-            }
-            if (settings.control) settings.control->rays_traced += ctx.rays;
-            return;
-        }
-        for (int y = tile.y0; y < tile.y1; ++y)
-            for (int x = tile.x0; x < tile.x1; ++x) {
-                const size_t i = static_cast<size_t>(y) * cam.width + x;
-                const auto fx = static_cast<float>(x), fy = static_cast<float>(y);
-                SurfaceHit first;
-                first.t = k_infinity;
-                const Ray centre = camera_ray(frame, fx + 0.5f, fy + 0.5f);
-                Vec3 sum(0.0f);
-                if (spp == 1) {
-                    sum = trace(ctx, centre, 1, &first);
-                } else {
-                    // The AOVs describe the pixel centre; colour averages jittered samples, one
-                    // in each stratum, from a stream seeded by the pixel alone.
-                    intersector.closest(centre, {0.0f, k_infinity}, first);
-                    ++ctx.rays;
-                    Pcg32 rng(i, 0x68696b617269ULL);
-                    for (int s = 0; s < spp; ++s) {
-                        const int column = s % cols, row = s / cols;
-                        const float sx = (static_cast<float>(column) + rng.next_float()) / cols;
-                        const float sy = (static_cast<float>(row) + rng.next_float()) / rows;
-                        sum += trace(ctx, camera_ray(frame, fx + sx, fy + sy), 1);
-                    }
-                    sum = sum / static_cast<float>(spp);
-                }
-                fb.set_color(i, sum);
-                store_aovs(i, centre, first);
-            }
+        TraceContext ctx{scene, render.intersector, render.shading, settings.max_depth};
+        thread_local std::unique_ptr<WaveScratch> scratch;
+        if (!scratch) scratch = std::make_unique<WaveScratch>();
+        WaveTracer wave(ctx, render.primary, render.shader, *scratch);
+        if (settings.samples_per_pixel == 1)
+            render.render_centres(tile, wave);
+        else
+            render.render_samples(tile, wave, *scratch);
         if (settings.control) settings.control->rays_traced += ctx.rays;
     });
     return fb;

@@ -13,14 +13,14 @@
 #include "hikari/integrators/whitted/whitted_shade_kernel.h"
 
 namespace hikari::detail {
-void shade_lanes_avx512(const ShadeScene& scene, int spawn, int count, BlockLanes& lanes) {
+void shade_lanes_avx512(const WhittedScene& scene, int spawn, int count, BlockLanes& lanes) {
     shade_kernel(scene, spawn, count, lanes);
 }
 }  // namespace hikari::detail
 #else
 namespace hikari::detail {
 // Never called: best_simd_level() is portable where the kernels are not compiled.
-void shade_lanes_avx512(const ShadeScene& scene, int spawn, int count, BlockLanes& lanes) {
+void shade_lanes_avx512(const WhittedScene& scene, int spawn, int count, BlockLanes& lanes) {
     shade_lanes_portable(scene, spawn, count, lanes);
 }
 }  // namespace hikari::detail

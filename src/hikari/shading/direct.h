@@ -1,0 +1,54 @@
+#pragma once
+// Direct illumination, written once for every method (the lecture's Fig 4.29 summed over the
+// lights): ambient, then each light that faces the point and that a visibility test lets
+// through. The test is the caller's: the ray tracer passes shadow rays (Alg 4.3's shadow
+// test), the rasterizer passes "lit" today and shadow-map or shadow-volume lookups later.
+
+#include <cstddef>
+
+#include "hikari/core/lanes.h"
+#include "hikari/core/vec.h"
+#include "hikari/scene/light.h"
+#include "hikari/shading/lighting_environment.h"
+#include "hikari/shading/lights.h"
+#include "hikari/shading/material_sample.h"
+#include "hikari/shading/phong.h"
+#include "hikari/shading/surface.h"
+
+namespace hikari {
+
+/// What direct_lighting found.
+template <class F>
+struct DirectLighting {
+    Vec3T<F> colour;    ///< ka Ia + Σ over visible lights of the Phong reflection
+    IntOf<F> tested{};  ///< lights facing the point: visibility tests asked (shadow rays)
+};
+
+/// ka Ia + Σ_l visible_l · I_l (kd cos α + ks cos^n γ) at `s` for the lanes in `active`.
+/// `visible(l, sample, s, facing)` answers, for the lanes in `facing` (where light l's
+/// cos α > 0), whether light l reaches the point unblocked; it is called only where some lane
+/// faces the light.
+template <class F, class Visible>
+HIKARI_INLINE DirectLighting<F> direct_lighting(const LightingEnvironment& env,
+                                                const SurfacePoint<F>& s,
+                                                const MaterialSample<F>& m, const MaskOf<F>& active,
+                                                Visible&& visible) {
+    DirectLighting<F> out{m.ka * Vec3T<F>(env.ambient), IntOf<F>(0)};
+    // Skipping the highlight where no lane is shiny changes no bit (ks · anything = 0).
+    const MaskOf<F> shiny = (m.ks.x != F(0.0f)) | (m.ks.y != F(0.0f)) | (m.ks.z != F(0.0f));
+    const bool specular = any(active & shiny);
+    for (size_t l = 0; l < env.light_count; ++l) {
+        const LightSampleT<F> light = sample_light<F>(env.lights[l], s.position);
+        const F cos_alpha = dot(s.normal, light.to_light);
+        const MaskOf<F> facing = active & !(cos_alpha <= F(0.0f));
+        if (!any(facing)) continue;
+        out.tested += mask_to_int(facing);
+        const MaskOf<F> lit = facing & visible(l, light, s, facing);
+        if (!any(lit)) continue;
+        out.colour =
+            select(lit, out.colour + phong_reflected(m, s, light, cos_alpha, specular), out.colour);
+    }
+    return out;
+}
+
+}  // namespace hikari

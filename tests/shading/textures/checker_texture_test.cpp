@@ -1,0 +1,43 @@
+#include "hikari/shading/textures/checker_texture.h"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+namespace hikari {
+namespace {
+
+struct TestIsa {};
+using Lanes = LaneFloat<TestIsa>;
+
+TEST(CheckerTexture, FloorParityIsTheParityOfFloor) {
+    const float values[] = {
+        -2.5f, -2.0f,        -1e-7f,      -0.0f, 0.0f,   1e-7f,         0.999999f,      1.0f,
+        3.5f,  -16777217.0f, 16777216.0f, 1e12f, -1e12f, 2147483520.0f, -2147483648.0f, 7.0f};
+    float lanes[k_lanes];
+    for (int i = 0; i < k_lanes; ++i) lanes[i] = values[i];
+    const LaneInt<TestIsa> packed = floor_parity(Lanes::load(lanes));
+    for (int i = 0; i < k_lanes; ++i) {
+        const auto floor = static_cast<long long>(std::floor(static_cast<double>(values[i])));
+        const int32_t want = static_cast<int32_t>(floor & 1);
+        EXPECT_EQ(floor_parity(values[i]), want) << values[i];
+        EXPECT_EQ(packed[i], want) << values[i];
+    }
+}
+
+TEST(CheckerTexture, CellsAlternateAndOffsetMovesThePattern) {
+    CheckerTexture t;
+    t.size = 0.5f;
+    t.color_a = Vec3(1.0f);
+    t.color_b = Vec3(0.0f);
+    SurfacePoint<float> p;
+    p.position = {0.25f, 0.25f, 0.25f};
+    EXPECT_EQ(texture_colour(t, p), Vec3(1.0f));
+    p.position.x += 0.5f;
+    EXPECT_EQ(texture_colour(t, p), Vec3(0.0f));
+    t.offset = {0.5f, 0.0f, 0.0f};
+    EXPECT_EQ(texture_colour(t, p), Vec3(1.0f));
+}
+
+}  // namespace
+}  // namespace hikari
