@@ -23,55 +23,46 @@ namespace hikari {
 /// Lanes in a pack: one chunk of a block of rays (core/block_lanes.h).
 inline constexpr int k_lanes = 16;
 
-template <class Isa>
-struct LaneMask;
-template <class Isa>
-struct LaneInt;
+namespace detail {
+// The vector types of the packs (GCC ignores vector_size on a dependent type, so they are
+// spelled out here).
+using FloatVector = float __attribute__((vector_size(4 * k_lanes)));
+using IntVector = int32_t __attribute__((vector_size(4 * k_lanes)));
+}  // namespace detail
 
-/// k_lanes floats.
-template <class Isa>
-struct LaneFloat {
-    using Vector = float __attribute__((vector_size(4 * k_lanes)));
+/// k_lanes values, lane by lane: `V` is detail::FloatVector or detail::IntVector.
+template <class V, class Isa>
+struct LaneVector {
+    using Vector = V;
+    using Element = std::remove_cvref_t<decltype(V{}[0])>;
     Vector v;
 
     /// Uninitialised, as a float local is: a pack built to be assigned costs no stores.
-    HIKARI_INLINE LaneFloat() {}  // NOLINT(modernize-use-equals-default): must stay user-provided
-    HIKARI_INLINE constexpr LaneFloat(float s) : v(Vector{} + s) {}  // NOLINT: a broadcast
-    HIKARI_INLINE constexpr explicit LaneFloat(Vector w) : v(w) {}
+    HIKARI_INLINE LaneVector() {}  // NOLINT(modernize-use-equals-default): must stay user-provided
+    HIKARI_INLINE constexpr LaneVector(Element s) : v(Vector{} + s) {}  // NOLINT: a broadcast
+    HIKARI_INLINE constexpr explicit LaneVector(Vector w) : v(w) {}
 
-    /// The lanes of a 64-byte aligned array of k_lanes floats.
-    HIKARI_INLINE static LaneFloat load(const float* p) {
-        LaneFloat r;
+    /// The lanes of a 64-byte aligned array of k_lanes values.
+    HIKARI_INLINE static LaneVector load(const Element* p) {
+        LaneVector r;
         std::memcpy(&r.v, p, sizeof r.v);
         return r;
     }
-    HIKARI_INLINE void store(float* p) const { std::memcpy(p, &v, sizeof v); }
-    HIKARI_INLINE float operator[](int i) const { return v[i]; }
+    HIKARI_INLINE void store(Element* p) const { std::memcpy(p, &v, sizeof v); }
+    HIKARI_INLINE Element operator[](int i) const { return v[i]; }
 };
 
+/// k_lanes floats.
+template <class Isa>
+using LaneFloat = LaneVector<detail::FloatVector, Isa>;
 /// k_lanes 32-bit integers.
 template <class Isa>
-struct LaneInt {
-    using Vector = int32_t __attribute__((vector_size(4 * k_lanes)));
-    Vector v;
-
-    HIKARI_INLINE LaneInt() {}  // NOLINT(modernize-use-equals-default): uninitialised
-    HIKARI_INLINE constexpr LaneInt(int32_t s) : v(Vector{} + s) {}  // NOLINT: a broadcast
-    HIKARI_INLINE constexpr explicit LaneInt(Vector w) : v(w) {}
-
-    HIKARI_INLINE static LaneInt load(const int32_t* p) {
-        LaneInt r;
-        std::memcpy(&r.v, p, sizeof r.v);
-        return r;
-    }
-    HIKARI_INLINE void store(int32_t* p) const { std::memcpy(p, &v, sizeof v); }
-    HIKARI_INLINE int32_t operator[](int i) const { return v[i]; }
-};
+using LaneInt = LaneVector<detail::IntVector, Isa>;
 
 /// k_lanes booleans, each all ones (true) or all zeros (false), as vector compares give them.
 template <class Isa>
 struct LaneMask {
-    using Vector = int32_t __attribute__((vector_size(4 * k_lanes)));
+    using Vector = detail::IntVector;
     Vector v;
 
     HIKARI_INLINE LaneMask() {}  // NOLINT(modernize-use-equals-default): uninitialised

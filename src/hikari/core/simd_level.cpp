@@ -1,5 +1,8 @@
 #include "hikari/core/simd_level.h"
 
+#include <cstdlib>
+#include <string_view>
+
 namespace hikari {
 
 bool simd_level_supported(SimdLevel level) {
@@ -20,10 +23,24 @@ bool simd_level_supported(SimdLevel level) {
 #endif
 }
 
+namespace {
+/// The best level the CPU runs, capped by the environment variable HIKARI_SIMD (portable or
+/// avx2), which lets one machine measure and test the narrower kernels.
+SimdLevel pick_best_level() {
+    SimdLevel best = simd_level_supported(SimdLevel::avx512) ? SimdLevel::avx512
+                     : simd_level_supported(SimdLevel::avx2) ? SimdLevel::avx2
+                                                             : SimdLevel::portable;
+    if (const char* cap = std::getenv("HIKARI_SIMD")) {
+        const std::string_view name(cap);
+        if (name == "portable") best = SimdLevel::portable;
+        if (name == "avx2" && best == SimdLevel::avx512) best = SimdLevel::avx2;
+    }
+    return best;
+}
+}  // namespace
+
 SimdLevel best_simd_level() {
-    static const SimdLevel best = simd_level_supported(SimdLevel::avx512) ? SimdLevel::avx512
-                                  : simd_level_supported(SimdLevel::avx2) ? SimdLevel::avx2
-                                                                          : SimdLevel::portable;
+    static const SimdLevel best = pick_best_level();
     return best;
 }
 
