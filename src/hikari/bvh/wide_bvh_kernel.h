@@ -23,7 +23,7 @@
 #include <limits>
 #include <optional>
 
-#include "hikari/bvh/bvh_traversal.h"
+#include "hikari/bvh/triangle_hit.h"
 #include "hikari/bvh/wide_bvh.h"
 #include "hikari/core/ray.h"
 #include "hikari/geometry/triangle_intersect.h"
