@@ -21,9 +21,12 @@ inline constexpr uint32_t k_wide_bvh_width = 8;
 
 /// No chain of binned-SAH splits from the root to a leaf is longer than this; build_wide_bvh
 /// guarantees it (halving ranges at the median near the limit). A root-to-leaf path has no more
-/// wide nodes than splits, and each defers at most k_wide_bvh_width - 1 children, so the
-/// traversals size their fixed stacks by it.
+/// wide nodes than splits, so the traversals size their fixed stacks by it.
 inline constexpr uint32_t k_bvh_max_depth = 64;
+
+/// Entries a traversal stack needs: at most k_wide_bvh_width - 1 deferred children per wide node
+/// on the path to the current one, and the root.
+inline constexpr uint32_t k_wide_bvh_stack_size = (k_wide_bvh_width - 1) * k_bvh_max_depth + 1;
 
 /// A reference to a child of a wide node (or to the root): an inner node, a leaf, or nothing.
 /// Leaves are encoded in place so the traversal needs no extra memory access to start one.
