@@ -320,6 +320,64 @@ struct Halves {
     }
 };
 
+// ---- Finishing a parallel partition -------------------------------------------------------
+// After the blocks of a range are partitioned in place, in parallel, each block holds its
+// left-goers then its right-goers; the right-goers left of the final midpoint must exchange
+// places with the left-goers right of it. Planned serially from the block midpoints alone, so
+// the exchanges, and the result, do not depend on the threads.
+
+/// A run of consecutive PrimRefs: [first, first + count).
+struct Run {
+    uint32_t first, count;
+};
+
+/// The runs on the wrong side of a partition's final midpoint, each list in order.
+struct MisplacedRuns {
+    std::vector<Run> right;  ///< right-goers left of the midpoint
+    std::vector<Run> left;   ///< left-goers right of it
+};
+
+/// The misplaced runs of [begin, end) with the final midpoint `mid`, once its blocks of `block`
+/// refs are partitioned in place (block b split at parts[b].mid).
+MisplacedRuns misplaced_runs(const std::vector<Halves>& parts, uint32_t begin, uint32_t end,
+                             uint32_t mid, uint32_t block) {
+    MisplacedRuns runs;
+    for (uint32_t b = 0; b < parts.size(); ++b) {
+        const uint32_t first = begin + b * block, last = std::min(end, first + block);
+        const uint32_t split = parts[b].mid;
+        // The block's right part [split, last) inside [begin, mid), its left part
+        // [first, split) inside [mid, end).
+        if (std::min(last, mid) > split) runs.right.push_back({split, std::min(last, mid) - split});
+        if (split > std::max(first, mid))
+            runs.left.push_back({std::max(first, mid), split - std::max(first, mid)});
+    }
+    return runs;
+}
+
+/// An exchange of [a, a + count) with [b, b + count).
+struct RunSwap {
+    uint32_t a, b, count;
+};
+
+/// Pairs the misplaced runs, in order, into exchanges of equal length, at most `max_count` each
+/// (the two sides hold as many refs).
+std::vector<RunSwap> pair_runs(const MisplacedRuns& runs, uint32_t max_count) {
+    std::vector<RunSwap> swaps;
+    size_t i = 0, j = 0;
+    uint32_t used_i = 0, used_j = 0;
+    while (i < runs.right.size() && j < runs.left.size()) {
+        const Run& r = runs.right[i];
+        const Run& l = runs.left[j];
+        const uint32_t n = std::min({r.count - used_i, l.count - used_j, max_count});
+        swaps.push_back({r.first + used_i, l.first + used_j, n});
+        used_i += n;
+        used_j += n;
+        if (used_i == r.count) ++i, used_i = 0;
+        if (used_j == l.count) ++j, used_j = 0;
+    }
+    return swaps;
+}
+
 /// The nodes one task built: a subtree whose big subtrees were built by tasks of their own.
 /// Node indices are local until assembly gives the subtree its place in WideBvh::nodes, so the
 /// tree does not depend on which thread built what.
@@ -602,6 +660,7 @@ class WideSahBuilder {
     Halves partition_parallel(uint32_t begin, uint32_t end, const GoesLeft& goes_left) const {
         constexpr uint32_t k_block = 8192;
         const uint32_t blocks = (end - begin + k_block - 1) / k_block;
+        /* partition each block in place, and merge what they found */
         std::vector<Halves> parts(blocks);
         hikari::parallel_for(0u, blocks, [&](uint32_t b) {
             parts[b] =
@@ -615,37 +674,9 @@ class WideSahBuilder {
         }
         h.mid = mid;
 
-        // Runs of misplaced refs: right-goers in [begin, mid), left-goers in [mid, end).
-        struct Run {
-            uint32_t first, count;
-        };
-        std::vector<Run> wrong_right, wrong_left;
-        for (uint32_t b = 0; b < blocks; ++b) {
-            const uint32_t first = begin + b * k_block, last = std::min(end, first + k_block);
-            const uint32_t split = parts[b].mid;
-            // The block's right part [split, last) inside [begin, mid), its left part
-            // [first, split) inside [mid, end).
-            if (std::min(last, mid) > split)
-                wrong_right.push_back({split, std::min(last, mid) - split});
-            if (split > std::max(first, mid))
-                wrong_left.push_back({std::max(first, mid), split - std::max(first, mid)});
-        }
-        // Pair the runs into swaps of equal length, at most a block each.
-        struct Swap {
-            uint32_t a, b, count;
-        };
-        std::vector<Swap> swaps;
-        size_t i = 0, j = 0;
-        uint32_t used_i = 0, used_j = 0;
-        while (i < wrong_right.size() && j < wrong_left.size()) {
-            const uint32_t n =
-                std::min({wrong_right[i].count - used_i, wrong_left[j].count - used_j, k_block});
-            swaps.push_back({wrong_right[i].first + used_i, wrong_left[j].first + used_j, n});
-            used_i += n;
-            used_j += n;
-            if (used_i == wrong_right[i].count) ++i, used_i = 0;
-            if (used_j == wrong_left[j].count) ++j, used_j = 0;
-        }
+        /* exchange the misplaced runs */
+        const std::vector<RunSwap> swaps =
+            pair_runs(misplaced_runs(parts, begin, end, mid, k_block), k_block);
         hikari::parallel_for(size_t(0), swaps.size(), [&](size_t s) {
             std::swap_ranges(m_refs + swaps[s].a, m_refs + swaps[s].a + swaps[s].count,
                              m_refs + swaps[s].b);
