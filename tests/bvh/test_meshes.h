@@ -1,5 +1,5 @@
 #pragma once
-// Meshes and rays shared by the ray/ tests: random triangle soups, a tessellated sphere and
+// Meshes and rays shared by the bvh/ tests: random triangle soups, a tessellated sphere and
 // brute-force reference answers. Everything is seeded, so failures reproduce.
 
 #include <array>
@@ -17,7 +17,7 @@
 
 namespace hikari::testing {
 
-/// An indexed triangle mesh, as build_bvh takes it.
+/// An indexed triangle mesh, as build_wide_bvh takes it.
 struct TestMesh {
     std::vector<Vec3> positions;
     std::vector<std::array<uint32_t, 3>> indices;

@@ -23,9 +23,10 @@ Aabb child_box(const WideBvhNode& node, uint32_t i) {
 }
 
 /// Walks the wide tree: every triangle slot in exactly one leaf, inside its leaf's box, and
-/// stored as the mesh's own vertices.
+/// stored as the mesh's own vertices; no path deeper than the traversal stacks allow.
 void check_ref(const WideBvh& bvh, const TestMesh& mesh, uint32_t ref, const Aabb& box,
-               std::vector<int>& uses) {
+               uint32_t depth, std::vector<int>& uses) {
+    ASSERT_LT(depth, k_bvh_max_depth);
     if (WideBvhRef::is_leaf(ref)) {
         const uint32_t first = WideBvhRef::leaf_first(ref), count = WideBvhRef::leaf_count(ref);
         const float* block = bvh.triangle_data.data() + 9 * size_t(first);
@@ -49,7 +50,7 @@ void check_ref(const WideBvh& bvh, const TestMesh& mesh, uint32_t ref, const Aab
         }
         ++used;
         EXPECT_TRUE(box.contains(child_box(node, i)));
-        check_ref(bvh, mesh, node.child[i], child_box(node, i), uses);
+        check_ref(bvh, mesh, node.child[i], child_box(node, i), depth + 1, uses);
     }
     EXPECT_GE(used, 2);
 }
@@ -58,11 +59,16 @@ void check_tree(const WideBvh& bvh, const TestMesh& mesh) {
     ASSERT_FALSE(bvh.empty());
     ASSERT_EQ(bvh.triangle_count(), mesh.indices.size());
     std::vector<int> uses(mesh.indices.size(), 0);
-    check_ref(bvh, mesh, bvh.root, bvh.root_bounds, uses);
+    check_ref(bvh, mesh, bvh.root, bvh.root_bounds, 0, uses);
     EXPECT_TRUE(std::all_of(uses.begin(), uses.end(), [](int u) { return u == 1; }));
 }
 
-TEST(WideBvhBuilder, EmptyInputGivesEmptyTree) { EXPECT_TRUE(build_wide_bvh({}, {}).empty()); }
+TEST(WideBvhBuilder, EmptyInputGivesEmptyTree) {
+    const WideBvh bvh = build_wide_bvh({}, {});
+    EXPECT_TRUE(bvh.empty());
+    EXPECT_EQ(bvh.triangle_count(), 0u);
+    EXPECT_EQ(bvh.memory_bytes(), 0u);
+}
 
 TEST(WideBvhBuilder, SingleLeafBecomesRoot) {
     const TestMesh mesh = testing::random_soup(1, 0.5f, 4);

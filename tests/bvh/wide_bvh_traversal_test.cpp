@@ -121,28 +121,39 @@ TEST(WideBvhTraversal, BadRaysHitNothing) {
 }
 
 TEST(WideBvhTraversal, RayInBoundingBoxFacePlaneStillHits) {
+    // An axis-aligned cube: rays along -z in the plane x = 1 (the box face) give 0 * inf in the
+    // slab test; the top face's edge at x = 1 must still be found, at t = 1.
     TestMesh mesh;
     for (int i = 0; i < 8; ++i) mesh.positions.push_back(Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1));
     mesh.indices = {{4, 5, 7}, {4, 7, 6}, {0, 2, 3}, {0, 3, 1}, {1, 3, 7}, {1, 7, 5},
                     {0, 4, 6}, {0, 6, 2}, {0, 1, 5}, {0, 5, 4}, {2, 6, 7}, {2, 7, 3}};
     BvhBuildSettings settings;
-    settings.max_leaf_size = 1;
-    settings.traversal_cost = 0.0f;
+    settings.max_leaf_size = 1;  // a deep tree, so many boxes share the face plane
     const WideBvh bvh = build_wide_bvh(mesh.positions, mesh.indices, settings);
-    for (const Vec3 origin : {Vec3(1, 0.5f, 2), Vec3(1, 1, 2), Vec3(0, 0.25f, 2)})
-        expect_matches_brute_force(bvh, mesh, {origin, {0, 0, -1}}, {}, 0);
+    for (const Vec3 origin : {Vec3(1, 0.5f, 2), Vec3(1, 1, 2), Vec3(0, 0.25f, 2)}) {
+        const Ray ray{origin, {0, 0, -1}};
+        for (SimdLevel level : supported_simd_levels()) {
+            TriangleHit hit;
+            ASSERT_TRUE(intersect_closest(bvh, ray, {}, hit, level));
+            EXPECT_EQ(hit.t, 1.0f);
+        }
+        expect_matches_brute_force(bvh, mesh, ray, {}, 0);
+    }
 }
 
 TEST(WideBvhTraversal, IntervalLimitsHits) {
     const TestMesh mesh = testing::uv_sphere(16, 8, 1.0f);
     const WideBvh bvh = build_wide_bvh(mesh.positions, mesh.indices);
-    const Ray ray{{0.01f, 0.02f, -3}, {0, 0, 1}};
+    const Ray ray{{0.01f, 0.02f, -3}, {0, 0, 1}};  // enters at t ~ 2, leaves at t ~ 4
     for (SimdLevel level : supported_simd_levels()) {
         TriangleHit hit;
+        ASSERT_TRUE(intersect_closest(bvh, ray, {}, hit, level));
+        EXPECT_NEAR(hit.t, 2.0f, 0.05f);
         ASSERT_TRUE(intersect_closest(bvh, ray, {3.0f, k_infinity}, hit, level));
         EXPECT_NEAR(hit.t, 4.0f, 0.05f);
         EXPECT_FALSE(intersect_closest(bvh, ray, {0.0f, 1.5f}, hit, level));
         EXPECT_FALSE(intersect_any(bvh, ray, {0.0f, 1.5f}, level));
+        EXPECT_FALSE(intersect_any(bvh, ray, {4.5f, k_infinity}, level));
         EXPECT_TRUE(intersect_any(bvh, ray, {0.0f, 2.5f}, level));
     }
 }
@@ -230,13 +241,17 @@ TEST(WideBvhTraversal, AnyHitMatchesBruteForceWithinShortIntervals) {
     const TestMesh mesh = testing::random_soup(2000, 0.2f, 31);
     const WideBvh bvh = build_wide_bvh(mesh.positions, mesh.indices);
     Pcg32 rng(32, 1);
+    int occluded = 0;
     for (int i = 0; i < 3000; ++i) {
         const Ray ray{testing::random_point(rng, 1.0f), testing::random_direction(rng)};
         const Interval valid{0.01f, 0.3f * rng.next_float()};
         const bool expected = testing::brute_force_closest(mesh, ray, valid).has_value();
         for (SimdLevel level : supported_simd_levels())
             ASSERT_EQ(intersect_any(bvh, ray, valid, level), expected) << "ray " << i;
+        occluded += expected;
     }
+    EXPECT_GT(occluded, 100);  // the test saw both outcomes
+    EXPECT_LT(occluded, 2900);
 }
 
 }  // namespace

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <string>
+#include <vector>
 
 #include "hikari/core/error.h"
 #include "temp_dir.h"
@@ -19,10 +21,11 @@ void expect_near(Vec3 a, Vec3 b, float tol = 1e-6f) {
     EXPECT_NEAR(a.z, b.z, tol);
 }
 
-/// The message of the InputError that load_obj(path) throws, or "" when it throws none.
-std::string load_error(const std::filesystem::path& path) {
+/// The message of the InputError that `load(path)` throws, or "" when it throws none.
+template <class Load = MeshData (*)(const std::filesystem::path&)>
+std::string load_error(const std::filesystem::path& path, Load load = load_obj) {
     try {
-        load_obj(path);
+        load(path);
     } catch (const InputError& e) {
         return e.what();
     }
@@ -270,6 +273,44 @@ TEST(ObjLoader, GroupsKeepFileOrder) {
     EXPECT_EQ(mesh.positions[mesh.indices[0][1]], Vec3(1, 0, 0));
     EXPECT_EQ(mesh.positions[mesh.indices[1][2]], Vec3(0, 1, 0));
     EXPECT_EQ(mesh.positions[mesh.indices[2][0]], Vec3(1, 0, 0));
+}
+
+/// The message of the InputError that load_obj_triangles(path) throws, or "" when none.
+std::string triangles_error(const std::filesystem::path& path) {
+    return load_error(path, load_obj_triangles);
+}
+
+TEST(ObjTriangles, KeepsTheFilesNumbering) {
+    // Every `v` in file order, used or not, and degenerate triangles kept: triangle i and
+    // vertex k are the file's own, as the peer benchmarks number them.
+    TempDir dir;
+    write_text(dir / "m.obj",
+               "v 9 9 9\n" + std::string(k_quad) + "vn 0 0 1\nf 2//1 3//1 4//1\nf 2 3 3\n");
+    const ObjTriangles mesh = load_obj_triangles(dir / "m.obj");
+    ASSERT_EQ(mesh.positions.size(), 5u);
+    EXPECT_EQ(mesh.positions[0], Vec3(9, 9, 9));
+    EXPECT_EQ(mesh.indices, (std::vector<std::array<uint32_t, 3>>{{1, 2, 3}, {1, 2, 2}}));
+}
+
+TEST(ObjTriangles, QuadsSplitAsTinyobjloaderSplitsThem) {
+    // Along the shorter diagonal: here 2-4, not 1-3 (a fan would use 1-3).
+    TempDir dir;
+    write_text(dir / "q.obj", "v 0 0 0\nv 1 0 0\nv 3 1 0\nv 0 1 0\nf 1 2 3 4\n");
+    const ObjTriangles mesh = load_obj_triangles(dir / "q.obj");
+    EXPECT_EQ(mesh.indices, (std::vector<std::array<uint32_t, 3>>{{0, 1, 3}, {1, 2, 3}}));
+}
+
+TEST(ObjTriangles, BadFilesAreErrorsNamingTheFile) {
+    TempDir dir;
+    const std::string missing = (dir / "missing.obj").string();
+    EXPECT_EQ(triangles_error(missing).rfind(missing + ": cannot read", 0), 0u);
+    write_text(dir / "points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+    EXPECT_NE(triangles_error(dir / "points.obj").find(": no triangles"), std::string::npos);
+    write_text(dir / "far.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 9\n");
+    EXPECT_NE(triangles_error(dir / "far.obj").find("triangle 2 refers to a vertex out of range"),
+              std::string::npos);
+    write_text(dir / "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n");
+    EXPECT_NE(triangles_error(dir / "bad.obj").find("line 4"), std::string::npos);
 }
 
 }  // namespace

@@ -1,55 +1,17 @@
 #include "hikari/bench/bench_work.h"
 
-#include <tiny_obj_loader.h>
-
-#include <fmt/format.h>
 #include <algorithm>
-#include <cctype>
 #include <cmath>
-#include <string>
+#include <utility>
 
-#include "hikari/core/error.h"
 #include "hikari/core/rng.h"
-#include "hikari/io/read_file.h"
+#include "hikari/io/obj_loader.h"
 
 namespace hikari {
 
 BenchMesh load_bench_mesh(const std::filesystem::path& file) {
-    tinyobj::ObjReader reader;
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = true;
-    config.vertex_color = false;
-    // Read first, so a missing file or a directory gets the OS's reason, as a scene file does;
-    // the peers' materials are never read, so none are looked up.
-    const std::string text = read_file_bytes(file);
-    if (!reader.ParseFromString(text, "", config)) {
-        std::string reason = reader.Error();
-        while (!reason.empty() && std::isspace(static_cast<unsigned char>(reason.back())))
-            reason.pop_back();
-        throw InputError(fmt::format("{}: {}", file.string(), reason));
-    }
-    const auto& attrib = reader.GetAttrib();
-    BenchMesh mesh;
-    mesh.positions.resize(attrib.vertices.size() / 3);
-    for (size_t i = 0; i < mesh.positions.size(); ++i)
-        mesh.positions[i] = {attrib.vertices[3 * i], attrib.vertices[3 * i + 1],
-                             attrib.vertices[3 * i + 2]};
-    for (const auto& shape : reader.GetShapes()) {
-        const auto& idx = shape.mesh.indices;
-        for (size_t f = 0; f + 2 < idx.size(); f += 3)
-            mesh.indices.push_back({static_cast<uint32_t>(idx[f].vertex_index),
-                                    static_cast<uint32_t>(idx[f + 1].vertex_index),
-                                    static_cast<uint32_t>(idx[f + 2].vertex_index)});
-    }
-    if (mesh.indices.empty()) throw InputError(fmt::format("{}: no triangles", file.string()));
-    // tinyobjloader passes indices beyond the vertex list through; the peers would read past
-    // their buffers, so such a mesh is refused rather than measured.
-    for (size_t t = 0; t < mesh.indices.size(); ++t)
-        for (const uint32_t v : mesh.indices[t])
-            if (v >= mesh.positions.size())
-                throw InputError(fmt::format(
-                    "{}: triangle {} refers to a vertex out of range (the file has {} vertices)",
-                    file.string(), t + 1, mesh.positions.size()));
+    ObjTriangles obj = load_obj_triangles(file);
+    BenchMesh mesh{std::move(obj.positions), std::move(obj.indices), {}, 0};
     set_bench_bounds(mesh);
     return mesh;
 }

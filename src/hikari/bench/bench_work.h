@@ -22,7 +22,8 @@ struct BenchMesh {
     double diagonal = 0;             ///< |bmax - bmin|, in double
 };
 
-/// Loads an OBJ file the SPEC's way (tinyobjloader; `v` and `f` only). Throws InputError.
+/// Loads an OBJ file the SPEC's way (io/obj_loader.h's load_obj_triangles: tinyobjloader, `v`
+/// and `f` only, file order). Throws InputError.
 BenchMesh load_bench_mesh(const std::filesystem::path& file);
 
 /// Computes center and diagonal from the positions (SPEC §1).

@@ -3,7 +3,7 @@
 // directly, triangles through the wide
 // (8-child, SIMD) BVH. Built once per render, read by all threads.
 
-#include "hikari/bvh/bvh_traversal.h"
+#include "hikari/bvh/triangle_hit.h"
 #include "hikari/bvh/wide_bvh.h"
 #include "hikari/bvh/wide_bvh_packet.h"
 #include "hikari/core/ray.h"

@@ -3,7 +3,8 @@
 // structure-of-arrays so one SIMD instruction tests all eight (Wald et al. 2008, "Getting rid of
 // packets"; Ernst & Greiner 2008, "Multi bounding volume hierarchies"), and the triangles of
 // each leaf stored structure-of-arrays so one SIMD watertight test covers a whole leaf.
-// `wide_bvh_builder.h` makes one from the binary tree, `wide_bvh_traversal.h` shoots rays.
+// `wide_bvh_builder.h` makes one, `wide_bvh_traversal.h` and `wide_bvh_packet.h` shoot rays
+// through it.
 
 #include <array>
 #include <cstddef>
@@ -17,6 +18,15 @@ namespace hikari {
 
 /// Children per node: one 256-bit register of floats.
 inline constexpr uint32_t k_wide_bvh_width = 8;
+
+/// No chain of binned-SAH splits from the root to a leaf is longer than this; build_wide_bvh
+/// guarantees it (halving ranges at the median near the limit). A root-to-leaf path has no more
+/// wide nodes than splits, so the traversals size their fixed stacks by it.
+inline constexpr uint32_t k_bvh_max_depth = 64;
+
+/// Entries a traversal stack needs: at most k_wide_bvh_width - 1 deferred children per wide node
+/// on the path to the current one, and the root.
+inline constexpr uint32_t k_wide_bvh_stack_size = (k_wide_bvh_width - 1) * k_bvh_max_depth + 1;
 
 /// A reference to a child of a wide node (or to the root): an inner node, a leaf, or nothing.
 /// Leaves are encoded in place so the traversal needs no extra memory access to start one.

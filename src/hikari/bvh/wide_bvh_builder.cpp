@@ -320,6 +320,64 @@ struct Halves {
     }
 };
 
+// ---- Finishing a parallel partition -------------------------------------------------------
+// After the blocks of a range are partitioned in place, in parallel, each block holds its
+// left-goers then its right-goers; the right-goers left of the final midpoint must exchange
+// places with the left-goers right of it. Planned serially from the block midpoints alone, so
+// the exchanges, and the result, do not depend on the threads.
+
+/// A run of consecutive PrimRefs: [first, first + count).
+struct Run {
+    uint32_t first, count;
+};
+
+/// The runs on the wrong side of a partition's final midpoint, each list in order.
+struct MisplacedRuns {
+    std::vector<Run> right;  ///< right-goers left of the midpoint
+    std::vector<Run> left;   ///< left-goers right of it
+};
+
+/// The misplaced runs of [begin, end) with the final midpoint `mid`, once its blocks of `block`
+/// refs are partitioned in place (block b split at parts[b].mid).
+MisplacedRuns misplaced_runs(const std::vector<Halves>& parts, uint32_t begin, uint32_t end,
+                             uint32_t mid, uint32_t block) {
+    MisplacedRuns runs;
+    for (uint32_t b = 0; b < parts.size(); ++b) {
+        const uint32_t first = begin + b * block, last = std::min(end, first + block);
+        const uint32_t split = parts[b].mid;
+        // The block's right part [split, last) inside [begin, mid), its left part
+        // [first, split) inside [mid, end).
+        if (std::min(last, mid) > split) runs.right.push_back({split, std::min(last, mid) - split});
+        if (split > std::max(first, mid))
+            runs.left.push_back({std::max(first, mid), split - std::max(first, mid)});
+    }
+    return runs;
+}
+
+/// An exchange of [a, a + count) with [b, b + count).
+struct RunSwap {
+    uint32_t a, b, count;
+};
+
+/// Pairs the misplaced runs, in order, into exchanges of equal length, at most `max_count` each
+/// (the two sides hold as many refs).
+std::vector<RunSwap> pair_runs(const MisplacedRuns& runs, uint32_t max_count) {
+    std::vector<RunSwap> swaps;
+    size_t i = 0, j = 0;
+    uint32_t used_i = 0, used_j = 0;
+    while (i < runs.right.size() && j < runs.left.size()) {
+        const Run& r = runs.right[i];
+        const Run& l = runs.left[j];
+        const uint32_t n = std::min({r.count - used_i, l.count - used_j, max_count});
+        swaps.push_back({r.first + used_i, l.first + used_j, n});
+        used_i += n;
+        used_j += n;
+        if (used_i == r.count) ++i, used_i = 0;
+        if (used_j == l.count) ++j, used_j = 0;
+    }
+    return swaps;
+}
+
 /// The nodes one task built: a subtree whose big subtrees were built by tasks of their own.
 /// Node indices are local until assembly gives the subtree its place in WideBvh::nodes, so the
 /// tree does not depend on which thread built what.
@@ -602,6 +660,7 @@ class WideSahBuilder {
     Halves partition_parallel(uint32_t begin, uint32_t end, const GoesLeft& goes_left) const {
         constexpr uint32_t k_block = 8192;
         const uint32_t blocks = (end - begin + k_block - 1) / k_block;
+        /* partition each block in place, and merge what they found */
         std::vector<Halves> parts(blocks);
         hikari::parallel_for(0u, blocks, [&](uint32_t b) {
             parts[b] =
@@ -615,37 +674,9 @@ class WideSahBuilder {
         }
         h.mid = mid;
 
-        // Runs of misplaced refs: right-goers in [begin, mid), left-goers in [mid, end).
-        struct Run {
-            uint32_t first, count;
-        };
-        std::vector<Run> wrong_right, wrong_left;
-        for (uint32_t b = 0; b < blocks; ++b) {
-            const uint32_t first = begin + b * k_block, last = std::min(end, first + k_block);
-            const uint32_t split = parts[b].mid;
-            // The block's right part [split, last) inside [begin, mid), its left part
-            // [first, split) inside [mid, end).
-            if (std::min(last, mid) > split)
-                wrong_right.push_back({split, std::min(last, mid) - split});
-            if (split > std::max(first, mid))
-                wrong_left.push_back({std::max(first, mid), split - std::max(first, mid)});
-        }
-        // Pair the runs into swaps of equal length, at most a block each.
-        struct Swap {
-            uint32_t a, b, count;
-        };
-        std::vector<Swap> swaps;
-        size_t i = 0, j = 0;
-        uint32_t used_i = 0, used_j = 0;
-        while (i < wrong_right.size() && j < wrong_left.size()) {
-            const uint32_t n =
-                std::min({wrong_right[i].count - used_i, wrong_left[j].count - used_j, k_block});
-            swaps.push_back({wrong_right[i].first + used_i, wrong_left[j].first + used_j, n});
-            used_i += n;
-            used_j += n;
-            if (used_i == wrong_right[i].count) ++i, used_i = 0;
-            if (used_j == wrong_left[j].count) ++j, used_j = 0;
-        }
+        /* exchange the misplaced runs */
+        const std::vector<RunSwap> swaps =
+            pair_runs(misplaced_runs(parts, begin, end, mid, k_block), k_block);
         hikari::parallel_for(size_t(0), swaps.size(), [&](size_t s) {
             std::swap_ranges(m_refs + swaps[s].a, m_refs + swaps[s].a + swaps[s].count,
                              m_refs + swaps[s].b);
@@ -763,102 +794,7 @@ void assemble(Subtree& root, HugePageVector<WideBvhNode>& nodes) {
     });
 }
 
-// ---- Collapsing a binary tree ---------------------------------------------------------------
-
-/// Collapses the binary subtree under each inner node into one wide node, depth first.
-class Collapser {
-  public:
-    Collapser(const Bvh& binary, WideBvh& wide) : m_binary(binary), m_wide(wide) {}
-
-    /// The reference for binary node `b`, creating the wide nodes below it.
-    uint32_t collapse(uint32_t b) {
-        const BvhNode& node = m_binary.nodes[b];
-        if (node.is_leaf()) return leaf_ref(node);
-        const auto slot = static_cast<uint32_t>(m_wide.nodes.size());
-        m_wide.nodes.emplace_back();
-        const std::vector<uint32_t> children = open_children(node);
-        WideBvhNode wide{};
-        for (int a = 0; a < 3; ++a) {
-            wide.bounds[2 * a].fill(k_infinity);
-            wide.bounds[2 * a + 1].fill(-k_infinity);
-        }
-        wide.child.fill(WideBvhRef::k_empty);
-        for (size_t i = 0; i < children.size(); ++i) {
-            const Aabb& box = m_binary.nodes[children[i]].bounds;
-            for (int a = 0; a < 3; ++a) {
-                wide.bounds[2 * a][i] = box.min[a];
-                wide.bounds[2 * a + 1][i] = box.max[a];
-            }
-            wide.child[i] = collapse(children[i]);
-        }
-        m_wide.nodes[slot] = wide;
-        return WideBvhRef::inner(slot);
-    }
-
-  private:
-    static uint32_t leaf_ref(const BvhNode& leaf) {
-        if (leaf.triangle_count > WideBvhRef::k_max_leaf_size)
-            throw std::invalid_argument("wide BVH: leaves hold at most 16 triangles");
-        return WideBvhRef::leaf(leaf.index, leaf.triangle_count);
-    }
-
-    /// Wald et al. 2008: pull grandchildren up, always opening the inner child with the largest
-    /// surface area (the one most rays would enter), until eight children or only leaves.
-    std::vector<uint32_t> open_children(const BvhNode& node) const {
-        std::vector<uint32_t> children = {node.index, node.index + 1};
-        while (children.size() < k_wide_bvh_width) {
-            int best = -1;
-            float best_area = -1.0f;
-            for (size_t i = 0; i < children.size(); ++i) {
-                const BvhNode& c = m_binary.nodes[children[i]];
-                if (!c.is_leaf() && c.bounds.half_area() > best_area) {
-                    best = static_cast<int>(i);
-                    best_area = c.bounds.half_area();
-                }
-            }
-            if (best < 0) break;
-            const uint32_t first = m_binary.nodes[children[best]].index;
-            children[best] = first;
-            children.insert(children.begin() + best + 1, first + 1);
-        }
-        return children;
-    }
-
-    const Bvh& m_binary;
-    WideBvh& m_wide;
-};
-
-/// Writes each leaf's triangles as nine rows of `count` floats at 9 * first.
-void write_triangle_data(const Bvh& binary, HugePageVector<float>& data) {
-    data.assign(9 * binary.triangles.size() + k_wide_bvh_width, 0.0f);
-    for (const BvhNode& node : binary.nodes) {
-        if (!node.is_leaf()) continue;
-        const uint32_t first = node.index, count = node.triangle_count;
-        float* block = data.data() + 9 * size_t(first);
-        for (uint32_t i = 0; i < count; ++i) {
-            const BvhTriangle& tri = binary.triangles[first + i];
-            const Vec3 p[3] = {tri.p0, tri.p1, tri.p2};
-            for (int v = 0; v < 3; ++v)
-                for (int a = 0; a < 3; ++a) block[(3 * v + a) * count + i] = p[v][a];
-        }
-    }
-}
-
 }  // namespace
-
-WideBvh collapse_to_wide_bvh(const Bvh& binary) {
-    WideBvh wide;
-    if (binary.empty()) return wide;
-    if (binary.triangles.size() >= WideBvhRef::k_max_triangles)
-        throw std::invalid_argument("wide BVH: too many triangles");
-    wide.nodes.reserve(binary.nodes.size() / 4 + 1);
-    wide.root = Collapser(binary, wide).collapse(0);
-    wide.root_bounds = binary.bounds();
-    wide.nodes.shrink_to_fit();
-    write_triangle_data(binary, wide.triangle_data);
-    wide.triangle_ids.assign(binary.triangle_ids.begin(), binary.triangle_ids.end());
-    return wide;
-}
 
 WideBvh build_wide_bvh(std::span<const Vec3> positions,
                        std::span<const std::array<uint32_t, 3>> indices,

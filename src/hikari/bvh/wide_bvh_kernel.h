@@ -23,7 +23,7 @@
 #include <limits>
 #include <optional>
 
-#include "hikari/bvh/bvh_traversal.h"
+#include "hikari/bvh/triangle_hit.h"
 #include "hikari/bvh/wide_bvh.h"
 #include "hikari/core/ray.h"
 #include "hikari/geometry/triangle_intersect.h"
@@ -144,6 +144,12 @@ inline bool is_traceable(const Ray& ray) {
     return is_finite(ray.origin) && is_finite(ray.direction) && !(ray.direction == Vec3(0.0f));
 }
 
+/// A child deferred by the closest-hit loop.
+struct StackEntry {
+    uint32_t ref;
+    float entry;  ///< where the ray enters it: skip it once a hit is nearer
+};
+
 /// The closest-hit loop: a stack of (reference, entry distance); at an inner node all eight
 /// boxes are tested at once and the hit children visited nearest first.
 template <typename Ops>
@@ -157,12 +163,7 @@ bool traverse(const WideBvh& bvh, const Ray& ray, Interval valid, LeafHit& hit) 
     const WideBvhNode* nodes = bvh.nodes.data();
     const float* triangle_data = bvh.triangle_data.data();
 
-    struct StackEntry {
-        uint32_t ref;
-        float entry;  ///< where the ray enters it: skip it once a hit is nearer
-    };
-    constexpr uint32_t k_stack_size = (k_wide_bvh_width - 1) * k_bvh_max_depth + 1;
-    std::array<StackEntry, k_stack_size> stack;
+    std::array<StackEntry, k_wide_bvh_stack_size> stack;
     uint32_t stack_size = 0;
     alignas(32) std::array<float, k_wide_bvh_width> entry;
 
@@ -242,8 +243,7 @@ bool occluded(const WideBvh& bvh, const Ray& ray, Interval valid) {
     const WideBvhNode* nodes = bvh.nodes.data();
     const float* triangle_data = bvh.triangle_data.data();
 
-    constexpr uint32_t k_stack_size = (k_wide_bvh_width - 1) * k_bvh_max_depth + 1;
-    std::array<uint32_t, k_stack_size> stack;
+    std::array<uint32_t, k_wide_bvh_stack_size> stack;
     uint32_t stack_size = 0;
     LeafHit unused;
 

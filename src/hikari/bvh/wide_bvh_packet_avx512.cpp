@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "hikari/bvh/bvh_traversal.h"
+#include "hikari/bvh/triangle_hit.h"
 #include "hikari/bvh/wide_bvh.h"
 #include "hikari/bvh/wide_bvh_packet.h"
 #include "hikari/core/ray.h"

@@ -27,7 +27,7 @@
 #include <limits>
 #include <utility>
 
-#include "hikari/bvh/bvh_traversal.h"
+#include "hikari/bvh/triangle_hit.h"
 #include "hikari/bvh/wide_bvh.h"
 #include "hikari/bvh/wide_bvh_packet.h"
 #include "hikari/core/ray.h"
@@ -247,6 +247,36 @@ inline void prefetch_children(const WideBvh& bvh, const WideBvhNode& node, uint3
     }
 }
 
+/// Tests every triangle of the leaf `ref` on the lanes `lanes`, each lane keeping its nearest hit
+/// in `h`; when a lane found a nearer one, t_hi becomes the farthest any lane of `group` still
+/// looks.
+template <typename Ops>
+[[gnu::always_inline]] inline void test_leaf(const RayPacket& packet, const GroupRays& r,
+                                             const float* triangle_data, uint32_t ref,
+                                             uint32_t lanes, uint32_t group, GroupHits& h,
+                                             float& t_hi) {
+    const uint32_t first = WideBvhRef::leaf_first(ref);
+    const uint32_t count = WideBvhRef::leaf_count(ref);
+    const float* block = triangle_data + 9 * size_t(first);
+    Nearest<Ops> near{Ops::load(h.t), Ops::load(h.u), Ops::load(h.v)};
+    uint32_t nearer = 0;
+    for (uint32_t i = 0; i < count; ++i)
+        nearer |= test_triangle<Ops>(packet, r, block, count, i, first + i, lanes, near, h);
+    Ops::store(h.t, near.t), Ops::store(h.u, near.u), Ops::store(h.v, near.v);
+    if (nearer != 0) t_hi = Ops::reduce_max(group, near.t);
+}
+
+/// A child deferred by the closest-hit loop.
+struct StackEntry {
+    uint32_t ref;
+    float entry;      ///< no ray of the group enters it before this
+    uint32_t parent;  ///< the node holding its box (the leaf test needs the box)
+    uint32_t slot;    ///< its slot in that node
+};
+
+/// StackEntry::parent of the root, whose box is the frustum's own.
+constexpr uint32_t k_no_parent = ~0u;
+
 /// The traversal loop: a stack of (reference, entry bound, parent, slot). Inner nodes: the
 /// frustum test of all eight children, hit children visited nearest (lower entry bound) first.
 /// Leaves: the per-ray test of the leaf's box narrows the lanes, then every triangle is tested
@@ -263,15 +293,7 @@ void traverse(const WideBvh& bvh, const RayPacket& packet, uint32_t group, int a
     const float t_lo = Ops::reduce_min(group, Ops::load(r.t_min));
     float t_hi = Ops::reduce_max(group, Ops::load(h.t));  // farthest a ray still looks
 
-    struct StackEntry {
-        uint32_t ref;
-        float entry;      ///< no ray of the group enters it before this
-        uint32_t parent;  ///< the node holding its box (the leaf test needs the box)
-        uint32_t slot;    ///< its slot in that node
-    };
-    constexpr uint32_t k_no_parent = ~0u;
-    constexpr uint32_t k_stack_size = (k_wide_bvh_width - 1) * k_bvh_max_depth + 1;
-    std::array<StackEntry, k_stack_size> stack;
+    std::array<StackEntry, k_wide_bvh_stack_size> stack;
     uint32_t stack_size = 0;
     alignas(32) std::array<float, k_wide_bvh_width> entry;
 
@@ -310,18 +332,8 @@ void traverse(const WideBvh& bvh, const RayPacket& packet, uint32_t group, int a
             uint32_t lanes = group;
             if (current.parent != k_no_parent)
                 lanes = test_box_lanes<Ops>(nodes[current.parent], current.slot, r, h.t, group);
-            if (lanes != 0) {
-                const uint32_t first = WideBvhRef::leaf_first(current.ref);
-                const uint32_t count = WideBvhRef::leaf_count(current.ref);
-                const float* block = triangle_data + 9 * size_t(first);
-                Nearest<Ops> near{Ops::load(h.t), Ops::load(h.u), Ops::load(h.v)};
-                uint32_t nearer = 0;
-                for (uint32_t i = 0; i < count; ++i)
-                    nearer |=
-                        test_triangle<Ops>(packet, r, block, count, i, first + i, lanes, near, h);
-                Ops::store(h.t, near.t), Ops::store(h.u, near.u), Ops::store(h.v, near.v);
-                if (nearer != 0) t_hi = Ops::reduce_max(group, near.t);
-            }
+            if (lanes != 0)
+                test_leaf<Ops>(packet, r, triangle_data, current.ref, lanes, group, h, t_hi);
         }
 
         /* pop the next node some ray may still enter before its nearest hit */
@@ -362,6 +374,12 @@ uint32_t occludes_triangle(const RayPacket& packet, const GroupRays& r, const fl
     return occluded;
 }
 
+/// A child deferred by the any-hit loop.
+struct AnyStackEntry {
+    uint32_t ref;
+    uint32_t lanes;  ///< the lanes whose slab test keeps its box
+};
+
 /// The any-hit loop (shadow rays): at an inner node the frustum test of all eight children,
 /// then each child the frustum keeps tested for the lanes still looking (Wald et al. 2001's
 /// active lanes): a child is entered only with the lanes whose own slab test keeps its box,
@@ -380,17 +398,12 @@ uint32_t traverse_any(const WideBvh& bvh, const RayPacket& packet, uint32_t grou
     const float t_lo = Ops::reduce_min(group, Ops::load(r.t_min));
     const float t_hi = Ops::reduce_max(group, Ops::load(packet.t_max));
 
-    struct StackEntry {
-        uint32_t ref;
-        uint32_t lanes;  ///< the lanes whose slab test keeps its box
-    };
-    constexpr uint32_t k_stack_size = (k_wide_bvh_width - 1) * k_bvh_max_depth + 1;
-    std::array<StackEntry, k_stack_size> stack;
+    std::array<AnyStackEntry, k_wide_bvh_stack_size> stack;
     uint32_t stack_size = 0;
     alignas(32) std::array<float, k_wide_bvh_width> entry;
 
     uint32_t open = group;  // lanes that have met no triangle yet
-    StackEntry current{bvh.root, group};
+    AnyStackEntry current{bvh.root, group};
     for (;;) {
         const uint32_t lanes = current.lanes & open;
         if (lanes == 0) {
@@ -399,7 +412,7 @@ uint32_t traverse_any(const WideBvh& bvh, const RayPacket& packet, uint32_t grou
             /* inner node: the frustum against eight boxes, then each kept child per lane */
             const WideBvhNode& node = nodes[current.ref];
             uint32_t mask = Ops::test_frustum(node, r.frustum, t_lo, t_hi, entry.data());
-            std::array<StackEntry, k_wide_bvh_width> children;
+            std::array<AnyStackEntry, k_wide_bvh_width> children;
             uint32_t n = 0, entered = 0;
             for (; mask != 0; mask &= mask - 1) {
                 const auto i = static_cast<uint32_t>(std::countr_zero(mask));

@@ -106,14 +106,18 @@ struct Simd8Ops {
             return test_block<k_any_hit>(block, count, first, 8, count - 8, valid, hit);
         }
 
-        /// Triangles [base, base + lanes) of the leaf, lanes <= 8.
-        template <bool k_any_hit>
-        [[gnu::always_inline]] bool test_block(const float* block, uint32_t count, uint32_t first,
-                                               uint32_t base, uint32_t lanes, Interval& valid,
-                                               LeafHit& hit) const {
-            const __m256 zero = _mm256_setzero_ps();
+        /// What steps 1-3 leave for the rest of the test, eight triangles a lane.
+        struct Edges {
+            __m256 az, bz, cz;  ///< vertices a, b, c: z relative to the origin, not yet scaled
+            __m256 e0, e1, e2;  ///< edge functions (scaled barycentrics)
+        };
+
+        /// Steps 1-3 of Woop et al. 2013 for triangles [base, base + 8) of a leaf block: the
+        /// vertices relative to the origin, sheared so the ray runs along +z, and the edge
+        /// functions. (A function of its own, inlined: the generated code is the same.)
+        [[gnu::always_inline]] Edges edge_functions(const float* block, uint32_t count,
+                                                    uint32_t base) const {
             const uint32_t vertex_stride = 3 * count;  // from one vertex's rows to the next's
-            const uint32_t lane_mask = (1u << lanes) - 1;
             const float* x_row = block + kx_ * count + base;
             const float* y_row = block + ky_ * count + base;
             const float* z_row = block + kz_ * count + base;
@@ -140,6 +144,18 @@ struct Simd8Ops {
             const __m256 e0 = _mm256_sub_ps(_mm256_mul_ps(cx, by), _mm256_mul_ps(cy, bx));
             const __m256 e1 = _mm256_sub_ps(_mm256_mul_ps(ax, cy), _mm256_mul_ps(ay, cx));
             const __m256 e2 = _mm256_sub_ps(_mm256_mul_ps(bx, ay), _mm256_mul_ps(by, ax));
+            return {az, bz, cz, e0, e1, e2};
+        }
+
+        /// Triangles [base, base + lanes) of the leaf, lanes <= 8.
+        template <bool k_any_hit>
+        [[gnu::always_inline]] bool test_block(const float* block, uint32_t count, uint32_t first,
+                                               uint32_t base, uint32_t lanes, Interval& valid,
+                                               LeafHit& hit) const {
+            const __m256 zero = _mm256_setzero_ps();
+            const uint32_t lane_mask = (1u << lanes) - 1;
+            /* steps 1-3: shear, scaled barycentrics */
+            const auto [az, bz, cz, e0, e1, e2] = edge_functions(block, count, base);
             const uint32_t on_edge =
                 (HIKARI_CMP_MASK(e0, zero, _CMP_EQ_OQ) | HIKARI_CMP_MASK(e1, zero, _CMP_EQ_OQ) |
                  HIKARI_CMP_MASK(e2, zero, _CMP_EQ_OQ)) &
@@ -185,21 +201,30 @@ struct Simd8Ops {
                 inside &= HIKARI_CMP_MASK(_mm256_set1_ps(valid.min), t, _CMP_LT_OQ) &
                           HIKARI_CMP_MASK(t, _mm256_set1_ps(valid.max), _CMP_LT_OQ);
                 if (inside == 0) return false;
-                /* the nearest lane; the lowest of equal ones, as the slot-order scalar loop */
-                alignas(32) float ts[8];
-                _mm256_store_ps(ts, t);
-                uint32_t best = static_cast<uint32_t>(std::countr_zero(inside));
-                for (uint32_t m = inside & (inside - 1); m != 0; m &= m - 1) {
-                    const auto i = static_cast<uint32_t>(std::countr_zero(m));
-                    if (ts[i] < ts[best]) best = i;
-                }
-                alignas(32) float us[8], vs[8];
-                _mm256_store_ps(us, _mm256_mul_ps(e1, inv_det));
-                _mm256_store_ps(vs, _mm256_mul_ps(e2, inv_det));
-                hit = {ts[best], us[best], vs[best], first + base + best};
-                valid.max = ts[best];
+                take_nearest(t, e1, e2, inv_det, inside, first, base, valid, hit);
                 return true;
             }
+        }
+
+        /// The nearest of the lanes `inside` (not empty), the lowest of equal ones, as the
+        /// slot-order scalar loop: its distance, barycentrics (e1 and e2 times inv_det) and slot
+        /// (lane i's is first + base + i) into `hit`, its distance into valid.max.
+        [[gnu::always_inline]] static void take_nearest(__m256 t, __m256 e1, __m256 e2,
+                                                        __m256 inv_det, uint32_t inside,
+                                                        uint32_t first, uint32_t base,
+                                                        Interval& valid, LeafHit& hit) {
+            alignas(32) float ts[8];
+            _mm256_store_ps(ts, t);
+            uint32_t best = static_cast<uint32_t>(std::countr_zero(inside));
+            for (uint32_t m = inside & (inside - 1); m != 0; m &= m - 1) {
+                const auto i = static_cast<uint32_t>(std::countr_zero(m));
+                if (ts[i] < ts[best]) best = i;
+            }
+            alignas(32) float us[8], vs[8];
+            _mm256_store_ps(us, _mm256_mul_ps(e1, inv_det));
+            _mm256_store_ps(vs, _mm256_mul_ps(e2, inv_det));
+            hit = {ts[best], us[best], vs[best], first + base + best};
+            valid.max = ts[best];
         }
 
         const LeafRay& ray_;     ///< for the exact fallback

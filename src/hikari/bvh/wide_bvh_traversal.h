@@ -4,7 +4,7 @@
 // every level returns bit-identical answers, equal to testing every triangle with
 // intersect_triangle (watertight, Woop et al. 2013).
 
-#include "hikari/bvh/bvh_traversal.h"
+#include "hikari/bvh/triangle_hit.h"
 #include "hikari/bvh/wide_bvh.h"
 #include "hikari/core/ray.h"
 #include "hikari/core/simd_level.h"

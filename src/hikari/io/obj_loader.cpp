@@ -203,22 +203,34 @@ class TextStreambuf : public std::streambuf {
     }
 };
 
-ParsedObj parse_with_tinyobj(const std::filesystem::path& file, const std::string& text) {
-    ParsedObj parsed;
+/// Runs tinyobjloader over `text`, opening MTL libraries through `mtl_reader` (none when null),
+/// with its own triangulation or without. Returns false when it fails; `warn` and `err` get its
+/// messages.
+bool run_tinyobj(const std::string& text, tinyobj::MaterialReader* mtl_reader, bool triangulate,
+                 ParsedObj& parsed, std::string& warn, std::string& err) {
+    // tinyobjloader keeps every face in an array of its own, then copies them into its shapes:
+    // its heap grows by some 3.6 to 7 times the text (bumpy1m, the bunny), page by page. Mapping
+    // 6 times the text at once took the bunny's load from 116 to 61 ms and bumpy1m's from 1.15
+    // to 0.67 s (medians, docs/performance.md).
+    constexpr size_t k_max_reserve = size_t{1} << 30;
+    reserve_heap(std::min(6 * text.size(), k_max_reserve));
     TextStreambuf text_buffer(text);
     std::istream stream(&text_buffer);
+    return tinyobj::LoadObj(&parsed.attrib, &parsed.shapes, &parsed.materials, &warn, &err, &stream,
+                            mtl_reader, triangulate, /*default_vcols_fallback=*/false);
+}
+
+ParsedObj parse_with_tinyobj(const std::filesystem::path& file, const std::string& text) {
+    ParsedObj parsed;
     MtlReader mtl_reader(file.parent_path());
     std::string warn, err;
     // triangulate = false: rc10 splits quads along the shorter diagonal and ear-clips larger
     // polygons; we fan-triangulate ourselves so triangle order and shape are predictable.
-    const bool ok = tinyobj::LoadObj(&parsed.attrib, &parsed.shapes, &parsed.materials, &warn, &err,
-                                     &stream, &mtl_reader, /*triangulate=*/false,
-                                     /*default_vcols_fallback=*/false);
-    if (!ok) {
+    if (!run_tinyobj(text, &mtl_reader, /*triangulate=*/false, parsed, warn, err)) {
         const std::vector<std::string> errors = clean_messages(file, err);
         throw InputError(errors.empty() ? where(file, 0) + "cannot parse OBJ" : errors.front());
     }
-    // With ok == true, `err` holds only MTL problems: the mesh is still usable.
+    // After a successful parse `err` holds only MTL problems: the mesh is still usable.
     parsed.warnings = clean_messages(file, warn + err);
     return parsed;
 }
@@ -426,17 +438,37 @@ void flatten(const tinyobj::attrib_t& attrib, const std::vector<PendingTriangle>
     }
 }
 
+/// The triangles tinyobjloader made of the faces, in file order, as position indices. It passes
+/// a triangle's indices through unchecked, so one naming a vertex the file does not define (a
+/// relative index before the first one, too) is refused here, by its number.
+std::vector<std::array<uint32_t, 3>> triangle_positions(const std::filesystem::path& file,
+                                                        const ParsedObj& parsed) {
+    const size_t vertex_count = parsed.attrib.vertices.size() / 3;
+    std::vector<std::array<uint32_t, 3>> triangles;
+    for (const auto& shape : parsed.shapes) {
+        const std::vector<tinyobj::index_t>& corners = shape.mesh.indices;
+        for (size_t f = 0; f + 2 < corners.size(); f += 3) {
+            std::array<uint32_t, 3> tri{};
+            for (size_t c = 0; c < 3; ++c) {
+                const int v = corners[f + c].vertex_index;
+                if (v < 0 || static_cast<size_t>(v) >= vertex_count)
+                    fail(file, 0,
+                         fmt::format("triangle {} refers to a vertex out of range (the file has {} "
+                                     "vertices)",
+                                     triangles.size() + 1, vertex_count));
+                tri[c] = static_cast<uint32_t>(v);
+            }
+            triangles.push_back(tri);
+        }
+    }
+    return triangles;
+}
+
 }  // namespace
 
 MeshData load_obj(const std::filesystem::path& file) {
     const std::string text = read_file_bytes(file);
     const LineTable lines = scan_obj_text(file, text);
-    // tinyobjloader keeps every face in an array of its own, then copies them into its shapes:
-    // its heap grows by some 3.6 to 7 times the text (bumpy1m, the bunny), page by page. Mapping
-    // 6 times the text at once took the bunny's load from 116 to 61 ms and bumpy1m's from 1.15
-    // to 0.67 s (medians, docs/performance.md).
-    constexpr size_t k_max_reserve = size_t{1} << 30;
-    reserve_heap(std::min(6 * text.size(), k_max_reserve));
     const ParsedObj parsed = parse_with_tinyobj(file, text);
 
     MeshData mesh;
@@ -451,6 +483,25 @@ MeshData load_obj(const std::filesystem::path& file) {
     }
     if (triangles.size() * 3 > UINT32_MAX) fail(file, 0, "too many triangles");
     flatten(parsed.attrib, triangles, mesh);
+    return mesh;
+}
+
+ObjTriangles load_obj_triangles(const std::filesystem::path& file) {
+    // No line table, no number check, and tinyobjloader's own triangulation: the peers read the
+    // file with tinyobjloader alone.
+    const std::string text = read_file_bytes(file);
+    ParsedObj parsed;
+    std::string warn, err;
+    if (!run_tinyobj(text, nullptr, /*triangulate=*/true, parsed, warn, err)) {
+        const size_t end = err.find_last_not_of(" \t\r\n");
+        fail(file, 0, end == std::string::npos ? "cannot parse OBJ" : err.substr(0, end + 1));
+    }
+    ObjTriangles mesh;
+    mesh.indices = triangle_positions(file, parsed);
+    if (mesh.indices.empty()) fail(file, 0, "no triangles");
+    const std::vector<tinyobj::real_t>& v = parsed.attrib.vertices;
+    mesh.positions.resize(v.size() / 3);
+    for (size_t i = 0; i < mesh.positions.size(); ++i) mesh.positions[i] = vec3_at(v, int(i));
     return mesh;
 }
 
