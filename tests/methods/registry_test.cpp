@@ -51,8 +51,10 @@ Scene random_triangles(unsigned seed, int count, float spread = 1.2f) {
 
 /// Fraction of pixels whose primitive id equals ray casting's.
 double agreement(const Scene& scene, const char* method) {
-    const Framebuffer reference = find_method("raytrace")->render(scene, RenderSettings{});
-    const Framebuffer fb = find_method(method)->render(scene, RenderSettings{});
+    const Framebuffer reference =
+        find_method("raytrace")->render(scene, Film(scene.camera), {}, MethodSettings{});
+    const Framebuffer fb =
+        find_method(method)->render(scene, Film(scene.camera), {}, MethodSettings{});
     size_t same = 0;
     for (size_t i = 0; i < fb.id.size(); ++i) same += fb.id[i] == reference.id[i];
     return static_cast<double>(same) / static_cast<double>(fb.id.size());

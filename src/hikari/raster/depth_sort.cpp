@@ -434,12 +434,14 @@ VisibilityBuffer depth_sort_naive_visibility(std::span<const ScreenTriangle> tri
     return out;
 }
 
-Framebuffer render_depth_sort(const Scene& scene, const RenderSettings& settings) {
-    return render_raster(scene, settings, depth_sort_visibility);
+Framebuffer render_depth_sort(const Scene& scene, Film film, const RenderSettings& settings,
+                              const RasterSettings& raster) {
+    return render_raster(scene, std::move(film), settings, raster, depth_sort_visibility);
 }
 
-Framebuffer render_depth_sort_naive(const Scene& scene, const RenderSettings& settings) {
-    return render_raster(scene, settings, depth_sort_naive_visibility);
+Framebuffer render_depth_sort_naive(const Scene& scene, Film film, const RenderSettings& settings,
+                                    const RasterSettings& raster) {
+    return render_raster(scene, std::move(film), settings, raster, depth_sort_naive_visibility);
 }
 
 }  // namespace hikari

@@ -189,20 +189,22 @@ TEST(WhittedShade, RandomScenesRenderAsRayAtATime) {
         for (int depth : {1, 2, 6}) {
             SCOPED_TRACE(::testing::Message() << "seed " << seed << " depth " << depth);
             const Scene scene = random_scene(seed);
-            RenderSettings lanes, single;
+            WhittedSettings lanes, single;
             lanes.max_depth = single.max_depth = depth;
-            lanes.aov_buffers = single.aov_buffers = true;
             single.primary_blocks = false;
-            RenderControl counted_lanes, counted_single;
-            lanes.control = &counted_lanes;
-            single.control = &counted_single;
-            const Framebuffer a = render_whitted(scene, lanes);
-            const Framebuffer b = render_whitted(scene, single);
-            for (size_t i = 0; i < a.color.pixels.size(); ++i)
+            RenderStats counted_lanes, counted_single;
+            RenderSettings lanes_common, single_common;
+            lanes_common.aov_buffers = single_common.aov_buffers = true;
+            lanes_common.stats = &counted_lanes;
+            single_common.stats = &counted_single;
+            const Framebuffer a = render_whitted(scene, Film(scene.camera), lanes_common, lanes);
+            const Framebuffer b = render_whitted(scene, Film(scene.camera), single_common, single);
+            for (size_t i = 0; i < a.film.linear().pixels.size(); ++i)
                 for (int c = 0; c < 3; ++c)
-                    ASSERT_TRUE(same_bits(a.color.pixels[i][c], b.color.pixels[i][c]))
-                        << "pixel " << i << ": " << a.color.pixels[i][c] << " vs "
-                        << b.color.pixels[i][c];
+                    ASSERT_TRUE(
+                        same_bits(a.film.linear().pixels[i][c], b.film.linear().pixels[i][c]))
+                        << "pixel " << i << ": " << a.film.linear().pixels[i][c] << " vs "
+                        << b.film.linear().pixels[i][c];
             for (size_t i = 0; i < a.depth.size(); ++i) {
                 ASSERT_TRUE(same_bits(a.depth[i], b.depth[i]));
                 ASSERT_EQ(a.id[i], b.id[i]);
@@ -217,17 +219,18 @@ TEST(WhittedShade, Srgb8OutputIsTheEncodedLinearRender) {
     for (int spp : {1, 4}) {
         SCOPED_TRACE(::testing::Message() << "spp " << spp);
         const Scene scene = random_scene(3);
-        RenderSettings linear, srgb8;
-        linear.aov_buffers = srgb8.aov_buffers = false;
-        linear.samples_per_pixel = srgb8.samples_per_pixel = spp;
-        srgb8.srgb8_output = true;
-        const Framebuffer a = render_whitted(scene, linear);
-        const Framebuffer b = render_whitted(scene, srgb8);
-        ASSERT_TRUE(a.srgb8.bytes.empty());
-        ASSERT_TRUE(b.color.pixels.empty());
+        RenderSettings colour_only;
+        colour_only.aov_buffers = false;
+        WhittedSettings whitted;
+        whitted.samples_per_pixel = spp;
+        const Framebuffer a = render_whitted(scene, Film(scene.camera), colour_only, whitted);
+        const Framebuffer b =
+            render_whitted(scene, Film(scene.camera, FilmFormat::srgb8), colour_only, whitted);
+        ASSERT_TRUE(a.film.srgb8().bytes.empty());
+        ASSERT_TRUE(b.film.linear().pixels.empty());
         ASSERT_EQ(b.width(), a.width());
         ASSERT_EQ(b.height(), a.height());
-        EXPECT_EQ(encode_srgb8(a.color).bytes, b.srgb8.bytes);
+        EXPECT_EQ(encode_srgb8(a.film.linear()).bytes, b.film.srgb8().bytes);
     }
 }
 

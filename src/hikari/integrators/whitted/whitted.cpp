@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "hikari/bvh/scene_intersector.h"
@@ -333,23 +334,23 @@ void strata(int n, int& cols, int& rows) {
 
 }  // namespace
 
-Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
+Framebuffer render_whitted(const Scene& scene, Film film, const RenderSettings& settings,
+                           const WhittedSettings& whitted) {
     const Camera& cam = scene.camera;
     // Every pixel is set below (by its tile), so 8-bit colour may start unwritten: its pages are
     // first touched by the tiles, in parallel.
-    Framebuffer fb(cam.width, cam.height, scene.background, settings.aov_buffers,
-                   settings.srgb8_output && !settings.aov_buffers);
+    Framebuffer fb(std::move(film), cam.width, cam.height, settings.aov_buffers);
     const SceneIntersector intersector(scene);
-    const TraceContext shared{scene, intersector, settings.max_depth};
-    if (RenderControl* control = settings.control) {
+    const TraceContext shared{scene, intersector, whitted.max_depth};
+    if (RenderStats* stats = settings.stats) {
         const WideBvh& bvh = intersector.bvh();
-        control->bvh_triangles = bvh.triangle_count();
-        control->bvh_nodes = bvh.nodes.size();
-        control->bvh_bytes = bvh.memory_bytes();
-        control->bvh_build_us = static_cast<uint64_t>(intersector.build_ms() * 1000.0);
+        stats->bvh_triangles = bvh.triangle_count();
+        stats->bvh_nodes = bvh.nodes.size();
+        stats->bvh_bytes = bvh.memory_bytes();
+        stats->bvh_build_us = static_cast<uint64_t>(intersector.build_ms() * 1000.0);
     }
     const CameraFrame frame = make_camera_frame(cam);
-    const int spp = settings.samples_per_pixel;
+    const int spp = whitted.samples_per_pixel;
     int cols = 1, rows = 1;
     strata(spp, cols, rows);
 
@@ -369,7 +370,7 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
 
     for_each_tile(cam.width, cam.height, settings.control, [&](const Tile& tile) {
         TraceContext ctx = shared;
-        if (spp == 1 && settings.primary_blocks && shader.supported()) {
+        if (spp == 1 && whitted.primary_blocks && shader.supported()) {
             thread_local std::unique_ptr<WaveScratch> scratch;
             if (!scratch) scratch = std::make_unique<WaveScratch>();
             WaveTracer wave(ctx, primary, shader, *scratch);
@@ -390,7 +391,7 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
                               colours.colour[2].data() + row,
                               static_cast<size_t>(tile.x1 - tile.x0));
             }
-            if (settings.control) settings.control->rays_traced += ctx.rays;
+            if (settings.stats) settings.stats->rays_traced += ctx.rays;
             return;
         }
         for (int y = tile.y0; y < tile.y1; ++y)
@@ -420,7 +421,7 @@ Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
                 fb.set_color(i, sum);
                 store_aovs(i, centre, first);
             }
-        if (settings.control) settings.control->rays_traced += ctx.rays;
+        if (settings.stats) settings.stats->rays_traced += ctx.rays;
     });
     return fb;
 }
