@@ -35,7 +35,9 @@ class Film {
     explicit Film(const Camera& camera, FilmFormat format = FilmFormat::linear)
         : Film(camera.width, camera.height, format) {}
 
+    /// Linear or 8-bit, fixed when the film is made.
     FilmFormat format() const { return m_format; }
+    /// Size in pixels.
     int width() const { return m_format == FilmFormat::srgb8 ? m_srgb8.width : m_linear.width; }
     int height() const { return m_format == FilmFormat::srgb8 ? m_srgb8.height : m_linear.height; }
 

@@ -23,8 +23,8 @@ struct MethodSettings {
 /// A word an option takes and the value it stands for (`--interp gouraud`).
 template <class T>
 struct Choice {
-    std::string_view name;
-    T value;
+    std::string_view name;  ///< as typed on the command line
+    T value;                ///< what it sets
 };
 
 /// The value `name` stands for among `choices`, or nullopt.
@@ -59,22 +59,23 @@ using SettingsField = T& (*)(MethodSettings&);
 
 /// An option whose value is an integer in [min, max].
 struct IntegerOption {
-    int min;
-    int max;
-    SettingsField<int> field;
+    int min;                   ///< smallest value accepted
+    int max;                   ///< largest value accepted
+    SettingsField<int> field;  ///< where the value goes
 };
 
 /// An option whose value is one of a few words.
 template <class T>
 struct ChoiceOption {
-    std::span<const Choice<T>> choices;
-    SettingsField<T> field;
+    std::span<const Choice<T>> choices;  ///< the words accepted and what each sets
+    SettingsField<T> field;              ///< where the value goes
 };
 
 /// A command-line option that only some methods understand.
 struct MethodOption {
     std::string_view flag;  ///< its one name, e.g. "--spp"
     std::string_view help;  ///< one line for --help
+    /// The values it takes and the field they go to.
     std::variant<IntegerOption, ChoiceOption<Interpolation>, ChoiceOption<bool>> value;
 };
 

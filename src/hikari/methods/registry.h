@@ -21,9 +21,9 @@ using RenderFunction = Framebuffer (*)(const Scene& scene, Film film,
 
 /// A named rendering method selectable with `--method`.
 struct Method {
-    std::string_view name;
-    std::string_view summary;  ///< one line for --help
-    RenderFunction render;
+    std::string_view name;                  ///< as given to --method
+    std::string_view summary;               ///< one line for --help
+    RenderFunction render;                  ///< the method itself
     std::span<const MethodOption> options;  ///< the method options it understands
 };
 
