@@ -12,10 +12,15 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <thread>
+#include <variant>
+#include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <tbb/global_control.h>
 #include <CLI/CLI.hpp>
 
@@ -38,23 +43,25 @@ constexpr int k_exit_input_error = 1;
 constexpr int k_exit_usage_error = 2;
 constexpr int k_exit_interrupted = 130;
 
+/// `--aov`'s words.
+constexpr Choice<Aov> k_aov_choices[] = {
+    {"color", Aov::color}, {"depth", Aov::depth}, {"id", Aov::id}, {"normal", Aov::normal}};
+
 struct RenderOptions {
     std::string scene_file;  // empty: the built-in assignment scene
     std::string output;
     std::string method = "raytrace";
-    std::string aov = "color";
-    std::string interp = "phong";
-    std::string cull = "none";
-    int spp = 1;
+    Aov aov = Aov::color;
     int width = 0, height = 0;
     int threads = 0;
-    int max_depth = 5;
     double max_memory_gib = 0;
     bool quiet = false;
     bool stats = false;
+    MethodSettings own;  // every method option; the chosen method reads its part
 };
 
 RenderControl g_control;
+RenderStats g_stats;
 // Lock-free atomics are safe to touch from a signal handler.
 std::atomic<int> g_signal_count{0};
 std::atomic<bool> g_writing{false};
@@ -113,13 +120,6 @@ class ProgressReporter {
     std::jthread m_thread;
 };
 
-Aov parse_aov(const std::string& name) {
-    if (name == "depth") return Aov::depth;
-    if (name == "id") return Aov::id;
-    if (name == "normal") return Aov::normal;
-    return Aov::color;
-}
-
 /// Applies --width / --height; one alone keeps the camera's aspect ratio.
 void resize_camera(Camera& camera, int width, int height) {
     if (width > 0 && height == 0)
@@ -152,7 +152,8 @@ double default_memory_limit() {
 std::string default_output(const RenderOptions& o) {
     const std::string stem =
         o.scene_file.empty() ? "assignment" : std::filesystem::path(o.scene_file).stem().string();
-    return stem + (o.aov == "color" ? "" : "-" + o.aov) + ".png";
+    const std::string_view aov = choice_name<Aov>(k_aov_choices, o.aov);
+    return stem + (o.aov == Aov::color ? "" : "-" + std::string(aov)) + ".png";
 }
 
 /// Refuses, before any work is done, an output the render could not be written to.
@@ -181,29 +182,24 @@ struct PhaseTimes {
 
 /// `--stats`: phase times, rays per second and the BVH's figures, on stderr.
 void print_stats(const PhaseTimes& times) {
-    const uint64_t rays = g_control.rays_traced.load();
+    const uint64_t rays = g_stats.rays_traced.load();
     fmt::print(stderr, "hikari: stats: load {:.1f} ms, render {:.1f} ms, write {:.1f} ms",
                1e3 * times.load, 1e3 * times.render, 1e3 * times.write);
     if (rays > 0)
         fmt::print(stderr, "; {} rays, {:.2f} Mrays/s", rays, 1e-6 * double(rays) / times.render);
     fmt::print(stderr, "\n");
-    const uint64_t triangles = g_control.bvh_triangles.load();
+    const uint64_t triangles = g_stats.bvh_triangles.load();
     if (triangles > 0)
         fmt::print(stderr,
                    "hikari: stats: BVH {} triangles, {} nodes (8-wide), {:.1f} bytes/triangle, "
                    "built in {:.1f} ms, {} kernels\n",
-                   triangles, g_control.bvh_nodes.load(),
-                   double(g_control.bvh_bytes.load()) / double(triangles),
-                   1e-3 * double(g_control.bvh_build_us.load()),
-                   simd_level_name(best_simd_level()));
+                   triangles, g_stats.bvh_nodes.load(),
+                   double(g_stats.bvh_bytes.load()) / double(triangles),
+                   1e-3 * double(g_stats.bvh_build_us.load()), simd_level_name(best_simd_level()));
 }
 
-int run_render(const RenderOptions& o) {
-    const Method* method = find_method(o.method);  // validated by CLI11 already
-    const std::string output = o.output.empty() ? default_output(o) : o.output;
-    const auto load_start = Clock::now();
-    check_output_path(output);
-
+/// The scene the options name, at the image size they ask for, within the memory limit.
+Scene load_render_scene(const RenderOptions& o) {
     std::vector<std::string> warnings;
     Scene scene =
         o.scene_file.empty() ? load_default_scene() : load_scene_file(o.scene_file, warnings);
@@ -211,19 +207,38 @@ int run_render(const RenderOptions& o) {
     resize_camera(scene.camera, o.width, o.height);
     check_memory(scene.camera,
                  o.max_memory_gib > 0 ? o.max_memory_gib * (1 << 30) : default_memory_limit());
+    return scene;
+}
 
-    RenderSettings settings;
-    settings.samples_per_pixel = o.spp;
-    settings.max_depth = o.max_depth;
-    settings.interp = o.interp == "flat"      ? Interpolation::flat
-                      : o.interp == "gouraud" ? Interpolation::gouraud
-                                              : Interpolation::phong;
-    settings.cull_back_faces = o.cull == "back";
-    settings.control = &g_control;
-    settings.aov_buffers = o.aov != "color";
+/// The film for `output`: 8-bit sRGB where the file keeps only that (the colour in a PNG or PPM
+/// file), else linear floats.
+Film output_film(const Camera& camera, const std::string& output, Aov aov) {
     const std::optional<ImageFormat> format = image_format_from_extension(output);
-    settings.srgb8_output =
-        o.aov == "color" && (format == ImageFormat::Png || format == ImageFormat::Ppm);
+    const bool srgb8 =
+        aov == Aov::color && (format == ImageFormat::Png || format == ImageFormat::Ppm);
+    return Film(camera, srgb8 ? FilmFormat::srgb8 : FilmFormat::linear);
+}
+
+/// Writes the buffer `aov` of a finished render to `output` (unless the render was interrupted).
+void write_output(const std::string& output, Framebuffer&& fb, Aov aov) {
+    g_writing = true;
+    if (g_control.cancel.load()) throw Interrupted();
+    if (fb.film.format() == FilmFormat::srgb8)
+        write_image(output, fb.film.srgb8());
+    else
+        write_image(output, aov_image(std::move(fb), aov));
+    g_writing = false;
+}
+
+int run_render(const RenderOptions& o, const Method& method) {
+    const std::string output = o.output.empty() ? default_output(o) : o.output;
+    const auto load_start = Clock::now();
+    check_output_path(output);
+    const Scene scene = load_render_scene(o);
+    RenderSettings settings;
+    settings.control = &g_control;
+    settings.stats = &g_stats;
+    settings.aov_buffers = o.aov != Aov::color;
 
     std::optional<tbb::global_control> thread_limit;
     if (o.threads > 0)
@@ -235,30 +250,30 @@ int run_render(const RenderOptions& o) {
     Framebuffer fb;
     {
         ProgressReporter progress(!o.quiet);
-        fb = method->render(scene, settings);
+        fb = method.render(scene, output_film(scene.camera, output, o.aov), settings, o.own);
     }
     const auto rendered = Clock::now();
     times.render = std::chrono::duration<double>(rendered - start).count();
     const int width = fb.width(), height = fb.height();
-    g_writing = true;
-    if (g_control.cancel.load()) throw Interrupted();
-    if (!fb.srgb8.bytes.empty())
-        write_image(output, fb.srgb8);
-    else
-        write_image(output, aov_image(std::move(fb), parse_aov(o.aov)));
-    g_writing = false;
+    write_output(output, std::move(fb), o.aov);
     times.write = std::chrono::duration<double>(Clock::now() - rendered).count();
     if (!o.quiet)
         fmt::print(stderr, "hikari: wrote {} ({}x{}, {}, {:.3f} s)\n", output, width, height,
-                   method->name, times.render);
+                   method.name, times.render);
     if (o.stats) print_stats(times);
     return 0;
 }
 
+/// `--simd`'s words; auto (nullopt) is the best level this CPU has.
+constexpr Choice<std::optional<SimdLevel>> k_simd_choices[] = {{"auto", std::nullopt},
+                                                               {"portable", SimdLevel::portable},
+                                                               {"avx2", SimdLevel::avx2},
+                                                               {"avx512", SimdLevel::avx512}};
+
 struct BenchOptions {
     std::string bench;
     std::string mesh;
-    std::string simd = "auto";
+    std::optional<SimdLevel> simd;
     int threads = 1;
     int repetitions = 5;
     bool packets = false;
@@ -272,24 +287,17 @@ int run_bench_command(const BenchOptions& o) {
     settings.repetitions = o.repetitions;
     settings.packets = o.packets;
     if (o.packets && o.bench != "B1") throw InputError("--packets is for B1 only");
-    if (o.simd != "auto") {
-        settings.simd = o.simd == "avx512" ? SimdLevel::avx512
-                        : o.simd == "avx2" ? SimdLevel::avx2
-                                           : SimdLevel::portable;
+    if (o.simd) {
+        settings.simd = *o.simd;
         if (!simd_level_supported(settings.simd))
-            throw InputError(fmt::format("this CPU cannot run --simd {}", o.simd));
+            throw InputError(
+                fmt::format("this CPU cannot run --simd {}", simd_level_name(settings.simd)));
     }
     const BenchMesh mesh = load_bench_mesh(o.mesh);
     const BenchResult result =
         run_bench(mesh, std::filesystem::path(o.mesh).stem().string(), settings);
     fmt::print("{}\n", result.to_json());
     return 0;
-}
-
-std::string method_list() {
-    std::string text = "Methods:\n";
-    for (const Method& m : methods()) text += fmt::format("  {:<16}{}\n", m.name, m.summary);
-    return text;
 }
 
 /// Ends the process once a render's work is done: the streams are flushed, then the system
@@ -313,61 +321,116 @@ void keep_freed_memory() {
 #endif
 }
 
-}  // namespace
+/// `flag`, taking one of the words of `choices` (the one table that both checks and converts
+/// them) into `target`, whose value now is shown as the default.
+template <class T>
+CLI::Option* add_choice_option(CLI::App& app, std::string_view flag, std::string_view help,
+                               std::span<const Choice<T>> choices, T& target) {
+    std::vector<std::string> names;
+    for (const Choice<T>& c : choices) names.emplace_back(c.name);
+    return app
+        .add_option_function<std::string>(
+            std::string(flag),
+            [choices, &target](const std::string& name) {
+                target = choice_value(choices, name).value();
+            },
+            std::string(help))
+        ->check(CLI::IsMember(names))
+        ->default_str(std::string(choice_name(choices, target)));
+}
 
-int main(int argc, char** argv) {
-    keep_freed_memory();
-    CLI::App app{"hikari: every classic rendering method of the lecture, in one renderer.",
-                 "hikari"};
-    app.set_version_flag("--version", fmt::format("hikari {}", k_version));
-    app.require_subcommand(1);
-    app.footer("Run `hikari render --help` for the render options.");
+/// A method option whose value is an integer in a range.
+CLI::Option* add_method_option(CLI::App& app, const MethodOption& option,
+                               const IntegerOption& integer, MethodSettings& own) {
+    return app.add_option(std::string(option.flag), integer.field(own), std::string(option.help))
+        ->check(CLI::Range(integer.min, integer.max))
+        ->capture_default_str();
+}
 
-    RenderOptions o;
-    CLI::App* render = app.add_subcommand("render", "Render a scene file to an image.");
-    render->add_option("scene", o.scene_file,
-                       "Scene file (JSON, see docs/scene-format.md); default: the lecture's "
-                       "assignment, a Phong-shaded sphere");
-    render->add_option("-o,--output", o.output,
-                       "Output image: .png (8-bit sRGB), .ppm, .pfm or .exr (linear float); "
-                       "default: <scene name>.png in the current directory");
+/// A method option whose value is one of a few words.
+template <class T>
+CLI::Option* add_method_option(CLI::App& app, const MethodOption& option,
+                               const ChoiceOption<T>& choice, MethodSettings& own) {
+    return add_choice_option(app, option.flag, option.help, choice.choices, choice.field(own));
+}
+
+/// The methods that understand the option `flag`, e.g. "zbuffer, scanline".
+std::string methods_taking(std::string_view flag) {
+    std::vector<std::string_view> names;
+    for (const Method& m : methods())
+        if (takes_option(m, flag)) names.push_back(m.name);
+    return fmt::format("{}", fmt::join(names, ", "));
+}
+
+/// Every method option, in a --help group headed by the methods that understand it.
+void add_method_options(CLI::App& render, MethodSettings& own) {
+    for (const MethodOption* option : method_options())
+        std::visit(
+            [&](const auto& value) {
+                add_method_option(render, *option, value, own)
+                    ->group("Options of " + methods_taking(option->flag));
+            },
+            option->value);
+}
+
+/// The options of `method`, e.g. "--spp, --max-depth".
+std::string option_list(const Method& method) {
+    std::vector<std::string_view> flags;
+    for (const MethodOption& option : method.options) flags.push_back(option.flag);
+    return fmt::format("{}", fmt::join(flags, ", "));
+}
+
+/// The --help footer: every method, and the options it understands beside the common ones.
+std::string method_list() {
+    std::string text = "Methods (and the options each understands beside the common ones):\n";
+    for (const Method& m : methods()) {
+        text += fmt::format("  {:<16}{}\n", m.name, m.summary);
+        if (!m.options.empty()) text += fmt::format("  {:<16}options: {}\n", "", option_list(m));
+    }
+    return text;
+}
+
+/// A usage error (CLI::ValidationError) when the command line gives an option that `method`
+/// does not understand.
+void check_method_options(const CLI::App& render, const Method& method) {
+    for (const MethodOption* option : method_options()) {
+        if (render.count(std::string(option->flag)) == 0 || takes_option(method, option->flag))
+            continue;
+        throw CLI::ValidationError(fmt::format(
+            "{} is not an option of method {} ({})", option->flag, method.name,
+            method.options.empty() ? "it takes none" : "it understands: " + option_list(method)));
+    }
+}
+
+/// Scene, output and method: the first of the render options.
+void add_render_inputs(CLI::App& render, RenderOptions& o) {
+    render.add_option("scene", o.scene_file,
+                      "Scene file (JSON, see docs/scene-format.md); default: the lecture's "
+                      "assignment, a Phong-shaded sphere");
+    render.add_option("-o,--output", o.output,
+                      "Output image: .png (8-bit sRGB), .ppm, .pfm or .exr (linear float); "
+                      "default: <scene name>.png in the current directory");
     std::vector<std::string> names;
     for (const Method& m : methods()) names.emplace_back(m.name);
-    render->add_option("-m,--method", o.method, "Rendering method")
+    render.add_option("-m,--method", o.method, "Rendering method")
         ->check(CLI::IsMember(names))
         ->capture_default_str();
-    render
-        ->add_option("--aov", o.aov,
-                     "Buffer to write: color, depth (eye distance), id (1 + primitive index, "
-                     "0 = background), normal")
-        ->check(CLI::IsMember({"color", "depth", "id", "normal"}))
-        ->capture_default_str();
-    render
-        ->add_option("--interp", o.interp,
-                     "Raster shading interpolation: flat (one colour per polygon), gouraud "
-                     "(vertex colours blended), phong (normals interpolated, shaded per pixel)")
-        ->check(CLI::IsMember({"flat", "gouraud", "phong"}))
-        ->capture_default_str();
-    render
-        ->add_option("--cull", o.cull,
-                     "Raster back-face culling (Fig 4.3): back drops triangles whose front "
-                     "(counter-clockwise) side faces away from the eye; none keeps all")
-        ->check(CLI::IsMember({"back", "none"}))
-        ->capture_default_str();
-    render->add_option("--spp", o.spp, "Samples per pixel (1 = pixel centres; more: stratified)")
-        ->check(CLI::Range(1, 65536))
-        ->capture_default_str();
+    add_choice_option<Aov>(render, "--aov",
+                           "Buffer to write: color, depth (eye distance), id (1 + primitive "
+                           "index, 0 = background), normal",
+                           k_aov_choices, o.aov);
+}
+
+/// `hikari render` and the options every method takes; the methods' own come after them.
+CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
+    CLI::App* render = app.add_subcommand("render", "Render a scene file to an image.");
+    add_render_inputs(*render, o);
     render->add_option("--width", o.width, "Image width in pixels (overrides the scene)")
         ->check(CLI::Range(1, 65536));
     render->add_option("--height", o.height, "Image height in pixels (overrides the scene)")
         ->check(CLI::Range(1, 65536));
     render->add_option("--threads", o.threads, "Worker threads (default: all cores)")
         ->check(CLI::Range(1, 1024));
-    render
-        ->add_option("--max-depth", o.max_depth,
-                     "Ray segments per path, the primary ray included (Whitted recursion)")
-        ->check(CLI::Range(1, 64))
-        ->capture_default_str();
     render
         ->add_option("--max-memory", o.max_memory_gib,
                      "Refuse renders whose buffers need more than this many GiB "
@@ -377,9 +440,13 @@ int main(int argc, char** argv) {
     render->add_flag(
         "--stats", o.stats,
         "Print the load, render and write times, rays per second and BVH figures on stderr");
+    add_method_options(*render, o.own);
     render->footer(method_list());
+    return render;
+}
 
-    BenchOptions b;
+/// `hikari bench` and its options.
+CLI::App* add_bench_command(CLI::App& app, BenchOptions& b) {
     CLI::App* bench = app.add_subcommand(
         "bench", "Run a peer benchmark (bench/SPEC.md) and print one JSON object on stdout.");
     bench->add_option("name", b.bench, "B1 (primary rays, closest hit) or B2 (occlusion rays)")
@@ -394,14 +461,22 @@ int main(int argc, char** argv) {
     bench->add_option("--reps", b.repetitions, "Timed repetitions after one warm-up")
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
-    bench->add_option("--simd", b.simd, "Traversal kernel: auto (best), portable, avx2, avx512")
-        ->check(CLI::IsMember({"auto", "portable", "avx2", "avx512"}))
-        ->capture_default_str();
+    add_choice_option<std::optional<SimdLevel>>(
+        *bench, "--simd", "Traversal kernel: auto (best), portable, avx2, avx512", k_simd_choices,
+        b.simd);
     bench->add_flag("--packets", b.packets,
                     "B1 as 4x4 pixel packets (coherent packet traversal); reported as B1p16");
+    return bench;
+}
 
+/// Parses the command line (and checks the render's method options); returns the exit status
+/// when the program ends there: after --help or --version, or on a usage error.
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, const CLI::App& render,
+                                      const RenderOptions& o) {
     try {
         app.parse(argc, argv);
+        if (render.parsed()) check_method_options(render, *find_method(o.method));
+        return std::nullopt;
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {
@@ -412,11 +487,15 @@ int main(int argc, char** argv) {
         fmt::print(stderr, "hikari: error: {}\nRun `hikari --help` for usage.\n", e.what());
         return k_exit_usage_error;
     }
+}
 
-    install_signal_handlers();
+/// Runs the parsed subcommand; an error becomes one line on stderr and an exit status.
+int run_command(const CLI::App& render, const RenderOptions& o, const CLI::App& bench,
+                const BenchOptions& b) {
     try {
-        if (render->parsed()) exit_after_render(run_render(o));
-        if (bench->parsed()) return run_bench_command(b);
+        // The method name was checked by the parser.
+        if (render.parsed()) exit_after_render(run_render(o, *find_method(o.method)));
+        if (bench.parsed()) return run_bench_command(b);
     } catch (const Interrupted&) {
         fmt::print(stderr, "\nhikari: interrupted; no image written\n");
         return k_exit_interrupted;
@@ -431,4 +510,23 @@ int main(int argc, char** argv) {
         return k_exit_input_error;
     }
     return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    keep_freed_memory();
+    CLI::App app{"hikari: every classic rendering method of the lecture, in one renderer.",
+                 "hikari"};
+    app.set_version_flag("--version", fmt::format("hikari {}", k_version));
+    app.require_subcommand(1);
+    app.footer("Run `hikari render --help` for the render options.");
+    RenderOptions o;
+    BenchOptions b;
+    const CLI::App* render = add_render_command(app, o);
+    const CLI::App* bench = add_bench_command(app, b);
+    if (const std::optional<int> status = parse_command_line(app, argc, argv, *render, o))
+        return *status;
+    install_signal_handlers();
+    return run_command(*render, o, *bench, b);
 }

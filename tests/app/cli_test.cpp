@@ -165,6 +165,34 @@ TEST_F(Cli, RasterOptionsRenderAndRejectBadValues) {
     EXPECT_EQ(file_count(), 1u);
 }
 
+// An option the chosen method does not understand is a usage error that names it and the
+// method, before anything is written; both ways round.
+TEST_F(Cli, OptionForeignToTheMethodExitsTwoAndWritesNothing) {
+    const auto expect_refused = [&](const std::string& args, const std::string& message) {
+        const Result r = run("render " + args + " -o " + path("out.png"));
+        EXPECT_EQ(r.status, 2) << args << ": " << r.output;
+        EXPECT_NE(r.output.find("hikari: error: " + message), std::string::npos) << r.output;
+    };
+    expect_refused("--interp flat --width 16",
+                   "--interp is not an option of method raytrace (it understands: --spp, "
+                   "--max-depth)");
+    expect_refused("-m zbuffer --spp 4 --width 16",
+                   "--spp is not an option of method zbuffer (it understands: --interp, --cull)");
+    expect_refused("-m depthsort --max-depth 2",
+                   "--max-depth is not an option of method depthsort");
+    expect_refused("-m raytrace --cull back", "--cull is not an option of method raytrace");
+    EXPECT_EQ(file_count(), 0u);
+}
+
+TEST_F(Cli, HelpSaysWhichMethodsTakeWhichOptions) {
+    const Result help = run("render --help");
+    EXPECT_EQ(help.status, 0);
+    for (const char* option : {"--spp", "--max-depth", "--interp", "--cull", "--aov", "--width"})
+        EXPECT_NE(help.output.find(option), std::string::npos) << option;
+    EXPECT_NE(help.output.find("options: --spp, --max-depth"), std::string::npos) << help.output;
+    EXPECT_NE(help.output.find("options: --interp, --cull"), std::string::npos) << help.output;
+}
+
 TEST_F(Cli, StatsReportRaysAndBvh) {
     write("tri.json", R"({"camera": {"width": 8, "height": 8}, "objects": [
         {"type": "triangle", "vertices": [[-1, -1, -2], [1, -1, -2], [0, 1, -2]]}]})");

@@ -3,12 +3,17 @@
 
 #include "hikari/methods/registry.h"
 
+#include <optional>
 #include <random>
 #include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "hikari/core/srgb8_encoder.h"
 #include "hikari/io/scene_json.h"
 
 namespace hikari {
@@ -51,8 +56,10 @@ Scene random_triangles(unsigned seed, int count, float spread = 1.2f) {
 
 /// Fraction of pixels whose primitive id equals ray casting's.
 double agreement(const Scene& scene, const char* method) {
-    const Framebuffer reference = find_method("raytrace")->render(scene, RenderSettings{});
-    const Framebuffer fb = find_method(method)->render(scene, RenderSettings{});
+    const Framebuffer reference =
+        find_method("raytrace")->render(scene, Film(scene.camera), {}, MethodSettings{});
+    const Framebuffer fb =
+        find_method(method)->render(scene, Film(scene.camera), {}, MethodSettings{});
     size_t same = 0;
     for (size_t i = 0; i < fb.id.size(); ++i) same += fb.id[i] == reference.id[i];
     return static_cast<double>(same) / static_cast<double>(fb.id.size());
@@ -62,6 +69,85 @@ TEST(Methods, EveryMethodIsRegistered) {
     for (const char* name : {"raytrace", "zbuffer", "scanline", "depthsort", "depthsort-naive"})
         EXPECT_NE(find_method(name), nullptr) << name;
     EXPECT_EQ(methods().front().name, "raytrace");
+}
+
+/// The flags of the options `method` declares, in order.
+std::vector<std::string> option_flags(const Method& method) {
+    std::vector<std::string> flags;
+    for (const MethodOption& option : method.options) flags.emplace_back(option.flag);
+    return flags;
+}
+
+TEST(Methods, EveryMethodDeclaresItsOptions) {
+    const std::vector<std::string> ray = {"--spp", "--max-depth"};
+    const std::vector<std::string> raster = {"--interp", "--cull"};
+    EXPECT_EQ(option_flags(*find_method("raytrace")), ray);
+    for (const char* name : {"zbuffer", "scanline", "depthsort", "depthsort-naive"})
+        EXPECT_EQ(option_flags(*find_method(name)), raster) << name;
+    for (const Method& m : methods()) {
+        EXPECT_FALSE(m.options.empty()) << m.name;
+        for (const MethodOption& option : m.options) {
+            EXPECT_TRUE(takes_option(m, option.flag));
+            EXPECT_FALSE(option.help.empty()) << option.flag;
+        }
+    }
+    EXPECT_FALSE(takes_option(*find_method("raytrace"), "--interp"));
+    EXPECT_FALSE(takes_option(*find_method("zbuffer"), "--spp"));
+    // Each option once, whichever methods share it.
+    std::vector<std::string> all;
+    for (const MethodOption* option : method_options()) all.emplace_back(option->flag);
+    EXPECT_EQ(all, (std::vector<std::string>{"--spp", "--max-depth", "--interp", "--cull"}));
+}
+
+/// The method option called `flag`; fails the test when there is none.
+const MethodOption& option_named(std::string_view flag) {
+    for (const MethodOption* option : method_options())
+        if (option->flag == flag) return *option;
+    ADD_FAILURE() << "no option " << flag;
+    return *method_options().front();
+}
+
+TEST(Methods, OptionsSetTheirMethodsSettings) {
+    MethodSettings own;
+    std::get<IntegerOption>(option_named("--spp").value).field(own) = 9;
+    std::get<IntegerOption>(option_named("--max-depth").value).field(own) = 2;
+    std::get<ChoiceOption<Interpolation>>(option_named("--interp").value).field(own) =
+        Interpolation::gouraud;
+    std::get<ChoiceOption<bool>>(option_named("--cull").value).field(own) = true;
+    EXPECT_EQ(own.whitted.samples_per_pixel, 9);
+    EXPECT_EQ(own.whitted.max_depth, 2);
+    EXPECT_EQ(own.raster.interp, Interpolation::gouraud);
+    EXPECT_TRUE(own.raster.cull_back_faces);
+}
+
+TEST(Methods, ChoiceTablesNameEveryValueOnce) {
+    for (const Choice<Interpolation>& c : k_interpolation_choices) {
+        EXPECT_EQ(choice_value<Interpolation>(k_interpolation_choices, c.name), c.value);
+        EXPECT_EQ(choice_name<Interpolation>(k_interpolation_choices, c.value), c.name);
+    }
+    for (const Choice<bool>& c : k_cull_choices)
+        EXPECT_EQ(choice_value<bool>(k_cull_choices, c.name), c.value);
+    EXPECT_EQ(choice_value<Interpolation>(k_interpolation_choices, "smooth"), std::nullopt);
+    // The defaults have names (--help shows them).
+    EXPECT_EQ(choice_name<Interpolation>(k_interpolation_choices, RasterSettings{}.interp),
+              "phong");
+    EXPECT_EQ(choice_name<bool>(k_cull_choices, RasterSettings{}.cull_back_faces), "none");
+}
+
+TEST(Methods, EveryMethodFillsAnEightBitFilmWithItsLinearFilmEncoded) {
+    // The assignment shows background around its sphere (raster methods write it too).
+    for (const char* name : {"assignment.json", "whitted.json"}) {
+        const Scene scene = scene_file(name, 48, 32);
+        for (const Method& m : methods()) {
+            RenderSettings colour_only;
+            colour_only.aov_buffers = false;
+            const Framebuffer linear = m.render(scene, Film(scene.camera), colour_only, {});
+            const Framebuffer srgb8 =
+                m.render(scene, Film(scene.camera, FilmFormat::srgb8), colour_only, {});
+            EXPECT_EQ(srgb8.film.srgb8().bytes, encode_srgb8(linear.film.linear()).bytes)
+                << name << ", " << m.name;
+        }
+    }
 }
 
 TEST(Methods, AgreeWithRayCastingOnRandomPiercingTriangles) {

@@ -74,8 +74,8 @@ TEST(Clip, GroundPlaneUnderAndBehindCameraMatchesRayTracer) {
       "materials": {"floor": {"ka": [1, 1, 1], "kd": [0.6, 0.6, 0.6]}},
       "lights": [{"type": "directional", "direction": [0, -1, 0], "intensity": [1, 1, 1]}],
       "objects": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "floor"}]})");
-    const Framebuffer ray = render_whitted(scene, RenderSettings{});
-    const Framebuffer z = render_zbuffer(scene, RenderSettings{});
+    const Framebuffer ray = render_whitted(scene, Film(scene.camera));
+    const Framebuffer z = render_zbuffer(scene, Film(scene.camera));
     EXPECT_GE(testing::id_agreement(ray, z), 0.998);
     EXPECT_GE(testing::psnr(ray, z), 40.0);
 }

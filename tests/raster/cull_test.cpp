@@ -27,17 +27,17 @@ TEST(Cull, BackFacingTriangleDisappearsOnlyWhenCulling) {
     };
     const Scene front = scene_with("[[-1, -1, 0], [1, -1, 0], [0, 1, 0]]");
     const Scene back = scene_with("[[-1, -1, 0], [0, 1, 0], [1, -1, 0]]");
-    RenderSettings cull;
+    RasterSettings cull;
     cull.cull_back_faces = true;
     auto covered = [](const Framebuffer& fb) {
         size_t n = 0;
         for (uint32_t id : fb.id) n += id != 0;
         return n;
     };
-    EXPECT_GT(covered(render_zbuffer(front, cull)), 100u);
-    EXPECT_EQ(covered(render_zbuffer(back, cull)), 0u);
-    EXPECT_EQ(covered(render_zbuffer(back, RenderSettings{})),
-              covered(render_zbuffer(front, RenderSettings{})));
+    EXPECT_GT(covered(render_zbuffer(front, Film(front.camera), {}, cull)), 100u);
+    EXPECT_EQ(covered(render_zbuffer(back, Film(back.camera), {}, cull)), 0u);
+    EXPECT_EQ(covered(render_zbuffer(back, Film(back.camera))),
+              covered(render_zbuffer(front, Film(front.camera))));
 }
 
 }  // namespace

@@ -27,13 +27,13 @@ inline double id_agreement(const Framebuffer& a, const Framebuffer& b) {
 /// would show them).
 inline double psnr(const Framebuffer& a, const Framebuffer& b) {
     double sum = 0;
-    for (size_t i = 0; i < a.color.pixels.size(); ++i)
+    for (size_t i = 0; i < a.film.linear().pixels.size(); ++i)
         for (int k = 0; k < 3; ++k) {
-            const double d = std::clamp(a.color.pixels[i][k], 0.0f, 1.0f) -
-                             std::clamp(b.color.pixels[i][k], 0.0f, 1.0f);
+            const double d = std::clamp(a.film.linear().pixels[i][k], 0.0f, 1.0f) -
+                             std::clamp(b.film.linear().pixels[i][k], 0.0f, 1.0f);
             sum += d * d;
         }
-    const double mse = sum / (3.0 * static_cast<double>(a.color.pixels.size()));
+    const double mse = sum / (3.0 * static_cast<double>(a.film.linear().pixels.size()));
     return mse > 0 ? 10 * std::log10(1.0 / mse) : 1000.0;
 }
 

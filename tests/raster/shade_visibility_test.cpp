@@ -33,8 +33,8 @@ TEST(ShadeVisibility, ReceedingQuadInterpolatesPerspectiveCorrectly) {
       "objects": [
         {"type": "triangle", "vertices": [[-2, 0, -1], [2, 0, -1], [2, 0, -60]], "material": "m"},
         {"type": "triangle", "vertices": [[-2, 0, -1], [2, 0, -60], [-2, 0, -60]], "material": "m"}]})");
-    const Framebuffer ray = render_whitted(scene, {});
-    const Framebuffer z = render_zbuffer(scene, {});
+    const Framebuffer ray = render_whitted(scene, Film(scene.camera));
+    const Framebuffer z = render_zbuffer(scene, Film(scene.camera));
     int compared = 0;
     for (size_t i = 0; i < ray.depth.size(); ++i)
         if (ray.id[i] != 0 && z.id[i] != 0) {
@@ -53,16 +53,17 @@ TEST(ShadeVisibility, InterpolationModesAgreeOnAFlatTriangle) {
       "lights": [{"type": "directional", "direction": [0.3, -0.2, -1], "intensity": [1, 1, 1]}],
       "objects": [{"type": "triangle", "vertices": [[-1, -1, 0], [1, -1, 0], [0, 1, 0]],
                    "material": "m"}]})");
-    RenderSettings s;
-    const Framebuffer phong = render_zbuffer(scene, s);
+    RasterSettings s;
+    const Framebuffer phong = render_zbuffer(scene, Film(scene.camera), {}, s);
     s.interp = Interpolation::gouraud;
-    const Framebuffer gouraud = render_zbuffer(scene, s);
+    const Framebuffer gouraud = render_zbuffer(scene, Film(scene.camera), {}, s);
     s.interp = Interpolation::flat;
-    const Framebuffer flat = render_zbuffer(scene, s);
-    for (size_t i = 0; i < phong.color.pixels.size(); ++i)
+    const Framebuffer flat = render_zbuffer(scene, Film(scene.camera), {}, s);
+    for (size_t i = 0; i < phong.film.linear().pixels.size(); ++i)
         for (int k = 0; k < 3; ++k) {
-            EXPECT_NEAR(gouraud.color.pixels[i][k], phong.color.pixels[i][k], 1e-5f);
-            EXPECT_NEAR(flat.color.pixels[i][k], phong.color.pixels[i][k], 1e-5f);
+            EXPECT_NEAR(gouraud.film.linear().pixels[i][k], phong.film.linear().pixels[i][k],
+                        1e-5f);
+            EXPECT_NEAR(flat.film.linear().pixels[i][k], phong.film.linear().pixels[i][k], 1e-5f);
         }
 }
 

@@ -35,7 +35,7 @@ TEST(ZBuffer, NearerFragmentWins) {
         {"type": "triangle", "vertices": [[-5, -5, -1], [5, -5, -1], [0, 5, -1]]},
         {"type": "triangle", "vertices": [[-5, -5, 0], [5, -5, 0], [0, 5, 0]]},
         {"type": "triangle", "vertices": [[-5, -5, -2], [5, -5, -2], [0, 5, -2]]}]})");
-    const Framebuffer fb = render_zbuffer(scene, {});
+    const Framebuffer fb = render_zbuffer(scene, Film(scene.camera));
     EXPECT_EQ(fb.id[8 * 16 + 8], 2u);
     EXPECT_GT(fb.depth[8 * 16 + 8], 3.0f);
     EXPECT_LT(fb.depth[8 * 16 + 8], 3.1f);
@@ -44,7 +44,8 @@ TEST(ZBuffer, NearerFragmentWins) {
 TEST(ZBuffer, RandomInterpenetratingTrianglesMatchRayCaster) {
     for (uint64_t seed : {1u, 2u, 3u}) {
         const Scene scene = testing::raster_scene_from(random_triangles_scene(40, seed));
-        EXPECT_GE(testing::id_agreement(render_whitted(scene, {}), render_zbuffer(scene, {})),
+        EXPECT_GE(testing::id_agreement(render_whitted(scene, Film(scene.camera)),
+                                        render_zbuffer(scene, Film(scene.camera))),
                   0.998)
             << "seed " << seed;
     }
@@ -59,7 +60,9 @@ TEST(ZBuffer, PiercingTrianglesAndCyclicBarsMatchRayCaster) {
         {"type": "triangle", "vertices": [[-2, -1.6, 0.3], [2, -1.4, -0.3], [2, -1.2, -0.3]]},
         {"type": "triangle", "vertices": [[1.6, -2, 0.3], [1.4, 2, -0.3], [1.2, 2, -0.3]]},
         {"type": "triangle", "vertices": [[2, 1.6, 0.3], [-2, 1.4, -0.3], [-2, 1.2, -0.3]]}]})");
-    EXPECT_GE(testing::id_agreement(render_whitted(scene, {}), render_zbuffer(scene, {})), 0.998);
+    EXPECT_GE(testing::id_agreement(render_whitted(scene, Film(scene.camera)),
+                                    render_zbuffer(scene, Film(scene.camera))),
+              0.998);
 }
 
 TEST(ZBuffer, BunnyMatchesRayTracerWithoutVisibleShadows) {
@@ -74,8 +77,8 @@ TEST(ZBuffer, BunnyMatchesRayTracerWithoutVisibleShadows) {
       "lights": [{"type": "point", "position": [-0.17, 1.1, 3.5], "intensity": [12, 12, 12]}],
       "objects": [{"type": "mesh", "file": "scenes/models/stanford-bunny.obj", "material": "m",
                    "transform": [{"scale": 10}]}]})");
-    const Framebuffer ray = render_whitted(scene, {});
-    const Framebuffer z = render_zbuffer(scene, {});
+    const Framebuffer ray = render_whitted(scene, Film(scene.camera));
+    const Framebuffer z = render_zbuffer(scene, Film(scene.camera));
     EXPECT_GE(testing::id_agreement(ray, z), 0.998);
     EXPECT_GE(testing::psnr(ray, z), 40.0);
 }
@@ -88,8 +91,8 @@ TEST(ZBuffer, SphereMatchesRayTracer) {
                           "shininess": 40}},
       "lights": [{"type": "directional", "direction": [0, 0, -1], "intensity": [1, 1, 1]}],
       "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}]})");
-    const Framebuffer ray = render_whitted(scene, {});
-    const Framebuffer z = render_zbuffer(scene, {});
+    const Framebuffer ray = render_whitted(scene, Film(scene.camera));
+    const Framebuffer z = render_zbuffer(scene, Film(scene.camera));
     EXPECT_GE(testing::id_agreement(ray, z), 0.998);
     EXPECT_GE(testing::psnr(ray, z), 40.0);
 }
@@ -99,11 +102,11 @@ TEST(ZBuffer, ImageDoesNotDependOnThreadCount) {
     Framebuffer one;
     {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
-        one = render_zbuffer(scene, {});
+        one = render_zbuffer(scene, Film(scene.camera));
     }
-    const Framebuffer many = render_zbuffer(scene, {});
+    const Framebuffer many = render_zbuffer(scene, Film(scene.camera));
     EXPECT_EQ(one.id, many.id);
-    EXPECT_EQ(one.color.pixels, many.color.pixels);
+    EXPECT_EQ(one.film.linear().pixels, many.film.linear().pixels);
     EXPECT_EQ(one.depth, many.depth);
 }
 

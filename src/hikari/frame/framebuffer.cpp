@@ -3,16 +3,17 @@
 #include <stdexcept>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "hikari/core/ray.h"
 
 namespace hikari {
 
-Framebuffer::Framebuffer(int width, int height, Vec3 background, bool aov_buffers,
-                         bool srgb8_output) {
-    if (srgb8_output)
-        srgb8 = Srgb8Image(width, height);
-    else
-        color = Image(width, height, background);
+Framebuffer::Framebuffer(Film target, int width, int height, bool aov_buffers)
+    : film(std::move(target)) {
+    if (film.width() != width || film.height() != height)
+        throw std::invalid_argument(fmt::format("Framebuffer: a {}x{} film for a {}x{} image",
+                                                film.width(), film.height(), width, height));
     if (!aov_buffers) return;
     const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
     depth.assign(pixels, k_infinity);
@@ -22,10 +23,12 @@ Framebuffer::Framebuffer(int width, int height, Vec3 background, bool aov_buffer
 
 Image aov_image(Framebuffer&& fb, Aov aov) {
     if (aov == Aov::color) {
-        if (!fb.srgb8.bytes.empty()) throw std::invalid_argument("aov_image: 8-bit colour only");
-        return std::move(fb.color);
+        if (fb.film.format() != FilmFormat::linear)
+            throw std::invalid_argument("aov_image: 8-bit colour only");
+        return std::move(fb.film.linear());
     }
-    if (fb.depth.size() != fb.color.pixels.size())
+    const size_t pixels = static_cast<size_t>(fb.width()) * static_cast<size_t>(fb.height());
+    if (fb.depth.size() != pixels)
         throw std::invalid_argument("aov_image: the render kept colour only");
     Image out(fb.width(), fb.height());
     for (size_t i = 0; i < out.pixels.size(); ++i) {

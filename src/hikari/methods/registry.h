@@ -1,23 +1,30 @@
 #pragma once
-// The registry of rendering methods: adding a method is one file and one line in methods.cpp.
+// The registry of rendering methods: adding a method is one file and one entry in registry.cpp,
+// which also lists the options the method understands.
 
 #include <span>
 #include <string_view>
+#include <vector>
 
+#include "hikari/frame/film.h"
 #include "hikari/frame/framebuffer.h"
 #include "hikari/frame/render_settings.h"
+#include "hikari/methods/method_options.h"
 #include "hikari/scene/scene.h"
 
 namespace hikari {
 
-/// Renders a whole scene into a framebuffer of the camera's size.
-using RenderFunction = Framebuffer (*)(const Scene&, const RenderSettings&);
+/// Renders a whole scene: every pixel of `film` (of the camera's size), returned with the AOVs.
+/// Each method reads its own part of the MethodSettings.
+using RenderFunction = Framebuffer (*)(const Scene& scene, Film film,
+                                       const RenderSettings& settings, const MethodSettings& own);
 
 /// A named rendering method selectable with `--method`.
 struct Method {
-    std::string_view name;
-    std::string_view summary;  ///< one line for --help
-    RenderFunction render;
+    std::string_view name;                  ///< as given to --method
+    std::string_view summary;               ///< one line for --help
+    RenderFunction render;                  ///< the method itself
+    std::span<const MethodOption> options;  ///< the method options it understands
 };
 
 /// Every registered method, the default (raytrace) first.
@@ -25,5 +32,11 @@ std::span<const Method> methods();
 
 /// The method called `name`, or nullptr.
 const Method* find_method(std::string_view name);
+
+/// Every option of any method, once each, in the order the methods list them.
+std::vector<const MethodOption*> method_options();
+
+/// Whether `method` understands the option called `flag` ("--spp").
+bool takes_option(const Method& method, std::string_view flag);
 
 }  // namespace hikari

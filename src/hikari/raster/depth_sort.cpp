@@ -56,6 +56,8 @@ class DepthSorter {
     /// Cuts polygon `id` along the line of the first edge of `by` whose line crosses it;
     /// false when none does.
     bool split_by_edge_line(uint32_t id, uint32_t by);
+    /// Breaks the cycle through P and Q where neither's plane cuts the other polygon.
+    void cut_cycle(uint32_t p, uint32_t q);
 
     std::vector<PolygonVertex> m_vertices;
     std::vector<Polygon> m_polygons;
@@ -304,6 +306,30 @@ void DepthSorter::split(uint32_t id, OffsetFn&& offset) {
     }
 }
 
+void DepthSorter::cut_cycle(uint32_t p, uint32_t q) {
+    // Cut the cycle where another of its members straddles the plane of one it overlaps.
+    uint32_t cut = 0, by = 0;
+    if (find_cycle_cut(q, cut, by)) {
+        split(cut, [&](const PolygonVertex& v, double& tol) {
+            return plane_offset(m_polygons[by], v, tol);
+        });
+        return;
+    }
+    // No plane cuts it: cut P (or Q) along the screen-space line of an edge of the other. The
+    // pieces outside the other's projection no longer overlap it, and the piece inside lies
+    // wholly in front of or behind it, so the cycle breaks. (Halving instead keeps a piece on
+    // the other's boundary forever.)
+    if (split_by_edge_line(p, q) || split_by_edge_line(q, p)) return;
+    // last resort: halve P across its longer extent
+    const Polygon& pp = m_polygons[p];
+    const bool along_x = pp.x_max - pp.x_min >= pp.y_max - pp.y_min;
+    const double mid = along_x ? 0.5 * (pp.x_min + pp.x_max) : 0.5 * (pp.y_min + pp.y_max);
+    split(p, [&](const PolygonVertex& v, double& tol) {
+        tol = 0;
+        return (along_x ? v.x : v.y) - mid;
+    });
+}
+
 void DepthSorter::sort() {
     for (;;) {
         // drop retired entries once they are most of the list, so scans stay short
@@ -340,32 +366,9 @@ void DepthSorter::sort() {
                     return plane_offset(m_polygons[q], v, tol);
                 });
                 break;
-            case Step::bisect_p: {
-                // neither plane of P and Q cuts the other polygon: cut the cycle where another of
-                // its members straddles the plane of one it overlaps
-                uint32_t cut = 0, by = 0;
-                if (find_cycle_cut(q, cut, by)) {
-                    split(cut, [&](const PolygonVertex& v, double& tol) {
-                        return plane_offset(m_polygons[by], v, tol);
-                    });
-                    break;
-                }
-                // No plane cuts it: cut P (or Q) along the screen-space line of an edge of the
-                // other. The pieces outside the other's projection no longer overlap it, and
-                // the piece inside lies wholly in front of or behind it, so the cycle breaks.
-                // (Halving instead keeps a piece on the other's boundary forever.)
-                if (split_by_edge_line(p, q) || split_by_edge_line(q, p)) break;
-                // last resort: halve P across its longer extent
-                const Polygon& pp = m_polygons[p];
-                const bool along_x = pp.x_max - pp.x_min >= pp.y_max - pp.y_min;
-                const double mid =
-                    along_x ? 0.5 * (pp.x_min + pp.x_max) : 0.5 * (pp.y_min + pp.y_max);
-                split(p, [&](const PolygonVertex& v, double& tol) {
-                    tol = 0;
-                    return (along_x ? v.x : v.y) - mid;
-                });
+            case Step::bisect_p:
+                cut_cycle(p, q);
                 break;
-            }
         }
     }
 }
@@ -431,12 +434,14 @@ VisibilityBuffer depth_sort_naive_visibility(std::span<const ScreenTriangle> tri
     return out;
 }
 
-Framebuffer render_depth_sort(const Scene& scene, const RenderSettings& settings) {
-    return render_raster(scene, settings, depth_sort_visibility);
+Framebuffer render_depth_sort(const Scene& scene, Film film, const RenderSettings& settings,
+                              const RasterSettings& raster) {
+    return render_raster(scene, std::move(film), settings, raster, depth_sort_visibility);
 }
 
-Framebuffer render_depth_sort_naive(const Scene& scene, const RenderSettings& settings) {
-    return render_raster(scene, settings, depth_sort_naive_visibility);
+Framebuffer render_depth_sort_naive(const Scene& scene, Film film, const RenderSettings& settings,
+                                    const RasterSettings& raster) {
+    return render_raster(scene, std::move(film), settings, raster, depth_sort_naive_visibility);
 }
 
 }  // namespace hikari

@@ -4,8 +4,10 @@
 
 #include <span>
 
+#include "hikari/frame/film.h"
 #include "hikari/frame/framebuffer.h"
 #include "hikari/frame/render_settings.h"
+#include "hikari/raster/raster_settings.h"
 #include "hikari/raster/screen_triangle.h"
 #include "hikari/scene/scene.h"
 
@@ -27,9 +29,12 @@ VisibilityBuffer depth_sort_naive_visibility(std::span<const ScreenTriangle> tri
                                              int height);
 
 /// The `depthsort` method: vertex stage, depth_sort_visibility, shared shading pass.
-Framebuffer render_depth_sort(const Scene& scene, const RenderSettings& settings);
+Framebuffer render_depth_sort(const Scene& scene, Film film, const RenderSettings& settings = {},
+                              const RasterSettings& raster = {});
 
 /// The `depthsort-naive` method: vertex stage, depth_sort_naive_visibility, shared shading pass.
-Framebuffer render_depth_sort_naive(const Scene& scene, const RenderSettings& settings);
+Framebuffer render_depth_sort_naive(const Scene& scene, Film film,
+                                    const RenderSettings& settings = {},
+                                    const RasterSettings& raster = {});
 
 }  // namespace hikari

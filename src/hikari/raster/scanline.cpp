@@ -268,8 +268,9 @@ VisibilityBuffer scanline_visibility(std::span<const ScreenTriangle> triangles, 
     return out;
 }
 
-Framebuffer render_scanline(const Scene& scene, const RenderSettings& settings) {
-    return render_raster(scene, settings, scanline_visibility);
+Framebuffer render_scanline(const Scene& scene, Film film, const RenderSettings& settings,
+                            const RasterSettings& raster) {
+    return render_raster(scene, std::move(film), settings, raster, scanline_visibility);
 }
 
 }  // namespace hikari

@@ -1,6 +1,7 @@
 #include "hikari/raster/shade_visibility.h"
 
 #include <cmath>
+#include <utility>
 
 #include "hikari/frame/tiles.h"
 #include "hikari/raster/cull.h"
@@ -13,9 +14,26 @@ namespace {
 
 struct ShadeContext {
     const Scene& scene;
+    const ProjectedScene& ps;
     const TriangleSet& tris;
     Interpolation interp;
+    CameraFrame frame;
+    int width, height;
     LightingEnvironment lighting;
+};
+
+/// The source triangle a pixel centre sees, and the centre's point on it.
+struct PixelSurface {
+    uint32_t src;            ///< index into ctx.tris
+    Vec3 p[3];               ///< the corners, world space
+    Vec3 n[3];               ///< the corners' normals
+    std::array<float, 3> b;  ///< perspective-correct weights of the pixel centre
+    Vec3 point;              ///< b-weighted corners
+    Vec3 n_interp;           ///< b-weighted normals, not normalized
+    Vec3 dir;                ///< the camera ray through the pixel centre
+    Vec3 ng;                 ///< unit face normal (−dir for a degenerate triangle)
+    bool entering;           ///< the ray meets the side `ng` points to
+    Vec3 ng_front;           ///< `ng` turned toward the eye
 };
 
 /// The material at `p` (its texture applied) lit by every light: the raster methods draw no
@@ -43,6 +61,80 @@ Vec3 facing(Vec3 n, bool entering, Vec3 ng_front, Vec3 view_dir) {
     return dot(n, view_dir) > 0.0f ? ng_front : n;
 }
 
+/// What the centre of pixel (x, y) sees of source triangle `src`.
+PixelSurface surface_at(const ShadeContext& ctx, uint32_t src, int x, int y) {
+    PixelSurface s;
+    s.src = src;
+    const auto& idx = ctx.tris.indices[src];
+    for (int k = 0; k < 3; ++k) {
+        s.p[k] = ctx.tris.positions[idx[k]];
+        s.n[k] = ctx.tris.normals[idx[k]];
+    }
+    // Perspective-correct weights of the pixel centre on the source triangle.
+    const double ndc_x = 2.0 * (x + 0.5) / ctx.width - 1.0;
+    const double ndc_y = 1.0 - 2.0 * (y + 0.5) / ctx.height;
+    s.b = {1.0f / 3, 1.0f / 3, 1.0f / 3};
+    perspective_barycentrics(ctx.ps.clip_positions[idx[0]], ctx.ps.clip_positions[idx[1]],
+                             ctx.ps.clip_positions[idx[2]], ndc_x, ndc_y, s.b);
+    s.point = s.b[0] * s.p[0] + s.b[1] * s.p[1] + s.b[2] * s.p[2];
+    s.n_interp = s.b[0] * s.n[0] + s.b[1] * s.n[1] + s.b[2] * s.n[2];
+    s.dir = camera_ray(ctx.frame, x + 0.5f, y + 0.5f).direction;
+
+    // Two-sided, as in the ray tracer: the side the eye sees is the front.
+    s.ng = face_normal(s.p[0], s.p[1], s.p[2]);
+    const float ng_len = length(s.ng);
+    s.ng = ng_len > 0.0f ? s.ng / ng_len : -s.dir;
+    s.entering = dot(s.ng, s.dir) < 0.0f;
+    s.ng_front = s.entering ? s.ng : -s.ng;
+    return s;
+}
+
+/// The colour of `s`, interpolated as ctx.interp says.
+Vec3 shade_surface(const ShadeContext& ctx, const PixelSurface& s) {
+    const uint32_t m = ctx.tris.material[s.src];
+    const Vec3 eye = ctx.scene.camera.eye;
+    switch (ctx.interp) {
+        case Interpolation::flat: {  // one colour per polygon, at its centroid
+            const Vec3 c = (s.p[0] + s.p[1] + s.p[2]) / 3.0f;
+            return shade_point(ctx, m, c, s.ng_front, normalize(eye - c));
+        }
+        case Interpolation::gouraud: {  // shade the vertices, blend the colours
+            Vec3 colour(0.0f);
+            for (int k = 0; k < 3; ++k) {
+                const Vec3 to_eye = normalize(eye - s.p[k]);
+                const Vec3 nk = facing(s.n[k], s.entering, s.ng_front, -to_eye);
+                colour += s.b[k] * shade_point(ctx, m, s.p[k], nk, to_eye);
+            }
+            return colour;
+        }
+        case Interpolation::phong:  // interpolate the normal, shade the pixel
+            return shade_point(ctx, m, s.point, facing(s.n_interp, s.entering, s.ng_front, s.dir),
+                               -s.dir);
+    }
+    return Vec3(0.0f);
+}
+
+/// Colour and AOVs of every pixel of `tile`.
+void shade_tile(const ShadeContext& ctx, const VisibilityBuffer& vis, const Tile& tile,
+                Framebuffer& fb) {
+    for (int y = tile.y0; y < tile.y1; ++y)
+        for (int x = tile.x0; x < tile.x1; ++x) {
+            const size_t pixel = static_cast<size_t>(y) * ctx.width + x;
+            const uint32_t t = vis.triangle[pixel];
+            if (t == k_no_triangle) {
+                fb.set_color(pixel, ctx.scene.background);
+                continue;
+            }
+            const PixelSurface s = surface_at(ctx, ctx.ps.triangles[t].source, x, y);
+            fb.set_color(pixel, shade_surface(ctx, s));
+            fb.depth[pixel] = length(s.point - ctx.scene.camera.eye);
+            fb.id[pixel] = ctx.tris.id[s.src] + 1;
+            const float nl = length(s.n_interp);
+            const Vec3 sn = nl > 0.0f ? s.n_interp / nl : s.ng;
+            fb.normal[pixel] = dot(sn, s.dir) < 0.0f ? sn : -sn;
+        }
+}
+
 }  // namespace
 
 bool perspective_barycentrics(Vec4 c0, Vec4 c1, Vec4 c2, double ndc_x, double ndc_y,
@@ -64,78 +156,19 @@ bool perspective_barycentrics(Vec4 c0, Vec4 c1, Vec4 c2, double ndc_x, double nd
 }
 
 Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
-                             const VisibilityBuffer& vis, const RenderSettings& settings) {
-    const int width = vis.width, height = vis.height;
-    Framebuffer fb(width, height, scene.background);
+                             const VisibilityBuffer& vis, Film film, const RenderSettings& settings,
+                             Interpolation interp) {
+    Framebuffer fb(std::move(film), vis.width, vis.height, true);
     const ShadeContext ctx{scene,
+                           ps,
                            ps.scene.triangles,
-                           settings.interp,
+                           interp,
+                           make_camera_frame(scene.camera),
+                           vis.width,
+                           vis.height,
                            {scene.lights.data(), scene.lights.size(), scene.ambient}};
-    const CameraFrame frame = make_camera_frame(scene.camera);
-    const Vec3 eye = scene.camera.eye;
-
-    for_each_tile(width, height, settings.control, [&](const Tile& tile) {
-        for (int y = tile.y0; y < tile.y1; ++y)
-            for (int x = tile.x0; x < tile.x1; ++x) {
-                const size_t pixel = static_cast<size_t>(y) * width + x;
-                const uint32_t t = vis.triangle[pixel];
-                if (t == k_no_triangle) continue;
-                const uint32_t src = ps.triangles[t].source;
-                const auto& idx = ctx.tris.indices[src];
-                const Vec3 p0 = ctx.tris.positions[idx[0]], p1 = ctx.tris.positions[idx[1]],
-                           p2 = ctx.tris.positions[idx[2]];
-
-                // Perspective-correct weights of the pixel centre on the source triangle.
-                const double ndc_x = 2.0 * (x + 0.5) / width - 1.0;
-                const double ndc_y = 1.0 - 2.0 * (y + 0.5) / height;
-                std::array<float, 3> b{1.0f / 3, 1.0f / 3, 1.0f / 3};
-                perspective_barycentrics(ps.clip_positions[idx[0]], ps.clip_positions[idx[1]],
-                                         ps.clip_positions[idx[2]], ndc_x, ndc_y, b);
-                const Vec3 p = b[0] * p0 + b[1] * p1 + b[2] * p2;
-                const Vec3 n0 = ctx.tris.normals[idx[0]], n1 = ctx.tris.normals[idx[1]],
-                           n2 = ctx.tris.normals[idx[2]];
-                const Vec3 n_interp = b[0] * n0 + b[1] * n1 + b[2] * n2;
-                const Vec3 dir = camera_ray(frame, x + 0.5f, y + 0.5f).direction;
-
-                // Two-sided, as in the ray tracer: the side the eye sees is the front.
-                Vec3 ng = face_normal(p0, p1, p2);
-                const float ng_len = length(ng);
-                ng = ng_len > 0.0f ? ng / ng_len : -dir;
-                const bool entering = dot(ng, dir) < 0.0f;
-                const Vec3 ng_front = entering ? ng : -ng;
-                const uint32_t m = ctx.tris.material[src];
-
-                Vec3 colour;
-                switch (ctx.interp) {
-                    case Interpolation::flat: {  // one colour per polygon, at its centroid
-                        const Vec3 c = (p0 + p1 + p2) / 3.0f;
-                        colour = shade_point(ctx, m, c, ng_front, normalize(eye - c));
-                        break;
-                    }
-                    case Interpolation::gouraud: {  // shade the vertices, blend the colours
-                        const Vec3 ps3[3] = {p0, p1, p2};
-                        const Vec3 ns3[3] = {n0, n1, n2};
-                        colour = Vec3(0.0f);
-                        for (int k = 0; k < 3; ++k) {
-                            const Vec3 to_eye = normalize(eye - ps3[k]);
-                            const Vec3 nk = facing(ns3[k], entering, ng_front, -to_eye);
-                            colour += b[k] * shade_point(ctx, m, ps3[k], nk, to_eye);
-                        }
-                        break;
-                    }
-                    case Interpolation::phong:  // interpolate the normal, shade the pixel
-                        colour =
-                            shade_point(ctx, m, p, facing(n_interp, entering, ng_front, dir), -dir);
-                        break;
-                }
-                fb.color.pixels[pixel] = colour;
-                fb.depth[pixel] = length(p - eye);
-                fb.id[pixel] = ctx.tris.id[src] + 1;
-                const float nl = length(n_interp);
-                const Vec3 sn = nl > 0.0f ? n_interp / nl : ng;
-                fb.normal[pixel] = dot(sn, dir) < 0.0f ? sn : -sn;
-            }
-    });
+    for_each_tile(vis.width, vis.height, settings.control,
+                  [&](const Tile& tile) { shade_tile(ctx, vis, tile, fb); });
     return fb;
 }
 

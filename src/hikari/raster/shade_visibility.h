@@ -4,9 +4,12 @@
 // the lecture's one shading model (shading/phong.h, Fig 4.29).
 
 #include <span>
+#include <utility>
 
+#include "hikari/frame/film.h"
 #include "hikari/frame/framebuffer.h"
 #include "hikari/frame/render_settings.h"
+#include "hikari/raster/raster_settings.h"
 #include "hikari/raster/screen_triangle.h"
 #include "hikari/raster/vertex_pipeline.h"
 #include "hikari/scene/scene.h"
@@ -22,23 +25,26 @@ namespace hikari {
 bool perspective_barycentrics(Vec4 c0, Vec4 c1, Vec4 c2, double ndc_x, double ndc_y,
                               std::array<float, 3>& weights);
 
-/// Fills colour, depth (eye distance |p − eye|), id (1 + PrimitiveId) and normal (unit, facing
-/// the eye) for every pixel whose centre `visibility` names a triangle of `projected`; other
-/// pixels keep the scene background. Colour is ambient + Lambert + Phong for every light, without
-/// shadows, interpolated as `settings.interp` says; normals are turned toward the eye as the ray
-/// tracer turns them, so both pipelines shade a surface alike. Parallel over tiles.
+/// Fills colour (into `film`, of the visibility buffer's size), depth (eye distance |p − eye|),
+/// id (1 + PrimitiveId) and normal (unit, facing the eye) for every pixel whose centre
+/// `visibility` names a triangle of `projected`; other pixels get the scene background (colour)
+/// and "nothing seen" (AOVs). Colour is ambient + Lambert + Phong for every light, without
+/// shadows, interpolated as `interp` says; normals are turned toward the eye as the ray tracer
+/// turns them, so both pipelines shade a surface alike. Parallel over tiles; reports to
+/// `settings.control`. The AOV buffers are always filled (the methods need depth anyway).
 Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& projected,
-                             const VisibilityBuffer& visibility, const RenderSettings& settings);
+                             const VisibilityBuffer& visibility, Film film,
+                             const RenderSettings& settings, Interpolation interp);
 
 /// One raster method end to end (Fig 4.2): the shared vertex stage, the method's own hidden-surface
 /// removal `visible(screen_triangles, width, height) -> VisibilityBuffer`, the shared shading pass.
 template <class VisibilityFn>
-Framebuffer render_raster(const Scene& scene, const RenderSettings& settings,
-                          VisibilityFn&& visible) {
-    const ProjectedScene ps = project_scene(scene, settings);
+Framebuffer render_raster(const Scene& scene, Film film, const RenderSettings& settings,
+                          const RasterSettings& raster, VisibilityFn&& visible) {
+    const ProjectedScene ps = project_scene(scene, raster);
     const VisibilityBuffer vis = visible(std::span<const ScreenTriangle>(ps.triangles),
                                          scene.camera.width, scene.camera.height);
-    return shade_visibility(scene, ps, vis, settings);
+    return shade_visibility(scene, ps, vis, std::move(film), settings, raster.interp);
 }
 
 }  // namespace hikari

@@ -111,10 +111,10 @@ ProjectedScene project_triangles(RasterScene scene, const RasterView& view, bool
     return ps;
 }
 
-ProjectedScene project_scene(const Scene& scene, const RenderSettings& settings) {
+ProjectedScene project_scene(const Scene& scene, const RasterSettings& raster) {
     RasterScene rs = tessellate_scene(scene);
     const RasterView view = make_raster_view(scene.camera, rs);
-    return project_triangles(std::move(rs), view, settings.cull_back_faces);
+    return project_triangles(std::move(rs), view, raster.cull_back_faces);
 }
 
 }  // namespace hikari

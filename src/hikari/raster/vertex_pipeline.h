@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "hikari/core/mat4.h"
-#include "hikari/frame/render_settings.h"
 #include "hikari/raster/raster_scene.h"
+#include "hikari/raster/raster_settings.h"
 #include "hikari/raster/screen_triangle.h"
 #include "hikari/scene/scene.h"
 
@@ -45,7 +45,7 @@ struct ProjectedScene {
 /// pixels. Runs in parallel over triangles; the output order does not depend on the threads.
 ProjectedScene project_triangles(RasterScene scene, const RasterView& view, bool cull_back_faces);
 
-/// tessellate_scene, make_raster_view and project_triangles with `settings.cull_back_faces`.
-ProjectedScene project_scene(const Scene& scene, const RenderSettings& settings);
+/// tessellate_scene, make_raster_view and project_triangles with `raster.cull_back_faces`.
+ProjectedScene project_scene(const Scene& scene, const RasterSettings& raster);
 
 }  // namespace hikari

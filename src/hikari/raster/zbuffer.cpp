@@ -89,10 +89,12 @@ VisibilityBuffer zbuffer_visibility(std::span<const ScreenTriangle> triangles, i
     return vis;
 }
 
-Framebuffer render_zbuffer(const Scene& scene, const RenderSettings& settings) {
-    return render_raster(scene, settings, [&](auto triangles, int width, int height) {
-        return zbuffer_visibility(triangles, width, height, settings.control);
-    });
+Framebuffer render_zbuffer(const Scene& scene, Film film, const RenderSettings& settings,
+                           const RasterSettings& raster) {
+    return render_raster(scene, std::move(film), settings, raster,
+                         [&](auto triangles, int width, int height) {
+                             return zbuffer_visibility(triangles, width, height, settings.control);
+                         });
 }
 
 }  // namespace hikari

@@ -4,8 +4,10 @@
 
 #include <span>
 
+#include "hikari/frame/film.h"
 #include "hikari/frame/framebuffer.h"
 #include "hikari/frame/render_settings.h"
+#include "hikari/raster/raster_settings.h"
 #include "hikari/raster/screen_triangle.h"
 #include "hikari/scene/scene.h"
 
@@ -21,6 +23,7 @@ VisibilityBuffer zbuffer_visibility(std::span<const ScreenTriangle> triangles, i
 
 /// The `zbuffer` method: vertex stage (raster/vertex_pipeline.h), zbuffer_visibility, then the
 /// shared deferred shading pass (raster/shade_visibility.h).
-Framebuffer render_zbuffer(const Scene& scene, const RenderSettings& settings);
+Framebuffer render_zbuffer(const Scene& scene, Film film, const RenderSettings& settings = {},
+                           const RasterSettings& raster = {});
 
 }  // namespace hikari

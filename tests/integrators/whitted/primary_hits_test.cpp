@@ -195,9 +195,10 @@ std::string b3_scene_json(int width, int height) {
 }
 
 void expect_same_framebuffer(const Framebuffer& a, const Framebuffer& b) {
-    ASSERT_EQ(a.color.pixels.size(), b.color.pixels.size());
-    for (size_t i = 0; i < a.color.pixels.size(); ++i)
-        ASSERT_TRUE(same_bits(a.color.pixels[i], b.color.pixels[i])) << "pixel " << i;
+    ASSERT_EQ(a.film.linear().pixels.size(), b.film.linear().pixels.size());
+    for (size_t i = 0; i < a.film.linear().pixels.size(); ++i)
+        ASSERT_TRUE(same_bits(a.film.linear().pixels[i], b.film.linear().pixels[i]))
+            << "pixel " << i;
     ASSERT_EQ(a.depth.size(), b.depth.size());
     for (size_t i = 0; i < a.depth.size(); ++i) {
         ASSERT_TRUE(same_bits(a.depth[i], b.depth[i])) << "pixel " << i;
@@ -208,9 +209,8 @@ void expect_same_framebuffer(const Framebuffer& a, const Framebuffer& b) {
 
 TEST(PrimaryHits, WhittedRenderEqualsTheRecursiveOracle) {
     const Scene scene = scene_from(b3_scene_json(203, 117));
-    const RenderSettings settings;
-    expect_same_framebuffer(render_whitted(scene, settings),
-                            testing::render_whitted_recursive(scene, settings));
+    expect_same_framebuffer(render_whitted(scene, Film(scene.camera)),
+                            testing::render_whitted_recursive(scene));
 }
 
 TEST(PrimaryHits, MeshRenderEqualsTheRecursiveOracle) {
@@ -218,9 +218,8 @@ TEST(PrimaryHits, MeshRenderEqualsTheRecursiveOracle) {
     Scene scene = load_scene_file(std::string(HIKARI_SOURCE_DIR) + "/scenes/teapot.json", warnings);
     scene.camera.width = 150;
     scene.camera.height = 101;
-    const RenderSettings settings;
-    expect_same_framebuffer(render_whitted(scene, settings),
-                            testing::render_whitted_recursive(scene, settings));
+    expect_same_framebuffer(render_whitted(scene, Film(scene.camera)),
+                            testing::render_whitted_recursive(scene));
 }
 
 TEST(PrimaryHits, SameImageForAnyThreadCount) {
@@ -228,11 +227,11 @@ TEST(PrimaryHits, SameImageForAnyThreadCount) {
     Framebuffer one, two;
     {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
-        one = render_whitted(scene, RenderSettings{});
+        one = render_whitted(scene, Film(scene.camera));
     }
     {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
-        two = render_whitted(scene, RenderSettings{});
+        two = render_whitted(scene, Film(scene.camera));
     }
     expect_same_framebuffer(one, two);
 }

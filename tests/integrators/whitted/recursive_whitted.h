@@ -10,7 +10,8 @@
 #include "hikari/bvh/scene_intersector.h"
 #include "hikari/core/rng.h"
 #include "hikari/frame/framebuffer.h"
-#include "hikari/frame/render_settings.h"
+#include "hikari/frame/film.h"
+#include "hikari/integrators/whitted/whitted.h"
 #include "hikari/geometry/ray_offset.h"
 #include "hikari/scene/scene.h"
 #include "hikari/shading/lights.h"
@@ -90,13 +91,15 @@ class RecursiveWhitted {
     int m_max_depth;
 };
 
-/// The whole image as render_whitted makes it (colour and AOVs), by the recursive oracle.
-inline Framebuffer render_whitted_recursive(const Scene& scene, const RenderSettings& settings) {
+/// The whole image as render_whitted makes it (linear colour and AOVs), by the recursive oracle.
+inline Framebuffer render_whitted_recursive(const Scene& scene,
+                                            const WhittedSettings& whitted = {},
+                                            bool aov_buffers = true) {
     const Camera& cam = scene.camera;
-    Framebuffer fb(cam.width, cam.height, scene.background, settings.aov_buffers);
-    const RecursiveWhitted tracer(scene, settings.max_depth);
+    Framebuffer fb(Film(cam), cam.width, cam.height, aov_buffers);
+    const RecursiveWhitted tracer(scene, whitted.max_depth);
     const CameraFrame frame = make_camera_frame(cam);
-    const int spp = settings.samples_per_pixel;
+    const int spp = whitted.samples_per_pixel;
     int cols = static_cast<int>(std::sqrt(static_cast<double>(spp)));
     while (spp % cols != 0) --cols;
     const int rows = spp / cols;
@@ -119,7 +122,7 @@ inline Framebuffer render_whitted_recursive(const Scene& scene, const RenderSett
             }
             fb.set_color(i, sum);
             SurfaceHit first;
-            if (!settings.aov_buffers ||
+            if (!aov_buffers ||
                 !tracer.intersector().closest(centre, {0.0f, k_infinity}, first))
                 continue;
             fb.depth[i] = first.t;

@@ -178,11 +178,13 @@ Scene random_scene(uint64_t seed) {
 }
 
 void expect_same_colours(const Framebuffer& a, const Framebuffer& b) {
-    ASSERT_EQ(a.color.pixels.size(), b.color.pixels.size());
-    for (size_t i = 0; i < a.color.pixels.size(); ++i)
+    const Image& ca = a.film.linear();
+    const Image& cb = b.film.linear();
+    ASSERT_EQ(ca.pixels.size(), cb.pixels.size());
+    for (size_t i = 0; i < ca.pixels.size(); ++i)
         for (int c = 0; c < 3; ++c)
-            ASSERT_TRUE(same_bits(a.color.pixels[i][c], b.color.pixels[i][c]))
-                << "pixel " << i << ": " << a.color.pixels[i][c] << " vs " << b.color.pixels[i][c];
+            ASSERT_TRUE(same_bits(ca.pixels[i][c], cb.pixels[i][c]))
+                << "pixel " << i << ": " << ca.pixels[i][c] << " vs " << cb.pixels[i][c];
     ASSERT_EQ(a.depth.size(), b.depth.size());
     for (size_t i = 0; i < a.depth.size(); ++i) {
         ASSERT_TRUE(same_bits(a.depth[i], b.depth[i]));
@@ -197,11 +199,11 @@ TEST(WhittedShade, RandomScenesRenderAsTheRecursiveOracle) {
                 SCOPED_TRACE(::testing::Message()
                              << "seed " << seed << " depth " << depth << " spp " << spp);
                 const Scene scene = random_scene(seed);
-                RenderSettings settings;
-                settings.max_depth = depth;
-                settings.samples_per_pixel = spp;
-                expect_same_colours(render_whitted(scene, settings),
-                                    testing::render_whitted_recursive(scene, settings));
+                WhittedSettings whitted;
+                whitted.max_depth = depth;
+                whitted.samples_per_pixel = spp;
+                expect_same_colours(render_whitted(scene, Film(scene.camera), {}, whitted),
+                                    testing::render_whitted_recursive(scene, whitted));
             }
 }
 
@@ -212,9 +214,8 @@ TEST(WhittedShade, ManyLightsAreShadedByTheOneRayCode) {
     Pcg32 rng(7, 9);
     while (scene.lights.size() <= k_max_block_lights)
         scene.lights.push_back(PointLight{testing::random_point(rng, 6.0f), Vec3(0.4f), true});
-    const RenderSettings settings;
-    expect_same_colours(render_whitted(scene, settings),
-                        testing::render_whitted_recursive(scene, settings));
+    expect_same_colours(render_whitted(scene, Film(scene.camera)),
+                        testing::render_whitted_recursive(scene));
 }
 
 TEST(WhittedShade, Srgb8OutputIsTheEncodedLinearRender) {
@@ -223,17 +224,18 @@ TEST(WhittedShade, Srgb8OutputIsTheEncodedLinearRender) {
     for (int spp : {1, 4}) {
         SCOPED_TRACE(::testing::Message() << "spp " << spp);
         const Scene scene = random_scene(3);
-        RenderSettings linear, srgb8;
-        linear.aov_buffers = srgb8.aov_buffers = false;
-        linear.samples_per_pixel = srgb8.samples_per_pixel = spp;
-        srgb8.srgb8_output = true;
-        const Framebuffer a = render_whitted(scene, linear);
-        const Framebuffer b = render_whitted(scene, srgb8);
-        ASSERT_TRUE(a.srgb8.bytes.empty());
-        ASSERT_TRUE(b.color.pixels.empty());
+        RenderSettings colour_only;
+        colour_only.aov_buffers = false;
+        WhittedSettings whitted;
+        whitted.samples_per_pixel = spp;
+        const Framebuffer a = render_whitted(scene, Film(scene.camera), colour_only, whitted);
+        const Framebuffer b =
+            render_whitted(scene, Film(scene.camera, FilmFormat::srgb8), colour_only, whitted);
+        ASSERT_TRUE(a.film.srgb8().bytes.empty());
+        ASSERT_TRUE(b.film.linear().pixels.empty());
         ASSERT_EQ(b.width(), a.width());
         ASSERT_EQ(b.height(), a.height());
-        EXPECT_EQ(encode_srgb8(a.color).bytes, b.srgb8.bytes);
+        EXPECT_EQ(encode_srgb8(a.film.linear()).bytes, b.film.srgb8().bytes);
     }
 }
 

@@ -44,14 +44,15 @@ std::array<double, 3> assignment_pixel(int i, int j) {
 }
 
 TEST(Whitted, AssignmentMatchesAnalyticRender) {
-    const Framebuffer fb = render_whitted(load_default_scene(), RenderSettings{});
+    const Scene scene = load_default_scene();
+    const Framebuffer fb = render_whitted(scene, Film(scene.camera));
     ASSERT_EQ(fb.width(), 512);
     ASSERT_EQ(fb.height(), 512);
     double worst = 0;
     for (int j = 0; j < 512; ++j)
         for (int i = 0; i < 512; ++i) {
             const auto expected = assignment_pixel(i, j);
-            const Vec3 got = fb.color.at(i, j);
+            const Vec3 got = fb.film.linear().at(i, j);
             for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(got[k] - expected[k]));
         }
     EXPECT_LT(worst, 1e-4);
@@ -68,7 +69,8 @@ TEST(Whitted, PointLightFallsOffWithDistanceSquared) {
                                  std::to_string(height) + R"(, 0], "intensity": [4, 4, 4]}],
           "objects": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0],
                        "material": "white"}]})";
-        return render_whitted(scene_from(json), RenderSettings{}).color.at(1, 1).x;
+        const Scene scene = scene_from(json);
+        return render_whitted(scene, Film(scene.camera)).film.linear().at(1, 1).x;
     };
     EXPECT_NEAR(floor_under_light(2), 4.0f / 4.0f, 1e-5);
     EXPECT_NEAR(floor_under_light(4), 4.0f / 16.0f, 1e-5);
@@ -94,20 +96,20 @@ const char* k_shadow_scene = R"({
 
 TEST(Whitted, SameImageForAnyThreadCount) {
     const Scene scene = scene_from(k_shadow_scene);
-    RenderSettings settings;
+    WhittedSettings settings;
     settings.samples_per_pixel = 4;
     Framebuffer one, two;
     {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
-        one = render_whitted(scene, settings);
+        one = render_whitted(scene, Film(scene.camera), {}, settings);
     }
     {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
-        two = render_whitted(scene, settings);
+        two = render_whitted(scene, Film(scene.camera), {}, settings);
     }
-    ASSERT_EQ(one.color.pixels.size(), two.color.pixels.size());
-    for (size_t i = 0; i < one.color.pixels.size(); ++i) {
-        ASSERT_EQ(one.color.pixels[i], two.color.pixels[i]) << "pixel " << i;
+    ASSERT_EQ(one.film.linear().pixels.size(), two.film.linear().pixels.size());
+    for (size_t i = 0; i < one.film.linear().pixels.size(); ++i) {
+        ASSERT_EQ(one.film.linear().pixels[i], two.film.linear().pixels[i]) << "pixel " << i;
         ASSERT_EQ(one.id[i], two.id[i]);
     }
 }
@@ -124,7 +126,7 @@ TEST(Whitted, ShadowedPointGetsOnlyAmbient) {
         {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "white"},
         {"type": "sphere", "center": [0, 5, 0], "radius": 0.1, "material": "white"}]})");
     // The sphere is above the camera (y = 5 > 1), so the camera sees the shadowed floor.
-    EXPECT_NEAR(render_whitted(scene, RenderSettings{}).color.at(1, 1).x, 0.25f, 1e-6);
+    EXPECT_NEAR(render_whitted(scene, Film(scene.camera)).film.linear().at(1, 1).x, 0.25f, 1e-6);
 }
 
 TEST(Whitted, PerfectMirrorShowsWhatItReflects) {
@@ -136,19 +138,20 @@ TEST(Whitted, PerfectMirrorShowsWhatItReflects) {
       "materials": {"mirror": {"reflectivity": 1}},
       "objects": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0],
                    "material": "mirror"}]})");
-    const Framebuffer fb = render_whitted(scene, RenderSettings{});
-    EXPECT_NEAR(fb.color.at(1, 1).x, 0.3f, 1e-6);
-    EXPECT_NEAR(fb.color.at(1, 1).z, 0.9f, 1e-6);
-    RenderSettings no_bounce;
+    const Framebuffer fb = render_whitted(scene, Film(scene.camera));
+    EXPECT_NEAR(fb.film.linear().at(1, 1).x, 0.3f, 1e-6);
+    EXPECT_NEAR(fb.film.linear().at(1, 1).z, 0.9f, 1e-6);
+    WhittedSettings no_bounce;
     no_bounce.max_depth = 1;  // the primary ray only: the mirror shows black
-    EXPECT_EQ(render_whitted(scene, no_bounce).color.at(1, 1), Vec3(0.0f));
+    EXPECT_EQ(render_whitted(scene, Film(scene.camera), {}, no_bounce).film.linear().at(1, 1),
+              Vec3(0.0f));
 }
 
 TEST(Whitted, AovsDescribeThePixelCentre) {
     const Scene scene = scene_from(k_shadow_scene);
-    RenderSettings settings;
+    WhittedSettings settings;
     settings.samples_per_pixel = 3;
-    const Framebuffer fb = render_whitted(scene, settings);
+    const Framebuffer fb = render_whitted(scene, Film(scene.camera), {}, settings);
     EXPECT_EQ(fb.id[0], 0u);  // top-left corner: sky
     EXPECT_TRUE(std::isinf(fb.depth[0]));
     const size_t bottom = static_cast<size_t>(47) * 64 + 32;  // bottom centre: the floor

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "hikari/bvh/scene_intersector.h"
@@ -282,6 +283,7 @@ void strata(int n, int& cols, int& rows) {
 struct WhittedRender {
     const Scene& scene;
     const RenderSettings& settings;
+    const WhittedSettings& whitted;
     Framebuffer& fb;
     const CameraFrame frame;
     const SceneIntersector intersector;
@@ -289,9 +291,10 @@ struct WhittedRender {
     const PrimaryHitTracer primary;
     const LaneShader shader;
 
-    WhittedRender(const Scene& s, const RenderSettings& r, Framebuffer& f)
+    WhittedRender(const Scene& s, const RenderSettings& r, const WhittedSettings& w, Framebuffer& f)
         : scene(s),
           settings(r),
+          whitted(w),
           fb(f),
           frame(make_camera_frame(s.camera)),
           intersector(s),
@@ -334,7 +337,7 @@ struct WhittedRender {
     /// `spp` stratified jittered samples per pixel, one in each stratum, from a random stream
     /// seeded by the pixel alone; the AOVs describe the pixel centre.
     void render_samples(const Tile& tile, WaveTracer& wave, WaveScratch& scratch) const {
-        const int spp = settings.samples_per_pixel, width = scene.camera.width;
+        const int spp = whitted.samples_per_pixel, width = scene.camera.width;
         int cols = 1, rows = 1;
         strata(spp, cols, rows);
         if (settings.aov_buffers) {
@@ -372,37 +375,37 @@ struct WhittedRender {
 };
 
 /// The BVH's figures for `--stats`.
-void report_bvh(const SceneIntersector& intersector, RenderControl* control) {
-    if (!control) return;
+void report_bvh(const SceneIntersector& intersector, RenderStats* stats) {
+    if (!stats) return;
     const WideBvh& bvh = intersector.bvh();
-    control->bvh_triangles = bvh.triangle_count();
-    control->bvh_nodes = bvh.nodes.size();
-    control->bvh_bytes = bvh.memory_bytes();
-    control->bvh_build_us = static_cast<uint64_t>(intersector.build_ms() * 1000.0);
+    stats->bvh_triangles = bvh.triangle_count();
+    stats->bvh_nodes = bvh.nodes.size();
+    stats->bvh_bytes = bvh.memory_bytes();
+    stats->bvh_build_us = static_cast<uint64_t>(intersector.build_ms() * 1000.0);
 }
 
 }  // namespace
 
-Framebuffer render_whitted(const Scene& scene, const RenderSettings& settings) {
+Framebuffer render_whitted(const Scene& scene, Film film, const RenderSettings& settings,
+                           const WhittedSettings& whitted) {
     const Camera& cam = scene.camera;
     // Every pixel is set below (by its tile), so 8-bit colour may start unwritten: its pages are
     // first touched by the tiles, in parallel.
-    Framebuffer fb(cam.width, cam.height, scene.background, settings.aov_buffers,
-                   settings.srgb8_output && !settings.aov_buffers);
-    const WhittedRender render(scene, settings, fb);
-    report_bvh(render.intersector, settings.control);
+    Framebuffer fb(std::move(film), cam.width, cam.height, settings.aov_buffers);
+    const WhittedRender render(scene, settings, whitted, fb);
+    report_bvh(render.intersector, settings.stats);
     static_assert(k_tile_size <= k_primary_block);
 
     for_each_tile(cam.width, cam.height, settings.control, [&](const Tile& tile) {
-        TraceContext ctx{scene, render.intersector, render.shading, settings.max_depth};
+        TraceContext ctx{scene, render.intersector, render.shading, whitted.max_depth};
         thread_local std::unique_ptr<WaveScratch> scratch;
         if (!scratch) scratch = std::make_unique<WaveScratch>();
         WaveTracer wave(ctx, render.primary, render.shader, *scratch);
-        if (settings.samples_per_pixel == 1)
+        if (whitted.samples_per_pixel == 1)
             render.render_centres(tile, wave);
         else
             render.render_samples(tile, wave, *scratch);
-        if (settings.control) settings.control->rays_traced += ctx.rays;
+        if (settings.stats) settings.stats->rays_traced += ctx.rays;
     });
     return fb;
 }

@@ -1,0 +1,82 @@
+#pragma once
+// The settings that only some rendering methods take, and the command-line options that set them
+// (`--spp`, `--interp`, ...): each option is declared once, in the registry (methods/registry.cpp),
+// with its help line, the values it takes and the setting it fills, and every method lists the
+// options it understands.
+
+#include <optional>
+#include <span>
+#include <string_view>
+#include <variant>
+
+#include "hikari/integrators/whitted/whitted.h"
+#include "hikari/raster/raster_settings.h"
+
+namespace hikari {
+
+/// Every method's own settings; each method reads its part.
+struct MethodSettings {
+    WhittedSettings whitted;  ///< raytrace
+    RasterSettings raster;    ///< zbuffer, scanline, depthsort, depthsort-naive
+};
+
+/// A word an option takes and the value it stands for (`--interp gouraud`).
+template <class T>
+struct Choice {
+    std::string_view name;  ///< as typed on the command line
+    T value;                ///< what it sets
+};
+
+/// The value `name` stands for among `choices`, or nullopt.
+template <class T>
+std::optional<T> choice_value(std::span<const Choice<T>> choices, std::string_view name) {
+    for (const Choice<T>& c : choices)
+        if (c.name == name) return c.value;
+    return std::nullopt;
+}
+
+/// The word for `value` among `choices`, or "" when none stands for it.
+template <class T>
+std::string_view choice_name(std::span<const Choice<T>> choices, T value) {
+    for (const Choice<T>& c : choices)
+        if (c.value == value) return c.name;
+    return {};
+}
+
+/// `--interp`: the lecture's three ways to shade a polygon.
+inline constexpr Choice<Interpolation> k_interpolation_choices[] = {
+    {"flat", Interpolation::flat},
+    {"gouraud", Interpolation::gouraud},
+    {"phong", Interpolation::phong},
+};
+
+/// `--cull`: RasterSettings::cull_back_faces.
+inline constexpr Choice<bool> k_cull_choices[] = {{"back", true}, {"none", false}};
+
+/// Where an option's value goes: one field of MethodSettings.
+template <class T>
+using SettingsField = T& (*)(MethodSettings&);
+
+/// An option whose value is an integer in [min, max].
+struct IntegerOption {
+    int min;                   ///< smallest value accepted
+    int max;                   ///< largest value accepted
+    SettingsField<int> field;  ///< where the value goes
+};
+
+/// An option whose value is one of a few words.
+template <class T>
+struct ChoiceOption {
+    std::span<const Choice<T>> choices;  ///< the words accepted and what each sets
+    SettingsField<T> field;              ///< where the value goes
+};
+
+/// A command-line option that only some methods understand.
+struct MethodOption {
+    std::string_view flag;  ///< its one name, e.g. "--spp"
+    std::string_view help;  ///< one line for --help
+    /// The values it takes and the field they go to.
+    std::variant<IntegerOption, ChoiceOption<Interpolation>, ChoiceOption<bool>> value;
+};
+
+}  // namespace hikari

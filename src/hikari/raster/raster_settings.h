@@ -1,0 +1,20 @@
+#pragma once
+// The raster methods' own settings (zbuffer, scanline, depthsort, depthsort-naive).
+
+namespace hikari {
+
+/// How the raster methods interpolate shading across a triangle (the lecture's flat, Gouraud and
+/// Phong shading).
+enum class Interpolation {
+    flat,     ///< one face normal per triangle
+    gouraud,  ///< shade at the vertices, interpolate the colours
+    phong,    ///< interpolate the normal, shade every pixel
+};
+
+/// Settings of the raster methods (`--interp`, `--cull`).
+struct RasterSettings {
+    Interpolation interp = Interpolation::phong;  ///< shading interpolation
+    bool cull_back_faces = false;                 ///< drop triangles facing away (Fig 4.3)
+};
+
+}  // namespace hikari
