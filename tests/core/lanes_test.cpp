@@ -15,13 +15,28 @@
 namespace hikari {
 namespace {
 
-struct TestIsa {};
-using Floats = LaneFloat<TestIsa>;
-using Ints = LaneInt<TestIsa>;
-using Masks = LaneMask<TestIsa>;
+/// Packs of every width the kernels use: 4 (SSE), 8 (AVX2), 16 (AVX-512); the tests run on
+/// the baseline target, where the wider ones are split into SSE registers.
+template <int Width>
+struct TestIsa {
+    static constexpr int k_width = Width;
+};
+
+template <class Isa>
+class Lanes : public ::testing::Test {
+  protected:
+    using Floats = LaneFloat<Isa>;
+    using Ints = LaneInt<Isa>;
+    using Masks = LaneMask<Isa>;
+    static constexpr int k_lanes = Isa::k_width;
+};
+using Widths = ::testing::Types<TestIsa<4>, TestIsa<8>, TestIsa<16>>;
+TYPED_TEST_SUITE(Lanes, Widths);
 
 /// Random floats with the awkward ones among them: zeros of both signs, infinities, NaN, tiny.
+template <class Floats>
 Floats awkward_floats(Pcg32& rng) {
+    constexpr int k_lanes = Floats::k_width;
     const float special[] = {0.0f,
                              -0.0f,
                              std::numeric_limits<float>::infinity(),
@@ -41,10 +56,13 @@ bool same_bits(float a, float b) {
     return std::bit_cast<uint32_t>(a) == std::bit_cast<uint32_t>(b);
 }
 
-TEST(Lanes, ArithmeticIsTheFloatArithmeticLaneByLane) {
+TYPED_TEST(Lanes, ArithmeticIsTheFloatArithmeticLaneByLane) {
     Pcg32 rng(3, 1);
     for (int round = 0; round < 200; ++round) {
-        const Floats a = awkward_floats(rng), b = awkward_floats(rng);
+        using Floats = typename TestFixture::Floats;
+        using Masks = typename TestFixture::Masks;
+        constexpr int k_lanes = TestFixture::k_lanes;
+        const Floats a = awkward_floats<Floats>(rng), b = awkward_floats<Floats>(rng);
         const Floats sum = a + b, difference = a - b, product = a * b, quotient = a / b;
         const Floats root = sqrt_of(a), magnitude = abs_of(a), negated = -a;
         const Masks less = a < b;
@@ -64,7 +82,10 @@ TEST(Lanes, ArithmeticIsTheFloatArithmeticLaneByLane) {
     }
 }
 
-TEST(Lanes, ConversionsAndBitsMatchTheScalarForms) {
+TYPED_TEST(Lanes, ConversionsAndBitsMatchTheScalarForms) {
+    using Floats = typename TestFixture::Floats;
+    using Ints = typename TestFixture::Ints;
+    constexpr int k_lanes = TestFixture::k_lanes;
     float values[k_lanes];
     for (int i = 0; i < k_lanes; ++i) values[i] = (static_cast<float>(i) - 7.5f) * 3.3f;
     const Floats a = Floats::load(values);
@@ -78,7 +99,9 @@ TEST(Lanes, ConversionsAndBitsMatchTheScalarForms) {
     }
 }
 
-TEST(Lanes, AnyAndLaneBitsSeeEveryLane) {
+TYPED_TEST(Lanes, AnyAndLaneBitsSeeEveryLane) {
+    using Masks = typename TestFixture::Masks;
+    constexpr int k_lanes = TestFixture::k_lanes;
     for (int lane = 0; lane < k_lanes; ++lane) {
         int32_t flags[k_lanes] = {};
         flags[lane] = 1;
@@ -90,9 +113,12 @@ TEST(Lanes, AnyAndLaneBitsSeeEveryLane) {
     EXPECT_EQ(lane_bits(Masks(true)), (1u << k_lanes) - 1);
 }
 
-TEST(Lanes, ForEachDistinctVisitsEachValueOnceWithItsLanes) {
+TYPED_TEST(Lanes, ForEachDistinctVisitsEachValueOnceWithItsLanes) {
+    using Ints = typename TestFixture::Ints;
+    using Masks = typename TestFixture::Masks;
+    constexpr int k_lanes = TestFixture::k_lanes;
     int32_t values[k_lanes];
-    for (int i = 0; i < k_lanes; ++i) values[i] = (i * 7) % 3 + 10;
+    for (int i = 0; i < k_lanes; ++i) values[i] = (i * 7) % 3 + 10;  // 10, 11, 12, 10, ...
     std::vector<int32_t> seen;
     uint32_t covered = 0;
     for_each_distinct(Ints::load(values), [&](int32_t value, const Masks& lanes, bool first) {

@@ -14,7 +14,10 @@
 namespace hikari {
 namespace {
 
-struct TestIsa {};
+struct TestIsa {
+    static constexpr int k_width = 16;
+};
+constexpr int k_lanes = TestIsa::k_width;
 using Floats = LaneFloat<TestIsa>;
 using Ints = LaneInt<TestIsa>;
 using Masks = LaneMask<TestIsa>;

@@ -97,17 +97,19 @@ inline bool any_active(const LaneChunk& chunk) {
     return any != 0;
 }
 
-/// Three lane arrays (x, y, z) as a vector of packs.
+/// Lanes [first, first + width) of three lane arrays (x, y, z) as a vector of packs.
 template <class Isa>
-HIKARI_INLINE Vec3T<LaneFloat<Isa>> load_lanes(const float (&a)[3][k_lane_chunk]) {
-    static_assert(k_lanes == k_lane_chunk);
-    return {LaneFloat<Isa>::load(a[0]), LaneFloat<Isa>::load(a[1]), LaneFloat<Isa>::load(a[2])};
+HIKARI_INLINE Vec3T<LaneFloat<Isa>> load_lanes(const float (&a)[3][k_lane_chunk], int first) {
+    static_assert(k_lane_chunk % Isa::k_width == 0);
+    return {LaneFloat<Isa>::load(a[0] + first), LaneFloat<Isa>::load(a[1] + first),
+            LaneFloat<Isa>::load(a[2] + first)};
 }
 
-/// A vector of packs into three lane arrays.
+/// A vector of packs into lanes [first, first + width) of three lane arrays.
 template <class Isa>
-HIKARI_INLINE void store_lanes(const Vec3T<LaneFloat<Isa>>& v, float (&a)[3][k_lane_chunk]) {
-    v.x.store(a[0]), v.y.store(a[1]), v.z.store(a[2]);
+HIKARI_INLINE void store_lanes(const Vec3T<LaneFloat<Isa>>& v, float (&a)[3][k_lane_chunk],
+                               int first) {
+    v.x.store(a[0] + first), v.y.store(a[1] + first), v.z.store(a[2] + first);
 }
 
 }  // namespace detail

@@ -1,6 +1,6 @@
 #pragma once
 // The number types that shading code is written over: `float` for one point, or `LaneFloat`, a
-// pack of k_lanes floats that SIMD code computes together. Code templated on its number type F
+// pack of 4, 8 or 16 floats that SIMD code computes together. Code templated on its number type F
 // (shading/, integrators/) then runs the same source for one ray or for a block of rays, as
 // Mitsuba 3's `Float` and Embree's templated kernels do; the pack's operations are the float
 // operations lane by lane, so both give bit-identical results (no FMA contraction anywhere).
@@ -20,21 +20,45 @@
 
 namespace hikari {
 
-/// Lanes in a pack: one chunk of a block of rays (core/block_lanes.h).
-inline constexpr int k_lanes = 16;
+/// The most lanes in a pack (AVX-512's sixteen floats): one chunk of a block of rays
+/// (core/block_lanes.h) is one pack or several narrower ones.
+inline constexpr int k_max_lanes = 16;
 
 namespace detail {
-// The vector types of the packs (GCC ignores vector_size on a dependent type, so they are
-// spelled out here).
-using FloatVector = float __attribute__((vector_size(4 * k_lanes)));
-using IntVector = int32_t __attribute__((vector_size(4 * k_lanes)));
+// The vector types of the packs, by width. They are spelled out one width at a time because GCC
+// ignores vector_size on a dependent type.
+template <int Width>
+struct LaneVectors;
+template <>
+struct LaneVectors<16> {
+    using Float = float __attribute__((vector_size(64)));
+    using Int = int32_t __attribute__((vector_size(64)));
+};
+template <>
+struct LaneVectors<8> {
+    using Float = float __attribute__((vector_size(32)));
+    using Int = int32_t __attribute__((vector_size(32)));
+};
+template <>
+struct LaneVectors<4> {
+    using Float = float __attribute__((vector_size(16)));
+    using Int = int32_t __attribute__((vector_size(16)));
+};
+template <>
+struct LaneVectors<2> {
+    using Int = int32_t __attribute__((vector_size(8)));
+};
 }  // namespace detail
 
-/// k_lanes values, lane by lane: `V` is detail::FloatVector or detail::IntVector.
+/// A pack of values, lane by lane: `V` is one of detail::LaneVectors' types. `Isa` is the tag
+/// of the kernel file that uses it; its k_width (16, 8 or 4) is the width of the target's vector
+/// registers, which the compiler then uses whole (a pack wider than the registers would be
+/// split, and some of its operations done one lane at a time).
 template <class V, class Isa>
 struct LaneVector {
     using Vector = V;
     using Element = std::remove_cvref_t<decltype(V{}[0])>;
+    static constexpr int k_width = sizeof(V) / sizeof(Element);
     Vector v;
 
     /// Uninitialised, as a float local is: a pack built to be assigned costs no stores.
@@ -42,7 +66,7 @@ struct LaneVector {
     HIKARI_INLINE constexpr LaneVector(Element s) : v(Vector{} + s) {}  // NOLINT: a broadcast
     HIKARI_INLINE constexpr explicit LaneVector(Vector w) : v(w) {}
 
-    /// The lanes of a 64-byte aligned array of k_lanes values.
+    /// The lanes of an array of k_width values aligned to the pack's size.
     HIKARI_INLINE static LaneVector load(const Element* p) {
         LaneVector r;
         std::memcpy(&r.v, p, sizeof r.v);
@@ -52,28 +76,29 @@ struct LaneVector {
     HIKARI_INLINE Element operator[](int i) const { return v[i]; }
 };
 
-/// k_lanes floats.
+/// Isa::k_width floats.
 template <class Isa>
-using LaneFloat = LaneVector<detail::FloatVector, Isa>;
-/// k_lanes 32-bit integers.
+using LaneFloat = LaneVector<typename detail::LaneVectors<Isa::k_width>::Float, Isa>;
+/// Isa::k_width 32-bit integers.
 template <class Isa>
-using LaneInt = LaneVector<detail::IntVector, Isa>;
+using LaneInt = LaneVector<typename detail::LaneVectors<Isa::k_width>::Int, Isa>;
 
-/// k_lanes booleans, each all ones (true) or all zeros (false), as vector compares give them.
+/// Isa::k_width booleans, each all ones (true) or all zeros (false), as vector compares give.
 template <class Isa>
 struct LaneMask {
-    using Vector = detail::IntVector;
+    using Vector = typename detail::LaneVectors<Isa::k_width>::Int;
+    static constexpr int k_width = Isa::k_width;
     Vector v;
 
     HIKARI_INLINE LaneMask() {}  // NOLINT(modernize-use-equals-default): uninitialised
     HIKARI_INLINE constexpr LaneMask(bool s) : v(Vector{} + (s ? -1 : 0)) {}  // NOLINT
     HIKARI_INLINE constexpr explicit LaneMask(Vector w) : v(w) {}
 
-    /// The lanes of an array of k_lanes ints: true where nonzero.
+    /// The lanes of an array of k_width ints: true where nonzero.
     HIKARI_INLINE static LaneMask load(const int32_t* p) {
         return LaneMask(LaneInt<Isa>::load(p).v != 0);
     }
-    /// 1 where true, 0 where false, into an array of k_lanes ints.
+    /// 1 where true, 0 where false, into an array of k_width ints.
     HIKARI_INLINE void store(int32_t* p) const { LaneInt<Isa>(v & 1).store(p); }
     HIKARI_INLINE bool operator[](int i) const { return v[i] != 0; }
 };
@@ -173,13 +198,7 @@ HIKARI_INLINE LaneMask<Isa> select(const LaneMask<Isa>& m, const LaneMask<Isa>& 
     return LaneMask<Isa>(m.v ? a.v : b.v);
 }
 
-/// The lanes of a 16-lane integer vector OR-ed together: halves folded onto each other (a few
-/// shuffles, where a loop over the lanes extracts them one by one).
 namespace detail {
-using Int32x8 = int32_t __attribute__((vector_size(32)));
-using Int32x4 = int32_t __attribute__((vector_size(16)));
-using Int32x2 = int32_t __attribute__((vector_size(8)));
-
 /// The two halves of `v` OR-ed together.
 template <class Half, class Vector>
 HIKARI_INLINE Half fold_halves(const Vector& v) {
@@ -190,19 +209,22 @@ HIKARI_INLINE Half fold_halves(const Vector& v) {
 }
 }  // namespace detail
 
-template <class Vector>
-HIKARI_INLINE int32_t or_lanes(const Vector& v) {
-    static_assert(sizeof(Vector) == 64);
-    const detail::Int32x2 two = detail::fold_halves<detail::Int32x2>(
-        detail::fold_halves<detail::Int32x4>(detail::fold_halves<detail::Int32x8>(v)));
-    return two[0] | two[1];
+/// The lanes of an integer vector OR-ed together: halves folded onto each other (a few
+/// shuffles, where a loop over the lanes extracts them one by one).
+template <int Width>
+HIKARI_INLINE int32_t or_lanes(const typename detail::LaneVectors<Width>::Int& v) {
+    if constexpr (Width == 2)
+        return v[0] | v[1];
+    else
+        return or_lanes<Width / 2>(
+            detail::fold_halves<typename detail::LaneVectors<Width / 2>::Int>(v));
 }
 
 /// Whether any lane is true.
 HIKARI_INLINE bool any(bool m) { return m; }
 template <class Isa>
 HIKARI_INLINE bool any(const LaneMask<Isa>& m) {
-    return or_lanes(m.v) != 0;
+    return or_lanes<Isa::k_width>(m.v) != 0;
 }
 
 /// The correctly rounded square root (the SIMD instruction rounds as sqrtf does).
@@ -210,7 +232,7 @@ HIKARI_INLINE float sqrt_of(float a) { return std::sqrt(a); }
 template <class Isa>
 HIKARI_INLINE LaneFloat<Isa> sqrt_of(const LaneFloat<Isa>& a) {
     LaneFloat<Isa> r;
-    for (int i = 0; i < k_lanes; ++i) r.v[i] = __builtin_sqrtf(a.v[i]);
+    for (int i = 0; i < Isa::k_width; ++i) r.v[i] = __builtin_sqrtf(a.v[i]);
     return r;
 }
 
@@ -268,13 +290,13 @@ HIKARI_INLINE void for_each_distinct(int32_t index, Function&& f) {
 template <class Isa>
 HIKARI_INLINE uint32_t lane_bits(const LaneMask<Isa>& m) {
     typename LaneMask<Isa>::Vector bit;
-    for (int i = 0; i < k_lanes; ++i) bit[i] = 1 << i;
-    return static_cast<uint32_t>(or_lanes(m.v & bit));
+    for (int i = 0; i < Isa::k_width; ++i) bit[i] = 1 << i;
+    return static_cast<uint32_t>(or_lanes<Isa::k_width>(m.v & bit));
 }
 
 template <class Isa, class Function>
 HIKARI_INLINE void for_each_distinct(const LaneInt<Isa>& index, Function&& f) {
-    uint32_t left = (1u << k_lanes) - 1;
+    uint32_t left = (1u << Isa::k_width) - 1;
     for (bool first = true; left != 0; first = false) {
         const int32_t value = index.v[__builtin_ctz(left)];
         const LaneMask<Isa> mine = index == value;

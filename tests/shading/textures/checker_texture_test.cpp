@@ -7,7 +7,10 @@
 namespace hikari {
 namespace {
 
-struct TestIsa {};
+struct TestIsa {
+    static constexpr int k_width = 16;
+};
+constexpr int k_lanes = TestIsa::k_width;
 using Lanes = LaneFloat<TestIsa>;
 
 TEST(CheckerTexture, FloorParityIsTheParityOfFloor) {

@@ -8,7 +8,7 @@
 
 #if HIKARI_SIMD_KERNELS
 #pragma GCC target("avx2,popcnt,bmi,bmi2,lzcnt")
-#define HIKARI_PRIMARY_AVX2 1
+#define HIKARI_KERNEL_LANES 8
 #include "hikari/integrators/whitted/primary_hits_kernel.h"
 
 namespace hikari::detail {

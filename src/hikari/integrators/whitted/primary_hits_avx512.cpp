@@ -9,7 +9,7 @@
 #if HIKARI_SIMD_KERNELS
 #pragma GCC target( \
     "avx2,avx512f,avx512vl,avx512dq,avx512bw,popcnt,bmi,bmi2,lzcnt,prefer-vector-width=512")
-#define HIKARI_PRIMARY_AVX512 1
+#define HIKARI_KERNEL_LANES 16
 #include "hikari/integrators/whitted/primary_hits_kernel.h"
 
 namespace hikari::detail {

@@ -12,6 +12,7 @@
 
 #include <cstdint>
 
+#include "hikari/core/kernel_isa.h"
 #include "hikari/core/lanes.h"
 #include "hikari/geometry/ray_offset.h"
 #include "hikari/integrators/whitted/primary_hits.h"
@@ -20,7 +21,6 @@
 namespace hikari::detail {
 namespace {
 
-struct KernelIsa {};
 using LaneF = LaneFloat<KernelIsa>;
 
 /// camera_ray(frame, x + 0.5, y + 0.5) for every lane: direction = normalize(forward + x right +
@@ -243,13 +243,17 @@ inline void describe_chunk(const PrimaryObjects& o, LaneChunk& chunk) {
 /// to its distance; then SceneIntersector::occluded's sphere and plane tests, per lane. Lanes
 /// without a hit (zero position and normal) get harmless finite rays.
 inline void shadow_chunk(const Light& light, const PrimaryAnalytic& a, LaneChunk& chunk) {
-    const Vec3T<LaneF> p = load_lanes<KernelIsa>(chunk.position);
-    const Vec3T<LaneF> g = load_lanes<KernelIsa>(chunk.geometric_normal);
-    const LaneMask<KernelIsa> facing = dot(g, load_lanes<KernelIsa>(chunk.direction)) < 0.0f;
-    store_lanes<KernelIsa>(offset_ray_origin(p, select(facing, g, -g)), chunk.shadow_origin);
-    const LightSampleT<LaneF> toward = sample_light<LaneF>(light, p);
-    store_lanes<KernelIsa>(toward.to_light, chunk.shadow_direction);
-    toward.distance.store(chunk.shadow_distance);
+    for (int first = 0; first < k_lane_chunk; first += KernelIsa::k_width) {
+        const Vec3T<LaneF> p = load_lanes<KernelIsa>(chunk.position, first);
+        const Vec3T<LaneF> g = load_lanes<KernelIsa>(chunk.geometric_normal, first);
+        const Vec3T<LaneF> d = load_lanes<KernelIsa>(chunk.direction, first);
+        const LaneMask<KernelIsa> facing = dot(g, d) < 0.0f;
+        store_lanes<KernelIsa>(offset_ray_origin(p, select(facing, g, -g)), chunk.shadow_origin,
+                               first);
+        const LightSampleT<LaneF> toward = sample_light<LaneF>(light, p);
+        store_lanes<KernelIsa>(toward.to_light, chunk.shadow_direction, first);
+        toward.distance.store(chunk.shadow_distance + first);
+    }
 
     const float* __restrict ox = chunk.shadow_origin[0];
     const float* __restrict oy = chunk.shadow_origin[1];

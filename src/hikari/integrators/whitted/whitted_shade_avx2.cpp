@@ -9,6 +9,7 @@
 
 #if HIKARI_SIMD_KERNELS
 #pragma GCC target("avx2,popcnt,bmi,bmi2,lzcnt")
+#define HIKARI_KERNEL_LANES 8
 #include "hikari/integrators/whitted/whitted_shade_kernel.h"
 
 namespace hikari::detail {
