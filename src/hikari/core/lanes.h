@@ -130,7 +130,6 @@ HIKARI_LANE_BINARY(LaneInt, LaneInt, -)
 HIKARI_LANE_BINARY(LaneInt, LaneInt, &)
 HIKARI_LANE_BINARY(LaneInt, LaneInt, |)
 HIKARI_LANE_BINARY(LaneInt, LaneInt, ^)
-HIKARI_LANE_BINARY(LaneInt, LaneInt, >>)
 HIKARI_LANE_BINARY(LaneInt, LaneMask, <)
 HIKARI_LANE_BINARY(LaneInt, LaneMask, ==)
 HIKARI_LANE_BINARY(LaneInt, LaneMask, !=)
@@ -138,6 +137,13 @@ HIKARI_LANE_BINARY(LaneMask, LaneMask, &)
 HIKARI_LANE_BINARY(LaneMask, LaneMask, |)
 HIKARI_LANE_BINARY(LaneMask, LaneMask, ^)
 #undef HIKARI_LANE_BINARY
+
+/// Each lane shifted right by the same count (one instruction; a pack of counts would be built
+/// lane by lane).
+template <class Isa>
+HIKARI_INLINE LaneInt<Isa> operator>>(const LaneInt<Isa>& a, int count) {
+    return LaneInt<Isa>(a.v >> count);
+}
 
 template <class Isa>
 HIKARI_INLINE LaneFloat<Isa> operator-(const LaneFloat<Isa>& a) {

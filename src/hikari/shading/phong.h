@@ -43,9 +43,11 @@ HIKARI_INLINE F phong_power(F cos_gamma, IntOf<F> exponent, F shininess) {
     if constexpr (k_is_scalar<F>)
         if (exponent < 0) return std::pow(cos_gamma, shininess);
     F power = F(1.0f), squared = cos_gamma;
+    IntOf<F> bits = exponent;
     for (int b = 0; b < k_exponent_bits; ++b) {
-        power = select(((exponent >> b) & IntOf<F>(1)) != IntOf<F>(0), power * squared, power);
+        power = select((bits & IntOf<F>(1)) != IntOf<F>(0), power * squared, power);
         squared = squared * squared;
+        bits = bits >> 1;
     }
     return power;
 }

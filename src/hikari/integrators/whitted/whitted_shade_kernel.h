@@ -61,7 +61,9 @@ HIKARI_INLINE void shade_pack(const WhittedScene& scene, int spawn, int first, L
     const WhittedHit<LaneF> hit = load_hits(lanes, first, active);
     const LaneI lit = LaneI::load(lanes.lit + first);
     const auto visible = [&](size_t light, const LightSampleT<LaneF>&, const SurfacePoint<LaneF>&,
-                             const LaneM&) { return (lit & LaneI(1 << light)) != LaneI(0); };
+                             const LaneM&) {
+        return ((lit >> static_cast<int>(light)) & LaneI(1)) != LaneI(0);
+    };
     const WhittedShading<LaneF> shaded = shade_whitted_hit<LaneF>(scene, hit, active, visible);
     store_lanes<KernelIsa>(shaded.direct.colour, lanes.colour, first);
     shaded.direct.tested.store(lanes.shadow_rays + first);
