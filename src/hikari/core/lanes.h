@@ -103,7 +103,8 @@ struct LaneMask {
     HIKARI_INLINE bool operator[](int i) const { return v[i] != 0; }
 };
 
-// Arithmetic, lane by lane.
+// Arithmetic, lane by lane. (The macro names templates, which cannot be parenthesised.)
+// NOLINTBEGIN(bugprone-macro-parentheses)
 #define HIKARI_LANE_BINARY(Type, Result, op)                                        \
     template <class Isa>                                                            \
     HIKARI_INLINE Result<Isa> operator op(const Type<Isa>& a, const Type<Isa>& b) { \
@@ -137,6 +138,7 @@ HIKARI_LANE_BINARY(LaneMask, LaneMask, &)
 HIKARI_LANE_BINARY(LaneMask, LaneMask, |)
 HIKARI_LANE_BINARY(LaneMask, LaneMask, ^)
 #undef HIKARI_LANE_BINARY
+// NOLINTEND(bugprone-macro-parentheses)
 
 /// Each lane shifted right by the same count (one instruction; a pack of counts would be built
 /// lane by lane).

@@ -40,7 +40,7 @@ struct Vec3T {
         return *this = {x - b.x, y - b.y, z - b.z};
     }
     HIKARI_INLINE constexpr Vec3T& operator*=(F s) { return *this = {x * s, y * s, z * s}; }
-    constexpr bool operator==(const Vec3T&) const = default;
+    bool operator==(const Vec3T&) const = default;  // deleted for packs (no bool result)
 };
 
 /// One point, direction, normal or colour.
