@@ -9,10 +9,10 @@
 
 #include "hikari/bvh/scene_intersector.h"
 #include "hikari/core/rng.h"
-#include "hikari/frame/framebuffer.h"
 #include "hikari/frame/film.h"
-#include "hikari/integrators/whitted/whitted.h"
+#include "hikari/frame/framebuffer.h"
 #include "hikari/geometry/ray_offset.h"
+#include "hikari/integrators/whitted/whitted.h"
 #include "hikari/scene/scene.h"
 #include "hikari/shading/lights.h"
 #include "hikari/shading/phong.h"
@@ -92,8 +92,7 @@ class RecursiveWhitted {
 };
 
 /// The whole image as render_whitted makes it (linear colour and AOVs), by the recursive oracle.
-inline Framebuffer render_whitted_recursive(const Scene& scene,
-                                            const WhittedSettings& whitted = {},
+inline Framebuffer render_whitted_recursive(const Scene& scene, const WhittedSettings& whitted = {},
                                             bool aov_buffers = true) {
     const Camera& cam = scene.camera;
     Framebuffer fb(Film(cam), cam.width, cam.height, aov_buffers);
@@ -122,8 +121,7 @@ inline Framebuffer render_whitted_recursive(const Scene& scene,
             }
             fb.set_color(i, sum);
             SurfaceHit first;
-            if (!aov_buffers ||
-                !tracer.intersector().closest(centre, {0.0f, k_infinity}, first))
+            if (!aov_buffers || !tracer.intersector().closest(centre, {0.0f, k_infinity}, first))
                 continue;
             fb.depth[i] = first.t;
             fb.id[i] = first.id + 1;
