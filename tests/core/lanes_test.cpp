@@ -11,16 +11,12 @@
 #include <gtest/gtest.h>
 
 #include "hikari/core/rng.h"
+#include "test_isa.h"
 
 namespace hikari {
 namespace {
 
-/// Packs of every width the kernels use: 4 (SSE), 8 (AVX2), 16 (AVX-512); the tests run on
-/// the baseline target, where the wider ones are split into SSE registers.
-template <int Width>
-struct TestIsa {
-    static constexpr int k_width = Width;
-};
+using testing::TestIsa;
 
 template <class Isa>
 class Lanes : public ::testing::Test {
@@ -30,6 +26,7 @@ class Lanes : public ::testing::Test {
     using Masks = LaneMask<Isa>;
     static constexpr int k_lanes = Isa::k_width;
 };
+/// Packs of every width the kernels use: 4 (SSE), 8 (AVX2), 16 (AVX-512).
 using Widths = ::testing::Types<TestIsa<4>, TestIsa<8>, TestIsa<16>>;
 TYPED_TEST_SUITE(Lanes, Widths);
 

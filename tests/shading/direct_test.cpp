@@ -8,15 +8,15 @@
 
 #include <gtest/gtest.h>
 
+#include "../core/test_isa.h"
+
 #include "hikari/core/rng.h"
 #include "hikari/shading/material_eval.h"
 
 namespace hikari {
 namespace {
 
-struct TestIsa {
-    static constexpr int k_width = 16;
-};
+using TestIsa = testing::TestIsa<16>;
 constexpr int k_lanes = TestIsa::k_width;
 using Floats = LaneFloat<TestIsa>;
 using Ints = LaneInt<TestIsa>;

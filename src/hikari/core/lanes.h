@@ -29,21 +29,16 @@ namespace detail {
 // ignores vector_size on a dependent type.
 template <int Width>
 struct LaneVectors;
-template <>
-struct LaneVectors<16> {
-    using Float = float __attribute__((vector_size(64)));
-    using Int = int32_t __attribute__((vector_size(64)));
-};
-template <>
-struct LaneVectors<8> {
-    using Float = float __attribute__((vector_size(32)));
-    using Int = int32_t __attribute__((vector_size(32)));
-};
-template <>
-struct LaneVectors<4> {
-    using Float = float __attribute__((vector_size(16)));
-    using Int = int32_t __attribute__((vector_size(16)));
-};
+#define HIKARI_LANE_VECTORS(width)                                     \
+    template <>                                                        \
+    struct LaneVectors<width> {                                        \
+        using Float = float __attribute__((vector_size(4 * (width)))); \
+        using Int = int32_t __attribute__((vector_size(4 * (width)))); \
+    };
+HIKARI_LANE_VECTORS(16)
+HIKARI_LANE_VECTORS(8)
+HIKARI_LANE_VECTORS(4)
+#undef HIKARI_LANE_VECTORS
 template <>
 struct LaneVectors<2> {
     using Int = int32_t __attribute__((vector_size(8)));

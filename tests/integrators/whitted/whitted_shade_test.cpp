@@ -208,14 +208,18 @@ TEST(WhittedShade, RandomScenesRenderAsTheRecursiveOracle) {
 }
 
 TEST(WhittedShade, ManyLightsAreShadedByTheOneRayCode) {
-    // More lights than a block's lit bits hold: every hit falls back to the one-ray code, which
-    // casts its own shadow rays; the image must not change.
-    Scene scene = random_scene(4);
-    Pcg32 rng(7, 9);
-    while (scene.lights.size() <= k_max_block_lights)
-        scene.lights.push_back(PointLight{testing::random_point(rng, 6.0f), Vec3(0.4f), true});
-    expect_same_colours(render_whitted(scene, Film(scene.camera)),
-                        testing::render_whitted_recursive(scene));
+    // As many lights as a block's lit bits hold (the lanes shade, bit 31 included), and one more:
+    // every hit then falls back to the one-ray code, which casts its own shadow rays. Neither
+    // may change the image.
+    for (const size_t lights : {k_max_block_lights, k_max_block_lights + 1}) {
+        SCOPED_TRACE(::testing::Message() << lights << " lights");
+        Scene scene = random_scene(4);
+        Pcg32 rng(7, 9);
+        while (scene.lights.size() < lights)
+            scene.lights.push_back(PointLight{testing::random_point(rng, 6.0f), Vec3(0.4f), true});
+        expect_same_colours(render_whitted(scene, Film(scene.camera)),
+                            testing::render_whitted_recursive(scene));
+    }
 }
 
 TEST(WhittedShade, Srgb8OutputIsTheEncodedLinearRender) {

@@ -4,12 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include "../../core/test_isa.h"
+
 namespace hikari {
 namespace {
 
-struct TestIsa {
-    static constexpr int k_width = 16;
-};
+using TestIsa = testing::TestIsa<16>;
 constexpr int k_lanes = TestIsa::k_width;
 using Lanes = LaneFloat<TestIsa>;
 

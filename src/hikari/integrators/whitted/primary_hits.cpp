@@ -226,7 +226,7 @@ void PrimaryHitTracer::finish(const TriangleHit* triangle_hits, PrimaryBlock& bl
     std::fill_n(packet.t_min, k_packet_size, 0.0f);
     for (size_t l = 0; l < m_scene.lights.size(); ++l) {
         shadows(m_scene.lights[l], casters, chunks, lanes);
-        const int32_t bit = 1 << l;
+        const auto bit = static_cast<int32_t>(1u << l);
         for (int c = 0; c < chunks; ++c) {
             detail::LaneChunk& chunk = lanes.chunks[c];
             if (!any_active(chunk)) continue;  // the kernel skipped it

@@ -237,10 +237,44 @@ inline void describe_chunk(const PrimaryObjects& o, LaneChunk& chunk) {
     for (int c = 0; c < chunks; ++c) describe_chunk(o, lanes.chunks[c]);
 }
 
+/// SceneIntersector::occluded's sphere and plane tests for the chunk's shadow rays (origin,
+/// direction, distance): blocked[i] = 1 where a casting sphere or plane is in the way.
+inline void block_by_spheres_and_planes(const PrimaryAnalytic& a, LaneChunk& chunk) {
+    // Only `blocked` is written, and as int32_t it cannot alias the float arrays read.
+    const float(&o)[3][k_lane_chunk] = chunk.shadow_origin;
+    const float(&d)[3][k_lane_chunk] = chunk.shadow_direction;
+    const float* __restrict distance = chunk.shadow_distance;
+    int32_t* __restrict blocked = chunk.blocked;
+    for (int i = 0; i < k_lane_chunk; ++i) blocked[i] = 0;
+    for (int32_t s = 0; s < a.spheres; ++s) {
+        const float cx = a.sphere_center[0][s], cy = a.sphere_center[1][s],
+                    cz = a.sphere_center[2][s];
+        const float radius = a.sphere_radius[s];
+        const float r2 = radius * radius;
+        if (!sphere_may_hit(o[0], o[1], o[2], d[0], d[1], d[2], cx, cy, cz, r2)) continue;
+        for (int i = 0; i < k_lane_chunk; ++i) {
+            const float t = sphere_lane(o[0][i] - cx, o[1][i] - cy, o[2][i] - cz, d[0][i], d[1][i],
+                                        d[2][i], r2, distance[i]);
+            blocked[i] = t == t ? 1 : blocked[i];
+        }
+    }
+    for (int32_t p = 0; p < a.planes; ++p) {
+        const float qx = a.plane_point[0][p], qy = a.plane_point[1][p], qz = a.plane_point[2][p];
+        const float mx = a.plane_normal[0][p], my = a.plane_normal[1][p], mz = a.plane_normal[2][p];
+        for (int i = 0; i < k_lane_chunk; ++i) {
+            const float denominator = mx * d[0][i] + my * d[1][i] + mz * d[2][i];
+            const float t =
+                ((qx - o[0][i]) * mx + (qy - o[1][i]) * my + (qz - o[2][i]) * mz) / denominator;
+            const bool hit = denominator != 0.0f && 0.0f < t && t < distance[i];
+            blocked[i] = hit ? 1 : blocked[i];
+        }
+    }
+}
+
 /// Shadow rays from the lanes' hit points toward one light, as the one-ray shading casts them
 /// (integrators/whitted/whitted_surface.h): from offset_ray_origin(position, the geometric
 /// normal turned toward the camera ray) along shading/lights.h's direction toward the light, up
-/// to its distance; then SceneIntersector::occluded's sphere and plane tests, per lane. Lanes
+/// to its distance; then the casting spheres and planes tested, per lane. Lanes
 /// without a hit (zero position and normal) get harmless finite rays.
 inline void shadow_chunk(const Light& light, const PrimaryAnalytic& a, LaneChunk& chunk) {
     for (int first = 0; first < k_lane_chunk; first += KernelIsa::k_width) {
@@ -255,38 +289,7 @@ inline void shadow_chunk(const Light& light, const PrimaryAnalytic& a, LaneChunk
         toward.distance.store(chunk.shadow_distance + first);
     }
 
-    const float* __restrict ox = chunk.shadow_origin[0];
-    const float* __restrict oy = chunk.shadow_origin[1];
-    const float* __restrict oz = chunk.shadow_origin[2];
-    const float* __restrict dx = chunk.shadow_direction[0];
-    const float* __restrict dy = chunk.shadow_direction[1];
-    const float* __restrict dz = chunk.shadow_direction[2];
-    const float* __restrict distance = chunk.shadow_distance;
-    int32_t* __restrict blocked = chunk.blocked;
-    for (int i = 0; i < k_lane_chunk; ++i) blocked[i] = 0;
-    for (int32_t s = 0; s < a.spheres; ++s) {
-        const float cx = a.sphere_center[0][s], cy = a.sphere_center[1][s],
-                    cz = a.sphere_center[2][s];
-        const float radius = a.sphere_radius[s];
-        const float r2 = radius * radius;
-        if (!sphere_may_hit(ox, oy, oz, dx, dy, dz, cx, cy, cz, r2)) continue;
-        for (int i = 0; i < k_lane_chunk; ++i) {
-            const float t = sphere_lane(ox[i] - cx, oy[i] - cy, oz[i] - cz, dx[i], dy[i], dz[i], r2,
-                                        distance[i]);
-            blocked[i] = t == t ? 1 : blocked[i];
-        }
-    }
-    for (int32_t p = 0; p < a.planes; ++p) {
-        const float qx = a.plane_point[0][p], qy = a.plane_point[1][p], qz = a.plane_point[2][p];
-        const float mx = a.plane_normal[0][p], my = a.plane_normal[1][p], mz = a.plane_normal[2][p];
-        for (int i = 0; i < k_lane_chunk; ++i) {
-            const float denominator = mx * dx[i] + my * dy[i] + mz * dz[i];
-            const float t =
-                ((qx - ox[i]) * mx + (qy - oy[i]) * my + (qz - oz[i]) * mz) / denominator;
-            const bool hit = denominator != 0.0f && 0.0f < t && t < distance[i];
-            blocked[i] = hit ? 1 : blocked[i];
-        }
-    }
+    block_by_spheres_and_planes(a, chunk);
 }
 
 /// shadow_chunk for each of the first `chunks` chunks that holds a hit.
