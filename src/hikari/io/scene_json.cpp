@@ -1,8 +1,10 @@
 #include "hikari/io/scene_json.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -48,11 +50,7 @@ Camera parse_camera(const JsonNode& node) {
     return c;
 }
 
-CheckerTexture parse_texture(const JsonNode& node) {
-    const std::string type = node.at("type").as_string();
-    if (type != "checker")
-        node.at("type").fail(
-            fmt::format("unknown texture type \"{}\" (expected \"checker\")", type));
+CheckerTexture parse_checker_texture(const JsonNode& node) {
     node.expect_object({"type", "size", "color_a", "color_b", "offset"});
     CheckerTexture t;
     if (node.has("size")) t.size = node.at("size").as_positive();
@@ -61,6 +59,32 @@ CheckerTexture parse_texture(const JsonNode& node) {
     if (node.has("offset")) t.offset = node.at("offset").as_vec3();
     return t;
 }
+
+/// A parser for each kind of a closed set (lights, textures), by its "type" name.
+template <class Kind>
+struct KindParser {
+    std::string_view type;
+    Kind (*parse)(const JsonNode& node);
+};
+
+/// The kind `node`'s "type" names, parsed by its entry of `parsers`; an unknown type is an
+/// error that lists the known ones.
+template <class Kind, size_t N>
+Kind parse_kind(const JsonNode& node, std::string_view what,
+                const std::array<KindParser<Kind>, N>& parsers) {
+    const std::string type = node.at("type").as_string();
+    std::string known;
+    for (const KindParser<Kind>& p : parsers) {
+        if (p.type == type) return p.parse(node);
+        known += fmt::format("{}\"{}\"", known.empty() ? "" : " or ", p.type);
+    }
+    node.at("type").fail(fmt::format("unknown {} type \"{}\" (expected {})", what, type, known));
+}
+
+/// Every texture kind's parser (scene/texture.h): one line per kind.
+constexpr std::array<KindParser<Texture>, 1> k_texture_parsers = {{
+    {"checker", [](const JsonNode& n) -> Texture { return parse_checker_texture(n); }},
+}};
 
 Sky parse_sky(const JsonNode& node) {
     const std::string type = node.at("type").as_string();
@@ -87,33 +111,34 @@ Material parse_material(const JsonNode& node, std::string name) {
     if (node.has("reflectivity")) m.reflectivity = node.at("reflectivity").as_non_negative();
     if (node.has("transparency")) m.transparency = node.at("transparency").as_non_negative();
     if (node.has("ior")) m.ior = node.at("ior").as_positive();
-    if (node.has("texture")) m.texture = parse_texture(node.at("texture"));
+    if (node.has("texture"))
+        m.texture = parse_kind(node.at("texture"), "texture", k_texture_parsers);
     return m;
 }
 
-Light parse_light(const JsonNode& node) {
-    const std::string type = node.at("type").as_string();
-    if (type == "point") {
-        node.expect_object({"type", "position", "intensity", "falloff"});
-        bool inverse_square = true;
-        if (node.has("falloff")) {
-            const std::string f = node.at("falloff").as_string();
-            if (f != "inverse_square" && f != "none")
-                node.at("falloff").fail(fmt::format(
-                    "unknown falloff \"{}\" (expected \"inverse_square\" or \"none\")", f));
-            inverse_square = f == "inverse_square";
-        }
-        return PointLight{node.at("position").as_vec3(), node.at("intensity").as_colour(),
-                          inverse_square};
+PointLight parse_point_light(const JsonNode& node) {
+    node.expect_object({"type", "position", "intensity", "falloff"});
+    bool inverse_square = true;
+    if (node.has("falloff")) {
+        const std::string f = node.at("falloff").as_string();
+        if (f != "inverse_square" && f != "none")
+            node.at("falloff").fail(
+                fmt::format("unknown falloff \"{}\" (expected \"inverse_square\" or \"none\")", f));
+        inverse_square = f == "inverse_square";
     }
-    if (type == "directional") {
-        node.expect_object({"type", "direction", "intensity"});
-        return DirectionalLight{normalize(node.at("direction").as_direction()),
-                                node.at("intensity").as_colour()};
-    }
-    node.at("type").fail(
-        fmt::format("unknown light type \"{}\" (expected \"point\" or \"directional\")", type));
+    return {node.at("position").as_vec3(), node.at("intensity").as_colour(), inverse_square};
 }
+
+DirectionalLight parse_directional_light(const JsonNode& node) {
+    node.expect_object({"type", "direction", "intensity"});
+    return {normalize(node.at("direction").as_direction()), node.at("intensity").as_colour()};
+}
+
+/// Every light kind's parser (scene/light.h): one line per kind.
+constexpr std::array<KindParser<Light>, 2> k_light_parsers = {{
+    {"point", [](const JsonNode& n) -> Light { return parse_point_light(n); }},
+    {"directional", [](const JsonNode& n) -> Light { return parse_directional_light(n); }},
+}};
 
 /// The material an object names, or a neutral grey one shared by objects that name none.
 uint32_t resolve_material(SceneBuilder& b, const JsonNode& object) {
@@ -310,7 +335,7 @@ Scene parse_scene(std::string_view text, const std::string& file,
         const JsonNode lights = root.at("lights");
         lights.expect_array();
         for (size_t i = 0; i < lights.value().size(); ++i)
-            b.scene.lights.push_back(parse_light(lights.at(i)));
+            b.scene.lights.push_back(parse_kind(lights.at(i), "light", k_light_parsers));
     }
     const JsonNode objects = root.at("objects");
     objects.expect_array();
