@@ -26,6 +26,7 @@
 
 #include "hikari/bench/bench_runner.h"
 #include "hikari/core/error.h"
+#include "hikari/frame/depth_cue.h"
 #include "hikari/io/atomic_file.h"
 #include "hikari/io/image_format.h"
 #include "hikari/io/image_write.h"
@@ -57,7 +58,8 @@ struct RenderOptions {
     double max_memory_gib = 0;
     bool quiet = false;
     bool stats = false;
-    MethodSettings own;  // every method option; the chosen method reads its part
+    std::vector<float> depth_cue;  // --depth-cue NEAR,FAR; empty: the scene's own, if any
+    MethodSettings own;            // every method option; the chosen method reads its part
 };
 
 RenderControl g_control;
@@ -205,17 +207,25 @@ Scene load_render_scene(const RenderOptions& o) {
         o.scene_file.empty() ? load_default_scene() : load_scene_file(o.scene_file, warnings);
     for (const std::string& w : warnings) fmt::print(stderr, "hikari: warning: {}\n", w);
     resize_camera(scene.camera, o.width, o.height);
+    if (!o.depth_cue.empty()) {
+        // --depth-cue overrides the scene's distances and keeps its colour and blur.
+        DepthCue cue = scene.depth_cue.value_or(DepthCue{});
+        cue.near = o.depth_cue[0];
+        cue.far = o.depth_cue[1];
+        scene.depth_cue = cue;
+    }
     check_memory(scene.camera,
                  o.max_memory_gib > 0 ? o.max_memory_gib * (1 << 30) : default_memory_limit());
     return scene;
 }
 
 /// The film for `output`: 8-bit sRGB where the file keeps only that (the colour in a PNG or PPM
-/// file), else linear floats.
-Film output_film(const Camera& camera, const std::string& output, Aov aov) {
+/// file) and no post step needs the floats, else linear floats.
+Film output_film(const Scene& scene, const std::string& output, Aov aov) {
+    const Camera& camera = scene.camera;
     const std::optional<ImageFormat> format = image_format_from_extension(output);
-    const bool srgb8 =
-        aov == Aov::color && (format == ImageFormat::Png || format == ImageFormat::Ppm);
+    const bool srgb8 = aov == Aov::color && !scene.depth_cue &&
+                       (format == ImageFormat::Png || format == ImageFormat::Ppm);
     return Film(camera, srgb8 ? FilmFormat::srgb8 : FilmFormat::linear);
 }
 
@@ -238,7 +248,7 @@ int run_render(const RenderOptions& o, const Method& method) {
     RenderSettings settings;
     settings.control = &g_control;
     settings.stats = &g_stats;
-    settings.aov_buffers = o.aov != Aov::color;
+    settings.aov_buffers = o.aov != Aov::color || scene.depth_cue.has_value();
 
     std::optional<tbb::global_control> thread_limit;
     if (o.threads > 0)
@@ -250,7 +260,9 @@ int run_render(const RenderOptions& o, const Method& method) {
     Framebuffer fb;
     {
         ProgressReporter progress(!o.quiet);
-        fb = method.render(scene, output_film(scene.camera, output, o.aov), settings, o.own);
+        fb = method.render(scene, output_film(scene, output, o.aov), settings, o.own);
+        if (scene.depth_cue && !g_control.cancel.load())
+            apply_depth_cue(*scene.depth_cue, scene.background, fb);
     }
     const auto rendered = Clock::now();
     times.render = std::chrono::duration<double>(rendered - start).count();
@@ -436,6 +448,15 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
                      "Refuse renders whose buffers need more than this many GiB "
                      "(default: half the machine's memory)")
         ->check(CLI::PositiveNumber);
+    render
+        ->add_option("--depth-cue", o.depth_cue,
+                     "Depth cueing (Fig 4.1b) from eye distance NEAR to FAR: the colour blends "
+                     "toward the cue colour (the scene's depth_cue.color, else the background) "
+                     "as w·colour + (1−w)·cue, w = clamp((FAR−d)/(FAR−NEAR), 0, 1)")
+        ->delimiter(',')
+        ->expected(2)
+        ->type_name("NEAR,FAR")
+        ->check(CLI::NonNegativeNumber);
     render->add_flag("-q,--quiet", o.quiet, "No progress or summary on stderr");
     render->add_flag(
         "--stats", o.stats,
@@ -476,6 +497,8 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, cons
     try {
         app.parse(argc, argv);
         if (render.parsed()) check_method_options(render, *find_method(o.method));
+        if (!o.depth_cue.empty() && !(o.depth_cue[1] > o.depth_cue[0]))
+            throw CLI::ValidationError("--depth-cue: FAR must be greater than NEAR");
         return std::nullopt;
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +14,9 @@
 #include <utility>
 
 #include <gtest/gtest.h>
+
+#include "hikari/core/image.h"
+#include "hikari/io/image_read.h"
 
 namespace {
 
@@ -257,3 +261,65 @@ TEST_F(Cli, BenchWithMoreThreadsThanCoresPrintsOnlyJson) {
 }
 
 }  // namespace
+
+namespace hikari {
+namespace {
+
+/// A small scene with near and far objects, a flat background and a textured floor.
+constexpr const char* k_cue_scene = R"({
+  "camera": {"eye": [0, 2, 8], "look_at": [0, 1, 0], "fov_y": 50, "width": 48, "height": 32},
+  "background": [0.1, 0.2, 0.3], "ambient": 0.2,
+  "materials": {"floor": {"ka": 0.3, "kd": 0.7, "texture": {"type": "checker", "size": 1}},
+                "ball": {"ka": 0.2, "kd": 0.6, "ks": 0.4, "shininess": 20}},
+  "lights": [{"type": "point", "position": [3, 6, 4], "intensity": 60}],
+  "objects": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "floor"},
+              {"type": "sphere", "center": [-1, 1, 2], "radius": 1, "material": "ball"},
+              {"type": "sphere", "center": [2, 1, -6], "radius": 1, "material": "ball"}]})";
+
+TEST_F(Cli, DepthCueFollowsTheLecturesBlendForEveryMethod) {
+    write("scene.json", k_cue_scene);
+    for (const char* method : {"raytrace", "zbuffer", "scanline", "depthsort"}) {
+        SCOPED_TRACE(method);
+        const std::string m = std::string(" -m ") + method + " -q -o ";
+        ASSERT_EQ(run("render " + path("scene.json") + m + path("plain.pfm")).status, 0);
+        ASSERT_EQ(
+            run("render " + path("scene.json") + m + path("depth.pfm") + " --aov depth").status, 0);
+        ASSERT_EQ(
+            run("render " + path("scene.json") + m + path("cued.pfm") + " --depth-cue 6,14").status,
+            0);
+        const Image plain = read_image(path("plain.pfm")), depth = read_image(path("depth.pfm")),
+                    cued = read_image(path("cued.pfm"));
+        ASSERT_EQ(cued.pixels.size(), plain.pixels.size());
+        int blended = 0;
+        for (size_t i = 0; i < plain.pixels.size(); ++i) {
+            const float d = depth.pixels[i].x;
+            const float w = std::clamp((14.0f - d) / (14.0f - 6.0f), 0.0f, 1.0f);
+            blended += w > 0.0f && w < 1.0f ? 1 : 0;
+            const Vec3 background(0.1f, 0.2f, 0.3f);
+            for (int a = 0; a < 3; ++a)
+                ASSERT_NEAR(cued.pixels[i][a], w * plain.pixels[i][a] + (1 - w) * background[a],
+                            1e-4f)
+                    << "pixel " << i;
+        }
+        EXPECT_GT(blended, 50);  // the floor and the far ball lie between NEAR and FAR
+    }
+}
+
+TEST_F(Cli, DepthCueMistakesAreErrors) {
+    write("scene.json", k_cue_scene);
+    const Result reversed =
+        run("render " + path("scene.json") + " --depth-cue 5,2 -o " + path("out.png"));
+    EXPECT_EQ(reversed.status, 2);
+    EXPECT_NE(reversed.output.find("FAR must be greater than NEAR"), std::string::npos);
+    std::string bad = k_cue_scene;
+    bad.insert(1, R"("depth_cue": {"near": 5, "far": 5},)");
+    write("bad.json", bad);
+    const Result equal = run("render " + path("bad.json") + " -o " + path("out.png"));
+    EXPECT_EQ(equal.status, 1);
+    EXPECT_NE(equal.output.find("depth_cue.far: far must be greater than near"), std::string::npos)
+        << equal.output;
+    EXPECT_EQ(file_count(), 2u);  // the two scene files: no image written
+}
+
+}  // namespace
+}  // namespace hikari

@@ -94,6 +94,17 @@ Sky parse_sky(const JsonNode& node) {
     return {true, node.at("horizon").as_colour(), node.at("zenith").as_colour()};
 }
 
+DepthCue parse_depth_cue(const JsonNode& node) {
+    node.expect_object({"near", "far", "color", "blur"});
+    DepthCue cue;
+    cue.near = node.at("near").as_non_negative();
+    cue.far = node.at("far").as_non_negative();
+    if (!(cue.far > cue.near)) node.at("far").fail("far must be greater than near");
+    if (node.has("color")) cue.color = node.at("color").as_colour();
+    if (node.has("blur")) cue.blur = node.at("blur").as_non_negative();
+    return cue;
+}
+
 /// An object's optional "casts_shadow" (default true).
 bool casts_shadow(const JsonNode& object) {
     return !object.has("casts_shadow") || object.at("casts_shadow").as_bool();
@@ -314,14 +325,15 @@ Scene parse_scene(std::string_view text, const std::string& file,
                   const std::filesystem::path& base_dir, std::vector<std::string>& warnings) {
     const nlohmann::json doc = parse_json(text, file);
     const JsonNode root(doc, file, "");
-    root.expect_object({"description", "camera", "background", "sky", "ambient", "materials",
-                        "lights", "objects"});
+    root.expect_object({"description", "camera", "background", "sky", "ambient", "depth_cue",
+                        "materials", "lights", "objects"});
     SceneBuilder b{Scene{}, {}, base_dir, warnings};
     if (root.has("description")) root.at("description").as_string();
     if (root.has("camera")) b.scene.camera = parse_camera(root.at("camera"));
     if (root.has("background")) b.scene.background = root.at("background").as_colour();
     if (root.has("sky")) b.scene.sky = parse_sky(root.at("sky"));
     if (root.has("ambient")) b.scene.ambient = root.at("ambient").as_colour();
+    if (root.has("depth_cue")) b.scene.depth_cue = parse_depth_cue(root.at("depth_cue"));
     if (root.has("materials")) {
         const JsonNode materials = root.at("materials");
         if (!materials.value().is_object()) materials.fail("expected an object: name -> material");

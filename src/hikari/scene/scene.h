@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "hikari/scene/camera.h"
@@ -65,12 +66,24 @@ struct Sky {
     Vec3 colour(Vec3 dir, Vec3 background) const { return colour_toward<float>(dir, background); }
 };
 
+/// Depth cueing, the lecture's Fig 4.1b (近：明るい、はっきり / 遠：暗い、ぼやけ): the colour of a
+/// point at eye distance d is blended toward `color` as w·colour + (1 − w)·color with
+/// w = clamp((far − d) / (far − near), 0, 1), after a blur whose radius grows from 0 at `near`
+/// to `blur` pixels at `far` (frame/depth_cue.h).
+struct DepthCue {
+    float near = 0.0f;          ///< eye distance where the blend starts (w = 1 nearer)
+    float far = 1.0f;           ///< eye distance where only the cue colour is left (> near)
+    std::optional<Vec3> color;  ///< linear RGB; the scene's background when unset
+    float blur = 0.0f;          ///< blur radius at `far` in pixels (0: no blur)
+};
+
 /// A whole scene: camera, lights, materials and geometry.
 struct Scene {
     Camera camera;
-    Vec3 background{0.0f};  ///< colour of rays that hit nothing
-    Vec3 ambient{0.0f};     ///< ambient light intensity Ia
-    Sky sky;                ///< colour of escaping rays in ray tracing
+    Vec3 background{0.0f};              ///< colour of rays that hit nothing
+    Vec3 ambient{0.0f};                 ///< ambient light intensity Ia
+    Sky sky;                            ///< colour of escaping rays in ray tracing
+    std::optional<DepthCue> depth_cue;  ///< every method's colour blended by distance, when set
     std::vector<Material> materials;
     std::vector<Light> lights;
     std::vector<Sphere> spheres;
