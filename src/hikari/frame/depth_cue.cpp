@@ -41,7 +41,7 @@ Vec3 gather(const Image& source, const HugePageVector<float>& depth, int x, int 
 void blur(const DepthCue& cue, Framebuffer& fb) {
     const Image source = fb.film.linear();
     Image& target = fb.film.linear();
-    parallel_for(
+    hikari::parallel_for(
         tbb::blocked_range<int>(0, source.height), [&](const tbb::blocked_range<int>& rows) {
             for (int y = rows.begin(); y != rows.end(); ++y)
                 for (int x = 0; x < source.width; ++x) {
@@ -69,13 +69,13 @@ void apply_depth_cue(const DepthCue& cue, Vec3 background, Framebuffer& fb) {
         throw std::logic_error("depth cueing needs linear colour and the depth AOV");
     if (cue.blur > 0.0f) blur(cue, fb);
     const Vec3 c = cue.color.value_or(background);
-    parallel_for(tbb::blocked_range<size_t>(0, colour.pixels.size()),
-                 [&](const tbb::blocked_range<size_t>& range) {
-                     for (size_t i = range.begin(); i != range.end(); ++i) {
-                         const float w = depth_cue_weight(cue, fb.depth[i]);
-                         colour.pixels[i] = w * colour.pixels[i] + (1.0f - w) * c;
-                     }
-                 });
+    hikari::parallel_for(tbb::blocked_range<size_t>(0, colour.pixels.size()),
+                         [&](const tbb::blocked_range<size_t>& range) {
+                             for (size_t i = range.begin(); i != range.end(); ++i) {
+                                 const float w = depth_cue_weight(cue, fb.depth[i]);
+                                 colour.pixels[i] = w * colour.pixels[i] + (1.0f - w) * c;
+                             }
+                         });
 }
 
 }  // namespace hikari
