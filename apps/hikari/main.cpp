@@ -26,7 +26,6 @@
 
 #include "hikari/bench/bench_runner.h"
 #include "hikari/core/error.h"
-#include "hikari/frame/depth_cue.h"
 #include "hikari/io/atomic_file.h"
 #include "hikari/io/image_format.h"
 #include "hikari/io/image_write.h"
@@ -220,12 +219,11 @@ Scene load_render_scene(const RenderOptions& o) {
 }
 
 /// The film for `output`: 8-bit sRGB where the file keeps only that (the colour in a PNG or PPM
-/// file) and no post step needs the floats, else linear floats.
-Film output_film(const Scene& scene, const std::string& output, Aov aov) {
-    const Camera& camera = scene.camera;
+/// file), else linear floats.
+Film output_film(const Camera& camera, const std::string& output, Aov aov) {
     const std::optional<ImageFormat> format = image_format_from_extension(output);
-    const bool srgb8 = aov == Aov::color && !scene.depth_cue &&
-                       (format == ImageFormat::Png || format == ImageFormat::Ppm);
+    const bool srgb8 =
+        aov == Aov::color && (format == ImageFormat::Png || format == ImageFormat::Ppm);
     return Film(camera, srgb8 ? FilmFormat::srgb8 : FilmFormat::linear);
 }
 
@@ -248,7 +246,7 @@ int run_render(const RenderOptions& o, const Method& method) {
     RenderSettings settings;
     settings.control = &g_control;
     settings.stats = &g_stats;
-    settings.aov_buffers = o.aov != Aov::color || scene.depth_cue.has_value();
+    settings.aov_buffers = o.aov != Aov::color;
 
     std::optional<tbb::global_control> thread_limit;
     if (o.threads > 0)
@@ -260,9 +258,7 @@ int run_render(const RenderOptions& o, const Method& method) {
     Framebuffer fb;
     {
         ProgressReporter progress(!o.quiet);
-        fb = method.render(scene, output_film(scene, output, o.aov), settings, o.own);
-        if (scene.depth_cue && !g_control.cancel.load())
-            apply_depth_cue(*scene.depth_cue, scene.background, fb);
+        fb = render_scene(method, scene, output_film(scene.camera, output, o.aov), settings, o.own);
     }
     const auto rendered = Clock::now();
     times.render = std::chrono::duration<double>(rendered - start).count();

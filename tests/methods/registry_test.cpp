@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "hikari/core/srgb8_encoder.h"
+#include "hikari/frame/depth_cue.h"
 #include "hikari/io/scene_json.h"
 
 namespace hikari {
@@ -146,6 +147,34 @@ TEST(Methods, EveryMethodFillsAnEightBitFilmWithItsLinearFilmEncoded) {
                 m.render(scene, Film(scene.camera, FilmFormat::srgb8), colour_only, {});
             EXPECT_EQ(srgb8.film.srgb8().bytes, encode_srgb8(linear.film.linear()).bytes)
                 << name << ", " << m.name;
+        }
+    }
+}
+
+TEST(Methods, RenderSceneDepthCuesEveryMethod) {
+    // render_scene applies the scene's depth cue to any method, on a linear film with the depth
+    // AOV even when an 8-bit film without AOVs was asked for.
+    Scene scene = scene_file("whitted.json", 48, 32);
+    DepthCue cue;
+    cue.near = 4.0f;
+    cue.far = 14.0f;
+    cue.color = Vec3(0.5f, 0.25f, 0.0f);
+    for (const Method& m : methods()) {
+        SCOPED_TRACE(m.name);
+        scene.depth_cue.reset();
+        const Framebuffer plain = render_scene(m, scene, Film(scene.camera), {}, {});
+        scene.depth_cue = cue;
+        RenderSettings colour_only;
+        colour_only.aov_buffers = false;
+        const Framebuffer cued =
+            render_scene(m, scene, Film(scene.camera, FilmFormat::srgb8), colour_only, {});
+        ASSERT_EQ(cued.film.format(), FilmFormat::linear);
+        ASSERT_EQ(cued.depth.size(), plain.depth.size());
+        for (size_t i = 0; i < plain.depth.size(); ++i) {
+            const float w = depth_cue_weight(cue, plain.depth[i]);
+            const Vec3 want = w * plain.film.linear().pixels[i] + (1.0f - w) * *cue.color;
+            for (int a = 0; a < 3; ++a)
+                ASSERT_NEAR(cued.film.linear().pixels[i][a], want[a], 1e-6f) << "pixel " << i;
         }
     }
 }

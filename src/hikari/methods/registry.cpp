@@ -4,6 +4,7 @@
 #include <array>
 #include <utility>
 
+#include "hikari/frame/depth_cue.h"
 #include "hikari/integrators/whitted/whitted.h"
 #include "hikari/raster/depth_sort.h"
 #include "hikari/raster/scanline.h"
@@ -72,6 +73,17 @@ const Method* find_method(std::string_view name) {
     for (const Method& m : k_methods)
         if (m.name == name) return &m;
     return nullptr;
+}
+
+Framebuffer render_scene(const Method& method, const Scene& scene, Film film,
+                         RenderSettings settings, const MethodSettings& own) {
+    if (!scene.depth_cue) return method.render(scene, std::move(film), settings, own);
+    settings.aov_buffers = true;
+    Framebuffer fb =
+        method.render(scene, Film(film.width(), film.height(), FilmFormat::linear), settings, own);
+    if (!settings.control || !settings.control->cancel.load())
+        apply_depth_cue(*scene.depth_cue, scene.background, fb);
+    return fb;
 }
 
 std::vector<const MethodOption*> method_options() {

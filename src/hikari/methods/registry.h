@@ -33,6 +33,14 @@ std::span<const Method> methods();
 /// The method called `name`, or nullptr.
 const Method* find_method(std::string_view name);
 
+/// Renders `scene` with `method`, then the scene's post steps, which every method gets alike:
+/// depth cueing (Fig 4.1b, frame/depth_cue.h). A depth cue needs linear colour and the depth
+/// AOV, so with one the method renders into a linear film with the AOV buffers, whatever `film`
+/// and `settings` ask, and the framebuffer returned holds linear colour. A render stopped
+/// through settings.control is returned as it is.
+Framebuffer render_scene(const Method& method, const Scene& scene, Film film,
+                         RenderSettings settings, const MethodSettings& own);
+
 /// Every option of any method, once each, in the order the methods list them.
 std::vector<const MethodOption*> method_options();
 

@@ -87,7 +87,8 @@ TEST(WhittedShade, EveryLevelShadesAlike) {
     scene.materials = random_materials(rng);
     scene.lights = random_lights(rng);
     scene.ambient = Vec3(0.3f, 0.4f, 0.5f);
-    const LaneShader reference(scene, SimdLevel::portable);
+    const WhittedScene view(scene);
+    const LaneShader reference(view, SimdLevel::portable);
     auto input = std::make_unique<detail::BlockLanes>();
     auto expected = std::make_unique<detail::BlockLanes>();
     auto got = std::make_unique<detail::BlockLanes>();
@@ -108,7 +109,7 @@ TEST(WhittedShade, EveryLevelShadesAlike) {
             if (!simd_level_supported(level)) continue;
             SCOPED_TRACE(simd_level_name(level));
             std::memcpy(got.get(), input.get(), sizeof(detail::BlockLanes));
-            LaneShader(scene, level).shade(*got, count, true);
+            LaneShader(view, level).shade(*got, count, true);
             for (int i = 0; i < count; ++i) {
                 const int j = detail::lane_in_chunk(i);
                 const detail::LaneChunk& want = expected->chunk(i);

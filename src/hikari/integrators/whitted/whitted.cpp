@@ -21,7 +21,6 @@ namespace {
 /// What every ray of a render reads, plus the ray count of the tile being rendered (each tile
 /// works on its own copy, so counting needs no atomics per ray).
 struct TraceContext {
-    const Scene& scene;
     const SceneIntersector& intersector;
     const WhittedScene& shading;
     int max_depth;
@@ -300,7 +299,7 @@ struct WhittedRender {
           intersector(s),
           shading(s),
           primary(intersector, s, frame),
-          shader(s) {}
+          shader(shading) {}
 
     /// The AOVs of pixel i from the hit of the ray through its centre.
     void store_aovs(size_t i, const Ray& centre, const SurfaceHit& first) const {
@@ -397,7 +396,7 @@ Framebuffer render_whitted(const Scene& scene, Film film, const RenderSettings& 
     static_assert(k_tile_size <= k_primary_block);
 
     for_each_tile(cam.width, cam.height, settings.control, [&](const Tile& tile) {
-        TraceContext ctx{scene, render.intersector, render.shading, whitted.max_depth};
+        TraceContext ctx{render.intersector, render.shading, whitted.max_depth};
         thread_local std::unique_ptr<WaveScratch> scratch;
         if (!scratch) scratch = std::make_unique<WaveScratch>();
         WaveTracer wave(ctx, render.primary, render.shader, *scratch);

@@ -35,8 +35,9 @@ void shade_lanes_avx512(const WhittedScene& scene, int spawn, int count, BlockLa
 /// by all threads.
 class LaneShader {
   public:
-    /// `scene` must outlive this object; `level` must be supported by this CPU.
-    explicit LaneShader(const Scene& scene, SimdLevel level = best_simd_level())
+    /// `scene` (and the Scene it views) must outlive this object; `level` must be supported by
+    /// this CPU.
+    explicit LaneShader(const WhittedScene& scene, SimdLevel level = best_simd_level())
         : m_scene(scene), m_level(level) {}
 
     /// Shades every active lane among the first round_up(count, k_lane_chunk) of `lanes` (and
@@ -45,7 +46,7 @@ class LaneShader {
     void shade(detail::BlockLanes& lanes, int count, bool spawn) const;
 
   private:
-    WhittedScene m_scene;
+    const WhittedScene& m_scene;
     SimdLevel m_level;
 };
 
