@@ -38,12 +38,19 @@ struct Plane {
 struct TriangleSet {
     std::vector<Vec3> positions;                   ///< world-space vertex positions
     std::vector<Vec3> normals;                     ///< unit shading normal per vertex
+    /// Texture coordinates per vertex, (0, 0) the image's lower-left corner (the OBJ and OpenGL
+    /// convention); empty when no triangle has any.
+    std::vector<Vec2> uvs;
     std::vector<std::array<uint32_t, 3>> indices;  ///< vertex indices per triangle,
                                                    ///< counter-clockwise seen from the front
     std::vector<uint32_t> material;                ///< material index per triangle
     std::vector<PrimitiveId> id;                   ///< primitive id per triangle
     /// Per triangle, 0 where shadow rays pass through it; empty means every triangle casts.
     std::vector<uint8_t> casts_shadow;
+    /// Per triangle, bit k set where the edge from corner k to corner (k + 1) % 3 is an edge of
+    /// the model's own face (a fan-triangulated polygon's diagonals are not); empty means every
+    /// edge of every triangle is. Line drawings (wireframe, hidden lines) draw only these.
+    std::vector<uint8_t> edge_flags;
 
     size_t size() const { return indices.size(); }
 };

@@ -15,6 +15,11 @@ struct SurfacePoint {
     Vec3T<F> geometric_normal;   ///< the true surface normal, facing the eye
     Vec3T<F> to_eye;             ///< unit direction from the point toward the eye (V)
     F u = F(0.0f), v = F(0.0f);  ///< texture coordinates (0 where the surface has none)
+    /// How far (u, v) moves per pixel step along the image's x and y: the pixel's footprint in
+    /// texture space, which picks the mipmap level. The rasterizer takes screen-space
+    /// derivatives; the ray tracer a ray cone's width (isotropic: du_dx = dv_dy, the others 0).
+    /// All 0: sample the finest level.
+    F du_dx = F(0.0f), dv_dx = F(0.0f), du_dy = F(0.0f), dv_dy = F(0.0f);
 };
 
 }  // namespace hikari
