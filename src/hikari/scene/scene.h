@@ -36,8 +36,8 @@ struct Plane {
 
 /// Every triangle of the scene in one flat indexed array, world space.
 struct TriangleSet {
-    std::vector<Vec3> positions;                   ///< world-space vertex positions
-    std::vector<Vec3> normals;                     ///< unit shading normal per vertex
+    std::vector<Vec3> positions;  ///< world-space vertex positions
+    std::vector<Vec3> normals;    ///< unit shading normal per vertex
     /// Texture coordinates per vertex, (0, 0) the image's lower-left corner (the OBJ and OpenGL
     /// convention); empty when no triangle has any.
     std::vector<Vec2> uvs;
