@@ -162,6 +162,18 @@ Mat4 perspective(float fov_y_degrees, float aspect, float near, float far) {
     // clang-format on
 }
 
+Mat4 orthographic(float left, float right, float bottom, float top, float near, float far) {
+    const float sx = 2.0f / (right - left), sy = 2.0f / (top - bottom), sz = -2.0f / (far - near);
+    // clang-format off
+    return Mat4::from_rows({
+        sx, 0, 0, -(right + left) / (right - left),
+        0, sy, 0, -(top + bottom) / (top - bottom),
+        0, 0, sz, -(far + near) / (far - near),
+        0, 0, 0, 1,
+    });
+    // clang-format on
+}
+
 Mat4 viewport(int width, int height) {
     const float hw = 0.5f * static_cast<float>(width);
     const float hh = 0.5f * static_cast<float>(height);

@@ -59,6 +59,9 @@ Mat4 look_at(Vec3 eye, Vec3 target, Vec3 up);
 /// clip_from_view: OpenGL-style perspective projection with vertical field of view `fov_y_degrees`;
 /// view-space z = -near maps to NDC z = -1 and z = -far to +1.
 Mat4 perspective(float fov_y_degrees, float aspect, float near, float far);
+/// clip_from_view of a parallel projection (glOrtho): the view-space box [left, right] ×
+/// [bottom, top] × [−far, −near] to the NDC cube [−1, 1]³, w = 1.
+Mat4 orthographic(float left, float right, float bottom, float top, float near, float far);
 /// screen_from_ndc: NDC x, y in [-1, 1] to pixel coordinates with y = 0 at the top row and
 /// pixel centres at half-integers; z in [-1, 1] to [0, 1].
 Mat4 viewport(int width, int height);

@@ -24,6 +24,14 @@ struct RenderStats {
     std::atomic<uint64_t> bvh_build_us{0};   ///< BVH build wall time, microseconds
 };
 
+/// How a method decides whether a light reaches a point (`--shadows`, the lecture's Fig 4.24).
+enum class ShadowMode {
+    none,    ///< every light reaches every point that faces it
+    ray,     ///< a shadow ray toward the light (ray tracing)
+    map,     ///< a Z-buffer seen from the light (shadow mapping, raster/shadow_map.h)
+    volume,  ///< shadow volumes counted in a stencil buffer
+};
+
 /// Settings every method takes; each method's own (integrators/whitted/whitted.h,
 /// raster/raster_settings.h) come beside them.
 struct RenderSettings {

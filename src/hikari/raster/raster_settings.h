@@ -1,6 +1,8 @@
 #pragma once
 // The raster methods' own settings (zbuffer, scanline, depthsort, depthsort-naive).
 
+#include "hikari/frame/render_settings.h"
+
 namespace hikari {
 
 /// How the raster methods interpolate shading across a triangle (the lecture's flat, Gouraud and
@@ -11,10 +13,12 @@ enum class Interpolation {
     phong,    ///< interpolate the normal, shade every pixel
 };
 
-/// Settings of the raster methods (`--interp`, `--cull`).
+/// Settings of the raster methods (`--interp`, `--cull`, `--shadows`, `--shadow-map-size`).
 struct RasterSettings {
     Interpolation interp = Interpolation::phong;  ///< shading interpolation
     bool cull_back_faces = false;                 ///< drop triangles facing away (Fig 4.3)
+    ShadowMode shadows = ShadowMode::none;        ///< none or map
+    int shadow_map_size = 2048;                   ///< texels per side of each shadow map face
 };
 
 }  // namespace hikari

@@ -5,6 +5,7 @@
 
 #include "hikari/frame/tiles.h"
 #include "hikari/raster/cull.h"
+#include "hikari/raster/shadow_map.h"
 #include "hikari/shading/direct.h"
 #include "hikari/shading/material_eval.h"
 
@@ -20,6 +21,7 @@ struct ShadeContext {
     CameraFrame frame;
     int width, height;
     LightingEnvironment lighting;
+    const ShadowMaps* shadow_maps;  ///< null: no shadows
 };
 
 /// The source triangle a pixel centre sees, and the centre's point on it.
@@ -36,9 +38,20 @@ struct PixelSurface {
     Vec3 ng_front;           ///< `ng` turned toward the eye
 };
 
-/// The material at `p` (its texture applied) lit by every light: the raster methods draw no
-/// shadows yet, so every light that faces the point reaches it.
-Vec3 shade_point(const ShadeContext& ctx, uint32_t material, Vec3 p, Vec3 n, Vec3 to_eye) {
+/// Whether light `l` reaches point `p` with face normal `ng` (toward the eye), by the shadow
+/// maps (planes, which no finite map holds, answered exactly).
+bool light_reaches(const ShadeContext& ctx, size_t l, const LightSample& light, Vec3 p, Vec3 ng) {
+    if (!ctx.shadow_maps) return true;
+    if (plane_blocks_light(ctx.scene, ctx.scene.lights[l], p)) return false;
+    const std::optional<LightShadowMap>& map = ctx.shadow_maps->lights[l];
+    if (!map) return true;
+    // The normal offset moves the lookup off the surface on the light's side.
+    return lit_in_shadow_map(*map, p, dot(ng, light.to_light) < 0.0f ? -ng : ng);
+}
+
+/// The material at `p` (its texture applied) lit by every light that reaches it; `ng` is the
+/// face normal toward the eye.
+Vec3 shade_point(const ShadeContext& ctx, uint32_t material, Vec3 p, Vec3 n, Vec3 ng, Vec3 to_eye) {
     SurfacePoint<float> s;
     s.position = p;
     s.normal = n;
@@ -46,8 +59,8 @@ Vec3 shade_point(const ShadeContext& ctx, uint32_t material, Vec3 p, Vec3 n, Vec
     s.to_eye = to_eye;
     const MaterialSample<float> m =
         evaluate_material<float>(ctx.scene.materials.data(), static_cast<int32_t>(material), s);
-    const auto lit = [](size_t, const LightSample&, const SurfacePoint<float>&, bool) {
-        return true;
+    const auto lit = [&](size_t l, const LightSample& light, const SurfacePoint<float>&, bool) {
+        return light_reaches(ctx, l, light, p, ng);
     };
     return direct_lighting<float>(ctx.lighting, s, m, true, lit).colour;
 }
@@ -96,20 +109,20 @@ Vec3 shade_surface(const ShadeContext& ctx, const PixelSurface& s) {
     switch (ctx.interp) {
         case Interpolation::flat: {  // one colour per polygon, at its centroid
             const Vec3 c = (s.p[0] + s.p[1] + s.p[2]) / 3.0f;
-            return shade_point(ctx, m, c, s.ng_front, normalize(eye - c));
+            return shade_point(ctx, m, c, s.ng_front, s.ng_front, normalize(eye - c));
         }
         case Interpolation::gouraud: {  // shade the vertices, blend the colours
             Vec3 colour(0.0f);
             for (int k = 0; k < 3; ++k) {
                 const Vec3 to_eye = normalize(eye - s.p[k]);
                 const Vec3 nk = facing(s.n[k], s.entering, s.ng_front, -to_eye);
-                colour += s.b[k] * shade_point(ctx, m, s.p[k], nk, to_eye);
+                colour += s.b[k] * shade_point(ctx, m, s.p[k], nk, s.ng_front, to_eye);
             }
             return colour;
         }
         case Interpolation::phong:  // interpolate the normal, shade the pixel
             return shade_point(ctx, m, s.point, facing(s.n_interp, s.entering, s.ng_front, s.dir),
-                               -s.dir);
+                               s.ng_front, -s.dir);
     }
     return Vec3(0.0f);
 }
@@ -135,6 +148,19 @@ void shade_tile(const ShadeContext& ctx, const VisibilityBuffer& vis, const Tile
         }
 }
 
+/// The bounds of every triangle seen at some pixel centre: where shadows can be seen.
+Aabb visible_bounds(const ProjectedScene& ps, const VisibilityBuffer& vis) {
+    std::vector<uint8_t> seen(ps.scene.triangles.size(), 0);
+    for (uint32_t t : vis.triangle)
+        if (t != k_no_triangle) seen[ps.triangles[t].source] = 1;
+    Aabb bounds;
+    for (size_t t = 0; t < seen.size(); ++t)
+        if (seen[t])
+            for (uint32_t i : ps.scene.triangles.indices[t])
+                bounds.extend(ps.scene.triangles.positions[i]);
+    return bounds;
+}
+
 }  // namespace
 
 bool perspective_barycentrics(Vec4 c0, Vec4 c1, Vec4 c2, double ndc_x, double ndc_y,
@@ -157,16 +183,22 @@ bool perspective_barycentrics(Vec4 c0, Vec4 c1, Vec4 c2, double ndc_x, double nd
 
 Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
                              const VisibilityBuffer& vis, Film film, const RenderSettings& settings,
-                             Interpolation interp) {
+                             const RasterSettings& raster) {
     Framebuffer fb(std::move(film), vis.width, vis.height, true);
+    ShadowMaps maps;
+    if (raster.shadows == ShadowMode::map && !scene.lights.empty()) {
+        maps = build_shadow_maps(scene, ps.scene, shadow_casting_triangles(scene, ps.scene),
+                                 visible_bounds(ps, vis), raster.shadow_map_size);
+    }
     const ShadeContext ctx{scene,
                            ps,
                            ps.scene.triangles,
-                           interp,
+                           raster.interp,
                            make_camera_frame(scene.camera),
                            vis.width,
                            vis.height,
-                           {scene.lights.data(), scene.lights.size(), scene.ambient}};
+                           {scene.lights.data(), scene.lights.size(), scene.ambient},
+                           raster.shadows == ShadowMode::map ? &maps : nullptr};
     for_each_tile(vis.width, vis.height, settings.control,
                   [&](const Tile& tile) { shade_tile(ctx, vis, tile, fb); });
     return fb;

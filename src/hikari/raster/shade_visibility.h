@@ -28,13 +28,14 @@ bool perspective_barycentrics(Vec4 c0, Vec4 c1, Vec4 c2, double ndc_x, double nd
 /// Fills colour (into `film`, of the visibility buffer's size), depth (eye distance |p − eye|),
 /// id (1 + PrimitiveId) and normal (unit, facing the eye) for every pixel whose centre
 /// `visibility` names a triangle of `projected`; other pixels get the scene background (colour)
-/// and "nothing seen" (AOVs). Colour is ambient + Lambert + Phong for every light, without
-/// shadows, interpolated as `interp` says; normals are turned toward the eye as the ray tracer
-/// turns them, so both pipelines shade a surface alike. Parallel over tiles; reports to
+/// and "nothing seen" (AOVs). Colour is ambient + Lambert + Phong for every light, interpolated
+/// as `raster.interp` says, with the shadows `raster.shadows` asks for (none, or shadow maps of
+/// `raster.shadow_map_size`: raster/shadow_map.h); normals are turned toward the eye as the ray
+/// tracer turns them, so both pipelines shade a surface alike. Parallel over tiles; reports to
 /// `settings.control`. The AOV buffers are always filled (the methods need depth anyway).
 Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& projected,
                              const VisibilityBuffer& visibility, Film film,
-                             const RenderSettings& settings, Interpolation interp);
+                             const RenderSettings& settings, const RasterSettings& raster);
 
 /// One raster method end to end (Fig 4.2): the shared vertex stage, the method's own hidden-surface
 /// removal `visible(screen_triangles, width, height) -> VisibilityBuffer`, the shared shading pass.
@@ -44,7 +45,7 @@ Framebuffer render_raster(const Scene& scene, Film film, const RenderSettings& s
     const ProjectedScene ps = project_scene(scene, raster);
     const VisibilityBuffer vis = visible(std::span<const ScreenTriangle>(ps.triangles),
                                          scene.camera.width, scene.camera.height);
-    return shade_visibility(scene, ps, vis, std::move(film), settings, raster.interp);
+    return shade_visibility(scene, ps, vis, std::move(film), settings, raster);
 }
 
 }  // namespace hikari

@@ -39,8 +39,8 @@ int project_one(const ProjectedScene& ps, uint32_t t, bool cull, ScreenTriangle*
         // The perspective divide, then the viewport (pixel centres at +0.5, y down).
         std::array<ScreenVertex, k_max_clip_vertices> sv;
         for (int i = 0; i < poly.count; ++i) {
-            const float inv_w = 1.0f / poly.v[i].w;
-            const Vec3 ndc = poly.v[i].xyz() * inv_w;
+            const Vec3 ndc = poly.v[i].xyz() * (1.0f / poly.v[i].w);
+            const float inv_w = ps.view.orthographic ? 1.5f - 0.5f * ndc.z : 1.0f / poly.v[i].w;
             Vec3 screen = transform_point(ps.view.screen_from_clip, ndc);
             // Depth key −near/w rather than NDC z: both are affine across the triangle, but
             // NDC z crowds toward 1 (float spacing 6e-8) when far/near is large.

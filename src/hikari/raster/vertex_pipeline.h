@@ -23,6 +23,11 @@ struct RasterView {
     Mat4 clip_from_view;    ///< perspective(fov, aspect, near, far)
     Mat4 screen_from_clip;  ///< viewport(width, height), applied after the divide by w
     Mat4 clip_from_world;   ///< clip_from_view * view_from_world
+    /// clip_from_view is a parallel projection (core/mat4.h orthographic, w = 1), as a shadow
+    /// map of a directional light is: ScreenVertex::inv_w then holds 1.5 − 0.5 z_ndc instead of
+    /// 1 / w, which is affine across a triangle as 1 / w is under perspective and larger for
+    /// nearer points, so every depth test works unchanged.
+    bool orthographic = false;
 };
 
 /// Fits the view to `scene`'s bounds: far just beyond the farthest vertex; near at 0.9 times the

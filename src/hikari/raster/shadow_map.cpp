@@ -1,0 +1,266 @@
+#include "hikari/raster/shadow_map.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "hikari/core/parallel.h"
+#include "hikari/core/visit.h"
+#include "hikari/raster/cull.h"
+#include "hikari/raster/zbuffer.h"
+
+namespace hikari {
+
+namespace {
+
+constexpr float k_no_caster = std::numeric_limits<float>::infinity();
+
+/// Bias and normal offset, in texels (lit_in_shadow_map). A point's depth may differ from
+/// its texel's centre depth by up to half a texel diagonal times tan θ on a plane, hence the
+/// slope term of one texel per unit of tan θ; tan θ is capped where the light grazes.
+constexpr float k_constant_bias_texels = 1.0f;
+constexpr float k_normal_offset_texels = 1.0f;
+constexpr float k_max_slope = 8.0f;
+
+/// The casters alone, as a scene of their own for the light's vertex stage.
+RasterScene caster_scene(const RasterScene& raster, const std::vector<uint8_t>& casters) {
+    RasterScene out;
+    const TriangleSet& all = raster.triangles;
+    out.triangles.positions = all.positions;
+    out.triangles.normals = all.normals;
+    for (size_t t = 0; t < all.size(); ++t) {
+        if (!casters[t]) continue;
+        out.triangles.indices.push_back(all.indices[t]);
+        out.triangles.material.push_back(all.material[t]);
+        out.triangles.id.push_back(all.id[t]);
+    }
+    return out;
+}
+
+/// The bounds of the vertices that `scene`'s triangles use, in the frame (origin, u, v, w).
+Aabb bounds_in_frame(const TriangleSet& tris, Vec3 origin, Vec3 u, Vec3 v, Vec3 w) {
+    Aabb b;
+    for (const auto& tri : tris.indices)
+        for (uint32_t i : tri) {
+            const Vec3 d = tris.positions[i] - origin;
+            b.extend(Vec3(dot(d, u), dot(d, v), dot(d, w)));
+        }
+    return b;
+}
+
+/// Renders `view` over `casters` by the project's vertex stage and Z-buffer, then stores each
+/// texel's exact depth: its centre ray intersected with the plane of the caster seen there.
+/// `depth_of(hit)` turns a world point into the map's depth.
+template <class DepthOf>
+ShadowMapFace render_face(const RasterScene& casters, const RasterView& view, DepthOf depth_of) {
+    ShadowMapFace face;
+    face.view = view;
+    invert(view.clip_from_world, face.world_from_clip);
+    const ProjectedScene ps = project_triangles(casters, view, /*cull_back_faces=*/false);
+    const VisibilityBuffer vis = zbuffer_visibility(ps.triangles, view.width, view.height);
+    face.depth.assign(vis.triangle.size(), k_no_caster);
+    const TriangleSet& tris = ps.scene.triangles;
+    hikari::parallel_for(tbb::blocked_range<int>(0, view.height), [&](const auto& rows) {
+        for (int y = rows.begin(); y < rows.end(); ++y)
+            for (int x = 0; x < view.width; ++x) {
+                const size_t texel = static_cast<size_t>(y) * view.width + x;
+                if (vis.triangle[texel] == k_no_triangle) continue;
+                const auto& idx = tris.indices[ps.triangles[vis.triangle[texel]].source];
+                const Vec3 a = tris.positions[idx[0]];
+                const Vec3 n = face_normal(a, tris.positions[idx[1]], tris.positions[idx[2]]);
+                // The texel centre's ray: its points at NDC depth −1 and +1.
+                const float ndc_x = 2.0f * (x + 0.5f) / view.width - 1.0f;
+                const float ndc_y = 1.0f - 2.0f * (y + 0.5f) / view.height;
+                const Vec4 h0 = face.world_from_clip * Vec4(ndc_x, ndc_y, -1.0f, 1.0f);
+                const Vec4 h1 = face.world_from_clip * Vec4(ndc_x, ndc_y, 1.0f, 1.0f);
+                const Vec3 o = h0.xyz() / h0.w;
+                const Vec3 d = h1.xyz() / h1.w - o;
+                const float denominator = dot(n, d);
+                if (denominator == 0.0f) continue;  // seen edge-on: the rasterizer's call
+                const float t = dot(n, a - o) / denominator;
+                face.depth[texel] = depth_of(o + t * d);
+            }
+    });
+    return face;
+}
+
+/// A directional light's orthographic map over the casters that lie above `receivers`.
+std::optional<LightShadowMap> directional_map(const DirectionalLight& light,
+                                              const RasterScene& casters, const Aabb& receivers,
+                                              int size) {
+    LightShadowMap map;
+    map.directional = true;
+    map.direction = normalize(light.direction);
+    map.size = size;
+    map.origin = receivers.center();
+    // The light's view: looking along its travel direction, w toward the light.
+    const Vec3 w = -map.direction;
+    const Vec3 up = std::abs(w.y) < 0.9f ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
+    const Vec3 u = normalize(cross(up, w));
+    const Vec3 v = cross(w, u);
+    const Aabb caster_box = bounds_in_frame(casters.triangles, map.origin, u, v, w);
+    Aabb receiver_box;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3 p{(corner & 1) ? receivers.max.x : receivers.min.x,
+                     (corner & 2) ? receivers.max.y : receivers.min.y,
+                     (corner & 4) ? receivers.max.z : receivers.min.z};
+        const Vec3 d = p - map.origin;
+        receiver_box.extend(Vec3(dot(d, u), dot(d, v), dot(d, w)));
+    }
+    // Only casters over the receivers matter, seen along the light.
+    const float x0 = std::max(caster_box.min.x, receiver_box.min.x);
+    const float x1 = std::min(caster_box.max.x, receiver_box.max.x);
+    const float y0 = std::max(caster_box.min.y, receiver_box.min.y);
+    const float y1 = std::min(caster_box.max.y, receiver_box.max.y);
+    if (caster_box.empty() || !(x0 <= x1 && y0 <= y1)) return std::nullopt;
+    // Square texels, with a margin of one texel all round.
+    const float extent = std::max({x1 - x0, y1 - y0, 1e-6f * (1.0f + length(caster_box.extent()))});
+    map.texel_size = extent / static_cast<float>(size - 2);
+    const float half = 0.5f * extent + map.texel_size;
+    const float cx = 0.5f * (x0 + x1), cy = 0.5f * (y0 + y1);
+    const float depth_margin = 1e-3f * (caster_box.max.z - caster_box.min.z) + map.texel_size;
+
+    RasterView view;
+    view.eye = map.origin + w * (caster_box.max.z + depth_margin);
+    view.width = view.height = size;
+    // View depth runs along −w from map.origin: the casters lie between these two.
+    const float near_depth = -(caster_box.max.z + depth_margin);
+    const float far_depth = -(caster_box.min.z - depth_margin);
+    view.near_plane = 1.0f;  // unused by a parallel projection's depth key
+    view.far_plane = 1.0f + far_depth - near_depth;
+    view.view_from_world = look_at(map.origin, map.origin - w, v);
+    view.clip_from_view =
+        orthographic(cx - half, cx + half, cy - half, cy + half, near_depth, far_depth);
+    view.screen_from_clip = viewport(size, size);
+    view.clip_from_world = view.clip_from_view * view.view_from_world;
+    view.orthographic = true;
+    const Vec3 origin = map.origin, direction = map.direction;
+    map.faces.push_back(render_face(
+        casters, view, [origin, direction](Vec3 hit) { return dot(hit - origin, direction); }));
+    return map;
+}
+
+/// A point light's cube map: six 90° views along ±x, ±y, ±z, in that order (face 2a + (d_a < 0)
+/// holds the directions whose largest component is axis a).
+std::optional<LightShadowMap> point_map(const PointLight& light, const RasterScene& casters,
+                                        int size) {
+    if (casters.triangles.indices.empty()) return std::nullopt;
+    LightShadowMap map;
+    map.origin = light.position;
+    map.size = size;
+    map.texel_size = 2.0f / static_cast<float>(size);
+    Aabb bounds;
+    for (const auto& tri : casters.triangles.indices)
+        for (uint32_t i : tri) bounds.extend(casters.triangles.positions[i]);
+    float far_dist = 0.0f;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3 p{(corner & 1) ? bounds.max.x : bounds.min.x,
+                     (corner & 2) ? bounds.max.y : bounds.min.y,
+                     (corner & 4) ? bounds.max.z : bounds.min.z};
+        far_dist = std::max(far_dist, length(p - light.position));
+    }
+    const Vec3 nearest = max(min(light.position, bounds.max), bounds.min);
+    // A point at distance d has depth at least d / √3 in the face that holds it.
+    const float near_plane =
+        std::max(0.5f * length(nearest - light.position), 1e-5f * far_dist) / std::sqrt(3.0f);
+    const std::array<Vec3, 6> axes = {Vec3(1, 0, 0),  Vec3(-1, 0, 0), Vec3(0, 1, 0),
+                                      Vec3(0, -1, 0), Vec3(0, 0, 1),  Vec3(0, 0, -1)};
+    const Vec3 origin = light.position;
+    for (const Vec3& axis : axes) {
+        RasterView view;
+        view.eye = light.position;
+        view.width = view.height = size;
+        view.near_plane = near_plane;
+        view.far_plane = 1.01f * far_dist + near_plane;
+        const Vec3 up = axis.y != 0.0f ? Vec3(0, 0, 1) : Vec3(0, 1, 0);
+        view.view_from_world = look_at(light.position, light.position + axis, up);
+        view.clip_from_view = perspective(90.0f, 1.0f, view.near_plane, view.far_plane);
+        view.screen_from_clip = viewport(size, size);
+        view.clip_from_world = view.clip_from_view * view.view_from_world;
+        map.faces.push_back(
+            render_face(casters, view, [origin](Vec3 hit) { return length(hit - origin); }));
+    }
+    return map;
+}
+
+/// The face of a cube map that holds direction `d` from the light.
+size_t cube_face(Vec3 d) {
+    const Vec3 a(std::abs(d.x), std::abs(d.y), std::abs(d.z));
+    if (a.x >= a.y && a.x >= a.z) return d.x < 0.0f ? 1 : 0;
+    if (a.y >= a.z) return d.y < 0.0f ? 3 : 2;
+    return d.z < 0.0f ? 5 : 4;
+}
+
+}  // namespace
+
+std::vector<uint8_t> shadow_casting_triangles(const Scene& scene, const RasterScene& raster) {
+    std::vector<uint8_t> casts_by_id(scene.primitive_count, 1);
+    for (const Sphere& s : scene.spheres) casts_by_id[s.id] = s.casts_shadow ? 1 : 0;
+    for (const Plane& p : scene.planes) casts_by_id[p.id] = 0;
+    const TriangleSet& own = scene.triangles;
+    for (size_t t = 0; t < own.casts_shadow.size(); ++t)
+        casts_by_id[own.id[t]] = own.casts_shadow[t];
+    std::vector<uint8_t> casters(raster.triangles.size());
+    for (size_t t = 0; t < casters.size(); ++t) casters[t] = casts_by_id[raster.triangles.id[t]];
+    return casters;
+}
+
+ShadowMaps build_shadow_maps(const Scene& scene, const RasterScene& raster,
+                             const std::vector<uint8_t>& casters, const Aabb& receivers, int size) {
+    ShadowMaps maps;
+    maps.lights.resize(scene.lights.size());
+    if (receivers.empty()) return maps;
+    const RasterScene caster_triangles = caster_scene(raster, casters);
+    for (size_t l = 0; l < scene.lights.size(); ++l)
+        maps.lights[l] = visit_kind(scene.lights[l], [&](const auto& light) {
+            using Kind = std::decay_t<decltype(light)>;
+            if constexpr (std::is_same_v<Kind, DirectionalLight>)
+                return directional_map(light, caster_triangles, receivers, size);
+            else
+                return point_map(light, caster_triangles, size);
+        });
+    return maps;
+}
+
+bool lit_in_shadow_map(const LightShadowMap& map, Vec3 p, Vec3 n) {
+    const Vec3 to_light = map.directional ? -map.direction : normalize(map.origin - p);
+    const float texel = map.directional ? map.texel_size : map.texel_size * length(p - map.origin);
+    const float cos_theta = std::clamp(dot(n, to_light), 0.0f, 1.0f);
+    const float sin_theta = std::sqrt(1.0f - cos_theta * cos_theta);
+    const float tan_theta = std::min(sin_theta / std::max(cos_theta, 1e-6f), k_max_slope);
+    const Vec3 q = p + n * (k_normal_offset_texels * texel);
+    const ShadowMapFace& face =
+        map.directional ? map.faces.front() : map.faces[cube_face(q - map.origin)];
+    const Vec4 clip = face.view.clip_from_world * Vec4(q, 1.0f);
+    if (!(clip.w > 0.0f)) return true;
+    const Vec3 screen = transform_point(face.view.screen_from_clip, clip.xyz() / clip.w);
+    if (!(screen.x >= 0.0f && screen.y >= 0.0f && screen.x < static_cast<float>(map.size) &&
+          screen.y < static_cast<float>(map.size)))
+        return true;  // outside the map: no caster there
+    const size_t texel_index = static_cast<size_t>(screen.y) * static_cast<size_t>(map.size) +
+                               static_cast<size_t>(screen.x);
+    const float depth =
+        map.directional ? dot(q - map.origin, map.direction) : length(q - map.origin);
+    return depth <= face.depth[texel_index] + texel * (k_constant_bias_texels + tan_theta);
+}
+
+bool plane_blocks_light(const Scene& scene, const Light& light, Vec3 p) {
+    for (const Plane& plane : scene.planes) {
+        if (!plane.casts_shadow) continue;
+        const float side = dot(p - plane.point, plane.normal);
+        // A point on the plane (the plane itself, as a receiver) is never behind it.
+        if (!(std::abs(side) > 1e-4f * (1.0f + length(p - plane.point)))) continue;
+        const bool blocked = visit_kind(light, [&](const auto& l) {
+            using Kind = std::decay_t<decltype(l)>;
+            if constexpr (std::is_same_v<Kind, DirectionalLight>)
+                return side * dot(-l.direction, plane.normal) < 0.0f;
+            else
+                return side * dot(l.position - plane.point, plane.normal) < 0.0f;
+        });
+        if (blocked) return true;
+    }
+    return false;
+}
+
+}  // namespace hikari

@@ -1,0 +1,73 @@
+#pragma once
+// Shadow mapping (Williams 1978, "Casting curved shadows on curved surfaces"), the lecture's
+// shadow as hidden-surface removal seen from the light (Fig 4.24), in its two steps: (1) a
+// Z-buffer rendered from a camera at the light, by the same vertex stage and Z-buffer as the
+// image; (2) when shading, a point is lit when it is no farther from the light than the depth
+// the map holds in its direction.
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "hikari/core/aabb.h"
+#include "hikari/raster/raster_scene.h"
+#include "hikari/raster/vertex_pipeline.h"
+#include "hikari/scene/scene.h"
+
+namespace hikari {
+
+/// One depth image seen from a light.
+struct ShadowMapFace {
+    RasterView view;       ///< the light's camera (size × size, perspective or orthographic)
+    Mat4 world_from_clip;  ///< the inverse of view.clip_from_world, to cast texel rays
+    /// Per texel, row-major from the top: the depth of the nearest shadow caster along the ray
+    /// through the texel's centre (distance from a point light; distance along a directional
+    /// light's rays from the map's reference point), +infinity where no caster is seen.
+    std::vector<float> depth;
+};
+
+/// The map of one light: one orthographic face for a directional light, six 90° faces (a cube
+/// map) around a point light.
+struct LightShadowMap {
+    bool directional = false;
+    Vec3 origin;     ///< a point light's position; the reference point of a directional map
+    Vec3 direction;  ///< a directional light's unit travel direction
+    int size = 0;    ///< texels per side of every face
+    /// World size of one texel: of a directional map everywhere; of a cube map at distance 1
+    /// from the light (it grows in proportion to the distance).
+    float texel_size = 0;
+    std::vector<ShadowMapFace> faces;
+};
+
+/// The maps of a scene's lights, index for index (nullopt where a light casts no shadow map:
+/// nothing casts shadows in its light, or no receiver needs it).
+struct ShadowMaps {
+    std::vector<std::optional<LightShadowMap>> lights;
+};
+
+/// Which triangles of `raster` (the tessellated scene) cast shadows into maps: those of
+/// spheres, triangles and meshes whose `casts_shadow` is true. Infinite planes are left out of
+/// every map — no finite map holds them; plane_blocks_light() answers for them exactly.
+std::vector<uint8_t> shadow_casting_triangles(const Scene& scene, const RasterScene& raster);
+
+/// Renders the shadow maps of every light of `scene` at `size` × `size` texels per face:
+/// casters are the triangles of `raster` that `casters` marks. A directional light's map is
+/// fitted to the bounds of those casters, in the light's view, that lie over `receivers` (the
+/// bounds of the points the camera sees): casters elsewhere cannot shadow anything visible.
+/// Faces render in parallel; the maps do not depend on the thread count.
+ShadowMaps build_shadow_maps(const Scene& scene, const RasterScene& raster,
+                             const std::vector<uint8_t>& casters, const Aabb& receivers, int size);
+
+/// Whether `p` (a visible point with unit normal `n` on the side the light may reach) is
+/// lit according to `map`. The comparison allows a depth bias of one texel plus the slope
+/// term texel · tan θ (θ between n and the light), and looks the map up from p moved one
+/// texel along n (normal offset): together they keep lit surfaces free of acne, even at
+/// grazing light, while contact shadows stay attached (docs/shadows.md).
+bool lit_in_shadow_map(const LightShadowMap& map, Vec3 p, Vec3 n);
+
+/// Whether one of `scene`'s shadow-casting planes lies between `p` and light `light`: a
+/// plane blocks a point light when the two are strictly on opposite sides, and a directional
+/// light when the ray from `p` toward the light crosses it.
+bool plane_blocks_light(const Scene& scene, const Light& light, Vec3 p);
+
+}  // namespace hikari
