@@ -6,7 +6,9 @@
 #include "hikari/frame/tiles.h"
 #include "hikari/raster/cull.h"
 #include "hikari/raster/shadow_map.h"
+#include "hikari/raster/shadow_volume.h"
 #include "hikari/shading/direct.h"
+#include "hikari/shading/lights.h"
 #include "hikari/shading/material_eval.h"
 
 namespace hikari {
@@ -21,7 +23,19 @@ struct ShadeContext {
     CameraFrame frame;
     int width, height;
     LightingEnvironment lighting;
-    const ShadowMaps* shadow_maps;  ///< null: no shadows
+    ShadowMode shadows;                                  ///< none, map or volume
+    const ShadowMaps* shadow_maps;                       ///< the maps, for ShadowMode::map
+    const std::vector<std::vector<uint8_t>>* in_volume;  ///< per light and pixel, for volume
+};
+
+/// Where a pixel's shadows are decided: its visible point, face normal toward the eye, and
+/// index. Every light's visibility is asked there, also when the colour is computed elsewhere
+/// (at the vertices for Gouraud, the centroid for flat shading), as a GPU decides shadows per
+/// fragment.
+struct ShadowQuery {
+    Vec3 point;
+    Vec3 ng;
+    size_t pixel;
 };
 
 /// The source triangle a pixel centre sees, and the centre's point on it.
@@ -38,20 +52,24 @@ struct PixelSurface {
     Vec3 ng_front;           ///< `ng` turned toward the eye
 };
 
-/// Whether light `l` reaches point `p` with face normal `ng` (toward the eye), by the shadow
-/// maps (planes, which no finite map holds, answered exactly).
-bool light_reaches(const ShadeContext& ctx, size_t l, const LightSample& light, Vec3 p, Vec3 ng) {
-    if (!ctx.shadow_maps) return true;
-    if (plane_blocks_light(ctx.scene, ctx.scene.lights[l], p)) return false;
+/// Whether light `l` reaches the pixel's point, by its shadow map or stencil (planes, which no
+/// finite map or mesh volume holds, answered exactly).
+bool light_reaches(const ShadeContext& ctx, size_t l, const ShadowQuery& q) {
+    if (ctx.shadows == ShadowMode::none) return true;
+    const Light& light = ctx.scene.lights[l];
+    if (plane_blocks_light(ctx.scene, light, q.point)) return false;
+    if (ctx.shadows == ShadowMode::volume) return (*ctx.in_volume)[l][q.pixel] == 0;
     const std::optional<LightShadowMap>& map = ctx.shadow_maps->lights[l];
     if (!map) return true;
     // The normal offset moves the lookup off the surface on the light's side.
-    return lit_in_shadow_map(*map, p, dot(ng, light.to_light) < 0.0f ? -ng : ng);
+    const Vec3 to_light = sample_light(light, q.point).to_light;
+    return lit_in_shadow_map(*map, q.point, dot(q.ng, to_light) < 0.0f ? -q.ng : q.ng);
 }
 
-/// The material at `p` (its texture applied) lit by every light that reaches it; `ng` is the
-/// face normal toward the eye.
-Vec3 shade_point(const ShadeContext& ctx, uint32_t material, Vec3 p, Vec3 n, Vec3 ng, Vec3 to_eye) {
+/// The material at `p` (its texture applied) lit by every light that reaches the pixel of
+/// `shadow`.
+Vec3 shade_point(const ShadeContext& ctx, uint32_t material, Vec3 p, Vec3 n,
+                 const ShadowQuery& shadow, Vec3 to_eye) {
     SurfacePoint<float> s;
     s.position = p;
     s.normal = n;
@@ -59,8 +77,8 @@ Vec3 shade_point(const ShadeContext& ctx, uint32_t material, Vec3 p, Vec3 n, Vec
     s.to_eye = to_eye;
     const MaterialSample<float> m =
         evaluate_material<float>(ctx.scene.materials.data(), static_cast<int32_t>(material), s);
-    const auto lit = [&](size_t l, const LightSample& light, const SurfacePoint<float>&, bool) {
-        return light_reaches(ctx, l, light, p, ng);
+    const auto lit = [&](size_t l, const LightSample&, const SurfacePoint<float>&, bool) {
+        return light_reaches(ctx, l, shadow);
     };
     return direct_lighting<float>(ctx.lighting, s, m, true, lit).colour;
 }
@@ -102,27 +120,28 @@ PixelSurface surface_at(const ShadeContext& ctx, uint32_t src, int x, int y) {
     return s;
 }
 
-/// The colour of `s`, interpolated as ctx.interp says.
-Vec3 shade_surface(const ShadeContext& ctx, const PixelSurface& s) {
+/// The colour of `s`, seen at `pixel`, interpolated as ctx.interp says.
+Vec3 shade_surface(const ShadeContext& ctx, const PixelSurface& s, size_t pixel) {
     const uint32_t m = ctx.tris.material[s.src];
+    const ShadowQuery shadow{s.point, s.ng_front, pixel};
     const Vec3 eye = ctx.scene.camera.eye;
     switch (ctx.interp) {
         case Interpolation::flat: {  // one colour per polygon, at its centroid
             const Vec3 c = (s.p[0] + s.p[1] + s.p[2]) / 3.0f;
-            return shade_point(ctx, m, c, s.ng_front, s.ng_front, normalize(eye - c));
+            return shade_point(ctx, m, c, s.ng_front, shadow, normalize(eye - c));
         }
         case Interpolation::gouraud: {  // shade the vertices, blend the colours
             Vec3 colour(0.0f);
             for (int k = 0; k < 3; ++k) {
                 const Vec3 to_eye = normalize(eye - s.p[k]);
                 const Vec3 nk = facing(s.n[k], s.entering, s.ng_front, -to_eye);
-                colour += s.b[k] * shade_point(ctx, m, s.p[k], nk, s.ng_front, to_eye);
+                colour += s.b[k] * shade_point(ctx, m, s.p[k], nk, shadow, to_eye);
             }
             return colour;
         }
         case Interpolation::phong:  // interpolate the normal, shade the pixel
             return shade_point(ctx, m, s.point, facing(s.n_interp, s.entering, s.ng_front, s.dir),
-                               s.ng_front, -s.dir);
+                               shadow, -s.dir);
     }
     return Vec3(0.0f);
 }
@@ -139,13 +158,29 @@ void shade_tile(const ShadeContext& ctx, const VisibilityBuffer& vis, const Tile
                 continue;
             }
             const PixelSurface s = surface_at(ctx, ctx.ps.triangles[t].source, x, y);
-            fb.set_color(pixel, shade_surface(ctx, s));
+            fb.set_color(pixel, shade_surface(ctx, s, pixel));
             fb.depth[pixel] = length(s.point - ctx.scene.camera.eye);
             fb.id[pixel] = ctx.tris.id[s.src] + 1;
             const float nl = length(s.n_interp);
             const Vec3 sn = nl > 0.0f ? s.n_interp / nl : s.ng;
             fb.normal[pixel] = dot(sn, s.dir) < 0.0f ? sn : -sn;
         }
+}
+
+/// The eye distance of every pixel's visible point, infinity where nothing is seen.
+std::vector<float> visible_depth(const ShadeContext& ctx, const VisibilityBuffer& vis) {
+    std::vector<float> depth(vis.triangle.size(), k_infinity);
+    for_each_tile(vis.width, vis.height, nullptr, [&](const Tile& tile) {
+        for (int y = tile.y0; y < tile.y1; ++y)
+            for (int x = tile.x0; x < tile.x1; ++x) {
+                const size_t pixel = static_cast<size_t>(y) * ctx.width + x;
+                const uint32_t t = vis.triangle[pixel];
+                if (t == k_no_triangle) continue;
+                const PixelSurface s = surface_at(ctx, ctx.ps.triangles[t].source, x, y);
+                depth[pixel] = length(s.point - ctx.scene.camera.eye);
+            }
+    });
+    return depth;
 }
 
 /// The bounds of every triangle seen at some pixel centre: where shadows can be seen.
@@ -185,20 +220,35 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
                              const VisibilityBuffer& vis, Film film, const RenderSettings& settings,
                              const RasterSettings& raster) {
     Framebuffer fb(std::move(film), vis.width, vis.height, true);
+    ShadeContext ctx{scene,
+                     ps,
+                     ps.scene.triangles,
+                     raster.interp,
+                     make_camera_frame(scene.camera),
+                     vis.width,
+                     vis.height,
+                     {scene.lights.data(), scene.lights.size(), scene.ambient},
+                     scene.lights.empty() ? ShadowMode::none : raster.shadows,
+                     nullptr,
+                     nullptr};
+    // The shadow pass, shared by every visibility method: maps from the lights, or a stencil
+    // per light counted against the depth of each pixel's visible point.
     ShadowMaps maps;
-    if (raster.shadows == ShadowMode::map && !scene.lights.empty()) {
+    std::vector<std::vector<uint8_t>> in_volume;
+    if (ctx.shadows == ShadowMode::map) {
         maps = build_shadow_maps(scene, ps.scene, shadow_casting_triangles(scene, ps.scene),
                                  visible_bounds(ps, vis), raster.shadow_map_size);
+        ctx.shadow_maps = &maps;
+    } else if (ctx.shadows == ShadowMode::volume) {
+        const std::vector<float> depth = visible_depth(ctx, vis);
+        const std::vector<uint8_t> casters = shadow_casting_triangles(scene, ps.scene);
+        for (const Light& light : scene.lights) {
+            const std::vector<VolumePolygon> volume =
+                shadow_volume_polygons(ps.scene.triangles, casters, light);
+            in_volume.push_back(stencil_shadow_mask(volume, ps.view, ctx.frame, depth));
+        }
+        ctx.in_volume = &in_volume;
     }
-    const ShadeContext ctx{scene,
-                           ps,
-                           ps.scene.triangles,
-                           raster.interp,
-                           make_camera_frame(scene.camera),
-                           vis.width,
-                           vis.height,
-                           {scene.lights.data(), scene.lights.size(), scene.ambient},
-                           raster.shadows == ShadowMode::map ? &maps : nullptr};
     for_each_tile(vis.width, vis.height, settings.control,
                   [&](const Tile& tile) { shade_tile(ctx, vis, tile, fb); });
     return fb;

@@ -7,43 +7,10 @@
 #include "hikari/frame/tiles.h"
 #include "hikari/raster/half_space.h"
 #include "hikari/raster/shade_visibility.h"
+#include "hikari/raster/tile_bins.h"
 #include "hikari/raster/vertex_pipeline.h"
 
 namespace hikari {
-
-namespace {
-
-/// Triangle indices per tile in a flat array (compressed rows), each tile's in ascending order.
-struct TileBins {
-    int tiles_x = 0, tiles_y = 0;
-    std::vector<uint32_t> begin;  ///< tiles_x · tiles_y + 1 offsets into `triangle`
-    std::vector<uint32_t> triangle;
-};
-
-TileBins bin_triangles(const std::vector<HalfSpaceTriangle>& setup,
-                       const std::vector<uint8_t>& valid, int width, int height) {
-    TileBins bins;
-    bins.tiles_x = (width + k_tile_size - 1) / k_tile_size;
-    bins.tiles_y = (height + k_tile_size - 1) / k_tile_size;
-    bins.begin.assign(static_cast<size_t>(bins.tiles_x) * bins.tiles_y + 1, 0);
-    auto for_tiles = [&](const HalfSpaceTriangle& t, auto&& fn) {
-        for (int ty = t.y0 / k_tile_size; ty <= (t.y1 - 1) / k_tile_size; ++ty)
-            for (int tx = t.x0 / k_tile_size; tx <= (t.x1 - 1) / k_tile_size; ++tx)
-                fn(static_cast<size_t>(ty) * bins.tiles_x + tx);
-    };
-    for (size_t i = 0; i < setup.size(); ++i)
-        if (valid[i]) for_tiles(setup[i], [&](size_t tile) { ++bins.begin[tile + 1]; });
-    for (size_t k = 1; k < bins.begin.size(); ++k) bins.begin[k] += bins.begin[k - 1];
-    bins.triangle.resize(bins.begin.back());
-    std::vector<uint32_t> fill(bins.begin.begin(), bins.begin.end() - 1);
-    for (size_t i = 0; i < setup.size(); ++i)
-        if (valid[i])
-            for_tiles(setup[i],
-                      [&](size_t tile) { bins.triangle[fill[tile]++] = static_cast<uint32_t>(i); });
-    return bins;
-}
-
-}  // namespace
 
 VisibilityBuffer zbuffer_visibility(std::span<const ScreenTriangle> triangles, int width,
                                     int height, RenderControl* control) {
@@ -62,8 +29,7 @@ VisibilityBuffer zbuffer_visibility(std::span<const ScreenTriangle> triangles, i
         std::array<uint32_t, k_tile_size * k_tile_size> nearest;
         depth.fill(k_infinity);
         nearest.fill(k_no_triangle);
-        const size_t tile_index =
-            static_cast<size_t>(tile.y0 / k_tile_size) * bins.tiles_x + tile.x0 / k_tile_size;
+        const size_t tile_index = bins.tile_at(tile.x0, tile.y0);
         for (uint32_t k = bins.begin[tile_index]; k < bins.begin[tile_index + 1]; ++k) {
             const uint32_t t = bins.triangle[k];
             const HalfSpaceTriangle& h = setup[t];
