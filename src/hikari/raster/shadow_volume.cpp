@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "hikari/core/parallel.h"
+#include "hikari/core/ray.h"
 #include "hikari/core/visit.h"
 #include "hikari/frame/tiles.h"
 #include "hikari/raster/clip.h"
@@ -295,29 +296,50 @@ std::vector<uint8_t> stencil_shadow_mask(std::span<const VolumePolygon> polygons
     std::vector<uint8_t> mask(static_cast<size_t>(width) * height, 0);
     const double ex = frame.eye.x, ey = frame.eye.y, ez = frame.eye.z;
     for_each_tile(width, height, nullptr, [&](const Tile& tile) {
-        std::array<int32_t, k_tile_size * k_tile_size> stencil{};
+        constexpr int k_pixels = k_tile_size * k_tile_size;
+        std::array<int32_t, k_pixels> stencil{};
+        // The tile's camera rays and visible depths (+infinity: nothing seen, nothing counts).
+        std::array<Vec3, k_pixels> ray;
+        std::array<float, k_pixels> seen;
+        seen.fill(k_infinity);
+        for (int y = tile.y0; y < tile.y1; ++y)
+            for (int x = tile.x0; x < tile.x1; ++x) {
+                const int i = (y - tile.y0) * k_tile_size + (x - tile.x0);
+                ray[i] = camera_ray(frame, x + 0.5f, y + 0.5f).direction;
+                seen[i] = depth[static_cast<size_t>(y) * width + x];
+            }
         const size_t bin = bins.tile_at(tile.x0, tile.y0);
         for (uint32_t k = bins.begin[bin]; k < bins.begin[bin + 1]; ++k) {
             const StencilPiece& piece = pieces[bins.triangle[k]];
             const auto& pl = piece.plane;
+            if (pl[0] == 0.0 && pl[1] == 0.0 && pl[2] == 0.0) {
+                // A cap at infinity lies behind every visible point.
+                for_each_covered_pixel(piece.setup, tile.x0, tile.y0, tile.x1, tile.y1,
+                                       [&](int x, int y, float, float, float) {
+                                           const int i =
+                                               (y - tile.y0) * k_tile_size + (x - tile.x0);
+                                           if (seen[i] < k_infinity) stencil[i] += piece.step;
+                                       });
+                continue;
+            }
             const double at_eye = pl[0] * ex + pl[1] * ey + pl[2] * ez + pl[3];
-            for_each_covered_pixel(
-                piece.setup, tile.x0, tile.y0, tile.x1, tile.y1,
-                [&](int x, int y, float, float, float) {
-                    const float seen = depth[static_cast<size_t>(y) * width + x];
-                    if (!std::isfinite(seen)) return;
-                    const Vec3 d = camera_ray(frame, x + 0.5f, y + 0.5f).direction;
-                    const double along = pl[0] * d.x + pl[1] * d.y + pl[2] * d.z;
-                    double t = -at_eye / along;
-                    // Behind the eye or undefined only through rounding at infinity: far away.
-                    if (!(t > 0.0) || !std::isfinite(t))
-                        t = std::numeric_limits<double>::infinity();
-                    // z-fail: only fragments not in front of the visible point count. The point's
-                    // own face, a front cap, counts too (relative tolerance): the surface on the
-                    // boundary of its volume is outside it.
-                    if (t >= seen * (1.0 - 1e-4))
-                        stencil[(y - tile.y0) * k_tile_size + (x - tile.x0)] += piece.step;
-                });
+            for_each_covered_pixel(piece.setup, tile.x0, tile.y0, tile.x1, tile.y1,
+                                   [&](int x, int y, float, float, float) {
+                                       const int i = (y - tile.y0) * k_tile_size + (x - tile.x0);
+                                       if (!(seen[i] < k_infinity)) return;
+                                       const Vec3 d = ray[i];
+                                       const double along = pl[0] * d.x + pl[1] * d.y + pl[2] * d.z;
+                                       double t = -at_eye / along;
+                                       // Behind the eye or undefined only through rounding at
+                                       // infinity: far away.
+                                       if (!(t > 0.0) || !std::isfinite(t))
+                                           t = std::numeric_limits<double>::infinity();
+                                       // z-fail: only fragments not in front of the visible point
+                                       // count. The point's own face, a front cap, counts too
+                                       // (relative tolerance): the surface on the boundary of its
+                                       // volume is outside it.
+                                       if (t >= seen[i] * (1.0 - 1e-4)) stencil[i] += piece.step;
+                                   });
         }
         for (int y = tile.y0; y < tile.y1; ++y)
             for (int x = tile.x0; x < tile.x1; ++x)
