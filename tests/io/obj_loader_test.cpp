@@ -183,6 +183,27 @@ TEST(ObjLoader, MissingMtlIsAWarning) {
     EXPECT_TRUE(mentions_mtl);
 }
 
+TEST(ObjLoader, OutOfRangeTextureCoordinateNamesFileAndLine) {
+    TempDir dir;
+    write_text(dir / "bad.obj",
+               std::string(k_quad) + "vt 0 0\nvt 1 0\nf 1/1 2/2 3/1\nf 1/1 3/3 4/2\n");
+    const std::string message = load_error(dir / "bad.obj");
+    EXPECT_EQ(message, (dir / "bad.obj").string() +
+                           ":8: face refers to texture coordinate 3, but the file defines only 2");
+}
+
+TEST(ObjLoader, TextureCoordinatesFollowTheirCorners) {
+    TempDir dir;
+    write_text(dir / "uv.obj",
+               std::string(k_quad) + "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n");
+    const MeshData mesh = load_obj(dir / "uv.obj");
+    ASSERT_EQ(mesh.uvs.size(), mesh.positions.size());
+    for (size_t k = 0; k < mesh.positions.size(); ++k) {
+        EXPECT_EQ(mesh.uvs[k].x, mesh.positions[k].x);
+        EXPECT_EQ(mesh.uvs[k].y, mesh.positions[k].y);
+    }
+}
+
 TEST(ObjLoader, OutOfRangeIndexNamesFileAndLine) {
     TempDir dir;
     write_text(dir / "bad.obj", std::string(k_quad) + "f 1 2 3\nf 1 2 9\n");

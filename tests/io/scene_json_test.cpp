@@ -64,6 +64,46 @@ TEST(SceneJson, WrongValueGivesJsonPath) {
               "s.json: objects[0].radius: missing (this key is required)");
 }
 
+TEST(SceneJson, TriangleUvsAndPlaneUvScale) {
+    const Scene s = parse(R"({"objects": [
+        {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]},
+        {"type": "triangle", "vertices": [[0, 0, 1], [1, 0, 1], [0, 1, 1]],
+         "uvs": [[0.5, 0.25], [1, 0], [0, 2]]},
+        {"type": "triangle", "vertices": [[0, 0, 2], [1, 0, 2], [0, 1, 2]]},
+        {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "uv_scale": 3},
+        {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0]}]})");
+    // One uv per vertex from the first object with any on; (0, 0) for those without.
+    ASSERT_EQ(s.triangles.uvs.size(), s.triangles.positions.size());
+    const auto uv_of = [&](size_t triangle, int corner) {
+        return s.triangles.uvs[s.triangles.indices[triangle][corner]];
+    };
+    EXPECT_EQ(uv_of(0, 1).x, 0.0f);
+    EXPECT_EQ(uv_of(1, 0).x, 0.5f);
+    EXPECT_EQ(uv_of(1, 0).y, 0.25f);
+    EXPECT_EQ(uv_of(1, 2).y, 2.0f);
+    EXPECT_EQ(uv_of(2, 2).y, 0.0f);
+    EXPECT_EQ(s.planes[0].uv_scale, 3.0f);
+    EXPECT_EQ(s.planes[1].uv_scale, 1.0f);
+    // No uvs anywhere: none stored.
+    EXPECT_TRUE(parse(R"({"objects": [{"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0],
+        [0, 1, 0]]}]})")
+                    .triangles.uvs.empty());
+}
+
+TEST(SceneJson, BadUvsGiveJsonPath) {
+    const std::string tri = R"({"objects": [{"type": "triangle",
+        "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "uvs": )";
+    EXPECT_EQ(error_of(tri + "[[0, 0], [1, 0]]}]}"),
+              "s.json: objects[0].uvs: expected an array of 3 elements, got 2");
+    EXPECT_EQ(error_of(tri + "[[0, 0], [1, 0, 0], [0, 1]]}]}"),
+              "s.json: objects[0].uvs[1]: expected an array of 2 elements, got 3");
+    EXPECT_EQ(error_of(tri + R"([[0, 0], [1, 0], [0, "a"]]}]})"),
+              "s.json: objects[0].uvs[2][1]: expected a number, got a string");
+    EXPECT_EQ(error_of(R"({"objects": [{"type": "plane", "point": [0, 0, 0],
+        "normal": [0, 1, 0], "uv_scale": 0}]})"),
+              "s.json: objects[0].uv_scale: expected a positive number");
+}
+
 TEST(SceneJson, UnknownKeySuggestsTheRightOne) {
     EXPECT_EQ(error_of(R"({"objects": [{"type": "sphere", "center": [0, 0, 0], "radus": 1}]})"),
               "s.json: objects[0].radus: unknown key (did you mean \"radius\"?)");

@@ -67,5 +67,73 @@ TEST(ShadeVisibility, InterpolationModesAgreeOnAFlatTriangle) {
         }
 }
 
+/// The uv of the floor y = 0 under the mapping (u, v) = (x, −z) / 2 where the camera ray through
+/// pixel point (px, py) meets it.
+Vec2 floor_uv_seen(const CameraFrame& frame, float px, float py) {
+    const Ray r = camera_ray(frame, px, py);
+    const Vec3 p = r.at(-r.origin.y / r.direction.y);
+    return {p.x / 2, -p.z / 2};
+}
+
+TEST(ShadeVisibility, PerspectiveUvAndItsDerivativesOnAFloor) {
+    // A floor quad whose corners carry the planar mapping (x, −z) / 2, seen obliquely: every
+    // pixel's interpolated uv is the mapping at the point its camera ray meets (perspective-
+    // correct), and the derivatives are those of that point moving across the pixel grid.
+    const Scene scene = testing::raster_scene_from(R"({
+      "camera": {"eye": [0, 1, 0], "look_at": [0.3, 0.6, -4], "fov_y": 60, "width": 96, "height": 64},
+      "objects": [
+        {"type": "triangle", "vertices": [[-4, 0, -1], [4, 0, -1], [4, 0, -30]],
+         "uvs": [[-2, 0.5], [2, 0.5], [2, 15]]},
+        {"type": "triangle", "vertices": [[-4, 0, -1], [4, 0, -30], [-4, 0, -30]],
+         "uvs": [[-2, 0.5], [2, 15], [-2, 15]]}]})");
+    const ProjectedScene ps = project_scene(scene, {});
+    const CameraFrame frame = make_camera_frame(scene.camera);
+    const TriangleSet& tris = ps.scene.triangles;
+    int checked = 0;
+    for (int y = 40; y < 64; y += 3)
+        for (int x = 2; x < 96; x += 5) {
+            const float px = x + 0.5f, py = y + 0.5f;
+            const Vec2 want = floor_uv_seen(frame, px, py);
+            // The mapping is affine over the floor's plane: either triangle interpolates it.
+            const auto& i = tris.indices[0];
+            const PixelUv got = perspective_uv(
+                {ps.clip_positions[i[0]], ps.clip_positions[i[1]], ps.clip_positions[i[2]]},
+                {tris.uvs[i[0]], tris.uvs[i[1]], tris.uvs[i[2]]}, 2.0 * px / 96 - 1,
+                1 - 2.0 * py / 64, 96, 64);
+            EXPECT_NEAR(got.uv.x, want.x, 1e-3f * (1 + std::abs(want.x)));
+            EXPECT_NEAR(got.uv.y, want.y, 1e-3f * (1 + std::abs(want.y)));
+            // Central differences of the ray-traced mapping, a hundredth of a pixel apart.
+            const float h = 0.01f;
+            const Vec2 xp = floor_uv_seen(frame, px + h, py), xm = floor_uv_seen(frame, px - h, py);
+            const Vec2 yp = floor_uv_seen(frame, px, py + h), ym = floor_uv_seen(frame, px, py - h);
+            const float tol = 0.02f * std::hypot((yp.x - ym.x) / (2 * h), (yp.y - ym.y) / (2 * h));
+            EXPECT_NEAR(got.du_dx, (xp.x - xm.x) / (2 * h), tol);
+            EXPECT_NEAR(got.dv_dx, (xp.y - xm.y) / (2 * h), tol);
+            EXPECT_NEAR(got.du_dy, (yp.x - ym.x) / (2 * h), tol);
+            EXPECT_NEAR(got.dv_dy, (yp.y - ym.y) / (2 * h), tol);
+            ++checked;
+        }
+    EXPECT_GT(checked, 100);
+}
+
+TEST(ShadeVisibility, PerspectiveUvOfAFacingQuadIsItsPixelSize) {
+    // A quad 4 units in front of a 90° camera, 200 pixels high: one pixel is 8/200 = 0.04 world
+    // units there, so with one texture repeat per 2 units, 0.02 in u per pixel along x and
+    // −0.02 in v per pixel down the image.
+    const Mat4 clip_from_world =
+        perspective(90, 1.0f, 0.1f, 100) * look_at({0, 0, 0}, {0, 0, -1}, {0, 1, 0});
+    const std::array<Vec4, 3> clip{clip_from_world * Vec4({-3, -3, -4}, 1),
+                                   clip_from_world * Vec4({3, -3, -4}, 1),
+                                   clip_from_world * Vec4({-3, 3, -4}, 1)};
+    const PixelUv got = perspective_uv(
+        clip, {Vec2{-1.5f, -1.5f}, Vec2{1.5f, -1.5f}, Vec2{-1.5f, 1.5f}}, 0.1, -0.2, 200, 200);
+    EXPECT_NEAR(got.uv.x, 0.1f * 4 / 2, 1e-5f);
+    EXPECT_NEAR(got.uv.y, -0.2f * 4 / 2, 1e-5f);
+    EXPECT_NEAR(got.du_dx, 0.02f, 1e-6f);
+    EXPECT_NEAR(got.dv_dx, 0.0f, 1e-6f);
+    EXPECT_NEAR(got.du_dy, 0.0f, 1e-6f);
+    EXPECT_NEAR(got.dv_dy, -0.02f, 1e-6f);
+}
+
 }  // namespace
 }  // namespace hikari

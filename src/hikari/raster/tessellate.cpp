@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "hikari/core/aabb.h"
+#include "hikari/geometry/surface_uv.h"
 
 namespace hikari {
 
@@ -26,10 +27,53 @@ void push_triangle(TriangleSet& out, uint32_t a, uint32_t b, uint32_t c, Vec3 ou
     out.id.push_back(id);
 }
 
-uint32_t push_vertex(TriangleSet& out, Vec3 p, Vec3 n) {
+uint32_t push_vertex(TriangleSet& out, Vec3 p, Vec3 n, Vec2 uv = {}) {
     out.positions.push_back(p);
     out.normals.push_back(n);
+    out.uvs.push_back(uv);
     return static_cast<uint32_t>(out.positions.size() - 1);
+}
+
+/// Marks a vertex without a seam copy yet.
+constexpr uint32_t k_no_copy = ~0u;
+
+/// Whether `p` is one of the sphere's poles (on its y axis), where longitude is undefined.
+bool is_pole(const Sphere& s, Vec3 p) { return p.x == s.center.x && p.z == s.center.z; }
+
+/// A copy of vertex `k` of `out` with texture coordinates `uv`.
+uint32_t copy_vertex(TriangleSet& out, uint32_t k, Vec2 uv) {
+    return push_vertex(out, out.positions[k], out.normals[k], uv);
+}
+
+/// The sphere's longitude/latitude mapping (geometry/surface_uv.h) on its triangles from
+/// `first_triangle` on, as the ray tracer computes it at its hits. Where a triangle straddles
+/// the seam u = 0 ≡ 1, its corners on the u < 1/2 side are copies with u + 1; where a corner is
+/// a pole (u undefined), it is a copy with the mean u of the other two. Copies share position
+/// and normal, so the rasterized shape is the same.
+void map_sphere_uvs(const Sphere& s, size_t first_vertex, size_t first_triangle, TriangleSet& out) {
+    for (size_t k = first_vertex; k < out.positions.size(); ++k)
+        out.uvs[k] = sphere_uv(s, out.positions[k]).uv;
+    std::vector<uint32_t> wrapped(out.positions.size(), k_no_copy);
+    for (size_t t = first_triangle; t < out.indices.size(); ++t) {
+        auto& tri = out.indices[t];
+        float lo = 1.0f, hi = 0.0f;
+        for (const uint32_t k : tri)
+            if (!is_pole(s, out.positions[k])) {
+                lo = std::min(lo, out.uvs[k].x), hi = std::max(hi, out.uvs[k].x);
+            }
+        if (hi - lo > 0.5f)
+            for (uint32_t& k : tri)
+                if (!is_pole(s, out.positions[k]) && out.uvs[k].x < 0.5f) {
+                    if (wrapped[k] == k_no_copy)
+                        wrapped[k] = copy_vertex(out, k, {out.uvs[k].x + 1.0f, out.uvs[k].y});
+                    k = wrapped[k];
+                }
+        for (int c = 0; c < 3; ++c)
+            if (is_pole(s, out.positions[tri[c]])) {
+                const float u = 0.5f * (out.uvs[tri[(c + 1) % 3]].x + out.uvs[tri[(c + 2) % 3]].x);
+                tri[c] = copy_vertex(out, tri[c], {u, out.uvs[tri[c]].y});
+            }
+    }
 }
 
 /// Projected radius in pixels of `s` seen by `camera`; infinity when the eye is (nearly) inside.
@@ -59,6 +103,7 @@ uint32_t sphere_segments(float radius_px) {
 
 void tessellate_sphere(const Sphere& s, uint32_t lon, TriangleSet& out) {
     const uint32_t lat = std::max(8u, lon / 2);
+    const size_t first_vertex = out.positions.size(), first_triangle = out.indices.size();
     auto vertex = [&](float theta, float phi) {
         const Vec3 n{std::sin(theta) * std::cos(phi), std::cos(theta),
                      std::sin(theta) * std::sin(phi)};
@@ -82,6 +127,7 @@ void tessellate_sphere(const Sphere& s, uint32_t lon, TriangleSet& out) {
             tri(ring(k, m), ring(k + 1, m + 1), ring(k, m + 1));
         }
     for (uint32_t m = 0; m < lon; ++m) tri(bottom, ring(lat - 1, m + 1), ring(lat - 1, m));
+    map_sphere_uvs(s, first_vertex, first_triangle, out);
 }
 
 void tessellate_plane(const Plane& plane, Vec3 eye, float half_extent, TriangleSet& out) {
@@ -96,7 +142,10 @@ void tessellate_plane(const Plane& plane, Vec3 eye, float half_extent, TriangleS
     const auto base = static_cast<uint32_t>(out.positions.size());
     constexpr int n = 2 * k_steps + 1;
     for (const float cj : coord)
-        for (const float ci : coord) push_vertex(out, foot + ci * u + cj * v, plane.normal);
+        for (const float ci : coord) {
+            const Vec3 p = foot + ci * u + cj * v;
+            push_vertex(out, p, plane.normal, plane_uv(plane, p).uv);
+        }
     for (int j = 0; j + 1 < n; ++j)
         for (int i = 0; i + 1 < n; ++i) {
             const uint32_t a = base + j * n + i, b = a + 1, c = a + n, d = c + 1;
@@ -124,6 +173,10 @@ RasterScene tessellate_scene(const Scene& scene) {
     const TriangleSet& in = scene.triangles;
     out.positions = in.positions;
     out.normals = in.normals;
+    // Every vertex gets texture coordinates (spheres and planes always have them; triangles
+    // without get (0, 0)).
+    out.uvs = in.uvs;
+    out.uvs.resize(out.positions.size());
 
     // Spheres and planes by id, to be merged with the (id-ordered) mesh triangles.
     struct Item {

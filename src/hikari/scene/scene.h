@@ -32,12 +32,14 @@ struct Plane {
     uint32_t material = 0;
     PrimitiveId id = 0;
     bool casts_shadow = true;  ///< false: shadow rays pass through it
+    /// World units per texture repeat of the planar mapping (geometry/surface_uv.h, plane_uv).
+    float uv_scale = 1.0f;
 };
 
 /// Every triangle of the scene in one flat indexed array, world space.
 struct TriangleSet {
-    std::vector<Vec3> positions;                   ///< world-space vertex positions
-    std::vector<Vec3> normals;                     ///< unit shading normal per vertex
+    std::vector<Vec3> positions;  ///< world-space vertex positions
+    std::vector<Vec3> normals;    ///< unit shading normal per vertex
     /// Texture coordinates per vertex, (0, 0) the image's lower-left corner (the OBJ and OpenGL
     /// convention); empty when no triangle has any.
     std::vector<Vec2> uvs;
