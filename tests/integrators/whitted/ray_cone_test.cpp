@@ -13,7 +13,22 @@ TEST(RayCone, CameraSpreadIsOnePixel) {
     camera.height = 200;
     // tan 45° = 1: the image plane at distance 1 is 2 units high, 0.01 per pixel.
     EXPECT_NEAR(pixel_spread_angle(camera), std::atan(0.01f), 1e-7f);
-    EXPECT_EQ(camera_cone(camera).width, 0.0f);
+}
+
+TEST(RayCone, CameraConesAreOnePixelWideAtEveryViewDepth) {
+    Camera camera;
+    camera.eye = {1, 2, 3};
+    camera.look_at = {1, 2, -7};
+    camera.height = 100;
+    const CameraCones cones(camera);
+    // A ray 40° off axis reaching view depth 5 has travelled 5 / cos 40°: its width there is
+    // the on-axis ray's at depth 5.
+    const float off = 40 * 3.14159265f / 180;
+    const RayCone side = cones({std::sin(off), 0, -std::cos(off)});
+    const RayCone centre = cones({0, 0, -1});
+    EXPECT_EQ(side.width, 0.0f);
+    EXPECT_NEAR(side.width_at(5 / std::cos(off)), centre.width_at(5), 1e-7f);
+    EXPECT_NEAR(centre.spread, pixel_spread_angle(camera), 1e-9f);
 }
 
 TEST(RayCone, FlatMirrorKeepsTheSpread) {

@@ -34,8 +34,23 @@ inline float pixel_spread_angle(const Camera& camera) {
     return std::atan(2.0f * tan_half / static_cast<float>(camera.height));
 }
 
-/// The cone of a camera ray through a pixel.
-inline RayCone camera_cone(const Camera& camera) { return {0.0f, pixel_spread_angle(camera)}; }
+/// The cones of the camera's rays: one pixel's angle at the image centre, `spread_on_axis`
+/// (pixel_spread_angle), which a ray at angle θ off the view axis sees shrunk by cos θ (the
+/// pixel is seen obliquely and from farther away), so that the width at view depth z is
+/// spread_on_axis·z everywhere, the size of a pixel on a plane facing the camera at that depth.
+struct CameraCones {
+    Vec3 forward;          ///< unit view direction
+    float spread_on_axis;  ///< radians
+
+    explicit CameraCones(const Camera& camera)
+        : forward(normalize(camera.look_at - camera.eye)),
+          spread_on_axis(pixel_spread_angle(camera)) {}
+
+    /// The cone of the camera ray along unit `direction`.
+    RayCone operator()(Vec3 direction) const {
+        return {0.0f, spread_on_axis * std::max(dot(direction, forward), 0.0f)};
+    }
+};
 
 /// The cone of the mirror ray at a hit where the incoming cone has width `width`, on a surface
 /// of signed curvature `curvature` (1/radius: positive where it bulges toward the ray, as a

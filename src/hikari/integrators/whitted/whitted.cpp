@@ -25,7 +25,7 @@ struct TraceContext {
     const SceneIntersector& intersector;
     const WhittedScene& shading;
     const Scene& scene;
-    RayCone camera_cone;  ///< every camera ray's (one pixel's spread)
+    CameraCones camera_cones;  ///< the camera rays' cones, by direction
     int max_depth;
     uint64_t rays = 0;
 };
@@ -142,9 +142,10 @@ class WaveTracer {
         }
     }
 
-    /// The ray cone of node `i` of the level being shaded, whose cones are `cones`.
-    RayCone cone_of(const RayCone* cones, size_t i) const {
-        return cones ? cones[i] : m_ctx.camera_cone;
+    /// The ray cone of node `i` of the level being shaded, whose cones are `cones` (null:
+    /// camera rays, whose direction is `direction`).
+    RayCone cone_of(const RayCone* cones, size_t i, Vec3 direction) const {
+        return cones ? cones[i] : m_ctx.camera_cones(direction);
     }
 
     /// Shades the block's rays, which are of path segment `segment`, in place in its lanes, sets
@@ -190,8 +191,9 @@ class WaveTracer {
         for (int j = 0; j < rays; ++j) {
             if (!lane.active[j] || (block.shadows_known && !lane.scalar_only[j])) continue;
             const int i = c * k_lane_chunk + j;
+            const Vec3 direction = block.ray(i).direction;
             const Vec3 colour =
-                shade_hit(block.ray(i).direction, block.hit(i), cone_of(cones, base + j),
+                shade_hit(direction, block.hit(i), cone_of(cones, base + j, direction),
                           block.shadows_known, block.lit(i));
             for (int a = 0; a < 3; ++a) nodes.colour[a][base + j] = colour[a];
         }
@@ -232,7 +234,10 @@ class WaveTracer {
                     m_s.next_refracted, nodes.refract.data() + base);
         for (int j = 0; j < rays; ++j)
             if (lane.mirror_weight[j] > 0.0f || lane.refract_weight[j] > 0.0f)
-                spawn_cones(lane, j, cone_of(cones, base + j));
+                spawn_cones(
+                    lane, j,
+                    cone_of(cones, base + j,
+                            {lane.direction[0][j], lane.direction[1][j], lane.direction[2][j]}));
         std::copy_n(lane.mirror_weight, rays, nodes.mirror_weight.begin() + base);
         std::copy_n(lane.refract_weight, rays, nodes.refract_weight.begin() + base);
     }
@@ -457,7 +462,7 @@ Framebuffer render_whitted(const Scene& scene, Film film, const RenderSettings& 
     static_assert(k_tile_size <= k_primary_block);
 
     for_each_tile(cam.width, cam.height, settings.control, [&](const Tile& tile) {
-        TraceContext ctx{render.intersector, render.shading, scene, camera_cone(scene.camera),
+        TraceContext ctx{render.intersector, render.shading, scene, CameraCones(scene.camera),
                          whitted.max_depth};
         thread_local std::unique_ptr<WaveScratch> scratch;
         if (!scratch) scratch = std::make_unique<WaveScratch>();
