@@ -56,8 +56,10 @@ void SceneIntersector::describe_hit(const Ray& ray, float t, HitKind kind, size_
     hit.t = t;
     hit.position = ray.at(t);
     hit.kind = kind;
-    hit.index = kind == HitKind::triangle ? triangle.triangle : static_cast<uint32_t>(index);
-    hit.bary_u = triangle.u, hit.bary_v = triangle.v;
+    const bool on_triangle = kind == HitKind::triangle;
+    hit.index = on_triangle ? triangle.triangle : static_cast<uint32_t>(index);
+    hit.bary_u = on_triangle ? triangle.u : 0.0f;
+    hit.bary_v = on_triangle ? triangle.v : 0.0f;
     if (kind == HitKind::sphere) {
         const Sphere& s = m_scene.spheres[index];
         hit.geometric_normal = (hit.position - s.center) / s.radius;

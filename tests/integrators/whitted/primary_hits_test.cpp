@@ -71,6 +71,12 @@ void expect_blocks_match_closest(const Scene& scene) {
                         ASSERT_TRUE(same_bits(expected.shading_normal, got.shading_normal));
                         ASSERT_EQ(expected.material, got.material);
                         ASSERT_EQ(expected.id, got.id);
+                        // Which primitive, and where on a triangle: what texture coordinates
+                        // are computed from.
+                        ASSERT_EQ(expected.kind, got.kind);
+                        ASSERT_EQ(expected.index, got.index);
+                        ASSERT_TRUE(same_bits(expected.bary_u, got.bary_u));
+                        ASSERT_TRUE(same_bits(expected.bary_v, got.bary_v));
                         // The shadow rays shade_local would trace from this hit.
                         ASSERT_TRUE(block.shadows_known);
                         const Vec3 ng = dot(got.geometric_normal, ray.direction) < 0.0f
