@@ -73,7 +73,7 @@ TEST(SceneJsonB3, BadAdditionsNameTheirJsonPath) {
               "s.json: materials.m.texture.size: expected a positive number");
     EXPECT_EQ(error_of(R"({"materials": {"m": {"texture": {"type": "marble"}}}, "objects": []})"),
               "s.json: materials.m.texture.type: unknown texture type \"marble\" (expected "
-              "\"checker\")");
+              "\"checker\" or \"image\")");
     EXPECT_EQ(error_of(R"({"objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1,
         "casts_shadow": "no"}]})"),
               "s.json: objects[0].casts_shadow: expected true or false");

@@ -13,6 +13,7 @@ std::optional<ImageFormat> image_format_from_extension(const std::filesystem::pa
     if (ext == ".ppm") return ImageFormat::Ppm;
     if (ext == ".pfm") return ImageFormat::Pfm;
     if (ext == ".exr") return ImageFormat::Exr;
+    if (ext == ".hdr") return ImageFormat::Hdr;
     return std::nullopt;
 }
 

@@ -52,45 +52,68 @@ const std::array<float, 256>& srgb8_to_linear_table() {
 
 // --- PNG / JPEG through stb_image --------------------------------------------------------------
 
-Image read_stb(const std::filesystem::path& path, const std::string& bytes) {
-    const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+/// The file's bytes as stb_image takes them, after checking that stb_image reads a header of a
+/// size within the limits.
+struct StbInput {
+    const stbi_uc* data;
+    int size;
+};
+
+StbInput stb_input(const std::filesystem::path& path, const std::string& bytes) {
     if (bytes.size() > static_cast<size_t>(INT32_MAX)) fail(path, "file too large");
-    const int size = static_cast<int>(bytes.size());
+    const StbInput in{reinterpret_cast<const stbi_uc*>(bytes.data()),
+                      static_cast<int>(bytes.size())};
+    int w = 0, h = 0, channels = 0;
+    if (!stbi_info_from_memory(in.data, in.size, &w, &h, &channels)) {
+        fail(path, std::string("cannot decode image: ") + stbi_failure_reason());
+    }
+    check_size(path, w, h);
+    return in;
+}
+
+/// The RGB samples stb_image `decoded` (null when it failed) of a `w` × `h` image, each turned
+/// into linear light by `to_linear`. `w` and `h` are read after the decoder has set them.
+template <class Sample, class ToLinear>
+Image image_from_stb(const std::filesystem::path& path, Sample* decoded, const int& w, const int& h,
+                     ToLinear to_linear) {
+    std::unique_ptr<Sample, void (*)(void*)> pixels(decoded, &stbi_image_free);
+    if (!pixels) fail(path, std::string("cannot decode image: ") + stbi_failure_reason());
+    check_size(path, w, h);
+    Image image(w, h);
+    for (size_t i = 0; i < image.pixels.size(); ++i) {
+        const Sample* p = pixels.get() + 3 * i;
+        image.pixels[i] = {to_linear(p[0]), to_linear(p[1]), to_linear(p[2])};
+    }
+    return image;
+}
+
+Image read_stb(const std::filesystem::path& path, const std::string& bytes) {
     // Only PNG and JPEG go to stb_image: it also sniffs other formats, and its 16-bit PNM path
     // writes past its buffer (found by fuzz/image_fuzz.cpp).
     const bool png = bytes.starts_with("\x89PNG\r\n\x1a\n");
     const bool jpeg = bytes.starts_with("\xFF\xD8\xFF");
     if (!png && !jpeg) fail(path, "not a PNG or JPEG file (wrong signature)");
+    const auto [data, size] = stb_input(path, bytes);
     int w = 0, h = 0, channels = 0;
-    if (!stbi_info_from_memory(data, size, &w, &h, &channels)) {
-        fail(path, std::string("cannot decode image: ") + stbi_failure_reason());
-    }
-    check_size(path, w, h);
     // Size the image from what the decoder returns, not from stbi_info: the two can disagree
     // on malformed files (found by fuzz/image_fuzz.cpp).
     if (stbi_is_16_bit_from_memory(data, size)) {
-        std::unique_ptr<stbi_us, void (*)(void*)> pixels(
-            stbi_load_16_from_memory(data, size, &w, &h, &channels, 3), &stbi_image_free);
-        if (!pixels) fail(path, std::string("cannot decode image: ") + stbi_failure_reason());
-        check_size(path, w, h);
-        Image image(w, h);
-        for (size_t i = 0; i < image.pixels.size(); ++i) {
-            auto decode = [&](int c) { return srgb_to_linear(pixels.get()[3 * i + c] / 65535.0f); };
-            image.pixels[i] = {decode(0), decode(1), decode(2)};
-        }
-        return image;
+        return image_from_stb(path, stbi_load_16_from_memory(data, size, &w, &h, &channels, 3), w,
+                              h, [](stbi_us c) { return srgb_to_linear(c / 65535.0f); });
     }
-    std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
-        stbi_load_from_memory(data, size, &w, &h, &channels, 3), &stbi_image_free);
-    if (!pixels) fail(path, std::string("cannot decode image: ") + stbi_failure_reason());
-    check_size(path, w, h);
-    Image image(w, h);
     const auto& lut = srgb8_to_linear_table();
-    for (size_t i = 0; i < image.pixels.size(); ++i) {
-        const stbi_uc* p = pixels.get() + 3 * i;
-        image.pixels[i] = {lut[p[0]], lut[p[1]], lut[p[2]]};
-    }
-    return image;
+    return image_from_stb(path, stbi_load_from_memory(data, size, &w, &h, &channels, 3), w, h,
+                          [&](stbi_uc c) { return lut[c]; });
+}
+
+/// A Radiance RGBE (.hdr) file through stb_image, which decodes it to linear floats.
+Image read_hdr(const std::filesystem::path& path, const std::string& bytes) {
+    if (!bytes.starts_with("#?RADIANCE") && !bytes.starts_with("#?RGBE"))
+        fail(path, "not a Radiance HDR file (wrong signature)");
+    const auto [data, size] = stb_input(path, bytes);
+    int w = 0, h = 0, channels = 0;
+    return image_from_stb(path, stbi_loadf_from_memory(data, size, &w, &h, &channels, 3), w, h,
+                          [](float c) { return c; });
 }
 
 // --- Netpbm and PFM headers --------------------------------------------------------------------
@@ -412,7 +435,7 @@ Image read_image(const std::filesystem::path& path) {
     const auto format = image_format_from_extension(path);
     if (!format) {
         fail(path, "unknown image extension '" + path.extension().string() +
-                       "' (supported: .png, .jpg, .jpeg, .ppm, .pfm, .exr)");
+                       "' (supported: .png, .jpg, .jpeg, .ppm, .pfm, .exr, .hdr)");
     }
     const std::string bytes = read_file_bytes(path);
     if (bytes.empty()) fail(path, "the file is empty");
@@ -426,6 +449,8 @@ Image read_image(const std::filesystem::path& path) {
             return read_pfm(path, bytes);
         case ImageFormat::Exr:
             return read_exr(path, bytes);
+        case ImageFormat::Hdr:
+            return read_hdr(path, bytes);
     }
     fail(path, "unsupported image format");
 }

@@ -17,7 +17,8 @@ inline constexpr size_t k_max_image_pixels = size_t{1} << 28;
 ///   replicated, alpha dropped);
 /// - `.ppm` (binary P6 or ASCII P3, maxval up to 65535, sRGB-decoded to linear);
 /// - `.pfm` (PF colour or Pf grey, either byte order, multiplied by |scale|);
-/// - `.exr` (tinyexr; RGB(A) or single channel, linear as stored).
+/// - `.exr` (tinyexr; RGB(A) or single channel, linear as stored);
+/// - `.hdr` (Radiance RGBE through stb_image, linear as stored).
 /// Throws InputError naming the file and the reason for a missing, unreadable, truncated or
 /// malformed file, an unknown extension, or a size beyond the limits above.
 Image read_image(const std::filesystem::path& path);

@@ -133,6 +133,7 @@ Bytes encode(const std::filesystem::path& path, const Image& image, ImageFormat 
         case ImageFormat::Exr:
             return encode_exr(path, image);
         case ImageFormat::Jpeg:
+        case ImageFormat::Hdr:
             break;
     }
     throw InputError("cannot write " + path.string() + ": unsupported image format");
@@ -158,7 +159,7 @@ void write_any_image(const std::filesystem::path& path, const AnyImage& image, s
 
 bool is_supported_image_extension(const std::filesystem::path& path) {
     const auto format = image_format_from_extension(path);
-    return format && *format != ImageFormat::Jpeg;
+    return format && *format != ImageFormat::Jpeg && *format != ImageFormat::Hdr;
 }
 
 void write_image(const std::filesystem::path& path, const Image& image) {

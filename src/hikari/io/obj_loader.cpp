@@ -19,6 +19,7 @@
 #include "hikari/core/error.h"
 #include "hikari/core/huge_page_allocator.h"
 #include "hikari/io/read_file.h"
+#include "hikari/io/texture_files.h"
 
 namespace hikari {
 
@@ -137,9 +138,13 @@ LineTable scan_obj_text(const std::filesystem::path& file, std::string_view text
 
 /// Opens MTL libraries relative to the OBJ's directory. tinyobjloader's own MaterialFileReader
 /// splits its base directory at ':' (a search path), which breaks directories containing ':'.
+/// Remembers which library each material came from, for texture paths and messages.
 class MtlReader : public tinyobj::MaterialReader {
   public:
     explicit MtlReader(std::filesystem::path dir) : m_dir(std::move(dir)) {}
+
+    /// The MTL file of each material, in tinyobjloader's order.
+    const std::vector<std::filesystem::path>& library_of_material() const { return m_library_of; }
 
     bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                     std::map<std::string, int>* material_map, std::string* warn,
@@ -151,11 +156,13 @@ class MtlReader : public tinyobj::MaterialReader {
             return false;
         }
         tinyobj::LoadMtl(material_map, materials, &stream, warn, err);
+        m_library_of.resize(materials->size(), mtl);
         return true;
     }
 
   private:
     std::filesystem::path m_dir;
+    std::vector<std::filesystem::path> m_library_of;
 };
 
 /// tinyobjloader's messages, one per line, as "FILE:LINE: message" (its "(line N.)" moved to the
@@ -189,6 +196,7 @@ struct ParsedObj {
     tinyobj::attrib_t attrib;
     std::vector<tinyobj::shape_t> shapes;
     std::vector<tinyobj::material_t> materials;
+    std::vector<std::filesystem::path> material_library;  ///< the MTL file of each material
     std::vector<std::string> warnings;
 };
 
@@ -232,6 +240,8 @@ ParsedObj parse_with_tinyobj(const std::filesystem::path& file, const std::strin
     }
     // After a successful parse `err` holds only MTL problems: the mesh is still usable.
     parsed.warnings = clean_messages(file, warn + err);
+    parsed.material_library = mtl_reader.library_of_material();
+    parsed.material_library.resize(parsed.materials.size(), file);
     return parsed;
 }
 
@@ -246,7 +256,45 @@ Vec3 to_vec3(const tinyobj::real_t c[3]) {
     return {static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2])};
 }
 
-Material to_material(const std::filesystem::path& file, const tinyobj::material_t& m) {
+/// The line of `library` that gives material `name` its `keyword` statement (map_Kd, ...), or
+/// 0 when it cannot be found: tinyobjloader keeps no line numbers.
+size_t mtl_statement_line(const std::filesystem::path& library, const std::string& name,
+                          std::string_view keyword) {
+    std::ifstream stream(library, std::ios::binary);
+    std::string text;
+    bool in_material = false;
+    for (size_t line = 1; std::getline(stream, text); ++line) {
+        std::istringstream words(text);
+        std::string first, second;
+        words >> first >> second;
+        if (first == "newmtl") in_material = second == name;
+        if (in_material && first == keyword) return line;
+    }
+    return 0;
+}
+
+/// A material's MTL texture statement (`keyword` naming `texture_name`) as an image texture,
+/// the file relative to the MTL library. Fails with the library's file:line when the image
+/// cannot be used.
+ImageTexture mtl_texture(const std::filesystem::path& library, const std::string& material,
+                         std::string_view keyword, std::string texture_name,
+                         TextureFiles& textures) {
+    // MTL files written on Windows separate directories with backslashes.
+    std::replace(texture_name.begin(), texture_name.end(), '\\', '/');
+    ImageTexture t;
+    t.file = texture_name;
+    try {
+        t.pyramid = textures.pyramid(library.parent_path() / texture_name);
+    } catch (const InputError& e) {
+        fail(library, mtl_statement_line(library, material, keyword),
+             fmt::format("{} of material '{}': cannot use texture \"{}\": {}", keyword, material,
+                         texture_name, e.what()));
+    }
+    return t;
+}
+
+Material to_material(const std::filesystem::path& file, const tinyobj::material_t& m,
+                     const std::filesystem::path& library, TextureFiles& textures) {
     Material out;
     out.name = m.name;
     out.ka = to_vec3(m.ambient);
@@ -261,6 +309,12 @@ Material to_material(const std::filesystem::path& file, const tinyobj::material_
         !std::isfinite(static_cast<float>(m.dissolve))) {
         fail(file, 0, "material '" + m.name + "' has a non-finite coefficient");
     }
+    // map_Kd colours ka and kd alike, as a scene material's texture does; map_Ka, when present,
+    // takes over ka.
+    if (!m.diffuse_texname.empty())
+        out.texture = mtl_texture(library, m.name, "map_Kd", m.diffuse_texname, textures);
+    if (!m.ambient_texname.empty())
+        out.ambient_texture = mtl_texture(library, m.name, "map_Ka", m.ambient_texname, textures);
     return out;
 }
 
@@ -473,7 +527,10 @@ MeshData load_obj(const std::filesystem::path& file) {
 
     MeshData mesh;
     mesh.warnings = parsed.warnings;
-    for (const auto& m : parsed.materials) mesh.materials.push_back(to_material(file, m));
+    TextureFiles textures;
+    for (size_t k = 0; k < parsed.materials.size(); ++k)
+        mesh.materials.push_back(
+            to_material(file, parsed.materials[k], parsed.material_library[k], textures));
     const std::vector<PendingTriangle> triangles = triangulate(file, parsed, lines, mesh);
     if (triangles.empty()) {
         fail(file, 0,

@@ -14,6 +14,7 @@
 #include "hikari/io/json_reader.h"
 #include "hikari/io/obj_loader.h"
 #include "hikari/io/read_file.h"
+#include "hikari/io/texture_files.h"
 
 namespace hikari {
 
@@ -22,12 +23,14 @@ namespace {
 /// Largest image side accepted; bigger is surely a typo (the memory check comes later).
 constexpr int k_max_image_side = 65536;
 
-/// State while a scene is being built: material names and where mesh files are found.
+/// State while a scene is being built: material names, where mesh and texture files are found,
+/// and the texture images read so far.
 struct SceneBuilder {
     Scene scene;
     std::map<std::string, uint32_t, std::less<>> material_index;
     std::filesystem::path base_dir;
     std::vector<std::string>& warnings;
+    TextureFiles textures;
 };
 
 Camera parse_camera(const JsonNode& node) {
@@ -60,30 +63,82 @@ CheckerTexture parse_checker_texture(const JsonNode& node) {
     return t;
 }
 
-/// A parser for each kind of a closed set (lights, textures), by its "type" name.
-template <class Kind>
+/// One name of a closed set of words (an enum's values) and its value.
+template <class Value>
+struct Choice {
+    std::string_view name;
+    Value value;
+};
+
+/// The value whose name `node` (a string) holds; any other word is an error listing the names.
+template <class Value, size_t N>
+Value parse_choice(const JsonNode& node, std::string_view what,
+                   const std::array<Choice<Value>, N>& choices) {
+    const std::string word = node.as_string();
+    std::string known;
+    for (size_t k = 0; k < N; ++k) {
+        if (choices[k].name == word) return choices[k].value;
+        known += fmt::format("{}\"{}\"", k == 0 ? "" : k + 1 == N ? " or " : ", ", choices[k].name);
+    }
+    node.fail(fmt::format("unknown {} \"{}\" (expected {})", what, word, known));
+}
+
+constexpr std::array<Choice<TextureWrap>, 2> k_texture_wraps = {{
+    {"repeat", TextureWrap::repeat},
+    {"clamp", TextureWrap::clamp},
+}};
+
+constexpr std::array<Choice<TextureFilter>, 3> k_texture_filters = {{
+    {"nearest", TextureFilter::nearest},
+    {"bilinear", TextureFilter::bilinear},
+    {"trilinear", TextureFilter::trilinear},
+}};
+
+/// An image texture: {"type": "image", "file", "wrap", "filter"}, the file relative to the
+/// scene file. A file that cannot be read as an image fails at "file", naming it.
+ImageTexture parse_image_texture(const JsonNode& node, SceneBuilder& b) {
+    node.expect_object({"type", "file", "wrap", "filter"});
+    ImageTexture t;
+    const JsonNode file_node = node.at("file");
+    t.file = file_node.as_string();
+    try {
+        t.pyramid = b.textures.pyramid(b.base_dir / t.file);
+    } catch (const InputError& e) {
+        file_node.fail(fmt::format("cannot use texture \"{}\": {}", t.file, e.what()));
+    }
+    if (node.has("wrap")) t.wrap = parse_choice(node.at("wrap"), "wrap", k_texture_wraps);
+    if (node.has("filter")) t.filter = parse_choice(node.at("filter"), "filter", k_texture_filters);
+    return t;
+}
+
+/// A parser for each kind of a closed set (lights, textures), by its "type" name; `Context`
+/// is what parsers of that set need besides the node (the scene builder, for textures' files).
+template <class Kind, class... Context>
 struct KindParser {
     std::string_view type;
-    Kind (*parse)(const JsonNode& node);
+    Kind (*parse)(const JsonNode& node, Context&... context);
 };
 
 /// The kind `node`'s "type" names, parsed by its entry of `parsers`; an unknown type is an
 /// error that lists the known ones.
-template <class Kind, size_t N>
+template <class Kind, size_t N, class... Context>
 Kind parse_kind(const JsonNode& node, std::string_view what,
-                const std::array<KindParser<Kind>, N>& parsers) {
+                const std::array<KindParser<Kind, Context...>, N>& parsers, Context&... context) {
     const std::string type = node.at("type").as_string();
     std::string known;
-    for (const KindParser<Kind>& p : parsers) {
-        if (p.type == type) return p.parse(node);
+    for (const KindParser<Kind, Context...>& p : parsers) {
+        if (p.type == type) return p.parse(node, context...);
         known += fmt::format("{}\"{}\"", known.empty() ? "" : " or ", p.type);
     }
     node.at("type").fail(fmt::format("unknown {} type \"{}\" (expected {})", what, type, known));
 }
 
 /// Every texture kind's parser (scene/texture.h): one line per kind.
-constexpr std::array<KindParser<Texture>, 1> k_texture_parsers = {{
-    {"checker", [](const JsonNode& n) -> Texture { return parse_checker_texture(n); }},
+constexpr std::array<KindParser<Texture, SceneBuilder>, 2> k_texture_parsers = {{
+    {"checker",
+     [](const JsonNode& n, SceneBuilder&) -> Texture { return parse_checker_texture(n); }},
+    {"image",
+     [](const JsonNode& n, SceneBuilder& b) -> Texture { return parse_image_texture(n, b); }},
 }};
 
 Sky parse_sky(const JsonNode& node) {
@@ -110,7 +165,7 @@ bool casts_shadow(const JsonNode& object) {
     return !object.has("casts_shadow") || object.at("casts_shadow").as_bool();
 }
 
-Material parse_material(const JsonNode& node, std::string name) {
+Material parse_material(const JsonNode& node, std::string name, SceneBuilder& b) {
     node.expect_object(
         {"ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior", "texture"});
     Material m;
@@ -123,7 +178,7 @@ Material parse_material(const JsonNode& node, std::string name) {
     if (node.has("transparency")) m.transparency = node.at("transparency").as_non_negative();
     if (node.has("ior")) m.ior = node.at("ior").as_positive();
     if (node.has("texture"))
-        m.texture = parse_kind(node.at("texture"), "texture", k_texture_parsers);
+        m.texture = parse_kind(node.at("texture"), "texture", k_texture_parsers, b);
     return m;
 }
 
@@ -358,7 +413,7 @@ Scene parse_scene(std::string_view text, const std::string& file,
     const JsonNode root(doc, file, "");
     root.expect_object({"description", "camera", "background", "sky", "ambient", "depth_cue",
                         "materials", "lights", "objects"});
-    SceneBuilder b{Scene{}, {}, base_dir, warnings};
+    SceneBuilder b{Scene{}, {}, base_dir, warnings, {}};
     if (root.has("description")) root.at("description").as_string();
     if (root.has("camera")) b.scene.camera = parse_camera(root.at("camera"));
     if (root.has("background")) b.scene.background = root.at("background").as_colour();
@@ -370,7 +425,7 @@ Scene parse_scene(std::string_view text, const std::string& file,
         if (!materials.value().is_object()) materials.fail("expected an object: name -> material");
         for (const auto& [name, value] : materials.value().items()) {
             b.scene.materials.push_back(
-                parse_material(JsonNode(value, file, "materials." + name), name));
+                parse_material(JsonNode(value, file, "materials." + name), name, b));
             b.material_index[name] = static_cast<uint32_t>(b.scene.materials.size() - 1);
         }
     }

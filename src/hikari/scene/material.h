@@ -23,6 +23,8 @@ struct Material {
     /// When set, ka and kd are multiplied by the texture's colour at the surface point
     /// (shading/material_eval.h, in every method).
     std::optional<Texture> texture;
+    /// When set, ka is multiplied by this texture instead of `texture` (an MTL file's map_Ka).
+    std::optional<Texture> ambient_texture;
 };
 
 }  // namespace hikari

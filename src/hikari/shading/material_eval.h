@@ -34,11 +34,17 @@ HIKARI_INLINE MaterialSample<F> evaluate_one_material(const Material& m,
     if (m.texture) {
         if (texture_has_lanes<F>(*m.texture)) {
             const Vec3T<F> c = texture_colour(*m.texture, point);
-            s.ka = s.ka * c;
+            if (!m.ambient_texture) s.ka = s.ka * c;
             s.kd = s.kd * c;
         } else {
             s.scalar_only = MaskOf<F>(true);
         }
+    }
+    if (m.ambient_texture) {
+        if (texture_has_lanes<F>(*m.ambient_texture))
+            s.ka = s.ka * texture_colour(*m.ambient_texture, point);
+        else
+            s.scalar_only = MaskOf<F>(true);
     }
     return s;
 }

@@ -8,6 +8,7 @@
 #include "hikari/scene/texture.h"
 #include "hikari/shading/surface.h"
 #include "hikari/shading/textures/checker_texture.h"
+#include "hikari/shading/textures/image_texture.h"
 
 namespace hikari {
 
