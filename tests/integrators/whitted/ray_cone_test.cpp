@@ -1,8 +1,13 @@
 #include "hikari/integrators/whitted/ray_cone.h"
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
+
+#include "hikari/integrators/whitted/whitted.h"
+#include "hikari/io/scene_json.h"
 
 namespace hikari {
 namespace {
@@ -87,6 +92,55 @@ TEST(RayCone, FootprintStretchesAlongTheIncidencePlane) {
     EXPECT_NEAR(std::abs(f.dv_dx), 0.2f, 1e-5f);
     EXPECT_NEAR(std::abs(f.du_dy), 0.1f, 1e-6f);
     EXPECT_NEAR(f.dv_dy, 0.0f, 1e-6f);
+}
+
+/// A textured wall (a 20 × 20 quad at z = `wall_z`, the checker image repeated 20 times across
+/// it) and the objects of JSON text `more` (", {...}" or ""), seen from `eye` looking at
+/// `look_at`: 64 × 64 pixels, 30° field of view, ambient light only.
+Scene wall_scene(Vec3 eye, Vec3 look_at, float wall_z, const char* more) {
+    const std::string json = R"({"camera": {"eye": [)" + std::to_string(eye.x) + "," +
+                             std::to_string(eye.y) + "," + std::to_string(eye.z) +
+                             R"(], "look_at": [)" + std::to_string(look_at.x) + "," +
+                             std::to_string(look_at.y) + "," + std::to_string(look_at.z) +
+                             R"(], "fov_y": 30, "width": 64, "height": 64},
+      "ambient": 1,
+      "materials": {"wall": {"ka": 1, "texture": {"type": "image",
+                                                  "file": "scenes/models/checker.png"}},
+                    "mirror": {"reflectivity": 1}},
+      "objects": [
+        {"type": "triangle", "vertices": [[-10, -10, W], [10, -10, W], [10, 10, W]],
+         "uvs": [[0, 0], [20, 0], [20, 20]], "material": "wall"},
+        {"type": "triangle", "vertices": [[-10, -10, W], [10, 10, W], [-10, 10, W]],
+         "uvs": [[0, 0], [20, 20], [0, 20]], "material": "wall"})" +
+                             std::string(more) + "]}";
+    std::string text = json;
+    for (size_t at = text.find(", W]"); at != std::string::npos; at = text.find(", W]"))
+        text.replace(at, 4, ", " + std::to_string(wall_z) + "]");
+    std::vector<std::string> warnings;
+    return parse_scene(text, "wall.json", HIKARI_SOURCE_DIR, warnings);
+}
+
+TEST(RayCone, MirroredTextureMatchesTheDirectViewAtTheSameDistance) {
+    // Through a flat mirror 5 units ahead, the eye sees a wall 5 units behind it: 15 units of
+    // path, so the texture's level of detail must be that of the wall seen directly from 15
+    // units (the image mirrored left to right). The squares are about a pixel there, so the
+    // level matters: a cone restarted at the mirror would pick one a half level finer.
+    const Scene mirrored = wall_scene({0, 0, 0}, {0, 0, -1}, 5.0f,
+                                      R"(, {"type": "plane", "point": [0, 0, -5],
+                                      "normal": [0, 0, 1], "material": "mirror"})");
+    const Scene direct = wall_scene({0, 0, -10}, {0, 0, 0}, 5.0f, "");
+    const Framebuffer a = render_whitted(mirrored, Film(mirrored.camera));
+    const Framebuffer b = render_whitted(direct, Film(direct.camera));
+    double worst = 0, spread = 0;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const Vec3 p = a.film.linear().at(x, y), q = b.film.linear().at(63 - x, y);
+            worst = std::max(worst, static_cast<double>(std::abs(p.x - q.x)));
+            spread =
+                std::max(spread, static_cast<double>(std::abs(p.x - a.film.linear().at(0, 0).x)));
+        }
+    EXPECT_LT(worst, 0.01);
+    EXPECT_GT(spread, 0.1);  // the texture is still visible: the comparison means something
 }
 
 }  // namespace
