@@ -192,6 +192,22 @@ TEST(ShadeVisibility, TexturedSpotAgreesWithTheRayTracer) {
     EXPECT_GT(testing::psnr(render_depth_sort(scene, Film(scene.camera)), ray), 35.0);
 }
 
+TEST(ShadeVisibility, TexturedSphereAndPlaneAgreeWithTheRayTracer) {
+    // The tessellated sphere and plane carry the ray tracer's analytic mappings: seen from
+    // behind and above, the sphere shows its seam (u = 0 ≡ 1, facing −z) and its north pole.
+    const Scene scene = testing::raster_scene_from(R"({
+      "camera": {"eye": [0.3, 2.2, -3], "look_at": [0, 0.4, 0], "fov_y": 40, "width": 96, "height": 96},
+      "ambient": 1,
+      "materials": {
+        "globe": {"ka": 1, "texture": {"type": "image", "file": "scenes/models/spot_texture.png"}},
+        "floor": {"ka": 1, "texture": {"type": "image", "file": "scenes/models/checker.png"}}},
+      "objects": [
+        {"type": "sphere", "center": [0, 0.8, 0], "radius": 0.8, "material": "globe"},
+        {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "uv_scale": 3, "material": "floor"}]})");
+    const Framebuffer ray = render_whitted(scene, Film(scene.camera));
+    EXPECT_GT(testing::psnr(render_zbuffer(scene, Film(scene.camera)), ray), 30.0);
+}
+
 /// Mean and standard deviation of the grey of row `y` of `fb`.
 std::pair<double, double> row_statistics(const Framebuffer& fb, int y) {
     const Image& image = fb.film.linear();
