@@ -41,8 +41,7 @@ TEST(Tessellate, SphereIsClosedAndWoundOutward) {
         EXPECT_EQ(count, 1);
         EXPECT_EQ(edges.count({e.second, e.first}), 1u);
     }
-    for (size_t v = 0; v < t.positions.size(); ++v)
-        EXPECT_NEAR(length(t.positions[v] - s.center), 2.0f, 1e-5f);
+    for (const Vec3& p : t.positions) EXPECT_NEAR(length(p - s.center), 2.0f, 1e-5f);
 }
 
 TEST(Tessellate, SphereUvsFollowTheRayTracersMapping) {

@@ -135,8 +135,8 @@ Scene random_scene(uint64_t seed) {
     testing::set_scene_triangles(scene.triangles, testing::random_soup(200, 0.8f, seed), id,
                                  [](size_t) { return uint32_t{2}; });
     scene.primitive_count = id;
-    scene.lights.push_back(PointLight{testing::random_point(rng, 6.0f), Vec3(1.0f), true});
-    scene.lights.push_back(DirectionalLight{testing::random_direction(rng), Vec3(1.0f)});
+    scene.lights.emplace_back(PointLight{testing::random_point(rng, 6.0f), Vec3(1.0f), true});
+    scene.lights.emplace_back(DirectionalLight{testing::random_direction(rng), Vec3(1.0f)});
     Camera& cam = scene.camera;
     cam.eye = (seed % 3 == 0) ? scene.spheres[0].center  // inside a sphere
                               : testing::random_point(rng, 8.0f);
