@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "../raster/raster_test_util.h"
 #include "hikari/core/srgb8_encoder.h"
 #include "hikari/frame/depth_cue.h"
 #include "hikari/io/scene_json.h"
@@ -23,13 +24,7 @@ namespace {
 /// The methods that must agree with ray casting (the naive depth sort is meant to fail).
 const char* const k_correct_methods[] = {"zbuffer", "scanline", "depthsort"};
 
-Scene scene_file(const std::string& name, int width, int height) {
-    std::vector<std::string> warnings;
-    Scene s = load_scene_file(std::string(HIKARI_SOURCE_DIR) + "/scenes/" + name, warnings);
-    s.camera.width = width;
-    s.camera.height = height;
-    return s;
-}
+using testing::scene_file;
 
 /// A soup of random, mutually piercing triangles in front of the camera.
 /// `spread` is the half-size of each triangle; with large spreads triangles reach behind the eye

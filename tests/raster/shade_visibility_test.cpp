@@ -143,15 +143,6 @@ TEST(ShadeVisibility, PerspectiveUvOfAFacingQuadIsItsPixelSize) {
     EXPECT_NEAR(got.dv_dy, -0.02f, 1e-6f);
 }
 
-/// An example scene of scenes/ at a test's size.
-Scene example_scene(const std::string& name, int width, int height) {
-    std::vector<std::string> warnings;
-    Scene scene = load_scene_file(std::string(HIKARI_SOURCE_DIR) + "/scenes/" + name, warnings);
-    scene.camera.width = width;
-    scene.camera.height = height;
-    return scene;
-}
-
 TEST(ShadeVisibility, TexturedQuadMatchesAnIndependentBilinearRender) {
     // scenes/models/checker.png magnified on a quad facing the camera: every method's pixel is
     // the bilinear sample of the full-size image at the uv computed here, independently, from
@@ -185,7 +176,7 @@ TEST(ShadeVisibility, TexturedQuadMatchesAnIndependentBilinearRender) {
 TEST(ShadeVisibility, TexturedSpotAgreesWithTheRayTracer) {
     // scenes/spot.json: OBJ uvs, a 1024² texture minified; every raster method picks the same
     // texels and mip levels as the ray tracer's ray cones.
-    const Scene scene = example_scene("spot.json", 96, 96);
+    const Scene scene = testing::scene_file("spot.json", 96, 96);
     const Framebuffer ray = render_whitted(scene, Film(scene.camera));
     EXPECT_GT(testing::psnr(render_zbuffer(scene, Film(scene.camera)), ray), 35.0);
     EXPECT_GT(testing::psnr(render_scanline(scene, Film(scene.camera)), ray), 35.0);
@@ -225,7 +216,7 @@ TEST(ShadeVisibility, GrazingCheckerFloorFadesToTheMeanInEveryMethod) {
     // scenes/checker-floor.json at 160 × 90: the horizon lies at row 42.6. Just below it the
     // floor's squares are far smaller than a pixel: every row there must be the texture's mean
     // grey, flat (no moiré), in both pipelines, and the two pipelines must agree overall.
-    Scene scene = example_scene("checker-floor.json", 160, 90);
+    Scene scene = testing::scene_file("checker-floor.json", 160, 90);
     const MipPyramid& pyramid = *std::get<ImageTexture>(*scene.materials[0].texture).pyramid;
     const Vec3 mean = pyramid.levels.back().at(0, 0);
     const double grey = (mean.x + mean.y + mean.z) / 3.0;
