@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "hikari/core/error.h"
+#include "temp_dir.h"
 
 namespace hikari {
 namespace {
@@ -88,6 +89,34 @@ TEST(SceneJson, TriangleUvsAndPlaneUvScale) {
     EXPECT_TRUE(parse(R"({"objects": [{"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0],
         [0, 1, 0]]}]})")
                     .triangles.uvs.empty());
+}
+
+TEST(SceneJson, MeshUvsKeepOnePerVertex) {
+    // A mesh without vt between a triangle and a mesh with them: its vertices get (0, 0) and
+    // every later vertex keeps its own.
+    testing::TempDir dir;
+    const std::string quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+    testing::write_text(dir / "bare.obj", quad + "f 1 2 3 4\n");
+    testing::write_text(dir / "uv.obj",
+                        quad + "vt 0.5 0.5\nvt 1 0.5\nvt 1 1\nvt 0.5 1\n" + "f 1/1 2/2 3/3 4/4\n");
+    const Scene s = parse(R"({"objects": [
+        {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]],
+         "uvs": [[0.1, 0.2], [0.3, 0.4], [0.5, 0.6]]},
+        {"type": "mesh", "file": ")" +
+                          (dir / "bare.obj").string() + R"("},
+        {"type": "mesh", "file": ")" +
+                          (dir / "uv.obj").string() + R"("}]})");
+    const TriangleSet& t = s.triangles;
+    ASSERT_EQ(t.uvs.size(), t.positions.size());
+    EXPECT_EQ(t.uvs[t.indices[0][2]].y, 0.6f);
+    for (size_t k = 1; k < 3; ++k)
+        for (const uint32_t v : t.indices[k]) EXPECT_EQ(t.uvs[v].x, 0.0f);
+    for (size_t k = 3; k < 5; ++k)
+        for (const uint32_t v : t.indices[k]) {
+            // uv.obj maps its unit quad to [0.5, 1]²: u = 0.5 + x / 2, v = 0.5 + y / 2.
+            EXPECT_EQ(t.uvs[v].x, 0.5f + t.positions[v].x / 2);
+            EXPECT_EQ(t.uvs[v].y, 0.5f + t.positions[v].y / 2);
+        }
 }
 
 TEST(SceneJson, BadUvsGiveJsonPath) {
