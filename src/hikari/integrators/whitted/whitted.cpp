@@ -199,19 +199,22 @@ class WaveTracer {
         }
     }
 
-    /// The local illumination of one hit seen along `direction` by a ray with cone `cone`;
-    /// light l is visible where bit l of `lit` is set when `lit_known`, else where its shadow ray
-    /// finds nothing in the way.
+    /// The local illumination of one hit seen along `direction` by a ray with cone `cone` (its
+    /// texture coordinates and footprint, where the material has a texture); light l is visible
+    /// where bit l of `lit` is set when `lit_known`, else where its shadow ray finds nothing in the
+    /// way.
     Vec3 shade_hit(Vec3 direction, const SurfaceHit& hit, const RayCone& cone, bool lit_known,
                    uint32_t lit) const {
         WhittedHit<float> h{direction, hit.position, hit.geometric_normal, hit.shading_normal,
                             static_cast<int32_t>(hit.material)};
-        const SurfaceUv uv = m_ctx.intersector.surface_uv(hit);
-        const UvFootprint footprint =
-            cone_footprint(cone.width_at(hit.t), direction, hit.geometric_normal, uv);
-        h.u = uv.uv.x, h.v = uv.uv.y;
-        h.du_dx = footprint.du_dx, h.dv_dx = footprint.dv_dx;
-        h.du_dy = footprint.du_dy, h.dv_dy = footprint.dv_dy;
+        if (m_ctx.shading.materials[hit.material].texture) {
+            const SurfaceUv uv = m_ctx.intersector.surface_uv(hit);
+            const UvFootprint footprint =
+                cone_footprint(cone.width_at(hit.t), direction, hit.geometric_normal, uv);
+            h.u = uv.uv.x, h.v = uv.uv.y;
+            h.du_dx = footprint.du_dx, h.dv_dx = footprint.dv_dx;
+            h.du_dy = footprint.du_dy, h.dv_dy = footprint.dv_dy;
+        }
         const auto visible = [&](size_t l, const LightSample& light, const SurfacePoint<float>& s,
                                  bool) {
             if (lit_known) return ((lit >> l) & 1u) != 0;
