@@ -57,6 +57,18 @@ TEST(RayCone, ConvexMirrorWidensTheCone) {
     EXPECT_LT(reflected_cone(camera, width, -2.0f).width_at(2.0f), camera.width_at(5.0f));
 }
 
+TEST(RayCone, TriangleCurvatureFromVertexNormals) {
+    // Three points of a sphere of radius 2 with its outward normals: curvature 1/2.
+    const Vec3 c{1, -1, 0.5f};
+    const std::array<Vec3, 3> n{normalize(Vec3(0.2f, 1, 0.1f)), normalize(Vec3(0.5f, 0.9f, 0)),
+                                normalize(Vec3(0.1f, 0.8f, 0.4f))};
+    const std::array<Vec3, 3> p{c + 2.0f * n[0], c + 2.0f * n[1], c + 2.0f * n[2]};
+    EXPECT_NEAR(triangle_curvature(p, n), 0.5f, 1e-5f);
+    // Normals pointing in (a concave side): −1/2; flat normals: 0.
+    EXPECT_NEAR(triangle_curvature(p, {-n[0], -n[1], -n[2]}), -0.5f, 1e-5f);
+    EXPECT_EQ(triangle_curvature(p, {n[0], n[0], n[0]}), 0.0f);
+}
+
 TEST(RayCone, RefractionHeadOnScalesTheSpreadByEta) {
     const RayCone camera{0.0f, 0.002f};
     const RayCone flat = refracted_cone(camera, 0.01f, 0.0f, 1.0f / 1.5f, 1.0f, 1.0f);

@@ -9,6 +9,7 @@
 // derivatives do in the rasterizer.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "hikari/core/vec.h"
@@ -52,9 +53,24 @@ struct CameraCones {
     }
 };
 
+/// The mean curvature of a smooth-shaded triangle as its vertex normals describe it: along each
+/// edge, how fast the normal turns per unit length, (n_j − n_i)·(p_j − p_i) / |p_j − p_i|², the
+/// mean of the three edges. 1/r on any triangle of a sphere of radius r whose normals point out;
+/// 0 with flat normals. Positive where the surface bulges toward the normals' side.
+inline float triangle_curvature(const std::array<Vec3, 3>& p, const std::array<Vec3, 3>& n) {
+    float sum = 0.0f;
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3;
+        const Vec3 e = p[j] - p[i];
+        const float e2 = dot(e, e);
+        if (e2 > 0.0f) sum += dot(n[j] - n[i], e) / e2;
+    }
+    return sum / 3.0f;
+}
+
 /// The cone of the mirror ray at a hit where the incoming cone has width `width`, on a surface
 /// of signed curvature `curvature` (1/radius: positive where it bulges toward the ray, as a
-/// sphere seen from outside; 0 for planes and triangles). The normal turns by curvature·width
+/// sphere seen from outside; 0 for planes and flat triangles). The normal turns by curvature·width
 /// across the footprint and the mirror direction by twice that: spread' = spread + 2·κ·width
 /// (RTG ch. 20's β, from the curvature rather than from G-buffer normals).
 inline RayCone reflected_cone(const RayCone& incoming, float width, float curvature) {

@@ -245,6 +245,25 @@ class WaveTracer {
         std::copy_n(lane.refract_weight, rays, nodes.refract_weight.begin() + base);
     }
 
+    /// The curvature of the surface lane j hit, positive where it bulges toward its geometric
+    /// normal: a sphere's 1 / radius, a triangle's from its vertex normals, a plane's 0.
+    float object_curvature(const detail::LaneChunk& lane, int j) const {
+        const Scene& scene = m_ctx.scene;
+        if (lane.object[j] == 1) {
+            const TriangleSet& tris = scene.triangles;
+            const auto& [i0, i1, i2] = tris.indices[lane.triangle[j]];
+            const Vec3 p0 = tris.positions[i0], p1 = tris.positions[i1], p2 = tris.positions[i2];
+            // Vertex normals may point either way of the lecture's N: measure along N.
+            const float side = dot(cross(p1 - p0, p2 - p1), tris.normals[i0]) < 0.0f ? -1.0f : 1.0f;
+            return side * triangle_curvature(
+                              {p0, p1, p2}, {tris.normals[i0], tris.normals[i1], tris.normals[i2]});
+        }
+        const int32_t sphere = lane.object[j] - 2;
+        if (sphere >= 0 && static_cast<size_t>(sphere) < scene.spheres.size())
+            return 1.0f / scene.spheres[sphere].radius;
+        return 0.0f;
+    }
+
     /// The ray cones of lane j's mirror and refracted rays (where they exist), after those of
     /// the lanes before it: the incoming cone's width at the hit, its spread bent by a sphere's
     /// curvature (planes and triangles are flat to the cone).
@@ -254,11 +273,9 @@ class WaveTracer {
         const Vec3 ng{lane.geometric_normal[0][j], lane.geometric_normal[1][j],
                       lane.geometric_normal[2][j]};
         const bool entering = dot(ng, d) < 0.0f;
-        // Object codes 2 + i are sphere i: convex seen from outside, concave from inside.
-        const int32_t sphere = lane.object[j] - 2;
-        float curvature = 0.0f;
-        if (sphere >= 0 && static_cast<size_t>(sphere) < m_ctx.scene.spheres.size())
-            curvature = (entering ? 1.0f : -1.0f) / m_ctx.scene.spheres[sphere].radius;
+        // Object code 1 is a triangle, 2 + i sphere i: convex seen from outside, concave from
+        // inside.
+        const float curvature = (entering ? 1.0f : -1.0f) * object_curvature(lane, j);
         if (lane.mirror_weight[j] > 0.0f)
             m_s.next_cones.push_back(reflected_cone(incoming, width, curvature));
         if (lane.refract_weight[j] > 0.0f) {
