@@ -82,7 +82,8 @@ PixelSurface surface_at(const ShadeContext& ctx, uint32_t src, int x, int y) {
                              ctx.ps.clip_positions[idx[2]], ndc_x, ndc_y, s.b);
     s.point = s.b[0] * s.p[0] + s.b[1] * s.p[1] + s.b[2] * s.p[2];
     s.n_interp = s.b[0] * s.n[0] + s.b[1] * s.n[1] + s.b[2] * s.n[2];
-    if (!ctx.tris.uvs.empty()) {
+    // Texture coordinates where a texture will read them.
+    if (!ctx.tris.uvs.empty() && ctx.scene.materials[ctx.tris.material[src]].texture) {
         const std::array<Vec4, 3> clip{ctx.ps.clip_positions[idx[0]], ctx.ps.clip_positions[idx[1]],
                                        ctx.ps.clip_positions[idx[2]]};
         s.tex =
