@@ -26,6 +26,7 @@ struct TraceContext {
     const WhittedScene& shading;
     const Scene& scene;
     CameraCones camera_cones;  ///< the camera rays' cones, by direction
+    bool textured;             ///< some material has a texture: rays carry their cones
     int max_depth;
     uint64_t rays = 0;
 };
@@ -51,7 +52,8 @@ struct WaveScratch {
     std::vector<PathLevel> levels;
     std::vector<Ray> rays, next_rays;
     std::vector<Ray> next_refracted;  ///< the next level's refracted rays, until join_refracted
-    /// The ray cones of `rays`, `next_rays` and `next_refracted`, entry for entry.
+    /// The ray cones of `rays`, `next_rays` and `next_refracted`, entry for entry (empty when
+    /// no material has a texture: nothing reads them).
     std::vector<RayCone> cones, next_cones, next_refracted_cones;
     // Jittered samples: each pixel's random stream, colour sum, and one sample's camera rays.
     std::vector<Pcg32> streams;
@@ -235,7 +237,7 @@ class WaveTracer {
                     m_s.next_rays, nodes.mirror.data() + base);
         append_rays(lane.refract_origin, lane.refract_direction, lane.refract_weight, rays,
                     m_s.next_refracted, nodes.refract.data() + base);
-        for (int j = 0; j < rays; ++j)
+        for (int j = 0; j < rays && m_ctx.textured; ++j)
             if (lane.mirror_weight[j] > 0.0f || lane.refract_weight[j] > 0.0f)
                 spawn_cones(
                     lane, j,
@@ -265,8 +267,8 @@ class WaveTracer {
     }
 
     /// The ray cones of lane j's mirror and refracted rays (where they exist), after those of
-    /// the lanes before it: the incoming cone's width at the hit, its spread bent by a sphere's
-    /// curvature (planes and triangles are flat to the cone).
+    /// the lanes before it: the incoming cone's width at the hit, its spread bent by the
+    /// surface's curvature (object_curvature).
     void spawn_cones(const detail::LaneChunk& lane, int j, const RayCone& incoming) {
         const float width = incoming.width_at(lane.t[j]);
         const Vec3 d{lane.direction[0][j], lane.direction[1][j], lane.direction[2][j]};
@@ -459,6 +461,12 @@ struct WhittedRender {
     }
 };
 
+/// Whether a material of `scene` has a texture (whose footprint the rays' cones give).
+bool has_texture(const Scene& scene) {
+    return std::any_of(scene.materials.begin(), scene.materials.end(),
+                       [](const Material& m) { return m.texture.has_value(); });
+}
+
 /// The BVH's figures for `--stats`.
 void report_bvh(const SceneIntersector& intersector, RenderStats* stats) {
     if (!stats) return;
@@ -482,8 +490,8 @@ Framebuffer render_whitted(const Scene& scene, Film film, const RenderSettings& 
     static_assert(k_tile_size <= k_primary_block);
 
     for_each_tile(cam.width, cam.height, settings.control, [&](const Tile& tile) {
-        TraceContext ctx{render.intersector, render.shading, scene, CameraCones(scene.camera),
-                         whitted.max_depth};
+        TraceContext ctx{render.intersector,        render.shading,     scene,
+                         CameraCones(scene.camera), has_texture(scene), whitted.max_depth};
         thread_local std::unique_ptr<WaveScratch> scratch;
         if (!scratch) scratch = std::make_unique<WaveScratch>();
         WaveTracer wave(ctx, render.primary, render.shader, *scratch);
