@@ -67,8 +67,12 @@ double agreement(const Scene& scene, const char* method) {
 }
 
 TEST(Methods, EveryMethodIsRegistered) {
-    for (const char* name : {"raytrace", "zbuffer", "scanline", "depthsort", "depthsort-naive"})
+    for (const char* name : {"raytrace", "zbuffer", "scanline", "depthsort", "depthsort-naive",
+                             "wireframe", "hiddenline"})
         EXPECT_NE(find_method(name), nullptr) << name;
+    // Only the line methods draw segments (for SVG output).
+    for (const Method& m : methods())
+        EXPECT_EQ(m.draw != nullptr, m.name == "wireframe" || m.name == "hiddenline") << m.name;
     EXPECT_EQ(methods().front().name, "raytrace");
 }
 
@@ -85,6 +89,9 @@ TEST(Methods, EveryMethodDeclaresItsOptions) {
     EXPECT_EQ(option_flags(*find_method("raytrace")), ray);
     for (const char* name : {"zbuffer", "scanline", "depthsort", "depthsort-naive"})
         EXPECT_EQ(option_flags(*find_method(name)), raster) << name;
+    const std::vector<std::string> lines = {"--line-width", "--line-color", "--cull"};
+    for (const char* name : {"wireframe", "hiddenline"})
+        EXPECT_EQ(option_flags(*find_method(name)), lines) << name;
     for (const Method& m : methods()) {
         EXPECT_FALSE(m.options.empty()) << m.name;
         for (const MethodOption& option : m.options) {
@@ -97,7 +104,8 @@ TEST(Methods, EveryMethodDeclaresItsOptions) {
     // Each option once, whichever methods share it.
     std::vector<std::string> all;
     for (const MethodOption* option : method_options()) all.emplace_back(option->flag);
-    EXPECT_EQ(all, (std::vector<std::string>{"--spp", "--max-depth", "--interp", "--cull"}));
+    EXPECT_EQ(all, (std::vector<std::string>{"--spp", "--max-depth", "--interp", "--cull",
+                                             "--line-width", "--line-color"}));
 }
 
 /// The method option called `flag`; fails the test when there is none.
@@ -115,6 +123,10 @@ TEST(Methods, OptionsSetTheirMethodsSettings) {
     std::get<ChoiceOption<Interpolation>>(option_named("--interp").value).field(own) =
         Interpolation::gouraud;
     std::get<ChoiceOption<bool>>(option_named("--cull").value).field(own) = true;
+    std::get<RealOption>(option_named("--line-width").value).field(own) = 2.5f;
+    std::get<ColorOption>(option_named("--line-color").value).field(own) = Vec3(1, 0, 0);
+    EXPECT_EQ(own.lines.width, 2.5f);
+    EXPECT_EQ(own.lines.color, Vec3(1, 0, 0));
     EXPECT_EQ(own.whitted.samples_per_pixel, 9);
     EXPECT_EQ(own.whitted.max_depth, 2);
     EXPECT_EQ(own.raster.interp, Interpolation::gouraud);

@@ -36,8 +36,8 @@ struct Plane {
 
 /// Every triangle of the scene in one flat indexed array, world space.
 struct TriangleSet {
-    std::vector<Vec3> positions;                   ///< world-space vertex positions
-    std::vector<Vec3> normals;                     ///< unit shading normal per vertex
+    std::vector<Vec3> positions;  ///< world-space vertex positions
+    std::vector<Vec3> normals;    ///< unit shading normal per vertex
     /// Texture coordinates per vertex, (0, 0) the image's lower-left corner (the OBJ and OpenGL
     /// convention); empty when no triangle has any.
     std::vector<Vec2> uvs;
@@ -54,6 +54,15 @@ struct TriangleSet {
 
     size_t size() const { return indices.size(); }
 };
+
+/// TriangleSet::edge_flags of a triangle whose three edges are all the model's.
+inline constexpr uint8_t k_all_edges = 7;
+
+/// The edge flags of triangle (a, c, b) given those of (a, b, c): swapping the last two corners
+/// turns edge 0 (a → b) into edge 2 and edge 2 (c → a) into edge 0; edge 1 stays.
+constexpr uint8_t mirrored_edge_flags(uint8_t flags) {
+    return static_cast<uint8_t>((flags & 2) | ((flags & 1) << 2) | ((flags & 4) >> 2));
+}
 
 /// What rays that hit nothing see, by direction (ray tracing; raster methods use the
 /// background colour).

@@ -1,0 +1,27 @@
+#pragma once
+// Anti-aliased lines: a LineDrawing turned into pixels. Each segment is a rectangle of the line
+// width (butt ends, as SVG strokes them); a pixel takes the part of its square the rectangle
+// covers, measured in the segment's own frame (an analytic box filter, exact for lines along
+// the axes), so that the PNG and the SVG of one drawing agree.
+
+#include "hikari/frame/film.h"
+#include "hikari/frame/framebuffer.h"
+#include "hikari/frame/line_drawing.h"
+
+namespace hikari {
+
+/// Coverage of the pixel whose centre is at distance `across` from the segment's axis and at
+/// `along` from its start (both in pixels), for a segment `length` long and `width` wide: the
+/// overlap of the pixel's unit interval with the stroke in each of the two directions,
+/// multiplied.
+float line_coverage(float across, float along, float length, float width);
+
+/// Draws `drawing` over its background into `film` (width × height of the drawing). Coverages
+/// of the segments at a pixel add up (so that two pieces of one edge meet without a seam), up
+/// to 1; the colour is their coverage-weighted mean. With `aov_buffers`, the depth AOV holds
+/// the eye distance, and the id AOV 1 + the id, of the segment covering most of each pixel;
+/// the normal AOV stays zero. Parallel over bands of rows, each taking its segments in the
+/// drawing's order: the result does not depend on the thread count.
+Framebuffer rasterize_lines(const LineDrawing& drawing, Film film, bool aov_buffers);
+
+}  // namespace hikari
