@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <random>
+#include <regex>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -13,9 +14,12 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "hikari/core/color.h"
 #include "hikari/core/srgb8_encoder.h"
 #include "hikari/frame/depth_cue.h"
 #include "hikari/io/scene_json.h"
+#include "hikari/io/svg_write.h"
+#include "hikari/raster/line_raster.h"
 
 namespace hikari {
 namespace {
@@ -188,6 +192,65 @@ TEST(Methods, RenderSceneDepthCuesEveryMethod) {
             for (int a = 0; a < 3; ++a)
                 ASSERT_NEAR(cued.film.linear().pixels[i][a], want[a], 1e-6f) << "pixel " << i;
         }
+    }
+}
+
+/// The drawing an SVG document of svg_document's form shows: its background and lines, read
+/// back from the text (8-bit sRGB colours decoded).
+LineDrawing drawing_from_svg(const std::string& svg, int width, int height, float line_width) {
+    auto colour = [](const std::string& hex) {
+        const auto channel = [&](int k) {
+            return srgb_to_linear(float(std::stoi(hex.substr(1 + 2 * k, 2), nullptr, 16)) / 255);
+        };
+        return Vec3(channel(0), channel(1), channel(2));
+    };
+    LineDrawing d;
+    d.width = width;
+    d.height = height;
+    d.line_width = line_width;
+    std::smatch m;
+    EXPECT_TRUE(std::regex_search(svg, m, std::regex(R"re(<rect [^>]*fill="(#[0-9a-f]{6})")re")));
+    d.background = colour(m[1]);
+    const std::regex line(
+        R"re(<line x1="([-0-9.]+)" y1="([-0-9.]+)" x2="([-0-9.]+)" y2="([-0-9.]+)" stroke="(#[0-9a-f]{6})"/>)re");
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), line); it != std::sregex_iterator();
+         ++it) {
+        LineSegment s;
+        s.a = {std::stof((*it)[1]), std::stof((*it)[2])};
+        s.b = {std::stof((*it)[3]), std::stof((*it)[4])};
+        s.color = colour((*it)[5]);
+        d.segments.push_back(s);
+    }
+    return d;
+}
+
+TEST(Methods, LineMethodsSvgShowsTheirImage) {
+    // The SVG's lines, rasterized again, give the method's own image, depth cue included.
+    Scene scene = scene_file("teapot.json", 96, 72);
+    DepthCue cue;
+    cue.near = 3.0f;
+    cue.far = 12.0f;
+    scene.depth_cue = cue;
+    MethodSettings own;
+    own.lines.width = 1.5f;
+    for (const char* name : {"wireframe", "hiddenline"}) {
+        SCOPED_TRACE(name);
+        const Method& m = *find_method(name);
+        const Framebuffer image = render_scene(m, scene, Film(scene.camera), {}, own);
+        const LineDrawing read = drawing_from_svg(svg_document(draw_scene(m, scene, own)),
+                                                  scene.camera.width, scene.camera.height, 1.5f);
+        EXPECT_GT(read.segments.size(), 100u);
+        const Framebuffer again = rasterize_lines(read, Film(scene.camera), false);
+        double sum = 0;
+        for (size_t i = 0; i < image.film.linear().pixels.size(); ++i)
+            for (int a = 0; a < 3; ++a) {
+                const double d =
+                    linear_to_srgb(std::clamp(image.film.linear().pixels[i][a], 0.0f, 1.0f)) -
+                    linear_to_srgb(std::clamp(again.film.linear().pixels[i][a], 0.0f, 1.0f));
+                sum += d * d;
+            }
+        const double mse = sum / (3.0 * double(image.film.linear().pixels.size()));
+        EXPECT_GT(10 * std::log10(1 / mse), 40.0) << "PSNR in sRGB";
     }
 }
 

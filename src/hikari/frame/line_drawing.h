@@ -49,7 +49,7 @@ float segment_length(const LineSegment& seg);
 LineSegment sub_segment(const LineSegment& seg, float s0, float s1);
 
 /// The drawing as depth cueing (Fig 4.1b, frame/depth_cue.h) shows it: every segment split
-/// into pieces short enough that the cue weight changes by at most 1/128 along one, each piece
+/// into pieces short enough that the cue weight changes by about 1/128 along one, each piece
 /// coloured w·colour + (1 − w)·cue colour at its midpoint's eye distance; the background, at
 /// infinite distance, becomes the cue colour. (The cue's blur has no vector form and is left
 /// out.)

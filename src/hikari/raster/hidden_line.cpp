@@ -21,9 +21,13 @@ constexpr int k_cell_pixels = 8;
 /// Relative depth margin: a face hides a point only when nearer by more than this (float noise
 /// on a face through the point itself, e.g. a third face on an edge, must not hide it).
 constexpr float k_depth_margin = 1e-5f;
-/// A point hides behind a face only when inside it by more than this in barycentric terms;
-/// a point on the face's outline is not hidden by it.
-constexpr float k_inside_margin = 1e-6f;
+/// A point hides behind a face when inside it or on its outline, up to this much outside in
+/// barycentric terms: an edge seen exactly behind a nearer edge (both on one line in the image,
+/// as opposite edges of a box seen along their diagonal plane) is hidden by the faces there,
+/// not drawn twice.
+constexpr float k_inside_margin = -1e-5f;
+/// Pieces shorter than this many pixels are not classified on their own (see visible_pieces).
+constexpr float k_min_piece_pixels = 1e-3f;
 
 /// A projected triangle as a possible occluder: the pixel positions of its corners, its depth
 /// key z = −near / w (raster/screen_triangle.h) as an affine function of the pixel position,
@@ -64,7 +68,9 @@ float barycentric(const Occluder& o, int k, float x, float y) {
     return ((o.x[j] - o.x[i]) * (y - o.y[i]) - (o.y[j] - o.y[i]) * (x - o.x[i])) / o.area2;
 }
 
-bool strictly_inside(const Occluder& o, float x, float y, float margin) {
+/// Whether (x, y) lies inside `o` by more than `margin` in every barycentric coordinate (a
+/// negative margin admits points just outside).
+bool inside(const Occluder& o, float x, float y, float margin) {
     return barycentric(o, 0, x, y) > margin && barycentric(o, 1, x, y) > margin &&
            barycentric(o, 2, x, y) > margin;
 }
@@ -135,7 +141,7 @@ void add_splits(const Occluder& o, const Line& line, std::vector<float>& splits)
     const float g1 = line.zb - (o.zx * (ax + dx) + o.zy * (ay + dy) + o.z0);
     if ((g0 < 0.0f && g1 > 0.0f) || (g0 > 0.0f && g1 < 0.0f)) {
         const float s = g0 / (g0 - g1);
-        if (s > 0.0f && s < 1.0f && strictly_inside(o, ax + s * dx, ay + s * dy, -1e-4f))
+        if (s > 0.0f && s < 1.0f && inside(o, ax + s * dx, ay + s * dy, -1e-4f))
             splits.push_back(s);
     }
 }
@@ -148,7 +154,7 @@ bool hidden_at(const Context& ctx, const Line& line, const Scratch& s, float at)
     for (const uint32_t i : s.candidates) {
         const Occluder& o = ctx.occluders[i];
         if (!(o.zx * x + o.zy * y + o.z0 < z - k_depth_margin * std::abs(z))) continue;
-        if (strictly_inside(o, x, y, k_inside_margin)) return true;
+        if (inside(o, x, y, k_inside_margin)) return true;
     }
     return false;
 }
@@ -162,9 +168,12 @@ void visible_pieces(const Context& ctx, const Line& line, std::vector<LineSegmen
     for (const uint32_t i : s.candidates) add_splits(ctx.occluders[i], line, s.splits);
     std::sort(s.splits.begin(), s.splits.end());
     float run_start = -1.0f;  // start of the visible run being built, −1 while there is none
+    const float min_piece = k_min_piece_pixels / std::max(segment_length(line.seg), 1e-30f);
     for (size_t k = 0; k + 1 < s.splits.size(); ++k) {
         const float s0 = s.splits[k], s1 = s.splits[k + 1];
-        if (!(s1 > s0)) continue;
+        // A sliver between two splits that (nearly) coincide has its midpoint on a face's
+        // outline, where no test can decide: it goes with the piece before it.
+        if (!(s1 - s0 > min_piece)) continue;
         const bool visible = !hidden_at(ctx, line, s, 0.5f * (s0 + s1));
         if (visible && run_start < 0.0f) run_start = s0;
         if (!visible && run_start >= 0.0f) {

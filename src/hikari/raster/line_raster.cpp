@@ -14,9 +14,25 @@ namespace {
 
 constexpr int k_band_rows = 16;
 
-/// Length of the overlap of the pixel interval [x − ½, x + ½] with [lo, hi].
-float overlap(float x, float lo, float hi) {
-    return std::max(0.0f, std::min(x + 0.5f, hi) - std::max(x - 0.5f, lo));
+/// The fraction of a unit pixel square whose projection onto a direction (c, s) falls below
+/// `x`, the pixel's centre projecting to 0. The projection spreads the square's area as the
+/// convolution of two boxes of widths |c| and |s| (a trapezoid); this is its integral.
+float projected_square_cdf(float x, float c, float s) {
+    float a = std::abs(c), b = std::abs(s);
+    if (a < b) std::swap(a, b);
+    const float u = x + 0.5f * (a + b);
+    if (u <= 0.0f) return 0.0f;
+    if (u >= a + b) return 1.0f;
+    if (b < 1e-6f) return u / a;
+    if (u <= b) return u * u / (2.0f * a * b);
+    if (u <= a) return (u - 0.5f * b) / a;
+    const float rest = a + b - u;
+    return 1.0f - rest * rest / (2.0f * a * b);
+}
+
+/// The part of the pixel square (projected onto direction (c, s), centre at x) in [lo, hi].
+float overlap(float x, float lo, float hi, float c, float s) {
+    return projected_square_cdf(hi - x, c, s) - projected_square_cdf(lo - x, c, s);
 }
 
 /// A segment in its own frame: start, unit direction, unit normal, length.
@@ -71,7 +87,8 @@ void draw_segment(const LineDrawing& d, const LineSegment& seg, int row0, int ro
         for (int x = first; x <= last; ++x) {
             const float px = float(x) + 0.5f - f.ax, py = yc - f.ay;
             const float along = f.ux * px + f.uy * py;
-            const float c = line_coverage(f.nx * px + f.ny * py, along, f.length, d.line_width);
+            const float c =
+                line_coverage(f.nx * px + f.ny * py, along, f.length, d.line_width, f.ux, f.uy);
             if (!(c > 0.0f)) continue;
             const size_t i = static_cast<size_t>(y - row0) * d.width + x;
             acc.coverage[i] += c;
@@ -103,9 +120,10 @@ std::vector<std::vector<uint32_t>> bin_segments(const LineDrawing& d, int bands)
 
 }  // namespace
 
-float line_coverage(float across, float along, float length, float width) {
+float line_coverage(float across, float along, float length, float width, float ux, float uy) {
     const float half = 0.5f * width;
-    return overlap(across, -half, half) * overlap(along, 0.0f, length);
+    // The square projects onto the normal (−uy, ux) and onto u with the same two box widths.
+    return overlap(across, -half, half, ux, uy) * overlap(along, 0.0f, length, ux, uy);
 }
 
 Framebuffer rasterize_lines(const LineDrawing& d, Film film, bool aov_buffers) {

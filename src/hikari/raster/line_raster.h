@@ -10,11 +10,13 @@
 
 namespace hikari {
 
-/// Coverage of the pixel whose centre is at distance `across` from the segment's axis and at
-/// `along` from its start (both in pixels), for a segment `length` long and `width` wide: the
-/// overlap of the pixel's unit interval with the stroke in each of the two directions,
-/// multiplied.
-float line_coverage(float across, float along, float length, float width);
+/// Coverage of the pixel whose centre is at distance `across` from the axis of a segment
+/// `length` long and `width` wide, running along unit direction (ux, uy), and at `along` from
+/// its start (all in pixels): the part of the pixel square inside the stroke's band, times the
+/// part between its ends. Each part is exact (the square's area projected onto the band's
+/// normal, or onto its direction, is a trapezoid), so a long line of any angle deposits its
+/// area exactly; only the corners at its ends are approximated by the product.
+float line_coverage(float across, float along, float length, float width, float ux, float uy);
 
 /// Draws `drawing` over its background into `film` (width × height of the drawing). Coverages
 /// of the segments at a pixel add up (so that two pieces of one edge meet without a seam), up
