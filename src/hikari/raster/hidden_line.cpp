@@ -37,8 +37,15 @@ struct Occluder {
     float area2;       ///< twice the signed area in pixels
     float zx, zy, z0;  ///< z(x, y) = zx·x + zy·y + z0
     float z_min;       ///< nearest depth key of its corners
+    Vec2 lo, hi;       ///< its bounding box in pixels
     uint32_t source;   ///< the tessellated triangle it is (part of)
 };
+
+/// Whether the boxes [lo, hi] and [a, b] (any order of corners), widened by `margin`, overlap.
+bool boxes_overlap(Vec2 lo, Vec2 hi, Vec2 a, Vec2 b, float margin) {
+    return std::min(a.x, b.x) - margin <= hi.x && std::max(a.x, b.x) + margin >= lo.x &&
+           std::min(a.y, b.y) - margin <= hi.y && std::max(a.y, b.y) + margin >= lo.y;
+}
 
 Occluder make_occluder(const ScreenTriangle& t) {
     Occluder o{};
@@ -58,6 +65,8 @@ Occluder make_occluder(const ScreenTriangle& t) {
     }
     o.z0 = z[0] - o.zx * o.x[0] - o.zy * o.y[0];
     o.z_min = std::min({z[0], z[1], z[2]});
+    o.lo = {std::min({o.x[0], o.x[1], o.x[2]}), std::min({o.y[0], o.y[1], o.y[2]})};
+    o.hi = {std::max({o.x[0], o.x[1], o.x[2]}), std::max({o.y[0], o.y[1], o.y[2]})};
     o.source = t.source;
     return o;
 }
@@ -117,6 +126,7 @@ void find_candidates(const Context& ctx, const Line& line, Scratch& s) {
         if (o.area2 == 0.0f || o.source == line.own_faces[0] || o.source == line.own_faces[1])
             return;
         if (!(o.z_min < z_far)) return;  // wholly behind the line's farthest point
+        if (!boxes_overlap(o.lo, o.hi, line.seg.a, line.seg.b, 0.5f)) return;
         s.candidates.push_back(i);
     });
 }
@@ -134,7 +144,11 @@ void add_splits(const Occluder& o, const Line& line, std::vector<float>& splits)
         const float wx = o.x[k] - ax, wy = o.y[k] - ay;
         const float s = (wx * ey - wy * ex) / denom;
         const float u = (wx * dy - wy * dx) / denom;
-        if (s > 0.0f && s < 1.0f && u >= -1e-4f && u <= 1.0f + 1e-4f) splits.push_back(s);
+        if (!(s > 0.0f && s < 1.0f && u >= -1e-4f && u <= 1.0f + 1e-4f)) continue;
+        // Passing the outline of a face that lies behind the line there changes nothing (the
+        // face can only come in front where the line pierces its plane, split below).
+        const float x = ax + s * dx, y = ay + s * dy, z = line.za + (line.zb - line.za) * s;
+        if (o.zx * x + o.zy * y + o.z0 < z + k_depth_margin * std::abs(z)) splits.push_back(s);
     }
     // The depth difference line − plane is affine in s: its root is where the line pierces.
     const float g0 = line.za - (o.zx * ax + o.zy * ay + o.z0);
@@ -242,7 +256,9 @@ std::vector<Line> intersection_lines(const Scene& scene, const LineScene& ls, co
         ctx.grid.for_each_in_box(lo, hi, [&](uint32_t j) {
             if (s.stamp[j] == s.epoch) return;
             s.stamp[j] = s.epoch;
-            if (ctx.occluders[j].source > f) s.candidates.push_back(ctx.occluders[j].source);
+            const Occluder& o = ctx.occluders[j];
+            if (o.source > f && boxes_overlap(o.lo, o.hi, lo, hi, 0.0f))
+                s.candidates.push_back(o.source);
         });
         std::sort(s.candidates.begin(), s.candidates.end());
         s.candidates.erase(std::unique(s.candidates.begin(), s.candidates.end()),
