@@ -116,6 +116,49 @@ TEST(HiddenLine, BoxBehindABoxLosesWhatTheFrontOneCovers) {
         }
 }
 
+TEST(HiddenLine, InterpenetratingBoxesAgreeWithRayCastingFromSeveralViewpoints) {
+    // Two boxes that pierce each other: a non-convex union with intersection lines. Reference:
+    // a point is visible when the segment from the eye to it passes through neither box's
+    // inside (a box is convex, so the slab test is exact).
+    testing::TempDir dir;
+    const Vec3 lo_a{-1, -1, -1}, hi_a{1, 1, 1}, lo_b{0.3f, -0.4f, -0.5f}, hi_b{1.8f, 0.6f, 1.6f};
+    testing::write_text(dir / "a.obj", testing::box_obj(lo_a, hi_a));
+    testing::write_text(dir / "b.obj", testing::box_obj(lo_b, hi_b));
+    auto visible = [&](Vec3 eye, Vec3 p) {
+        return !box_hides(eye, p, lo_a, hi_a) && !box_hides(eye, p, lo_b, hi_b);
+    };
+    for (const char* eye : {"[3, 2.5, 4]", "[-2.5, 1.7, 4.2]", "[4.5, -1.2, 0.8]"}) {
+        SCOPED_TRACE(eye);
+        const Scene scene = testing::raster_scene_from(
+            std::string(R"({"camera": {"eye": )") + eye +
+            R"(, "look_at": [0.3, 0, 0.2], "fov_y": 55, "width": 320, "height": 240},
+               "objects": [)" +
+            mesh_object(dir / "a.obj") + ", " + mesh_object(dir / "b.obj") + "]}");
+        const LineDrawing d = draw_hidden_lines(scene, {});
+        // Nothing hidden is drawn...
+        for (const LineSegment& s : d.segments)
+            for (const float t : {0.05f, 0.5f, 0.95f})
+                EXPECT_TRUE(visible(scene.camera.eye, segment_world_point(s, t)))
+                    << "hidden point drawn on a segment " << segment_length(s) << " px long";
+        // ...and every visible point of every box edge is drawn.
+        int missing = 0, checked = 0;
+        for (const auto& [lo, hi] : {std::pair{lo_a, hi_a}, std::pair{lo_b, hi_b}})
+            for (const BoxEdge& e : testing::box_edges(lo, hi))
+                for (int k = 0; k < 200; ++k) {
+                    const Vec3 p = e.p + (e.q - e.p) * ((float(k) + 0.5f) / 200.0f);
+                    if (!visible(scene.camera.eye, p)) continue;
+                    ++checked;
+                    float nearest = INFINITY;
+                    for (const LineSegment& s : d.segments)
+                        nearest = std::min(nearest, testing::distance_to_segment(
+                                                        pixel_of(scene.camera, p), s.a, s.b));
+                    missing += nearest > 0.05f;
+                }
+        EXPECT_GT(checked, 500);
+        EXPECT_EQ(missing, 0);
+    }
+}
+
 TEST(HiddenLine, PiercingTrianglesDrawTheirIntersectionAndHideWhatIsBeyond) {
     // A faces the eye at z = −3; B, edge-on in x = 0, pierces it, reaching from z = −2 (in
     // front) to z = −4 (behind).

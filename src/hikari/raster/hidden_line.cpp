@@ -33,12 +33,12 @@ constexpr float k_min_piece_pixels = 1e-3f;
 /// key z = −near / w (raster/screen_triangle.h) as an affine function of the pixel position,
 /// and its nearest depth.
 struct Occluder {
-    float x[3], y[3];
-    float area2;       ///< twice the signed area in pixels
-    float zx, zy, z0;  ///< z(x, y) = zx·x + zy·y + z0
-    float z_min;       ///< nearest depth key of its corners
-    Vec2 lo, hi;       ///< its bounding box in pixels
-    uint32_t source;   ///< the tessellated triangle it is (part of)
+    float x[3], y[3], z[3];  ///< corners: pixel position and depth key
+    float area2;             ///< twice the signed area in pixels
+    float zx, zy, z0;        ///< z(x, y) = zx·x + zy·y + z0
+    float z_min;             ///< nearest depth key of its corners
+    Vec2 lo, hi;             ///< its bounding box in pixels
+    uint32_t source;         ///< the tessellated triangle it is (part of)
 };
 
 /// Whether the boxes [lo, hi] and [a, b] (any order of corners), widened by `margin`, overlap.
@@ -49,11 +49,11 @@ bool boxes_overlap(Vec2 lo, Vec2 hi, Vec2 a, Vec2 b, float margin) {
 
 Occluder make_occluder(const ScreenTriangle& t) {
     Occluder o{};
-    float z[3];
+    const float* z = o.z;
     for (int k = 0; k < 3; ++k) {
         o.x[k] = t.v[k].position.x;
         o.y[k] = t.v[k].position.y;
-        z[k] = t.v[k].position.z;
+        o.z[k] = t.v[k].position.z;
     }
     const float ex1 = o.x[1] - o.x[0], ey1 = o.y[1] - o.y[0];
     const float ex2 = o.x[2] - o.x[0], ey2 = o.y[2] - o.y[0];
@@ -147,8 +147,9 @@ void add_splits(const Occluder& o, const Line& line, std::vector<float>& splits)
         if (!(s > 0.0f && s < 1.0f && u >= -1e-4f && u <= 1.0f + 1e-4f)) continue;
         // Passing the outline of a face that lies behind the line there changes nothing (the
         // face can only come in front where the line pierces its plane, split below).
-        const float x = ax + s * dx, y = ay + s * dy, z = line.za + (line.zb - line.za) * s;
-        if (o.zx * x + o.zy * y + o.z0 < z + k_depth_margin * std::abs(z)) splits.push_back(s);
+        const float z = line.za + (line.zb - line.za) * s;
+        const float z_face = o.z[k] + u * (o.z[j] - o.z[k]);
+        if (z_face < z + k_depth_margin * std::abs(z)) splits.push_back(s);
     }
     // The depth difference line − plane is affine in s: its root is where the line pierces.
     const float g0 = line.za - (o.zx * ax + o.zy * ay + o.z0);
@@ -167,8 +168,13 @@ bool hidden_at(const Context& ctx, const Line& line, const Scratch& s, float at)
     const float z = line.za + (line.zb - line.za) * at;
     for (const uint32_t i : s.candidates) {
         const Occluder& o = ctx.occluders[i];
-        if (!(o.zx * x + o.zy * y + o.z0 < z - k_depth_margin * std::abs(z))) continue;
-        if (inside(o, x, y, k_inside_margin)) return true;
+        if (!(o.z_min < z)) continue;
+        // Barycentric interpolation of the corners' depths: a convex combination, well
+        // conditioned even where the plane form z0 + zx x + zy y cancels (far, grazing faces).
+        const float b0 = barycentric(o, 0, x, y), b1 = barycentric(o, 1, x, y);
+        const float b2 = barycentric(o, 2, x, y);
+        if (b0 <= k_inside_margin || b1 <= k_inside_margin || b2 <= k_inside_margin) continue;
+        if (b0 * o.z[0] + b1 * o.z[1] + b2 * o.z[2] < z - k_depth_margin * std::abs(z)) return true;
     }
     return false;
 }
