@@ -100,8 +100,8 @@ constexpr std::array k_methods = {
            &with_line_settings<&render_wireframe>, k_line_options,
            &drawing_with_line_settings<&draw_wireframe>},
     Method{"hiddenline",
-           "hidden-line removal (Fig 4.1c, Appel 1967): the visible parts of edges, silhouettes "
-           "and intersection lines, exact in object space",
+           "hidden-line removal (Fig 4.1c, Appel 1967): visible parts of edges, exact in object "
+           "space",
            &with_line_settings<&render_hidden_lines>, k_line_options,
            &drawing_with_line_settings<&draw_hidden_lines>},
 };
