@@ -3,11 +3,13 @@
 
 #include "hikari/methods/registry.h"
 
+#include <cstdio>
 #include <optional>
 #include <random>
 #include <regex>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <variant>
 #include <vector>
 
@@ -225,16 +227,22 @@ LineDrawing drawing_from_svg(const std::string& svg, int width, int height, floa
 }
 
 TEST(Methods, LineMethodsSvgShowsTheirImage) {
-    // The SVG's lines, rasterized again, give the method's own image, depth cue included.
+    // The SVG's lines, rasterized again, give the method's own image (some 58 dB). With a depth
+    // cue, the image is cued pixel by pixel, at the depth of the line covering most of it, and
+    // the SVG line by line: they differ where lines at different depths share a pixel or cover
+    // part of one (some 32 dB for the wireframe, whose front and back lines cross everywhere).
     Scene scene = scene_file("teapot.json", 96, 72);
     DepthCue cue;
     cue.near = 3.0f;
-    cue.far = 12.0f;
-    scene.depth_cue = cue;
+    cue.far = 6.0f;
     MethodSettings own;
     own.lines.width = 1.5f;
-    for (const char* name : {"wireframe", "hiddenline"}) {
-        SCOPED_TRACE(name);
+    for (const auto& [name, cued, min_psnr] :
+         {std::tuple{"wireframe", false, 50.0}, std::tuple{"hiddenline", false, 50.0},
+          std::tuple{"wireframe", true, 30.0}, std::tuple{"hiddenline", true, 30.0}}) {
+        SCOPED_TRACE(std::string(name) + (cued ? ", cued" : ""));
+        scene.depth_cue.reset();
+        if (cued) scene.depth_cue = cue;
         const Method& m = *find_method(name);
         const Framebuffer image = render_scene(m, scene, Film(scene.camera), {}, own);
         const LineDrawing read = drawing_from_svg(svg_document(draw_scene(m, scene, own)),
@@ -250,7 +258,7 @@ TEST(Methods, LineMethodsSvgShowsTheirImage) {
                 sum += d * d;
             }
         const double mse = sum / (3.0 * double(image.film.linear().pixels.size()));
-        EXPECT_GT(10 * std::log10(1 / mse), 40.0) << "PSNR in sRGB";
+        EXPECT_GT(10 * std::log10(1 / mse), min_psnr) << "PSNR in sRGB";
     }
 }
 

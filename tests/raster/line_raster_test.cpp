@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include "hikari/core/color.h"
+
 namespace hikari {
 namespace {
 
@@ -25,9 +27,11 @@ LineSegment segment(Vec2 a, Vec2 b, Vec3 color = Vec3(1.0f)) {
     return s;
 }
 
+/// The sum of the pixels' sRGB-encoded red: for a white line on black, composited in sRGB, the
+/// sum of its coverages.
 double coverage_sum(const Framebuffer& fb) {
     double sum = 0;
-    for (const Vec3& c : fb.film.linear().pixels) sum += c.x;
+    for (const Vec3& c : fb.film.linear().pixels) sum += linear_to_srgb(c.x);
     return sum;
 }
 
@@ -58,17 +62,22 @@ TEST(LineRaster, AxisAlignedCoverageIsExact) {
     EXPECT_NEAR(line_coverage(1.0f, 5.0f, 10.0f, 2.0f, r, r), 0.5f, 1e-6f);
 }
 
-TEST(LineRaster, PiecesOfOneLineJoinWithoutASeam) {
-    LineDrawing whole = drawing(40, 16, 1.5f), pieces = whole;
-    whole.segments.push_back(segment({3.2f, 4.1f}, {35.7f, 11.3f}));
-    const float s = 0.37f;
-    const Vec2 mid{3.2f + s * (35.7f - 3.2f), 4.1f + s * (11.3f - 4.1f)};
-    pieces.segments.push_back(segment({3.2f, 4.1f}, mid));
-    pieces.segments.push_back(segment(mid, {35.7f, 11.3f}));
-    const Framebuffer a = rasterize_lines(whole, Film(40, 16, FilmFormat::linear), false);
-    const Framebuffer b = rasterize_lines(pieces, Film(40, 16, FilmFormat::linear), false);
-    for (size_t i = 0; i < a.film.linear().pixels.size(); ++i)
-        EXPECT_NEAR(a.film.linear().pixels[i].x, b.film.linear().pixels[i].x, 1e-5f) << i;
+TEST(LineRaster, LaterSegmentsGoOverEarlierOnesInSrgb) {
+    LineDrawing d = drawing(20, 20, 2.0f);
+    d.background = Vec3(0.0f, 1.0f, 0.0f);
+    d.segments.push_back(segment({0, 10}, {20, 10}, Vec3(1, 0, 0)));      // red, rows 9 and 10
+    d.segments.push_back(segment({10, 0}, {10, 20}, Vec3(0, 0, 1)));      // blue, columns 9, 10
+    d.segments.push_back(segment({0, 3.5f}, {20, 3.5f}, Vec3(1, 0, 0)));  // half of rows 2, 4
+    const Framebuffer fb = rasterize_lines(d, Film(20, 20, FilmFormat::linear), false);
+    const auto& px = fb.film.linear().pixels;
+    EXPECT_EQ(px[10 * 20 + 10], Vec3(0, 0, 1));  // blue over red where they cross
+    EXPECT_EQ(px[10 * 20 + 3], Vec3(1, 0, 0));
+    EXPECT_EQ(px[15 * 20 + 3], Vec3(0, 1, 0));  // untouched: the background, exactly
+    // Half covered: halfway between green and red in sRGB-encoded values.
+    const Vec3 half = px[2 * 20 + 15];
+    EXPECT_NEAR(linear_to_srgb(half.x), 0.5f, 1e-5f);
+    EXPECT_NEAR(linear_to_srgb(half.y), 0.5f, 1e-5f);
+    EXPECT_NEAR(half.z, 0.0f, 1e-6f);
 }
 
 TEST(LineRaster, ResultDoesNotDependOnThreadCount) {

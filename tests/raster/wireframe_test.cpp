@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "../io/temp_dir.h"
+#include "hikari/core/color.h"
 #include "line_test_util.h"
 #include "raster_test_util.h"
 
@@ -68,7 +69,8 @@ TEST(Wireframe, RasterizedLinesCarryColourDepthAndId) {
     // The bottom edge runs along y = −1 at depth 2: pixel row 30 (centre 30.5 vs. line 30.0
     // gives half coverage on rows 29 and 30).
     const size_t i = 30 * 40 + 20;
-    EXPECT_NEAR(fb.film.linear().pixels[i].x, 0.5f, 1e-5f);
+    // Half covered, composited in sRGB (as SVG renderers do): half of red's encoded value.
+    EXPECT_NEAR(fb.film.linear().pixels[i].x, srgb_to_linear(0.5f), 1e-5f);
     EXPECT_NEAR(fb.film.linear().pixels[i].y, 0.0f, 1e-5f);
     EXPECT_NEAR(fb.depth[i], std::sqrt(4.0f + 1.0f), 1e-3f);  // the point (0, −1, −2)
     EXPECT_EQ(fb.id[i], 1u);

@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "hikari/core/color.h"
 #include "hikari/core/parallel.h"
 #include "hikari/core/ray.h"
 
@@ -59,10 +60,14 @@ bool slab_range(float kx, float ky, float yc, float lo, float hi, float& x0, flo
     return x0 <= x1;
 }
 
-/// Per-pixel sums of one band of rows.
+/// `c` with each channel sRGB-encoded (or decoded).
+Vec3 encode_srgb(Vec3 c) { return {linear_to_srgb(c.x), linear_to_srgb(c.y), linear_to_srgb(c.z)}; }
+Vec3 decode_srgb(Vec3 c) { return {srgb_to_linear(c.x), srgb_to_linear(c.y), srgb_to_linear(c.z)}; }
+
+/// One band of rows being drawn: the colour so far, and the segment covering most of each pixel.
 struct BandAccumulator {
-    std::vector<float> coverage, best_coverage, best_depth;
-    std::vector<Vec3> color;
+    std::vector<Vec3> color;  ///< sRGB-encoded; starts as the background
+    std::vector<float> best_coverage, best_depth;
     std::vector<uint32_t> best_id;
 };
 
@@ -70,8 +75,8 @@ void draw_segment(const LineDrawing& d, const LineSegment& seg, int row0, int ro
                   BandAccumulator& acc) {
     const SegmentFrame f = frame_of(seg);
     if (!(f.length > 0.0f)) return;
-    const float half = 0.5f * d.line_width;
-    const float reach = half + 0.75f;  // a pixel square reaches 1/√2 from its centre
+    const Vec3 color = encode_srgb(seg.color);
+    const float reach = 0.5f * d.line_width + 0.75f;  // a pixel square reaches 1/√2 from its centre
     const int y0 = std::max(row0, static_cast<int>(std::floor(std::min(seg.a.y, seg.b.y) - reach)));
     const int y1 =
         std::min(row1 - 1, static_cast<int>(std::ceil(std::max(seg.a.y, seg.b.y) + reach)));
@@ -91,8 +96,9 @@ void draw_segment(const LineDrawing& d, const LineSegment& seg, int row0, int ro
                 line_coverage(f.nx * px + f.ny * py, along, f.length, d.line_width, f.ux, f.uy);
             if (!(c > 0.0f)) continue;
             const size_t i = static_cast<size_t>(y - row0) * d.width + x;
-            acc.coverage[i] += c;
-            acc.color[i] += c * seg.color;
+            // Porter & Duff's "over", segment after segment, on sRGB-encoded colour: what SVG
+            // renderers do with strokes, so that the SVG file shows this image.
+            acc.color[i] += c * (color - acc.color[i]);
             if (c > acc.best_coverage[i]) {
                 const float s = std::clamp(along / f.length, 0.0f, 1.0f);
                 acc.best_coverage[i] = c;
@@ -133,22 +139,19 @@ Framebuffer rasterize_lines(const LineDrawing& d, Film film, bool aov_buffers) {
     hikari::parallel_for(0, bands, [&](int band) {
         const int row0 = band * k_band_rows, row1 = std::min(d.height, row0 + k_band_rows);
         const size_t n = static_cast<size_t>(row1 - row0) * d.width;
-        BandAccumulator acc{std::vector<float>(n, 0.0f), std::vector<float>(n, 0.0f),
-                            std::vector<float>(n, k_infinity), std::vector<Vec3>(n, Vec3(0.0f)),
+        BandAccumulator acc{std::vector<Vec3>(n, encode_srgb(d.background)),
+                            std::vector<float>(n, 0.0f), std::vector<float>(n, k_infinity),
                             std::vector<uint32_t>(n, k_background_id)};
         for (const uint32_t k : bins[static_cast<size_t>(band)])
             draw_segment(d, d.segments[k], row0, row1, acc);
-        // Lines over the background, their coverage capped at the whole pixel.
         std::vector<Vec3> row(static_cast<size_t>(d.width));
         for (int y = row0; y < row1; ++y) {
             const size_t first = static_cast<size_t>(y - row0) * d.width;
+            const size_t pixel = static_cast<size_t>(y) * d.width;
             for (int x = 0; x < d.width; ++x) {
                 const size_t i = first + x;
-                const float sum = acc.coverage[i], alpha = std::min(sum, 1.0f);
-                const Vec3 line = sum > 0.0f ? acc.color[i] / sum : Vec3(0.0f);
-                row[x] = (1.0f - alpha) * d.background + alpha * line;
+                row[x] = acc.best_coverage[i] > 0.0f ? decode_srgb(acc.color[i]) : d.background;
             }
-            const size_t pixel = static_cast<size_t>(y) * d.width;
             fb.set_colors(pixel, row.data(), row.size());
             if (!aov_buffers) continue;
             std::copy_n(acc.best_depth.begin() + first, d.width, fb.depth.begin() + pixel);

@@ -18,9 +18,11 @@ namespace hikari {
 /// area exactly; only the corners at its ends are approximated by the product.
 float line_coverage(float across, float along, float length, float width, float ux, float uy);
 
-/// Draws `drawing` over its background into `film` (width × height of the drawing). Coverages
-/// of the segments at a pixel add up (so that two pieces of one edge meet without a seam), up
-/// to 1; the colour is their coverage-weighted mean. With `aov_buffers`, the depth AOV holds
+/// Draws `drawing` over its background into `film` (width × height of the drawing): each
+/// segment in turn, over what is there, with its coverage as opacity (Porter & Duff 1984), in
+/// sRGB-encoded colour as SVG renderers composite strokes, so that the SVG of io/svg_write.h shows
+/// the same image; pixels no segment touches keep the background exactly. With `aov_buffers`, the
+/// depth AOV holds
 /// the eye distance, and the id AOV 1 + the id, of the segment covering most of each pixel;
 /// the normal AOV stays zero. Parallel over bands of rows, each taking its segments in the
 /// drawing's order: the result does not depend on the thread count.
