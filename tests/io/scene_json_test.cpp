@@ -42,6 +42,33 @@ TEST(SceneJson, TriangleNormalFollowsLectureWinding) {
     EXPECT_EQ(s.triangles.normals[0], Vec3(0, 0, 1));
 }
 
+TEST(SceneJson, EdgeFlagsFollowTrianglesThroughMirroringTransforms) {
+    testing::TempDir dir;
+    testing::write_text(dir / "quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+    const std::string mesh = R"({"type": "mesh", "file": ")" + (dir / "quad.obj").string();
+    const Scene s =
+        parse(R"({"objects": [
+        {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]},)" +
+              mesh + R"("}, )" + mesh + R"(", "transform": [{"scale": [-1, 1, 1]}]}]})");
+    // A triangle object is all edges; the quad's fan (1 2 3), (1 3 4) leaves out 3→1 and 1→3.
+    ASSERT_EQ(s.triangles.edge_flags.size(), 5u);
+    EXPECT_EQ(s.triangles.edge_flags[0], k_all_edges);
+    EXPECT_EQ(s.triangles.edge_flags[1], 0b011);
+    EXPECT_EQ(s.triangles.edge_flags[2], 0b110);
+    // Mirrored, the corners are swapped to (1 3 2) and (1 4 3): the diagonal 1→3 becomes edge 0
+    // of the first and edge 2 (3→1) of the second.
+    EXPECT_EQ(s.triangles.edge_flags[3], 0b110);
+    EXPECT_EQ(s.triangles.edge_flags[4], 0b011);
+    for (size_t t = 3; t < 5; ++t) {
+        const auto& idx = s.triangles.indices[t];
+        for (int k = 0; k < 3; ++k) {
+            const Vec3 d = s.triangles.positions[idx[(k + 1) % 3]] - s.triangles.positions[idx[k]];
+            const bool diagonal = d.x != 0 && d.y != 0;
+            EXPECT_EQ(((s.triangles.edge_flags[t] >> k) & 1) == 0, diagonal) << t << ", " << k;
+        }
+    }
+}
+
 TEST(SceneJson, TransformStepsApplyInOrder) {
     // scale by 2, then translate by (1, 0, 0): (1, 0, 0) -> (2, 0, 0) -> (3, 0, 0).
     const Scene s = parse(R"({"objects": [

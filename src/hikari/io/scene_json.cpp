@@ -275,6 +275,7 @@ void add_triangle(SceneBuilder& b, const std::array<Vec3, 3>& p, const std::arra
     t.material.push_back(material);
     t.id.push_back(id);
     t.casts_shadow.push_back(shadow ? 1 : 0);
+    t.edge_flags.push_back(k_all_edges);
 }
 
 /// The lecture's face normal N = (P2 − P1) × (P3 − P2) (Fig 4.5), not normalized.
@@ -372,8 +373,13 @@ void parse_mesh(SceneBuilder& b, const JsonNode& node) {
     add_uvs(t, base, mesh.uvs);
     for (size_t k = 0; k < mesh.indices.size(); ++k) {
         auto tri = mesh.indices[k];
-        if (mirrored) std::swap(tri[1], tri[2]);
+        uint8_t edges = mesh.edge_flags[k];
+        if (mirrored) {
+            std::swap(tri[1], tri[2]);
+            edges = mirrored_edge_flags(edges);
+        }
         t.indices.push_back({base + tri[0], base + tri[1], base + tri[2]});
+        t.edge_flags.push_back(edges);
         const int32_t own = mesh.material[k];
         t.material.push_back(named || own < 0 ? fallback : material_of[static_cast<size_t>(own)]);
         t.id.push_back(next_id(b));

@@ -15,17 +15,26 @@ namespace {
 constexpr float k_pi = std::numbers::pi_v<float>;
 
 /// Appends triangle (a, b, c) of vertex indices, turned so that its front (counter-clockwise,
-/// N = (P2 − P1) × (P3 − P2)) faces along `outward`.
+/// N = (P2 − P1) × (P3 − P2)) faces along `outward`. `edges` are its TriangleSet::edge_flags
+/// in the order (a, b, c): which of its edges are grid lines rather than a cell's diagonal.
 void push_triangle(TriangleSet& out, uint32_t a, uint32_t b, uint32_t c, Vec3 outward,
-                   uint32_t material, PrimitiveId id) {
+                   uint32_t material, PrimitiveId id, uint8_t edges) {
     const Vec3& p1 = out.positions[a];
     const Vec3& p2 = out.positions[b];
     const Vec3& p3 = out.positions[c];
-    if (dot(cross(p2 - p1, p3 - p2), outward) < 0.0f) std::swap(b, c);
+    if (dot(cross(p2 - p1, p3 - p2), outward) < 0.0f) {
+        std::swap(b, c);
+        edges = mirrored_edge_flags(edges);
+    }
     out.indices.push_back({a, b, c});
     out.material.push_back(material);
     out.id.push_back(id);
+    out.edge_flags.push_back(edges);
 }
+
+/// Edge flags of the two triangles (a, b, d) and (a, d, c) of a grid cell: the cell's outline,
+/// not its diagonal a–d.
+constexpr uint8_t k_cell_first = 0b011, k_cell_second = 0b110;
 
 uint32_t push_vertex(TriangleSet& out, Vec3 p, Vec3 n, Vec2 uv = {}) {
     out.positions.push_back(p);
@@ -116,17 +125,20 @@ void tessellate_sphere(const Sphere& s, uint32_t lon, TriangleSet& out) {
             vertex(k_pi * float(k) / float(lat), 2 * k_pi * float(m) / float(lon));
     const uint32_t bottom = push_vertex(out, s.center - Vec3(0, s.radius, 0), {0, -1, 0});
     auto ring = [&](uint32_t k, uint32_t m) { return first_ring + (k - 1) * lon + m % lon; };
-    auto tri = [&](uint32_t a, uint32_t b, uint32_t c) {
+    // Edge flags: the latitude/longitude grid lines are the sphere's edges, the diagonals that
+    // split each grid cell into two triangles are not.
+    auto tri = [&](uint32_t a, uint32_t b, uint32_t c, uint8_t edges) {
         const Vec3 centroid = (out.positions[a] + out.positions[b] + out.positions[c]) / 3.0f;
-        push_triangle(out, a, b, c, centroid - s.center, s.material, s.id);
+        push_triangle(out, a, b, c, centroid - s.center, s.material, s.id, edges);
     };
-    for (uint32_t m = 0; m < lon; ++m) tri(top, ring(1, m), ring(1, m + 1));
+    for (uint32_t m = 0; m < lon; ++m) tri(top, ring(1, m), ring(1, m + 1), k_all_edges);
     for (uint32_t k = 1; k + 1 < lat; ++k)
         for (uint32_t m = 0; m < lon; ++m) {
-            tri(ring(k, m), ring(k + 1, m), ring(k + 1, m + 1));
-            tri(ring(k, m), ring(k + 1, m + 1), ring(k, m + 1));
+            tri(ring(k, m), ring(k + 1, m), ring(k + 1, m + 1), k_cell_first);
+            tri(ring(k, m), ring(k + 1, m + 1), ring(k, m + 1), k_cell_second);
         }
-    for (uint32_t m = 0; m < lon; ++m) tri(bottom, ring(lat - 1, m + 1), ring(lat - 1, m));
+    for (uint32_t m = 0; m < lon; ++m)
+        tri(bottom, ring(lat - 1, m + 1), ring(lat - 1, m), k_all_edges);
     map_sphere_uvs(s, first_vertex, first_triangle, out);
 }
 
@@ -149,8 +161,8 @@ void tessellate_plane(const Plane& plane, Vec3 eye, float half_extent, TriangleS
     for (int j = 0; j + 1 < n; ++j)
         for (int i = 0; i + 1 < n; ++i) {
             const uint32_t a = base + j * n + i, b = a + 1, c = a + n, d = c + 1;
-            push_triangle(out, a, b, d, plane.normal, plane.material, plane.id);
-            push_triangle(out, a, d, c, plane.normal, plane.material, plane.id);
+            push_triangle(out, a, b, d, plane.normal, plane.material, plane.id, k_cell_first);
+            push_triangle(out, a, d, c, plane.normal, plane.material, plane.id, k_cell_second);
         }
 }
 
@@ -206,6 +218,7 @@ RasterScene tessellate_scene(const Scene& scene) {
         out.indices.push_back(in.indices[t]);
         out.material.push_back(in.material[t]);
         out.id.push_back(in.id[t]);
+        out.edge_flags.push_back(in.edge_flags.empty() ? k_all_edges : in.edge_flags[t]);
     }
     while (next < items.size()) emit(items[next++]);
     return rs;

@@ -57,6 +57,15 @@ struct TriangleSet {
     size_t size() const { return indices.size(); }
 };
 
+/// TriangleSet::edge_flags of a triangle whose three edges are all the model's.
+inline constexpr uint8_t k_all_edges = 7;
+
+/// The edge flags of triangle (a, c, b) given those of (a, b, c): swapping the last two corners
+/// turns edge 0 (a → b) into edge 2 and edge 2 (c → a) into edge 0; edge 1 stays.
+constexpr uint8_t mirrored_edge_flags(uint8_t flags) {
+    return static_cast<uint8_t>((flags & 2) | ((flags & 1) << 2) | ((flags & 4) >> 2));
+}
+
 /// What rays that hit nothing see, by direction (ray tracing; raster methods use the
 /// background colour).
 struct Sky {
