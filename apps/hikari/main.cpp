@@ -30,6 +30,7 @@
 #include "hikari/io/image_format.h"
 #include "hikari/io/image_write.h"
 #include "hikari/io/scene_json.h"
+#include "hikari/io/svg_write.h"
 #include "hikari/methods/registry.h"
 #include "hikari/version.h"
 
@@ -159,9 +160,10 @@ std::string default_output(const RenderOptions& o) {
 
 /// Refuses, before any work is done, an output the render could not be written to.
 void check_output_path(const std::filesystem::path& output) {
-    if (!is_supported_image_extension(output))
-        throw InputError(fmt::format("{}: unsupported output format (use .png, .ppm, .pfm or .exr)",
-                                     output.string()));
+    if (!is_supported_image_extension(output) && !is_svg_path(output))
+        throw InputError(fmt::format(
+            "{}: unsupported output format (use .png, .ppm, .pfm, .exr, or .svg for lines)",
+            output.string()));
     const std::filesystem::path dir = output.has_parent_path() ? output.parent_path() : ".";
     std::error_code ec;
     if (!std::filesystem::is_directory(dir, ec))
@@ -238,10 +240,47 @@ void write_output(const std::string& output, Framebuffer&& fb, Aov aov) {
     g_writing = false;
 }
 
+/// Refuses, before any work is done, an SVG output that the method or --aov cannot give.
+void check_svg_output(const std::string& output, const Method& method, Aov aov) {
+    if (!is_svg_path(output)) return;
+    if (!method.draw)
+        throw InputError(
+            fmt::format("{}: SVG output is for the line methods (wireframe, "
+                        "hiddenline); method {} draws no lines",
+                        output, method.name));
+    if (aov != Aov::color)
+        throw InputError(
+            fmt::format("{}: SVG output holds the lines' colours; --aov {} needs an "
+                        "image format",
+                        output, choice_name<Aov>(k_aov_choices, aov)));
+}
+
+/// The line method's drawing written as SVG (`-o drawing.svg`).
+int run_drawing(const RenderOptions& o, const Method& method, const std::string& output) {
+    const Scene scene = load_render_scene(o);
+    std::optional<tbb::global_control> thread_limit;
+    if (o.threads > 0)
+        thread_limit.emplace(tbb::global_control::max_allowed_parallelism,
+                             static_cast<size_t>(o.threads));
+    const auto start = Clock::now();
+    const LineDrawing drawing = draw_scene(method, scene, o.own);
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    g_writing = true;
+    if (g_control.cancel.load()) throw Interrupted();
+    write_svg(output, drawing);
+    g_writing = false;
+    if (!o.quiet)
+        fmt::print(stderr, "hikari: wrote {} ({}x{}, {}, {} segments, {:.3f} s)\n", output,
+                   drawing.width, drawing.height, method.name, drawing.segments.size(), seconds);
+    return 0;
+}
+
 int run_render(const RenderOptions& o, const Method& method) {
     const std::string output = o.output.empty() ? default_output(o) : o.output;
     const auto load_start = Clock::now();
     check_output_path(output);
+    check_svg_output(output, method, o.aov);
+    if (is_svg_path(output)) return run_drawing(o, method, output);
     const Scene scene = load_render_scene(o);
     RenderSettings settings;
     settings.control = &g_control;
@@ -355,6 +394,29 @@ CLI::Option* add_method_option(CLI::App& app, const MethodOption& option,
         ->capture_default_str();
 }
 
+/// A method option whose value is a real number in a range.
+CLI::Option* add_method_option(CLI::App& app, const MethodOption& option, const RealOption& real,
+                               MethodSettings& own) {
+    return app.add_option(std::string(option.flag), real.field(own), std::string(option.help))
+        ->check(CLI::Range(real.min, real.max))
+        ->capture_default_str();
+}
+
+/// A method option whose value is a colour R,G,B.
+CLI::Option* add_method_option(CLI::App& app, const MethodOption& option, const ColorOption& color,
+                               MethodSettings& own) {
+    std::optional<Vec3>& target = color.field(own);
+    return app
+        .add_option_function<std::vector<float>>(
+            std::string(option.flag),
+            [&target](const std::vector<float>& rgb) { target = Vec3(rgb[0], rgb[1], rgb[2]); },
+            std::string(option.help))
+        ->delimiter(',')
+        ->expected(3)
+        ->type_name("R,G,B")
+        ->check(CLI::NonNegativeNumber);
+}
+
 /// A method option whose value is one of a few words.
 template <class T>
 CLI::Option* add_method_option(CLI::App& app, const MethodOption& option,
@@ -416,8 +478,9 @@ void add_render_inputs(CLI::App& render, RenderOptions& o) {
                       "Scene file (JSON, see docs/scene-format.md); default: the lecture's "
                       "assignment, a Phong-shaded sphere");
     render.add_option("-o,--output", o.output,
-                      "Output image: .png (8-bit sRGB), .ppm, .pfm or .exr (linear float); "
-                      "default: <scene name>.png in the current directory");
+                      "Output image: .png (8-bit sRGB), .ppm, .pfm or .exr (linear float), or "
+                      ".svg (the segments of wireframe and hiddenline); default: <scene "
+                      "name>.png in the current directory");
     std::vector<std::string> names;
     for (const Method& m : methods()) names.emplace_back(m.name);
     render.add_option("-m,--method", o.method, "Rendering method")

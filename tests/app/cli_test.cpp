@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../io/temp_dir.h"
 #include "hikari/core/image.h"
 #include "hikari/io/image_read.h"
 
@@ -188,6 +189,52 @@ TEST_F(Cli, OptionForeignToTheMethodExitsTwoAndWritesNothing) {
     EXPECT_EQ(file_count(), 0u);
 }
 
+TEST_F(Cli, LineMethodsWriteSvg) {
+    const std::string scene = std::string(HIKARI_SOURCE_DIR) + "/scenes/teapot.json";
+    for (const char* method : {"wireframe", "hiddenline"}) {
+        const Result r = run("render " + scene + " -m " + method +
+                             " --width 80 --line-width 2 --line-color 1,0,0 --cull back -q -o " +
+                             path(std::string(method) + ".svg"));
+        EXPECT_EQ(r.status, 0) << r.output;
+        const std::string svg = hikari::testing::read_text(path(std::string(method) + ".svg"));
+        EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
+        EXPECT_NE(svg.find(R"(viewBox="0 0 80 60")"), std::string::npos);
+        EXPECT_NE(svg.find(R"(stroke-width="2")"), std::string::npos);
+        EXPECT_NE(svg.find(R"(<line )"), std::string::npos);
+        EXPECT_NE(svg.find(R"(stroke="#ff0000")"), std::string::npos);
+    }
+    EXPECT_EQ(file_count(), 2u);
+}
+
+TEST_F(Cli, SvgForAnotherMethodIsAnErrorAndWritesNothing) {
+    for (const char* method : {"raytrace", "zbuffer", "depthsort"}) {
+        const Result r =
+            run(std::string("render --width 16 -m ") + method + " -o " + path("x.svg"));
+        EXPECT_EQ(r.status, 1) << r.output;
+        EXPECT_EQ(r.output.rfind("hikari: error: ", 0), 0u) << r.output;
+        EXPECT_NE(r.output.find("SVG output is for the line methods"), std::string::npos)
+            << r.output;
+    }
+    const Result depth = run("render --width 16 -m wireframe --aov depth -o " + path("x.svg"));
+    EXPECT_EQ(depth.status, 1) << depth.output;
+    EXPECT_EQ(file_count(), 0u);
+}
+
+TEST_F(Cli, LineOptionsAreCheckedAndBelongToTheLineMethods) {
+    EXPECT_EQ(run("render -m wireframe --line-width 0 -o " + path("a.png")).status, 2);
+    EXPECT_EQ(run("render -m wireframe --line-color 1,0 -o " + path("a.png")).status, 2);
+    EXPECT_EQ(run("render -m wireframe --line-color 1,-1,0 -o " + path("a.png")).status, 2);
+    const Result foreign = run("render -m zbuffer --line-width 2 -o " + path("a.png"));
+    EXPECT_EQ(foreign.status, 2);
+    EXPECT_NE(foreign.output.find("--line-width is not an option of method zbuffer"),
+              std::string::npos)
+        << foreign.output;
+    const Result ok =
+        run("render -m hiddenline --width 24 --line-width 0.5 -q -o " + path("ok.png"));
+    EXPECT_EQ(ok.status, 0) << ok.output;
+    EXPECT_EQ(file_count(), 1u);
+}
+
 TEST_F(Cli, HelpSaysWhichMethodsTakeWhichOptions) {
     const Result help = run("render --help");
     EXPECT_EQ(help.status, 0);
@@ -195,6 +242,8 @@ TEST_F(Cli, HelpSaysWhichMethodsTakeWhichOptions) {
         EXPECT_NE(help.output.find(option), std::string::npos) << option;
     EXPECT_NE(help.output.find("options: --spp, --max-depth"), std::string::npos) << help.output;
     EXPECT_NE(help.output.find("options: --interp, --cull"), std::string::npos) << help.output;
+    EXPECT_NE(help.output.find("options: --line-width, --line-color, --cull"), std::string::npos)
+        << help.output;
 }
 
 TEST_F(Cli, StatsReportRaysAndBvh) {

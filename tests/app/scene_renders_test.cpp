@@ -56,6 +56,10 @@ std::vector<Case> cases() {
     }
     all.push_back({"bunny", "-m zbuffer --width 64 --interp gouraud --cull back", "pfm"});
     all.push_back({"teapot", "-m scanline --width 64 --interp flat", "pfm"});
+    // The line methods, as images and as vectors.
+    all.push_back({"teapot", "-m wireframe --width 64", "pfm"});
+    all.push_back({"teapot", "-m hiddenline --width 64 --cull back --line-width 0.5", "pfm"});
+    all.push_back({"lines-piercing", "-m hiddenline --width 96", "svg"});
     return all;
 }
 

@@ -53,6 +53,29 @@ TEST(ObjLoader, QuadBecomesTwoTrianglesInOrder) {
     EXPECT_EQ(mesh.degenerate_skipped, 0u);
 }
 
+TEST(ObjLoader, FanTrianglesFlagOnlyThePolygonOutline) {
+    TempDir dir;
+    // A pentagon fans into (1 2 3), (1 3 4), (1 4 5): edges 1–3 and 1–4 are diagonals.
+    write_text(dir / "pent.obj", std::string(k_quad) + "v 0.5 1.5 0\nf 1 2 3 5 4\nf 1 2 3\n");
+    const MeshData mesh = load_obj(dir / "pent.obj");
+    ASSERT_EQ(mesh.edge_flags.size(), 4u);
+    EXPECT_EQ(mesh.edge_flags[0], 0b011);  // 1→2, 2→3 outline; 3→1 diagonal
+    EXPECT_EQ(mesh.edge_flags[1], 0b010);  // 1→3 and 5→1 diagonals; 3→5 outline
+    EXPECT_EQ(mesh.edge_flags[2], 0b110);  // 1→5 diagonal; 5→4, 4→1 outline
+    EXPECT_EQ(mesh.edge_flags[3], 0b111);  // a triangle is its own outline
+}
+
+TEST(ObjLoader, EdgeFlagsStayWithTheirTrianglesWhenDegenerateOnesAreDropped) {
+    TempDir dir;
+    // The polygon's first fan triangle is degenerate (corners 1, 2, 5 collinear) and dropped:
+    // the flags left are those of the second, (1 5 4).
+    write_text(dir / "d.obj", std::string(k_quad) + "v 2 0 0\nf 1 2 5 4\n");
+    const MeshData mesh = load_obj(dir / "d.obj");
+    ASSERT_EQ(mesh.indices.size(), 1u);
+    ASSERT_EQ(mesh.edge_flags.size(), 1u);
+    EXPECT_EQ(mesh.edge_flags[0], 0b110);  // 1→5 diagonal of the fan, 5→4 and 4→1 outline
+}
+
 TEST(ObjLoader, FlatQuadNormalsEqualFaceNormal) {
     TempDir dir;
     write_text(dir / "quad.obj", std::string(k_quad) + "f 1 2 3 4\n");
@@ -181,6 +204,27 @@ TEST(ObjLoader, MissingMtlIsAWarning) {
         mentions_mtl |= w.find("nowhere.mtl") != std::string::npos;
     }
     EXPECT_TRUE(mentions_mtl);
+}
+
+TEST(ObjLoader, OutOfRangeTextureCoordinateNamesFileAndLine) {
+    TempDir dir;
+    write_text(dir / "bad.obj",
+               std::string(k_quad) + "vt 0 0\nvt 1 0\nf 1/1 2/2 3/1\nf 1/1 3/3 4/2\n");
+    const std::string message = load_error(dir / "bad.obj");
+    EXPECT_EQ(message, (dir / "bad.obj").string() +
+                           ":8: face refers to texture coordinate 3, but the file defines only 2");
+}
+
+TEST(ObjLoader, TextureCoordinatesFollowTheirCorners) {
+    TempDir dir;
+    write_text(dir / "uv.obj",
+               std::string(k_quad) + "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n");
+    const MeshData mesh = load_obj(dir / "uv.obj");
+    ASSERT_EQ(mesh.uvs.size(), mesh.positions.size());
+    for (size_t k = 0; k < mesh.positions.size(); ++k) {
+        EXPECT_EQ(mesh.uvs[k].x, mesh.positions[k].x);
+        EXPECT_EQ(mesh.uvs[k].y, mesh.positions[k].y);
+    }
 }
 
 TEST(ObjLoader, OutOfRangeIndexNamesFileAndLine) {

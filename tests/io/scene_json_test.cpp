@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "hikari/core/error.h"
+#include "temp_dir.h"
 
 namespace hikari {
 namespace {
@@ -41,6 +42,33 @@ TEST(SceneJson, TriangleNormalFollowsLectureWinding) {
     EXPECT_EQ(s.triangles.normals[0], Vec3(0, 0, 1));
 }
 
+TEST(SceneJson, EdgeFlagsFollowTrianglesThroughMirroringTransforms) {
+    testing::TempDir dir;
+    testing::write_text(dir / "quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+    const std::string mesh = R"({"type": "mesh", "file": ")" + (dir / "quad.obj").string();
+    const Scene s =
+        parse(R"({"objects": [
+        {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]},)" +
+              mesh + R"("}, )" + mesh + R"(", "transform": [{"scale": [-1, 1, 1]}]}]})");
+    // A triangle object is all edges; the quad's fan (1 2 3), (1 3 4) leaves out 3→1 and 1→3.
+    ASSERT_EQ(s.triangles.edge_flags.size(), 5u);
+    EXPECT_EQ(s.triangles.edge_flags[0], k_all_edges);
+    EXPECT_EQ(s.triangles.edge_flags[1], 0b011);
+    EXPECT_EQ(s.triangles.edge_flags[2], 0b110);
+    // Mirrored, the corners are swapped to (1 3 2) and (1 4 3): the diagonal 1→3 becomes edge 0
+    // of the first and edge 2 (3→1) of the second.
+    EXPECT_EQ(s.triangles.edge_flags[3], 0b110);
+    EXPECT_EQ(s.triangles.edge_flags[4], 0b011);
+    for (size_t t = 3; t < 5; ++t) {
+        const auto& idx = s.triangles.indices[t];
+        for (int k = 0; k < 3; ++k) {
+            const Vec3 d = s.triangles.positions[idx[(k + 1) % 3]] - s.triangles.positions[idx[k]];
+            const bool diagonal = d.x != 0 && d.y != 0;
+            EXPECT_EQ(((s.triangles.edge_flags[t] >> k) & 1) == 0, diagonal) << t << ", " << k;
+        }
+    }
+}
+
 TEST(SceneJson, TransformStepsApplyInOrder) {
     // scale by 2, then translate by (1, 0, 0): (1, 0, 0) -> (2, 0, 0) -> (3, 0, 0).
     const Scene s = parse(R"({"objects": [
@@ -62,6 +90,74 @@ TEST(SceneJson, WrongValueGivesJsonPath) {
               "s.json: objects[0].center: expected an array of 3 numbers, got an array");
     EXPECT_EQ(error_of(R"({"objects": [{"type": "sphere", "center": [0, 0, 0]}]})"),
               "s.json: objects[0].radius: missing (this key is required)");
+}
+
+TEST(SceneJson, TriangleUvsAndPlaneUvScale) {
+    const Scene s = parse(R"({"objects": [
+        {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]},
+        {"type": "triangle", "vertices": [[0, 0, 1], [1, 0, 1], [0, 1, 1]],
+         "uvs": [[0.5, 0.25], [1, 0], [0, 2]]},
+        {"type": "triangle", "vertices": [[0, 0, 2], [1, 0, 2], [0, 1, 2]]},
+        {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "uv_scale": 3},
+        {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0]}]})");
+    // One uv per vertex from the first object with any on; (0, 0) for those without.
+    ASSERT_EQ(s.triangles.uvs.size(), s.triangles.positions.size());
+    const auto uv_of = [&](size_t triangle, int corner) {
+        return s.triangles.uvs[s.triangles.indices[triangle][corner]];
+    };
+    EXPECT_EQ(uv_of(0, 1).x, 0.0f);
+    EXPECT_EQ(uv_of(1, 0).x, 0.5f);
+    EXPECT_EQ(uv_of(1, 0).y, 0.25f);
+    EXPECT_EQ(uv_of(1, 2).y, 2.0f);
+    EXPECT_EQ(uv_of(2, 2).y, 0.0f);
+    EXPECT_EQ(s.planes[0].uv_scale, 3.0f);
+    EXPECT_EQ(s.planes[1].uv_scale, 1.0f);
+    // No uvs anywhere: none stored.
+    EXPECT_TRUE(parse(R"({"objects": [{"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0],
+        [0, 1, 0]]}]})")
+                    .triangles.uvs.empty());
+}
+
+TEST(SceneJson, MeshUvsKeepOnePerVertex) {
+    // A mesh without vt between a triangle and a mesh with them: its vertices get (0, 0) and
+    // every later vertex keeps its own.
+    testing::TempDir dir;
+    const std::string quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+    testing::write_text(dir / "bare.obj", quad + "f 1 2 3 4\n");
+    testing::write_text(dir / "uv.obj",
+                        quad + "vt 0.5 0.5\nvt 1 0.5\nvt 1 1\nvt 0.5 1\n" + "f 1/1 2/2 3/3 4/4\n");
+    const Scene s = parse(R"({"objects": [
+        {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]],
+         "uvs": [[0.1, 0.2], [0.3, 0.4], [0.5, 0.6]]},
+        {"type": "mesh", "file": ")" +
+                          (dir / "bare.obj").string() + R"("},
+        {"type": "mesh", "file": ")" +
+                          (dir / "uv.obj").string() + R"("}]})");
+    const TriangleSet& t = s.triangles;
+    ASSERT_EQ(t.uvs.size(), t.positions.size());
+    EXPECT_EQ(t.uvs[t.indices[0][2]].y, 0.6f);
+    for (size_t k = 1; k < 3; ++k)
+        for (const uint32_t v : t.indices[k]) EXPECT_EQ(t.uvs[v].x, 0.0f);
+    for (size_t k = 3; k < 5; ++k)
+        for (const uint32_t v : t.indices[k]) {
+            // uv.obj maps its unit quad to [0.5, 1]²: u = 0.5 + x / 2, v = 0.5 + y / 2.
+            EXPECT_EQ(t.uvs[v].x, 0.5f + t.positions[v].x / 2);
+            EXPECT_EQ(t.uvs[v].y, 0.5f + t.positions[v].y / 2);
+        }
+}
+
+TEST(SceneJson, BadUvsGiveJsonPath) {
+    const std::string tri = R"({"objects": [{"type": "triangle",
+        "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "uvs": )";
+    EXPECT_EQ(error_of(tri + "[[0, 0], [1, 0]]}]}"),
+              "s.json: objects[0].uvs: expected an array of 3 elements, got 2");
+    EXPECT_EQ(error_of(tri + "[[0, 0], [1, 0, 0], [0, 1]]}]}"),
+              "s.json: objects[0].uvs[1]: expected an array of 2 elements, got 3");
+    EXPECT_EQ(error_of(tri + R"([[0, 0], [1, 0], [0, "a"]]}]})"),
+              "s.json: objects[0].uvs[2][1]: expected a number, got a string");
+    EXPECT_EQ(error_of(R"({"objects": [{"type": "plane", "point": [0, 0, 0],
+        "normal": [0, 1, 0], "uv_scale": 0}]})"),
+              "s.json: objects[0].uv_scale: expected a positive number");
 }
 
 TEST(SceneJson, UnknownKeySuggestsTheRightOne) {

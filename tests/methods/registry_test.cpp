@@ -3,19 +3,26 @@
 
 #include "hikari/methods/registry.h"
 
+#include <cstdio>
 #include <optional>
 #include <random>
+#include <regex>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <variant>
 #include <vector>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "../raster/raster_test_util.h"
+#include "hikari/core/color.h"
 #include "hikari/core/srgb8_encoder.h"
 #include "hikari/frame/depth_cue.h"
 #include "hikari/io/scene_json.h"
+#include "hikari/io/svg_write.h"
+#include "hikari/raster/line_raster.h"
 
 namespace hikari {
 namespace {
@@ -23,13 +30,7 @@ namespace {
 /// The methods that must agree with ray casting (the naive depth sort is meant to fail).
 const char* const k_correct_methods[] = {"zbuffer", "scanline", "depthsort"};
 
-Scene scene_file(const std::string& name, int width, int height) {
-    std::vector<std::string> warnings;
-    Scene s = load_scene_file(std::string(HIKARI_SOURCE_DIR) + "/scenes/" + name, warnings);
-    s.camera.width = width;
-    s.camera.height = height;
-    return s;
-}
+using testing::scene_file;
 
 /// A soup of random, mutually piercing triangles in front of the camera.
 /// `spread` is the half-size of each triangle; with large spreads triangles reach behind the eye
@@ -67,8 +68,12 @@ double agreement(const Scene& scene, const char* method) {
 }
 
 TEST(Methods, EveryMethodIsRegistered) {
-    for (const char* name : {"raytrace", "zbuffer", "scanline", "depthsort", "depthsort-naive"})
+    for (const char* name : {"raytrace", "zbuffer", "scanline", "depthsort", "depthsort-naive",
+                             "wireframe", "hiddenline"})
         EXPECT_NE(find_method(name), nullptr) << name;
+    // Only the line methods draw segments (for SVG output).
+    for (const Method& m : methods())
+        EXPECT_EQ(m.draw != nullptr, m.name == "wireframe" || m.name == "hiddenline") << m.name;
     EXPECT_EQ(methods().front().name, "raytrace");
 }
 
@@ -85,6 +90,9 @@ TEST(Methods, EveryMethodDeclaresItsOptions) {
     EXPECT_EQ(option_flags(*find_method("raytrace")), ray);
     for (const char* name : {"zbuffer", "scanline", "depthsort", "depthsort-naive"})
         EXPECT_EQ(option_flags(*find_method(name)), raster) << name;
+    const std::vector<std::string> lines = {"--line-width", "--line-color", "--cull"};
+    for (const char* name : {"wireframe", "hiddenline"})
+        EXPECT_EQ(option_flags(*find_method(name)), lines) << name;
     for (const Method& m : methods()) {
         EXPECT_FALSE(m.options.empty()) << m.name;
         for (const MethodOption& option : m.options) {
@@ -97,7 +105,8 @@ TEST(Methods, EveryMethodDeclaresItsOptions) {
     // Each option once, whichever methods share it.
     std::vector<std::string> all;
     for (const MethodOption* option : method_options()) all.emplace_back(option->flag);
-    EXPECT_EQ(all, (std::vector<std::string>{"--spp", "--max-depth", "--interp", "--cull"}));
+    EXPECT_EQ(all, (std::vector<std::string>{"--spp", "--max-depth", "--interp", "--cull",
+                                             "--line-width", "--line-color"}));
 }
 
 /// The method option called `flag`; fails the test when there is none.
@@ -115,6 +124,10 @@ TEST(Methods, OptionsSetTheirMethodsSettings) {
     std::get<ChoiceOption<Interpolation>>(option_named("--interp").value).field(own) =
         Interpolation::gouraud;
     std::get<ChoiceOption<bool>>(option_named("--cull").value).field(own) = true;
+    std::get<RealOption>(option_named("--line-width").value).field(own) = 2.5f;
+    std::get<ColorOption>(option_named("--line-color").value).field(own) = Vec3(1, 0, 0);
+    EXPECT_EQ(own.lines.width, 2.5f);
+    EXPECT_EQ(own.lines.color, Vec3(1, 0, 0));
     EXPECT_EQ(own.whitted.samples_per_pixel, 9);
     EXPECT_EQ(own.whitted.max_depth, 2);
     EXPECT_EQ(own.raster.interp, Interpolation::gouraud);
@@ -176,6 +189,71 @@ TEST(Methods, RenderSceneDepthCuesEveryMethod) {
             for (int a = 0; a < 3; ++a)
                 ASSERT_NEAR(cued.film.linear().pixels[i][a], want[a], 1e-6f) << "pixel " << i;
         }
+    }
+}
+
+/// The drawing an SVG document of svg_document's form shows: its background and lines, read
+/// back from the text (8-bit sRGB colours decoded).
+LineDrawing drawing_from_svg(const std::string& svg, int width, int height, float line_width) {
+    auto colour = [](const std::string& hex) {
+        const auto channel = [&](int k) {
+            return srgb_to_linear(float(std::stoi(hex.substr(1 + 2 * k, 2), nullptr, 16)) / 255);
+        };
+        return Vec3(channel(0), channel(1), channel(2));
+    };
+    LineDrawing d;
+    d.width = width;
+    d.height = height;
+    d.line_width = line_width;
+    std::smatch m;
+    EXPECT_TRUE(std::regex_search(svg, m, std::regex(R"re(<rect [^>]*fill="(#[0-9a-f]{6})")re")));
+    d.background = colour(m[1]);
+    const std::regex line(
+        R"re(<line x1="([-0-9.]+)" y1="([-0-9.]+)" x2="([-0-9.]+)" y2="([-0-9.]+)" stroke="(#[0-9a-f]{6})"/>)re");
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), line); it != std::sregex_iterator();
+         ++it) {
+        LineSegment s;
+        s.a = {std::stof((*it)[1]), std::stof((*it)[2])};
+        s.b = {std::stof((*it)[3]), std::stof((*it)[4])};
+        s.color = colour((*it)[5]);
+        d.segments.push_back(s);
+    }
+    return d;
+}
+
+TEST(Methods, LineMethodsSvgShowsTheirImage) {
+    // The SVG's lines, rasterized again, give the method's own image (some 58 dB). With a depth
+    // cue, the image is cued pixel by pixel, at the depth of the line covering most of it, and
+    // the SVG line by line: they differ where lines at different depths share a pixel or cover
+    // part of one (some 32 dB for the wireframe, whose front and back lines cross everywhere).
+    Scene scene = scene_file("teapot.json", 96, 72);
+    DepthCue cue;
+    cue.near = 3.0f;
+    cue.far = 6.0f;
+    MethodSettings own;
+    own.lines.width = 1.5f;
+    for (const auto& [name, cued, min_psnr] :
+         {std::tuple{"wireframe", false, 50.0}, std::tuple{"hiddenline", false, 50.0},
+          std::tuple{"wireframe", true, 30.0}, std::tuple{"hiddenline", true, 30.0}}) {
+        SCOPED_TRACE(std::string(name) + (cued ? ", cued" : ""));
+        scene.depth_cue.reset();
+        if (cued) scene.depth_cue = cue;
+        const Method& m = *find_method(name);
+        const Framebuffer image = render_scene(m, scene, Film(scene.camera), {}, own);
+        const LineDrawing read = drawing_from_svg(svg_document(draw_scene(m, scene, own)),
+                                                  scene.camera.width, scene.camera.height, 1.5f);
+        EXPECT_GT(read.segments.size(), 100u);
+        const Framebuffer again = rasterize_lines(read, Film(scene.camera), false);
+        double sum = 0;
+        for (size_t i = 0; i < image.film.linear().pixels.size(); ++i)
+            for (int a = 0; a < 3; ++a) {
+                const double d =
+                    linear_to_srgb(std::clamp(image.film.linear().pixels[i][a], 0.0f, 1.0f)) -
+                    linear_to_srgb(std::clamp(again.film.linear().pixels[i][a], 0.0f, 1.0f));
+                sum += d * d;
+            }
+        const double mse = sum / (3.0 * double(image.film.linear().pixels.size()));
+        EXPECT_GT(10 * std::log10(1 / mse), min_psnr) << "PSNR in sRGB";
     }
 }
 

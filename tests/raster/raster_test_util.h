@@ -16,6 +16,15 @@ inline Scene raster_scene_from(const std::string& json) {
     return parse_scene(json, "test.json", HIKARI_SOURCE_DIR, warnings);
 }
 
+/// Example scene `name` of scenes/ (e.g. "bunny.json") at a test's image size.
+inline Scene scene_file(const std::string& name, int width, int height) {
+    std::vector<std::string> warnings;
+    Scene s = load_scene_file(std::string(HIKARI_SOURCE_DIR) + "/scenes/" + name, warnings);
+    s.camera.width = width;
+    s.camera.height = height;
+    return s;
+}
+
 /// Fraction of pixels whose id buffers agree.
 inline double id_agreement(const Framebuffer& a, const Framebuffer& b) {
     size_t same = 0;

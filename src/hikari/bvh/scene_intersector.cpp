@@ -55,6 +55,11 @@ void SceneIntersector::describe_hit(const Ray& ray, float t, HitKind kind, size_
                                     const TriangleHit& triangle, SurfaceHit& hit) const {
     hit.t = t;
     hit.position = ray.at(t);
+    hit.kind = kind;
+    const bool on_triangle = kind == HitKind::triangle;
+    hit.index = on_triangle ? triangle.triangle : static_cast<uint32_t>(index);
+    hit.bary_u = on_triangle ? triangle.u : 0.0f;
+    hit.bary_v = on_triangle ? triangle.v : 0.0f;
     if (kind == HitKind::sphere) {
         const Sphere& s = m_scene.spheres[index];
         hit.geometric_normal = (hit.position - s.center) / s.radius;
@@ -86,6 +91,21 @@ void SceneIntersector::describe_hit(const Ray& ray, float t, HitKind kind, size_
     hit.shading_normal = len2 > 0.0f ? n / std::sqrt(len2) : hit.geometric_normal;
     hit.material = tris.material[triangle.triangle];
     hit.id = tris.id[triangle.triangle];
+}
+
+SurfaceUv SceneIntersector::surface_uv(const SurfaceHit& hit) const {
+    if (hit.kind == HitKind::sphere) return sphere_uv(m_scene.spheres[hit.index], hit.position);
+    if (hit.kind == HitKind::plane) return plane_uv(m_scene.planes[hit.index], hit.position);
+    const TriangleSet& tris = m_scene.triangles;
+    if (hit.kind != HitKind::triangle || tris.uvs.empty()) return {};
+    const auto& [i0, i1, i2] = tris.indices[hit.index];
+    const std::array<Vec2, 3> t{tris.uvs[i0], tris.uvs[i1], tris.uvs[i2]};
+    SurfaceUv out =
+        triangle_uv_gradients({tris.positions[i0], tris.positions[i1], tris.positions[i2]}, t);
+    const float w = 1.0f - hit.bary_u - hit.bary_v;
+    out.uv = {t[0].x * w + t[1].x * hit.bary_u + t[2].x * hit.bary_v,
+              t[0].y * w + t[1].y * hit.bary_u + t[2].y * hit.bary_v};
+    return out;
 }
 
 bool SceneIntersector::occluded_by_triangles(const Ray& ray, Interval range) const {

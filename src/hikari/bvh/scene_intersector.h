@@ -7,9 +7,13 @@
 #include "hikari/bvh/wide_bvh.h"
 #include "hikari/bvh/wide_bvh_packet.h"
 #include "hikari/core/ray.h"
+#include "hikari/geometry/surface_uv.h"
 #include "hikari/scene/scene.h"
 
 namespace hikari {
+
+/// Which kind of primitive a nearest-hit search found.
+enum class HitKind : uint8_t { none, triangle, sphere, plane };
 
 /// Where a ray meets a surface, with what the shading of that point needs.
 struct SurfaceHit {
@@ -19,10 +23,10 @@ struct SurfaceHit {
     Vec3 shading_normal;    ///< unit, interpolated for meshes; same side as geometric
     uint32_t material = 0;  ///< index into Scene::materials
     PrimitiveId id = 0;     ///< the primitive hit
+    HitKind kind = HitKind::none;
+    uint32_t index = 0;            ///< into Scene::triangles, spheres or planes, by `kind`
+    float bary_u = 0, bary_v = 0;  ///< triangles: the weights of corners 1 and 2
 };
-
-/// Which kind of primitive a nearest-hit search found.
-enum class HitKind : uint8_t { none, triangle, sphere, plane };
 
 class SceneIntersector {
   public:
@@ -47,6 +51,11 @@ class SceneIntersector {
     /// another way (e.g. the bulk camera-ray front end, integrators/whitted/primary_hits.h).
     void describe_hit(const Ray& ray, float t, HitKind kind, size_t index,
                       const TriangleHit& triangle, SurfaceHit& hit) const;
+
+    /// The texture coordinates of `hit` (geometry/surface_uv.h): a triangle's interpolated from
+    /// its corners' (zero gradients and (0, 0) where the scene has none), a sphere's and a
+    /// plane's from their mappings.
+    SurfaceUv surface_uv(const SurfaceHit& hit) const;
 
     /// The wide BVH over the scene's triangles.
     const WideBvh& bvh() const { return m_bvh; }

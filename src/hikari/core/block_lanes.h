@@ -57,6 +57,10 @@ struct alignas(64) LaneChunk {
     float shading_normal[3][k_lane_chunk];
     int32_t material[k_lane_chunk];
     uint32_t id[k_lane_chunk];  ///< PrimitiveId of the primitive hit
+    /// Triangle hits (object 1): the triangle's index and the weights of its corners 1 and 2,
+    /// for texture coordinates.
+    uint32_t triangle[k_lane_chunk];
+    float bary[2][k_lane_chunk];
     int32_t lit[k_lane_chunk];  ///< bit l: the shadow ray toward light l is unblocked
 
     // The hits' shadow rays toward one light at a time (scratch of the front end).

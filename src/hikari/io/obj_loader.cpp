@@ -336,7 +336,14 @@ struct CornerHash {
 struct PendingTriangle {
     Corner c[3];
     int32_t material;
+    uint8_t edge_flags;  ///< MeshData::edge_flags
 };
+
+/// Which edges of fan triangle (0, k, k + 1) of an n-corner polygon lie on its outline: 0 → k
+/// only for the first, k → k + 1 always, k + 1 → 0 only for the last (the rest are diagonals).
+uint8_t fan_edge_flags(size_t k, size_t n) {
+    return static_cast<uint8_t>((k == 1 ? 1 : 0) | 2 | (k + 2 == n ? 4 : 0));
+}
 
 /// Checks a corner's indices against the attribute counts; `line` is 0 when unknown.
 void check_corner(const std::filesystem::path& file, size_t line, const tinyobj::index_t& idx,
@@ -402,7 +409,8 @@ std::vector<PendingTriangle> triangulate(const std::filesystem::path& file, cons
                 material = -1;
             }
             for (size_t k = 1; k + 1 < n; ++k) {
-                const PendingTriangle t{{corners[0], corners[k], corners[k + 1]}, material};
+                const PendingTriangle t{
+                    {corners[0], corners[k], corners[k + 1]}, material, fan_edge_flags(k, n)};
                 const Vec3 p1 = vec3_at(parsed.attrib.vertices, t.c[0].v);
                 const Vec3 p2 = vec3_at(parsed.attrib.vertices, t.c[1].v);
                 const Vec3 p3 = vec3_at(parsed.attrib.vertices, t.c[2].v);
@@ -460,6 +468,7 @@ void flatten(const tinyobj::attrib_t& attrib, const std::vector<PendingTriangle>
     std::unordered_map<Corner, uint32_t, CornerHash> vertex_of;
     mesh.indices.reserve(triangles.size());
     mesh.material.reserve(triangles.size());
+    mesh.edge_flags.reserve(triangles.size());
     mesh.positions.reserve(vertex_of_position.size());
     mesh.normals.reserve(vertex_of_position.size());
     for (const PendingTriangle& t : triangles) {
@@ -489,6 +498,7 @@ void flatten(const tinyobj::attrib_t& attrib, const std::vector<PendingTriangle>
         }
         mesh.indices.push_back(tri);
         mesh.material.push_back(t.material);
+        mesh.edge_flags.push_back(t.edge_flags);
     }
 }
 

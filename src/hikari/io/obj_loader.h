@@ -29,6 +29,9 @@ struct MeshData {
     std::vector<std::array<uint32_t, 3>> indices;
     /// Per triangle: an index into `materials`, or -1 when its face has no (known) `usemtl`.
     std::vector<int32_t> material;
+    /// Per triangle, bit k set where its edge from corner k to corner (k + 1) % 3 lies on its
+    /// polygon's outline (TriangleSet::edge_flags): a fan's diagonals are not the model's edges.
+    std::vector<uint8_t> edge_flags;
     /// From the MTL files: Ka, Kd, Ks, Ns, Ni, and d (transparency = 1 - d); reflectivity 0.
     std::vector<Material> materials;
     /// Triangles dropped because they have zero area or non-finite corners. Dropping shifts the

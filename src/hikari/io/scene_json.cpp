@@ -275,13 +275,39 @@ void add_triangle(SceneBuilder& b, const std::array<Vec3, 3>& p, const std::arra
     t.material.push_back(material);
     t.id.push_back(id);
     t.casts_shadow.push_back(shadow ? 1 : 0);
+    t.edge_flags.push_back(k_all_edges);
 }
 
 /// The lecture's face normal N = (P2 − P1) × (P3 − P2) (Fig 4.5), not normalized.
 Vec3 face_normal(Vec3 p1, Vec3 p2, Vec3 p3) { return cross(p2 - p1, p3 - p2); }
 
+/// Appends `uvs` for the vertices from `base` on (the object just added), keeping
+/// TriangleSet::uvs empty until some object has texture coordinates and, from then on, one per
+/// vertex: earlier vertices without any get (0, 0).
+void add_uvs(TriangleSet& t, size_t base, const std::vector<Vec2>& uvs) {
+    if (uvs.empty() && t.uvs.empty()) return;
+    t.uvs.resize(base);
+    t.uvs.insert(t.uvs.end(), uvs.begin(), uvs.end());
+    t.uvs.resize(t.positions.size());
+}
+
+/// A triangle object's optional "uvs": three [u, v] pairs.
+std::vector<Vec2> parse_triangle_uvs(const JsonNode& node) {
+    if (!node.has("uvs")) return {};
+    const JsonNode uvs = node.at("uvs");
+    uvs.expect_array(3);
+    std::vector<Vec2> out;
+    for (size_t k = 0; k < 3; ++k) {
+        const JsonNode uv = uvs.at(k);
+        uv.expect_array(2);
+        out.push_back({uv.at(size_t{0}).as_number(), uv.at(1).as_number()});
+    }
+    return out;
+}
+
 void parse_triangle(SceneBuilder& b, const JsonNode& node) {
-    node.expect_object({"type", "name", "vertices", "material", "transform", "casts_shadow"});
+    node.expect_object(
+        {"type", "name", "vertices", "uvs", "material", "transform", "casts_shadow"});
     const JsonNode v = node.at("vertices");
     v.expect_array(3);
     std::array<Vec3, 3> p{v.at(size_t{0}).as_vec3(), v.at(1).as_vec3(), v.at(2).as_vec3()};
@@ -292,8 +318,11 @@ void parse_triangle(SceneBuilder& b, const JsonNode& node) {
     const Vec3 n = face_normal(p[0], p[1], p[2]);
     if (!(dot(n, n) > 0.0f) || !is_finite(n)) v.fail("degenerate triangle (zero area)");
     const Vec3 unit = normalize(n);
+    const std::vector<Vec2> uvs = parse_triangle_uvs(node);
+    const size_t base = b.scene.triangles.positions.size();
     add_triangle(b, p, {unit, unit, unit}, resolve_material(b, node), next_id(b),
                  casts_shadow(node));
+    add_uvs(b.scene.triangles, base, uvs);
 }
 
 void parse_mesh(SceneBuilder& b, const JsonNode& node) {
@@ -341,10 +370,16 @@ void parse_mesh(SceneBuilder& b, const JsonNode& node) {
         const Vec3 n = transform_normal(normal_matrix, mesh.normals[k]);
         t.normals.push_back(dot(n, n) > 0.0f ? normalize(n) : mesh.normals[k]);
     }
+    add_uvs(t, base, mesh.uvs);
     for (size_t k = 0; k < mesh.indices.size(); ++k) {
         auto tri = mesh.indices[k];
-        if (mirrored) std::swap(tri[1], tri[2]);
+        uint8_t edges = mesh.edge_flags[k];
+        if (mirrored) {
+            std::swap(tri[1], tri[2]);
+            edges = mirrored_edge_flags(edges);
+        }
         t.indices.push_back({base + tri[0], base + tri[1], base + tri[2]});
+        t.edge_flags.push_back(edges);
         const int32_t own = mesh.material[k];
         t.material.push_back(named || own < 0 ? fallback : material_of[static_cast<size_t>(own)]);
         t.id.push_back(next_id(b));
@@ -359,10 +394,12 @@ void parse_object(SceneBuilder& b, const JsonNode& node) {
         b.scene.spheres.push_back({node.at("center").as_vec3(), node.at("radius").as_positive(),
                                    resolve_material(b, node), next_id(b), casts_shadow(node)});
     } else if (type == "plane") {
-        node.expect_object({"type", "name", "point", "normal", "material", "casts_shadow"});
+        node.expect_object(
+            {"type", "name", "point", "normal", "uv_scale", "material", "casts_shadow"});
         b.scene.planes.push_back({node.at("point").as_vec3(),
                                   normalize(node.at("normal").as_direction()),
-                                  resolve_material(b, node), next_id(b), casts_shadow(node)});
+                                  resolve_material(b, node), next_id(b), casts_shadow(node),
+                                  node.has("uv_scale") ? node.at("uv_scale").as_positive() : 1.0f});
     } else if (type == "triangle") {
         parse_triangle(b, node);
     } else if (type == "mesh") {

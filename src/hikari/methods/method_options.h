@@ -9,7 +9,9 @@
 #include <string_view>
 #include <variant>
 
+#include "hikari/core/vec.h"
 #include "hikari/integrators/whitted/whitted.h"
+#include "hikari/raster/line_settings.h"
 #include "hikari/raster/raster_settings.h"
 
 namespace hikari {
@@ -17,7 +19,9 @@ namespace hikari {
 /// Every method's own settings; each method reads its part.
 struct MethodSettings {
     WhittedSettings whitted;  ///< raytrace
-    RasterSettings raster;    ///< zbuffer, scanline, depthsort, depthsort-naive
+    RasterSettings raster;    ///< zbuffer, scanline, depthsort, depthsort-naive (and --cull for
+                              ///< the line methods)
+    LineSettings lines;       ///< wireframe, hiddenline
 };
 
 /// A word an option takes and the value it stands for (`--interp gouraud`).
@@ -64,6 +68,18 @@ struct IntegerOption {
     SettingsField<int> field;  ///< where the value goes
 };
 
+/// An option whose value is a real number in [min, max].
+struct RealOption {
+    float min;                   ///< smallest value accepted
+    float max;                   ///< largest value accepted
+    SettingsField<float> field;  ///< where the value goes
+};
+
+/// An option whose value is a linear RGB colour, R,G,B, each ≥ 0.
+struct ColorOption {
+    SettingsField<std::optional<Vec3>> field;  ///< where the value goes
+};
+
 /// An option whose value is one of a few words.
 template <class T>
 struct ChoiceOption {
@@ -76,7 +92,9 @@ struct MethodOption {
     std::string_view flag;  ///< its one name, e.g. "--spp"
     std::string_view help;  ///< one line for --help
     /// The values it takes and the field they go to.
-    std::variant<IntegerOption, ChoiceOption<Interpolation>, ChoiceOption<bool>> value;
+    std::variant<IntegerOption, RealOption, ColorOption, ChoiceOption<Interpolation>,
+                 ChoiceOption<bool>>
+        value;
 };
 
 }  // namespace hikari

@@ -7,7 +7,9 @@
 #include "hikari/frame/depth_cue.h"
 #include "hikari/integrators/whitted/whitted.h"
 #include "hikari/raster/depth_sort.h"
+#include "hikari/raster/hidden_line.h"
 #include "hikari/raster/scanline.h"
+#include "hikari/raster/wireframe.h"
 #include "hikari/raster/zbuffer.h"
 
 namespace hikari {
@@ -30,6 +32,13 @@ constexpr MethodOption k_ray_tracing_options[] = {
      IntegerOption{1, 64, [](MethodSettings& s) -> int& { return s.whitted.max_depth; }}},
 };
 
+constexpr MethodOption k_cull_option = {
+    "--cull",
+    "Back-face culling (Fig 4.3): back drops triangles whose front (counter-clockwise) side "
+    "faces away from the eye; none keeps all",
+    ChoiceOption<bool>{k_cull_choices,
+                       [](MethodSettings& s) -> bool& { return s.raster.cull_back_faces; }}};
+
 constexpr MethodOption k_raster_options[] = {
     {"--interp",
      "Raster shading interpolation: flat (one colour per polygon), gouraud (vertex colours "
@@ -37,12 +46,36 @@ constexpr MethodOption k_raster_options[] = {
      ChoiceOption<Interpolation>{
          k_interpolation_choices,
          [](MethodSettings& s) -> Interpolation& { return s.raster.interp; }}},
-    {"--cull",
-     "Raster back-face culling (Fig 4.3): back drops triangles whose front (counter-clockwise) "
-     "side faces away from the eye; none keeps all",
-     ChoiceOption<bool>{k_cull_choices,
-                        [](MethodSettings& s) -> bool& { return s.raster.cull_back_faces; }}},
+    k_cull_option,
 };
+
+constexpr MethodOption k_line_options[] = {
+    {"--line-width", "Line width in pixels (wireframe, hidden lines)",
+     RealOption{0.01f, 1000.0f, [](MethodSettings& s) -> float& { return s.lines.width; }}},
+    {"--line-color", "Colour of every line, linear R,G,B (default: each face's material kd)",
+     ColorOption{[](MethodSettings& s) -> std::optional<Vec3>& { return s.lines.color; }}},
+    k_cull_option,
+};
+
+/// The line settings with --cull, which the line methods share with the raster methods.
+LineSettings line_settings(const MethodSettings& own) {
+    LineSettings lines = own.lines;
+    lines.cull_back_faces = own.raster.cull_back_faces;
+    return lines;
+}
+
+/// A line method's render function `render(scene, film, settings, lines)` as a RenderFunction.
+template <auto render>
+Framebuffer with_line_settings(const Scene& scene, Film film, const RenderSettings& settings,
+                               const MethodSettings& own) {
+    return render(scene, std::move(film), settings, line_settings(own));
+}
+
+/// A line method's `draw(scene, lines)` as a DrawFunction.
+template <auto draw>
+LineDrawing drawing_with_line_settings(const Scene& scene, const MethodSettings& own) {
+    return draw(scene, line_settings(own));
+}
 
 constexpr auto k_whitted = &with_own_settings<&render_whitted, &MethodSettings::whitted>;
 template <auto render>
@@ -63,6 +96,14 @@ constexpr std::array k_methods = {
     Method{"depthsort-naive",
            "painter's algorithm by centroid depth (Fig 4.7): fails on overlap cycles",
            k_raster<&render_depth_sort_naive>, k_raster_options},
+    Method{"wireframe", "wireframe (Fig 4.1a): every edge of every face, anti-aliased lines",
+           &with_line_settings<&render_wireframe>, k_line_options,
+           &drawing_with_line_settings<&draw_wireframe>},
+    Method{"hiddenline",
+           "hidden-line removal (Fig 4.1c, Appel 1967): visible parts of edges, exact in object "
+           "space",
+           &with_line_settings<&render_hidden_lines>, k_line_options,
+           &drawing_with_line_settings<&draw_hidden_lines>},
 };
 
 }  // namespace
@@ -84,6 +125,12 @@ Framebuffer render_scene(const Method& method, const Scene& scene, Film film,
     if (!settings.control || !settings.control->cancel.load())
         apply_depth_cue(*scene.depth_cue, scene.background, fb);
     return fb;
+}
+
+LineDrawing draw_scene(const Method& method, const Scene& scene, const MethodSettings& own) {
+    LineDrawing drawing = method.draw(scene, own);
+    if (scene.depth_cue) return depth_cued(drawing, *scene.depth_cue);
+    return drawing;
 }
 
 std::vector<const MethodOption*> method_options() {

@@ -8,6 +8,7 @@
 
 #include "hikari/frame/film.h"
 #include "hikari/frame/framebuffer.h"
+#include "hikari/frame/line_drawing.h"
 #include "hikari/frame/render_settings.h"
 #include "hikari/methods/method_options.h"
 #include "hikari/scene/scene.h"
@@ -19,12 +20,16 @@ namespace hikari {
 using RenderFunction = Framebuffer (*)(const Scene& scene, Film film,
                                        const RenderSettings& settings, const MethodSettings& own);
 
+/// Draws a whole scene as line segments (the line methods; what `-o drawing.svg` writes).
+using DrawFunction = LineDrawing (*)(const Scene& scene, const MethodSettings& own);
+
 /// A named rendering method selectable with `--method`.
 struct Method {
     std::string_view name;                  ///< as given to --method
     std::string_view summary;               ///< one line for --help
     RenderFunction render;                  ///< the method itself
     std::span<const MethodOption> options;  ///< the method options it understands
+    DrawFunction draw = nullptr;            ///< its segments, for the line methods; else null
 };
 
 /// Every registered method, the default (raytrace) first.
@@ -40,6 +45,10 @@ const Method* find_method(std::string_view name);
 /// through settings.control is returned as it is.
 Framebuffer render_scene(const Method& method, const Scene& scene, Film film,
                          RenderSettings settings, const MethodSettings& own);
+
+/// The segments `method` draws for `scene` (method.draw must be set), depth-cued as the scene
+/// asks (frame/line_drawing.h, depth_cued): what its image shows, as vectors.
+LineDrawing draw_scene(const Method& method, const Scene& scene, const MethodSettings& own);
 
 /// Every option of any method, once each, in the order the methods list them.
 std::vector<const MethodOption*> method_options();

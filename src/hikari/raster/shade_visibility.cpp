@@ -50,6 +50,7 @@ struct PixelSurface {
     Vec3 ng;                 ///< unit face normal (−dir for a degenerate triangle)
     bool entering;           ///< the ray meets the side `ng` points to
     Vec3 ng_front;           ///< `ng` turned toward the eye
+    PixelUv tex;             ///< texture coordinates and their pixel derivatives
 };
 
 /// Whether light `l` reaches the pixel's point, by its shadow map or stencil (planes, which no
@@ -68,13 +69,15 @@ bool light_reaches(const ShadeContext& ctx, size_t l, const ShadowQuery& q) {
 
 /// The material at `p` (its texture applied) lit by every light that reaches the pixel of
 /// `shadow`.
-Vec3 shade_point(const ShadeContext& ctx, uint32_t material, Vec3 p, Vec3 n,
-                 const ShadowQuery& shadow, Vec3 to_eye) {
+Vec3 shade_point(const ShadeContext& ctx, uint32_t material, Vec3 p, Vec3 n, Vec3 to_eye,
+                 const PixelUv& tex, const ShadowQuery& shadow) {
     SurfacePoint<float> s;
     s.position = p;
     s.normal = n;
     s.geometric_normal = n;
     s.to_eye = to_eye;
+    s.u = tex.uv.x, s.v = tex.uv.y;
+    s.du_dx = tex.du_dx, s.dv_dx = tex.dv_dx, s.du_dy = tex.du_dy, s.dv_dy = tex.dv_dy;
     const MaterialSample<float> m =
         evaluate_material<float>(ctx.scene.materials.data(), static_cast<int32_t>(material), s);
     const auto lit = [&](size_t l, const LightSample&, const SurfacePoint<float>&, bool) {
@@ -109,6 +112,14 @@ PixelSurface surface_at(const ShadeContext& ctx, uint32_t src, int x, int y) {
                              ctx.ps.clip_positions[idx[2]], ndc_x, ndc_y, s.b);
     s.point = s.b[0] * s.p[0] + s.b[1] * s.p[1] + s.b[2] * s.p[2];
     s.n_interp = s.b[0] * s.n[0] + s.b[1] * s.n[1] + s.b[2] * s.n[2];
+    // Texture coordinates where a texture will read them.
+    if (!ctx.tris.uvs.empty() && ctx.scene.materials[ctx.tris.material[src]].texture) {
+        const std::array<Vec4, 3> clip{ctx.ps.clip_positions[idx[0]], ctx.ps.clip_positions[idx[1]],
+                                       ctx.ps.clip_positions[idx[2]]};
+        s.tex =
+            perspective_uv(clip, {ctx.tris.uvs[idx[0]], ctx.tris.uvs[idx[1]], ctx.tris.uvs[idx[2]]},
+                           ndc_x, ndc_y, ctx.width, ctx.height);
+    }
     s.dir = camera_ray(ctx.frame, x + 0.5f, y + 0.5f).direction;
 
     // Two-sided, as in the ray tracer: the side the eye sees is the front.
@@ -120,7 +131,9 @@ PixelSurface surface_at(const ShadeContext& ctx, uint32_t src, int x, int y) {
     return s;
 }
 
-/// The colour of `s`, seen at `pixel`, interpolated as ctx.interp says.
+/// The colour of `s`, seen at `pixel`, interpolated as ctx.interp says. Textures are looked up
+/// at the pixel in every mode (flat and Gouraud light the corners but texture the pixel, as
+/// texture modulation over Gouraud shading does), so they stay sharp; so are shadows.
 Vec3 shade_surface(const ShadeContext& ctx, const PixelSurface& s, size_t pixel) {
     const uint32_t m = ctx.tris.material[s.src];
     const ShadowQuery shadow{s.point, s.ng_front, pixel};
@@ -128,20 +141,20 @@ Vec3 shade_surface(const ShadeContext& ctx, const PixelSurface& s, size_t pixel)
     switch (ctx.interp) {
         case Interpolation::flat: {  // one colour per polygon, at its centroid
             const Vec3 c = (s.p[0] + s.p[1] + s.p[2]) / 3.0f;
-            return shade_point(ctx, m, c, s.ng_front, shadow, normalize(eye - c));
+            return shade_point(ctx, m, c, s.ng_front, normalize(eye - c), s.tex, shadow);
         }
         case Interpolation::gouraud: {  // shade the vertices, blend the colours
             Vec3 colour(0.0f);
             for (int k = 0; k < 3; ++k) {
                 const Vec3 to_eye = normalize(eye - s.p[k]);
                 const Vec3 nk = facing(s.n[k], s.entering, s.ng_front, -to_eye);
-                colour += s.b[k] * shade_point(ctx, m, s.p[k], nk, shadow, to_eye);
+                colour += s.b[k] * shade_point(ctx, m, s.p[k], nk, to_eye, s.tex, shadow);
             }
             return colour;
         }
         case Interpolation::phong:  // interpolate the normal, shade the pixel
             return shade_point(ctx, m, s.point, facing(s.n_interp, s.entering, s.ng_front, s.dir),
-                               shadow, -s.dir);
+                               -s.dir, s.tex, shadow);
     }
     return Vec3(0.0f);
 }
@@ -198,22 +211,63 @@ Aabb visible_bounds(const ProjectedScene& ps, const VisibilityBuffer& vis) {
 
 }  // namespace
 
-bool perspective_barycentrics(Vec4 c0, Vec4 c1, Vec4 c2, double ndc_x, double ndc_y,
-                              std::array<float, 3>& weights) {
-    // Columns (x, y, w) of the three vertices; Cramer's rule gives λ_i ∝ q · (col_j × col_k).
+namespace {
+
+/// The vectors k_i = col_j × col_k of the columns (x, y, w) of the three clip-space corners:
+/// Cramer's rule gives the point projecting to q = (ndc_x, ndc_y, 1) the weights λ_i ∝ q · k_i.
+std::array<std::array<double, 3>, 3> barycentric_planes(Vec4 c0, Vec4 c1, Vec4 c2) {
     const double col[3][3] = {{c0.x, c0.y, c0.w}, {c1.x, c1.y, c1.w}, {c2.x, c2.y, c2.w}};
-    const double q[3] = {ndc_x, ndc_y, 1.0};
-    double l[3], sum = 0;
+    std::array<std::array<double, 3>, 3> k{};
     for (int i = 0; i < 3; ++i) {
         const double* a = col[(i + 1) % 3];
         const double* b = col[(i + 2) % 3];
-        l[i] = q[0] * (a[1] * b[2] - a[2] * b[1]) + q[1] * (a[2] * b[0] - a[0] * b[2]) +
-               q[2] * (a[0] * b[1] - a[1] * b[0]);
+        k[i] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    }
+    return k;
+}
+
+double dot3(const std::array<double, 3>& a, const double (&q)[3]) {
+    return a[0] * q[0] + a[1] * q[1] + a[2] * q[2];
+}
+
+}  // namespace
+
+bool perspective_barycentrics(Vec4 c0, Vec4 c1, Vec4 c2, double ndc_x, double ndc_y,
+                              std::array<float, 3>& weights) {
+    const auto k = barycentric_planes(c0, c1, c2);
+    const double q[3] = {ndc_x, ndc_y, 1.0};
+    double l[3], sum = 0;
+    for (int i = 0; i < 3; ++i) {
+        l[i] = dot3(k[i], q);
         sum += l[i];
     }
     if (!(std::abs(sum) > 0.0) || !std::isfinite(sum)) return false;
     for (int i = 0; i < 3; ++i) weights[i] = static_cast<float>(l[i] / sum);
     return true;
+}
+
+PixelUv perspective_uv(const std::array<Vec4, 3>& clip, const std::array<Vec2, 3>& uv, double ndc_x,
+                       double ndc_y, int width, int height) {
+    const auto k = barycentric_planes(clip[0], clip[1], clip[2]);
+    const double q[3] = {ndc_x, ndc_y, 1.0};
+    std::array<double, 3> big_k{}, big_u{}, big_v{};
+    for (int i = 0; i < 3; ++i)
+        for (int a = 0; a < 3; ++a) {
+            big_k[a] += k[i][a];
+            big_u[a] += uv[i].x * k[i][a];
+            big_v[a] += uv[i].y * k[i][a];
+        }
+    const double sum = dot3(big_k, q);
+    PixelUv out;
+    if (!(std::abs(sum) > 0.0) || !std::isfinite(sum)) return out;
+    const double u = dot3(big_u, q) / sum, v = dot3(big_v, q) / sum;
+    const double per_x = 2.0 / width / sum, per_y = -2.0 / height / sum;
+    out.uv = {static_cast<float>(u), static_cast<float>(v)};
+    out.du_dx = static_cast<float>((big_u[0] - u * big_k[0]) * per_x);
+    out.dv_dx = static_cast<float>((big_v[0] - v * big_k[0]) * per_x);
+    out.du_dy = static_cast<float>((big_u[1] - u * big_k[1]) * per_y);
+    out.dv_dy = static_cast<float>((big_v[1] - v * big_k[1]) * per_y);
+    return out;
 }
 
 Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,

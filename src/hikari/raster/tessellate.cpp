@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "hikari/core/aabb.h"
+#include "hikari/geometry/surface_uv.h"
 
 namespace hikari {
 
@@ -14,22 +15,74 @@ namespace {
 constexpr float k_pi = std::numbers::pi_v<float>;
 
 /// Appends triangle (a, b, c) of vertex indices, turned so that its front (counter-clockwise,
-/// N = (P2 − P1) × (P3 − P2)) faces along `outward`.
+/// N = (P2 − P1) × (P3 − P2)) faces along `outward`. `edges` are its TriangleSet::edge_flags
+/// in the order (a, b, c): which of its edges are grid lines rather than a cell's diagonal.
 void push_triangle(TriangleSet& out, uint32_t a, uint32_t b, uint32_t c, Vec3 outward,
-                   uint32_t material, PrimitiveId id) {
+                   uint32_t material, PrimitiveId id, uint8_t edges) {
     const Vec3& p1 = out.positions[a];
     const Vec3& p2 = out.positions[b];
     const Vec3& p3 = out.positions[c];
-    if (dot(cross(p2 - p1, p3 - p2), outward) < 0.0f) std::swap(b, c);
+    if (dot(cross(p2 - p1, p3 - p2), outward) < 0.0f) {
+        std::swap(b, c);
+        edges = mirrored_edge_flags(edges);
+    }
     out.indices.push_back({a, b, c});
     out.material.push_back(material);
     out.id.push_back(id);
+    out.edge_flags.push_back(edges);
 }
 
-uint32_t push_vertex(TriangleSet& out, Vec3 p, Vec3 n) {
+/// Edge flags of the two triangles (a, b, d) and (a, d, c) of a grid cell: the cell's outline,
+/// not its diagonal a–d.
+constexpr uint8_t k_cell_first = 0b011, k_cell_second = 0b110;
+
+uint32_t push_vertex(TriangleSet& out, Vec3 p, Vec3 n, Vec2 uv = {}) {
     out.positions.push_back(p);
     out.normals.push_back(n);
+    out.uvs.push_back(uv);
     return static_cast<uint32_t>(out.positions.size() - 1);
+}
+
+/// Marks a vertex without a seam copy yet.
+constexpr uint32_t k_no_copy = ~0u;
+
+/// Whether `p` is one of the sphere's poles (on its y axis), where longitude is undefined.
+bool is_pole(const Sphere& s, Vec3 p) { return p.x == s.center.x && p.z == s.center.z; }
+
+/// A copy of vertex `k` of `out` with texture coordinates `uv`.
+uint32_t copy_vertex(TriangleSet& out, uint32_t k, Vec2 uv) {
+    return push_vertex(out, out.positions[k], out.normals[k], uv);
+}
+
+/// The sphere's longitude/latitude mapping (geometry/surface_uv.h) on its triangles from
+/// `first_triangle` on, as the ray tracer computes it at its hits. Where a triangle straddles
+/// the seam u = 0 ≡ 1, its corners on the u < 1/2 side are copies with u + 1; where a corner is
+/// a pole (u undefined), it is a copy with the mean u of the other two. Copies share position
+/// and normal, so the rasterized shape is the same.
+void map_sphere_uvs(const Sphere& s, size_t first_vertex, size_t first_triangle, TriangleSet& out) {
+    for (size_t k = first_vertex; k < out.positions.size(); ++k)
+        out.uvs[k] = sphere_uv(s, out.positions[k]).uv;
+    std::vector<uint32_t> wrapped(out.positions.size(), k_no_copy);
+    for (size_t t = first_triangle; t < out.indices.size(); ++t) {
+        auto& tri = out.indices[t];
+        float lo = 1.0f, hi = 0.0f;
+        for (const uint32_t k : tri)
+            if (!is_pole(s, out.positions[k])) {
+                lo = std::min(lo, out.uvs[k].x), hi = std::max(hi, out.uvs[k].x);
+            }
+        if (hi - lo > 0.5f)
+            for (uint32_t& k : tri)
+                if (!is_pole(s, out.positions[k]) && out.uvs[k].x < 0.5f) {
+                    if (wrapped[k] == k_no_copy)
+                        wrapped[k] = copy_vertex(out, k, {out.uvs[k].x + 1.0f, out.uvs[k].y});
+                    k = wrapped[k];
+                }
+        for (int c = 0; c < 3; ++c)
+            if (is_pole(s, out.positions[tri[c]])) {
+                const float u = 0.5f * (out.uvs[tri[(c + 1) % 3]].x + out.uvs[tri[(c + 2) % 3]].x);
+                tri[c] = copy_vertex(out, tri[c], {u, out.uvs[tri[c]].y});
+            }
+    }
 }
 
 /// Projected radius in pixels of `s` seen by `camera`; infinity when the eye is (nearly) inside.
@@ -59,6 +112,7 @@ uint32_t sphere_segments(float radius_px) {
 
 void tessellate_sphere(const Sphere& s, uint32_t lon, TriangleSet& out) {
     const uint32_t lat = std::max(8u, lon / 2);
+    const size_t first_vertex = out.positions.size(), first_triangle = out.indices.size();
     auto vertex = [&](float theta, float phi) {
         const Vec3 n{std::sin(theta) * std::cos(phi), std::cos(theta),
                      std::sin(theta) * std::sin(phi)};
@@ -71,17 +125,21 @@ void tessellate_sphere(const Sphere& s, uint32_t lon, TriangleSet& out) {
             vertex(k_pi * float(k) / float(lat), 2 * k_pi * float(m) / float(lon));
     const uint32_t bottom = push_vertex(out, s.center - Vec3(0, s.radius, 0), {0, -1, 0});
     auto ring = [&](uint32_t k, uint32_t m) { return first_ring + (k - 1) * lon + m % lon; };
-    auto tri = [&](uint32_t a, uint32_t b, uint32_t c) {
+    // Edge flags: the latitude/longitude grid lines are the sphere's edges, the diagonals that
+    // split each grid cell into two triangles are not.
+    auto tri = [&](uint32_t a, uint32_t b, uint32_t c, uint8_t edges) {
         const Vec3 centroid = (out.positions[a] + out.positions[b] + out.positions[c]) / 3.0f;
-        push_triangle(out, a, b, c, centroid - s.center, s.material, s.id);
+        push_triangle(out, a, b, c, centroid - s.center, s.material, s.id, edges);
     };
-    for (uint32_t m = 0; m < lon; ++m) tri(top, ring(1, m), ring(1, m + 1));
+    for (uint32_t m = 0; m < lon; ++m) tri(top, ring(1, m), ring(1, m + 1), k_all_edges);
     for (uint32_t k = 1; k + 1 < lat; ++k)
         for (uint32_t m = 0; m < lon; ++m) {
-            tri(ring(k, m), ring(k + 1, m), ring(k + 1, m + 1));
-            tri(ring(k, m), ring(k + 1, m + 1), ring(k, m + 1));
+            tri(ring(k, m), ring(k + 1, m), ring(k + 1, m + 1), k_cell_first);
+            tri(ring(k, m), ring(k + 1, m + 1), ring(k, m + 1), k_cell_second);
         }
-    for (uint32_t m = 0; m < lon; ++m) tri(bottom, ring(lat - 1, m + 1), ring(lat - 1, m));
+    for (uint32_t m = 0; m < lon; ++m)
+        tri(bottom, ring(lat - 1, m + 1), ring(lat - 1, m), k_all_edges);
+    map_sphere_uvs(s, first_vertex, first_triangle, out);
 }
 
 void tessellate_plane(const Plane& plane, Vec3 eye, float half_extent, TriangleSet& out) {
@@ -96,12 +154,15 @@ void tessellate_plane(const Plane& plane, Vec3 eye, float half_extent, TriangleS
     const auto base = static_cast<uint32_t>(out.positions.size());
     constexpr int n = 2 * k_steps + 1;
     for (const float cj : coord)
-        for (const float ci : coord) push_vertex(out, foot + ci * u + cj * v, plane.normal);
+        for (const float ci : coord) {
+            const Vec3 p = foot + ci * u + cj * v;
+            push_vertex(out, p, plane.normal, plane_uv(plane, p).uv);
+        }
     for (int j = 0; j + 1 < n; ++j)
         for (int i = 0; i + 1 < n; ++i) {
             const uint32_t a = base + j * n + i, b = a + 1, c = a + n, d = c + 1;
-            push_triangle(out, a, b, d, plane.normal, plane.material, plane.id);
-            push_triangle(out, a, d, c, plane.normal, plane.material, plane.id);
+            push_triangle(out, a, b, d, plane.normal, plane.material, plane.id, k_cell_first);
+            push_triangle(out, a, d, c, plane.normal, plane.material, plane.id, k_cell_second);
         }
 }
 
@@ -124,6 +185,10 @@ RasterScene tessellate_scene(const Scene& scene) {
     const TriangleSet& in = scene.triangles;
     out.positions = in.positions;
     out.normals = in.normals;
+    // Every vertex gets texture coordinates (spheres and planes always have them; triangles
+    // without get (0, 0)).
+    out.uvs = in.uvs;
+    out.uvs.resize(out.positions.size());
 
     // Spheres and planes by id, to be merged with the (id-ordered) mesh triangles.
     struct Item {
@@ -153,6 +218,7 @@ RasterScene tessellate_scene(const Scene& scene) {
         out.indices.push_back(in.indices[t]);
         out.material.push_back(in.material[t]);
         out.id.push_back(in.id[t]);
+        out.edge_flags.push_back(in.edge_flags.empty() ? k_all_edges : in.edge_flags[t]);
     }
     while (next < items.size()) emit(items[next++]);
     return rs;

@@ -32,6 +32,8 @@ struct Plane {
     uint32_t material = 0;
     PrimitiveId id = 0;
     bool casts_shadow = true;  ///< false: shadow rays pass through it
+    /// World units per texture repeat of the planar mapping (geometry/surface_uv.h, plane_uv).
+    float uv_scale = 1.0f;
 };
 
 /// Every triangle of the scene in one flat indexed array, world space.
@@ -54,6 +56,15 @@ struct TriangleSet {
 
     size_t size() const { return indices.size(); }
 };
+
+/// TriangleSet::edge_flags of a triangle whose three edges are all the model's.
+inline constexpr uint8_t k_all_edges = 7;
+
+/// The edge flags of triangle (a, c, b) given those of (a, b, c): swapping the last two corners
+/// turns edge 0 (a → b) into edge 2 and edge 2 (c → a) into edge 0; edge 1 stays.
+constexpr uint8_t mirrored_edge_flags(uint8_t flags) {
+    return static_cast<uint8_t>((flags & 2) | ((flags & 1) << 2) | ((flags & 4) >> 2));
+}
 
 /// What rays that hit nothing see, by direction (ray tracing; raster methods use the
 /// background colour).

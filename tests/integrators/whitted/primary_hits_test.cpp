@@ -71,6 +71,12 @@ void expect_blocks_match_closest(const Scene& scene) {
                         ASSERT_TRUE(same_bits(expected.shading_normal, got.shading_normal));
                         ASSERT_EQ(expected.material, got.material);
                         ASSERT_EQ(expected.id, got.id);
+                        // Which primitive, and where on a triangle: what texture coordinates
+                        // are computed from.
+                        ASSERT_EQ(expected.kind, got.kind);
+                        ASSERT_EQ(expected.index, got.index);
+                        ASSERT_TRUE(same_bits(expected.bary_u, got.bary_u));
+                        ASSERT_TRUE(same_bits(expected.bary_v, got.bary_v));
                         // The shadow rays shade_local would trace from this hit.
                         ASSERT_TRUE(block.shadows_known);
                         const Vec3 ng = dot(got.geometric_normal, ray.direction) < 0.0f
@@ -129,8 +135,8 @@ Scene random_scene(uint64_t seed) {
     testing::set_scene_triangles(scene.triangles, testing::random_soup(200, 0.8f, seed), id,
                                  [](size_t) { return uint32_t{2}; });
     scene.primitive_count = id;
-    scene.lights.push_back(PointLight{testing::random_point(rng, 6.0f), Vec3(1.0f), true});
-    scene.lights.push_back(DirectionalLight{testing::random_direction(rng), Vec3(1.0f)});
+    scene.lights.emplace_back(PointLight{testing::random_point(rng, 6.0f), Vec3(1.0f), true});
+    scene.lights.emplace_back(DirectionalLight{testing::random_direction(rng), Vec3(1.0f)});
     Camera& cam = scene.camera;
     cam.eye = (seed % 3 == 0) ? scene.spheres[0].center  // inside a sphere
                               : testing::random_point(rng, 8.0f);

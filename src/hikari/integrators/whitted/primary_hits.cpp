@@ -48,6 +48,17 @@ SurfaceHit PrimaryBlock::hit(int k) const {
     hit.shading_normal = {c.shading_normal[0][j], c.shading_normal[1][j], c.shading_normal[2][j]};
     hit.material = static_cast<uint32_t>(c.material[j]);
     hit.id = c.id[j];
+    // Object codes: 1 triangle, 2 + i sphere i, 2 + spheres + i plane i.
+    const int32_t object = c.object[j];
+    if (object == 1) {
+        hit.kind = HitKind::triangle;
+        hit.index = c.triangle[j];
+        hit.bary_u = c.bary[0][j], hit.bary_v = c.bary[1][j];
+    } else if (object >= 2) {
+        const bool sphere = object - 2 < spheres;
+        hit.kind = sphere ? HitKind::sphere : HitKind::plane;
+        hit.index = static_cast<uint32_t>(sphere ? object - 2 : object - 2 - spheres);
+    }
     return hit;
 }
 
@@ -211,7 +222,10 @@ void PrimaryHitTracer::finish(const TriangleHit* triangle_hits, PrimaryBlock& bl
             }
             chunk.material[j] = static_cast<int32_t>(hit.material);
             chunk.id[j] = hit.id;
+            chunk.triangle[j] = hit.index;
+            chunk.bary[0][j] = hit.bary_u, chunk.bary[1][j] = hit.bary_v;
         }
+    block.spheres = static_cast<int32_t>(m_scene.spheres.size());
 
     // 5. The hits' shadow rays, one light at a time against all of them (Boulos et al. 2007 trace
     // shadow rays as packets too: from nearby points toward one light they stay coherent).

@@ -35,6 +35,7 @@ struct PrimaryBlock {
     /// light l (from offset_ray_origin(position, geometric normal facing the ray), as
     /// shade_local builds it) is unblocked, as SceneIntersector::occluded answers.
     bool shadows_known = false;  ///< false: `lit` not filled (more than k_max_block_lights)
+    int32_t spheres = 0;         ///< the scene's sphere count (decodes LaneChunk::object)
 
     /// Whether lane k's ray hits something (t in (0, ∞)).
     bool found(int k) const { return lanes.chunk(k).active[detail::lane_in_chunk(k)] != 0; }

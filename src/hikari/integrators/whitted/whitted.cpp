@@ -11,6 +11,7 @@
 #include "hikari/frame/tiles.h"
 #include "hikari/geometry/ray_offset.h"
 #include "hikari/integrators/whitted/primary_hits.h"
+#include "hikari/integrators/whitted/ray_cone.h"
 #include "hikari/integrators/whitted/whitted_shade.h"
 #include "hikari/integrators/whitted/whitted_surface.h"
 
@@ -23,6 +24,9 @@ namespace {
 struct TraceContext {
     const SceneIntersector& intersector;
     const WhittedScene& shading;
+    const Scene& scene;
+    CameraCones camera_cones;  ///< the camera rays' cones, by direction
+    bool textured;             ///< some material has a texture: rays carry their cones
     int max_depth;
     uint64_t rays = 0;
 };
@@ -48,6 +52,9 @@ struct WaveScratch {
     std::vector<PathLevel> levels;
     std::vector<Ray> rays, next_rays;
     std::vector<Ray> next_refracted;  ///< the next level's refracted rays, until join_refracted
+    /// The ray cones of `rays`, `next_rays` and `next_refracted`, entry for entry (empty when
+    /// no material has a texture: nothing reads them).
+    std::vector<RayCone> cones, next_cones, next_refracted_cones;
     // Jittered samples: each pixel's random stream, colour sum, and one sample's camera rays.
     std::vector<Pcg32> streams;
     std::vector<Vec3> sums;
@@ -83,7 +90,8 @@ class WaveTracer {
             std::fill(camera.refract.begin(), camera.refract.end(), -1);
         }
         m_s.next_rays.clear();
-        shade_block(block, width, k_primary_block_rays, 1, camera, 0);
+        m_s.next_cones.clear();
+        shade_block(block, width, k_primary_block_rays, 1, camera, 0, nullptr);
         return finish_paths(camera);
     }
 
@@ -93,7 +101,8 @@ class WaveTracer {
         PathLevel& camera = level(0);
         camera.resize(count);
         m_s.next_rays.clear();
-        trace_level(rays, count, 1, camera);
+        m_s.next_cones.clear();
+        trace_level(rays, count, nullptr, 1, camera);
         return finish_paths(camera);
     }
 
@@ -110,11 +119,13 @@ class WaveTracer {
         int depth = 1;
         while (!m_s.next_rays.empty()) {
             std::swap(m_s.rays, m_s.next_rays);
+            std::swap(m_s.cones, m_s.next_cones);
             m_s.next_rays.clear();
+            m_s.next_cones.clear();
             PathLevel& nodes = level(depth);
             nodes.resize(m_s.rays.size());
             ++depth;
-            trace_level(m_s.rays.data(), m_s.rays.size(), depth, nodes);
+            trace_level(m_s.rays.data(), m_s.rays.size(), m_s.cones.data(), depth, nodes);
             join_refracted(nodes);
         }
         fold(depth);
@@ -122,21 +133,29 @@ class WaveTracer {
     }
 
     /// Traces and shades `rays[0, count)`, which are of path segment `segment`, block by block
-    /// into `nodes`.
-    void trace_level(const Ray* rays, size_t count, int segment, PathLevel& nodes) {
+    /// into `nodes`; `cones` holds their ray cones (null: camera rays).
+    void trace_level(const Ray* rays, size_t count, const RayCone* cones, int segment,
+                     PathLevel& nodes) {
         PrimaryBlock& block = m_s.block;
         for (size_t first = 0; first < count; first += k_primary_block_rays) {
             const int n = static_cast<int>(std::min<size_t>(k_primary_block_rays, count - first));
             m_hits.trace_rays(rays + first, n, block);
-            shade_block(block, k_lane_chunk, n, segment, nodes, first);
+            shade_block(block, k_lane_chunk, n, segment, nodes, first, cones);
         }
+    }
+
+    /// The ray cone of node `i` of the level being shaded, whose cones are `cones` (null:
+    /// camera rays, whose direction is `direction`).
+    RayCone cone_of(const RayCone* cones, size_t i, Vec3 direction) const {
+        return cones ? cones[i] : m_ctx.camera_cones(direction);
     }
 
     /// Shades the block's rays, which are of path segment `segment`, in place in its lanes, sets
     /// every field of their nodes (lane k is node first + k of `nodes`) and appends the rays they
     /// spawn to next_rays. The rays are the lanes k < count whose lane in their chunk is < width.
+    /// Node i's ray cone is cones[i] (null: camera rays).
     void shade_block(PrimaryBlock& block, int width, int count, int segment, PathLevel& nodes,
-                     size_t first) {
+                     size_t first, const RayCone* cones) {
         const bool spawn = segment < m_ctx.max_depth;
         m_shader.shade(block.lanes, block.chunks * k_lane_chunk, spawn);
         for (int c = 0; c < block.chunks; ++c) {
@@ -154,9 +173,9 @@ class WaveTracer {
                 children += lane.children[j];
             }
             m_ctx.rays += static_cast<uint64_t>(shadow_rays);
-            if (scalar != 0) shade_one_ray_at_a_time(block, c, rays, nodes, base);
+            if (scalar != 0) shade_one_ray_at_a_time(block, c, rays, nodes, base, cones);
             if (children != 0) {
-                spawn_rays(lane, rays, nodes, base);
+                spawn_rays(lane, rays, nodes, base, cones);
             } else {
                 std::fill_n(nodes.mirror.begin() + base, rays, -1);
                 std::fill_n(nodes.refract.begin() + base, rays, -1);
@@ -167,23 +186,37 @@ class WaveTracer {
     /// The colours of chunk c's hits that the lanes could not shade (a material without a lane
     /// form, or shadow rays the block did not trace: more than k_max_block_lights lights),
     /// from the same generic code on one ray at a time; their shadow rays are already counted.
+    /// These also get texture coordinates and their footprint, from the rays' cones.
     void shade_one_ray_at_a_time(const PrimaryBlock& block, int c, int rays, PathLevel& nodes,
-                                 size_t base) {
+                                 size_t base, const RayCone* cones) {
         const detail::LaneChunk& lane = block.lanes.chunks[c];
         for (int j = 0; j < rays; ++j) {
             if (!lane.active[j] || (block.shadows_known && !lane.scalar_only[j])) continue;
             const int i = c * k_lane_chunk + j;
+            const Vec3 direction = block.ray(i).direction;
             const Vec3 colour =
-                shade_hit(block.ray(i).direction, block.hit(i), block.shadows_known, block.lit(i));
+                shade_hit(direction, block.hit(i), cone_of(cones, base + j, direction),
+                          block.shadows_known, block.lit(i));
             for (int a = 0; a < 3; ++a) nodes.colour[a][base + j] = colour[a];
         }
     }
 
-    /// The local illumination of one hit seen along `direction`; light l is visible where bit l
-    /// of `lit` is set when `lit_known`, else where its shadow ray finds nothing in the way.
-    Vec3 shade_hit(Vec3 direction, const SurfaceHit& hit, bool lit_known, uint32_t lit) const {
-        const WhittedHit<float> h{direction, hit.position, hit.geometric_normal, hit.shading_normal,
-                                  static_cast<int32_t>(hit.material)};
+    /// The local illumination of one hit seen along `direction` by a ray with cone `cone` (its
+    /// texture coordinates and footprint, where the material has a texture); light l is visible
+    /// where bit l of `lit` is set when `lit_known`, else where its shadow ray finds nothing in the
+    /// way.
+    Vec3 shade_hit(Vec3 direction, const SurfaceHit& hit, const RayCone& cone, bool lit_known,
+                   uint32_t lit) const {
+        WhittedHit<float> h{direction, hit.position, hit.geometric_normal, hit.shading_normal,
+                            static_cast<int32_t>(hit.material)};
+        if (m_ctx.shading.materials[hit.material].texture) {
+            const SurfaceUv uv = m_ctx.intersector.surface_uv(hit);
+            const UvFootprint footprint =
+                cone_footprint(cone.width_at(hit.t), direction, hit.geometric_normal, uv);
+            h.u = uv.uv.x, h.v = uv.uv.y;
+            h.du_dx = footprint.du_dx, h.dv_dx = footprint.dv_dx;
+            h.du_dy = footprint.du_dy, h.dv_dy = footprint.dv_dy;
+        }
         const auto visible = [&](size_t l, const LightSample& light, const SurfacePoint<float>& s,
                                  bool) {
             if (lit_known) return ((lit >> l) & 1u) != 0;
@@ -198,13 +231,65 @@ class WaveTracer {
     /// join_refracted). Kept apart, the next level's blocks hold rays of one kind each: a glass
     /// surface's mirror rays mostly leave it and its refracted rays all meet it again from
     /// inside, so interleaved they would mix materials in every chunk of lanes.
-    void spawn_rays(const detail::LaneChunk& lane, int rays, PathLevel& nodes, size_t base) {
+    void spawn_rays(const detail::LaneChunk& lane, int rays, PathLevel& nodes, size_t base,
+                    const RayCone* cones) {
         append_rays(lane.mirror_origin, lane.mirror_direction, lane.mirror_weight, rays,
                     m_s.next_rays, nodes.mirror.data() + base);
         append_rays(lane.refract_origin, lane.refract_direction, lane.refract_weight, rays,
                     m_s.next_refracted, nodes.refract.data() + base);
+        for (int j = 0; j < rays && m_ctx.textured; ++j)
+            if (lane.mirror_weight[j] > 0.0f || lane.refract_weight[j] > 0.0f)
+                spawn_cones(
+                    lane, j,
+                    cone_of(cones, base + j,
+                            {lane.direction[0][j], lane.direction[1][j], lane.direction[2][j]}));
         std::copy_n(lane.mirror_weight, rays, nodes.mirror_weight.begin() + base);
         std::copy_n(lane.refract_weight, rays, nodes.refract_weight.begin() + base);
+    }
+
+    /// The curvature of the surface lane j hit, positive where it bulges toward its geometric
+    /// normal: a sphere's 1 / radius, a triangle's from its vertex normals, a plane's 0.
+    float object_curvature(const detail::LaneChunk& lane, int j) const {
+        const Scene& scene = m_ctx.scene;
+        if (lane.object[j] == 1) {
+            const TriangleSet& tris = scene.triangles;
+            const auto& [i0, i1, i2] = tris.indices[lane.triangle[j]];
+            const Vec3 p0 = tris.positions[i0], p1 = tris.positions[i1], p2 = tris.positions[i2];
+            // Vertex normals may point either way of the lecture's N: measure along N.
+            const float side = dot(cross(p1 - p0, p2 - p1), tris.normals[i0]) < 0.0f ? -1.0f : 1.0f;
+            return side * triangle_curvature(
+                              {p0, p1, p2}, {tris.normals[i0], tris.normals[i1], tris.normals[i2]});
+        }
+        const int32_t sphere = lane.object[j] - 2;
+        if (sphere >= 0 && static_cast<size_t>(sphere) < scene.spheres.size())
+            return 1.0f / scene.spheres[sphere].radius;
+        return 0.0f;
+    }
+
+    /// The ray cones of lane j's mirror and refracted rays (where they exist), after those of
+    /// the lanes before it: the incoming cone's width at the hit, its spread bent by the
+    /// surface's curvature (object_curvature).
+    void spawn_cones(const detail::LaneChunk& lane, int j, const RayCone& incoming) {
+        const float width = incoming.width_at(lane.t[j]);
+        const Vec3 d{lane.direction[0][j], lane.direction[1][j], lane.direction[2][j]};
+        const Vec3 ng{lane.geometric_normal[0][j], lane.geometric_normal[1][j],
+                      lane.geometric_normal[2][j]};
+        const bool entering = dot(ng, d) < 0.0f;
+        // Object code 1 is a triangle, 2 + i sphere i: convex seen from outside, concave from
+        // inside.
+        const float curvature = (entering ? 1.0f : -1.0f) * object_curvature(lane, j);
+        if (lane.mirror_weight[j] > 0.0f)
+            m_s.next_cones.push_back(reflected_cone(incoming, width, curvature));
+        if (lane.refract_weight[j] > 0.0f) {
+            const Vec3 n{lane.shading_normal[0][j], lane.shading_normal[1][j],
+                         lane.shading_normal[2][j]};
+            const Vec3 t{lane.refract_direction[0][j], lane.refract_direction[1][j],
+                         lane.refract_direction[2][j]};
+            const float ior = m_ctx.shading.materials[lane.material[j]].ior;
+            m_s.next_refracted_cones.push_back(
+                refracted_cone(incoming, width, curvature, entering ? 1.0f / ior : ior,
+                               std::abs(dot(d, n)), std::abs(dot(t, n))));
+        }
     }
 
     /// Appends to `to`, in lane order, the rays of lanes [0, rays) whose weight is positive, and
@@ -242,7 +327,10 @@ class WaveTracer {
             if (index >= 0) index += offset;
         m_s.next_rays.insert(m_s.next_rays.end(), m_s.next_refracted.begin(),
                              m_s.next_refracted.end());
+        m_s.next_cones.insert(m_s.next_cones.end(), m_s.next_refracted_cones.begin(),
+                              m_s.next_refracted_cones.end());
         m_s.next_refracted.clear();
+        m_s.next_refracted_cones.clear();
     }
 
     /// Adds each level's colours into their parents', deepest first, as the recursion adds
@@ -373,6 +461,12 @@ struct WhittedRender {
     }
 };
 
+/// Whether a material of `scene` has a texture (whose footprint the rays' cones give).
+bool has_texture(const Scene& scene) {
+    return std::any_of(scene.materials.begin(), scene.materials.end(),
+                       [](const Material& m) { return m.texture.has_value(); });
+}
+
 /// The BVH's figures for `--stats`.
 void report_bvh(const SceneIntersector& intersector, RenderStats* stats) {
     if (!stats) return;
@@ -396,7 +490,8 @@ Framebuffer render_whitted(const Scene& scene, Film film, const RenderSettings& 
     static_assert(k_tile_size <= k_primary_block);
 
     for_each_tile(cam.width, cam.height, settings.control, [&](const Tile& tile) {
-        TraceContext ctx{render.intersector, render.shading, whitted.max_depth};
+        TraceContext ctx{render.intersector,        render.shading,     scene,
+                         CameraCones(scene.camera), has_texture(scene), whitted.max_depth};
         thread_local std::unique_ptr<WaveScratch> scratch;
         if (!scratch) scratch = std::make_unique<WaveScratch>();
         WaveTracer wave(ctx, render.primary, render.shader, *scratch);

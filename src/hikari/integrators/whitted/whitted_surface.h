@@ -30,6 +30,10 @@ struct WhittedHit {
     Vec3T<F> geometric_normal;  ///< unit, as the primitive defines it (not turned)
     Vec3T<F> shading_normal;    ///< unit, interpolated for meshes
     IntOf<F> material{};        ///< index into Scene::materials
+    /// Texture coordinates and the pixel's footprint in texture space (SurfacePoint's fields;
+    /// the ray tracer's one-ray path fills them from ray cones, the lanes leave them 0).
+    F u = F(0.0f), v = F(0.0f);
+    F du_dx = F(0.0f), dv_dx = F(0.0f), du_dy = F(0.0f), dv_dy = F(0.0f);
 };
 
 /// A shaded hit: the point as shading saw it, its material and its direct light.
@@ -52,6 +56,8 @@ HIKARI_INLINE SurfacePoint<F> face_the_ray(const WhittedHit<F>& hit, MaskOf<F>& 
     const Vec3T<F> n = select(entering, hit.shading_normal, -hit.shading_normal);
     s.normal = select(dot(n, hit.direction) > F(0.0f), s.geometric_normal, n);
     s.to_eye = -hit.direction;
+    s.u = hit.u, s.v = hit.v;
+    s.du_dx = hit.du_dx, s.dv_dx = hit.dv_dx, s.du_dy = hit.du_dy, s.dv_dy = hit.dv_dy;
     return s;
 }
 

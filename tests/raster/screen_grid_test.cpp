@@ -1,0 +1,66 @@
+#include "hikari/raster/screen_grid.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <set>
+
+namespace hikari {
+namespace {
+
+ScreenTriangle triangle(float x0, float y0, float x1, float y1, float x2, float y2) {
+    ScreenTriangle t;
+    t.v[0].position = Vec3(x0, y0, -0.5f);
+    t.v[1].position = Vec3(x1, y1, -0.5f);
+    t.v[2].position = Vec3(x2, y2, -0.5f);
+    return t;
+}
+
+/// Whether segment (a, b) meets the box [lo, hi] (sampled finely: a reference, not a clipper).
+bool segment_meets_box(Vec2 a, Vec2 b, Vec2 lo, Vec2 hi) {
+    for (int k = 0; k <= 2000; ++k) {
+        const float t = float(k) / 2000.0f;
+        const float x = a.x + (b.x - a.x) * t, y = a.y + (b.y - a.y) * t;
+        if (x >= lo.x && x <= hi.x && y >= lo.y && y <= hi.y) return true;
+    }
+    return false;
+}
+
+TEST(ScreenGrid, FindsEveryTriangleWhoseBoxASegmentCrosses) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(-20.0f, 120.0f);  // some beyond the 100 × 80 image
+    std::vector<ScreenTriangle> tris;
+    for (int k = 0; k < 300; ++k) {
+        const float x = u(rng), y = u(rng);
+        tris.push_back(triangle(x, y, x + u(rng) / 12, y + 3, x - 2, y + u(rng) / 15));
+    }
+    const ScreenGrid grid(tris, 100, 80, 8);
+    for (int k = 0; k < 50; ++k) {
+        const Vec2 a{u(rng), u(rng)}, b{u(rng), u(rng)};
+        std::set<uint32_t> found;
+        grid.for_each_along(a, b, 1.0f, [&](uint32_t i) { found.insert(i); });
+        for (uint32_t i = 0; i < tris.size(); ++i) {
+            Vec2 lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
+            for (const ScreenVertex& v : tris[i].v) {
+                lo = {std::min(lo.x, v.position.x), std::min(lo.y, v.position.y)};
+                hi = {std::max(hi.x, v.position.x), std::max(hi.y, v.position.y)};
+            }
+            if (segment_meets_box(a, b, lo, hi)) EXPECT_TRUE(found.count(i)) << k << ", " << i;
+        }
+    }
+}
+
+TEST(ScreenGrid, BoxQueryVisitsTheTrianglesInItsCells) {
+    const std::vector<ScreenTriangle> tris = {triangle(1, 1, 5, 1, 1, 5),
+                                              triangle(50, 50, 60, 50, 50, 60)};
+    const ScreenGrid grid(tris, 64, 64, 8);
+    std::set<uint32_t> found;
+    grid.for_each_in_box({0, 0}, {7, 7}, [&](uint32_t i) { found.insert(i); });
+    EXPECT_EQ(found, (std::set<uint32_t>{0}));
+    found.clear();
+    grid.for_each_in_box({-100, -100}, {200, 200}, [&](uint32_t i) { found.insert(i); });
+    EXPECT_EQ(found, (std::set<uint32_t>{0, 1}));
+}
+
+}  // namespace
+}  // namespace hikari
