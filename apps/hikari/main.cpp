@@ -461,8 +461,8 @@ std::string method_list() {
 }
 
 /// A usage error (CLI::ValidationError) when the command line gives an option that `method`
-/// does not understand.
-void check_method_options(const CLI::App& render, const Method& method) {
+/// does not understand, or a shadow mode it cannot do.
+void check_method_options(const CLI::App& render, const Method& method, const MethodSettings& own) {
     for (const MethodOption* option : method_options()) {
         if (render.count(std::string(option->flag)) == 0 || takes_option(method, option->flag))
             continue;
@@ -470,6 +470,11 @@ void check_method_options(const CLI::App& render, const Method& method) {
             "{} is not an option of method {} ({})", option->flag, method.name,
             method.options.empty() ? "it takes none" : "it understands: " + option_list(method)));
     }
+    if (own.shadows && !does_shadows(method, *own.shadows))
+        throw CLI::ValidationError(
+            fmt::format("--shadows {}: method {} cannot draw shadows that way (it can: {})",
+                        choice_name<std::optional<ShadowMode>>(k_shadow_choices, own.shadows),
+                        method.name, shadow_mode_list(method)));
 }
 
 /// Scene, output and method: the first of the render options.
@@ -555,7 +560,7 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, cons
                                       const RenderOptions& o) {
     try {
         app.parse(argc, argv);
-        if (render.parsed()) check_method_options(render, *find_method(o.method));
+        if (render.parsed()) check_method_options(render, *find_method(o.method), o.own);
         if (!o.depth_cue.empty() && !(o.depth_cue[1] > o.depth_cue[0]))
             throw CLI::ValidationError("--depth-cue: FAR must be greater than NEAR");
         return std::nullopt;

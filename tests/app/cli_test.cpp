@@ -180,13 +180,36 @@ TEST_F(Cli, OptionForeignToTheMethodExitsTwoAndWritesNothing) {
     };
     expect_refused("--interp flat --width 16",
                    "--interp is not an option of method raytrace (it understands: --spp, "
-                   "--max-depth)");
+                   "--max-depth, --shadows)");
     expect_refused("-m zbuffer --spp 4 --width 16",
-                   "--spp is not an option of method zbuffer (it understands: --interp, --cull)");
+                   "--spp is not an option of method zbuffer (it understands: --interp, --cull, "
+                   "--shadows, --shadow-map-size)");
     expect_refused("-m depthsort --max-depth 2",
                    "--max-depth is not an option of method depthsort");
     expect_refused("-m raytrace --cull back", "--cull is not an option of method raytrace");
+    expect_refused("-m wireframe --shadows map", "--shadows is not an option of method wireframe");
     EXPECT_EQ(file_count(), 0u);
+}
+
+TEST_F(Cli, ShadowModeAMethodCannotDrawExitsTwo) {
+    const auto expect_refused = [&](const std::string& args, const std::string& message) {
+        const Result r = run("render " + args + " --width 16 -o " + path("out.png"));
+        EXPECT_EQ(r.status, 2) << args << ": " << r.output;
+        EXPECT_NE(r.output.find("hikari: error: " + message), std::string::npos) << r.output;
+    };
+    expect_refused("--shadows map",
+                   "--shadows map: method raytrace cannot draw shadows that way (it can: ray, "
+                   "none)");
+    expect_refused("-m scanline --shadows ray",
+                   "--shadows ray: method scanline cannot draw shadows that way (it can: map, "
+                   "volume, none)");
+    expect_refused("-m zbuffer --shadows soft", "--shadows: soft not in {none,ray,map,volume}");
+    EXPECT_EQ(file_count(), 0u);
+    for (const char* ok : {"--shadows none", "-m zbuffer --shadows volume",
+                           "-m depthsort --shadows map --shadow-map-size 64"}) {
+        const Result r = run(std::string("render ") + ok + " --width 16 -q -o " + path("ok.png"));
+        EXPECT_EQ(r.status, 0) << ok << ": " << r.output;
+    }
 }
 
 TEST_F(Cli, LineMethodsWriteSvg) {

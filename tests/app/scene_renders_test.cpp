@@ -47,15 +47,25 @@ std::vector<Case> cases() {
                                               "depthsort-naive"};
     std::vector<Case> all;
     for (const std::string& scene : scenes) {
+        // The raster methods without shadows: the pictures from before they had any.
         for (const std::string& method : methods)
-            all.push_back({scene, "-m " + method + " --width 64", "pfm"});
+            all.push_back(
+                {scene,
+                 "-m " + method + " --width 64" + (method == "raytrace" ? "" : " --shadows none"),
+                 "pfm"});
         // The ray tracer's 8-bit output path, its AOVs and its jittered samples.
         all.push_back({scene, "--width 64", "png"});
         all.push_back({scene, "--width 64 --aov id", "pfm"});
         all.push_back({scene, "--width 48 --spp 4", "pfm"});
     }
-    all.push_back({"bunny", "-m zbuffer --width 64 --interp gouraud --cull back", "pfm"});
-    all.push_back({"teapot", "-m scanline --width 64 --interp flat", "pfm"});
+    all.push_back(
+        {"bunny", "-m zbuffer --width 64 --interp gouraud --cull back --shadows none", "pfm"});
+    all.push_back({"teapot", "-m scanline --width 64 --interp flat --shadows none", "pfm"});
+    // Shadows: maps and volumes in the raster methods, none in the ray tracer.
+    all.push_back({"bunny", "-m zbuffer --width 64 --shadow-map-size 256", "pfm"});
+    all.push_back({"whitted", "-m scanline --width 64 --shadows volume", "pfm"});
+    all.push_back({"teapot", "-m depthsort --width 64 --shadows volume --interp gouraud", "pfm"});
+    all.push_back({"whitted", "--width 64 --shadows none", "pfm"});
     // The line methods, as images and as vectors.
     all.push_back({"teapot", "-m wireframe --width 64", "pfm"});
     all.push_back({"teapot", "-m hiddenline --width 64 --cull back --line-width 0.5", "pfm"});

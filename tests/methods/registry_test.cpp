@@ -85,8 +85,9 @@ std::vector<std::string> option_flags(const Method& method) {
 }
 
 TEST(Methods, EveryMethodDeclaresItsOptions) {
-    const std::vector<std::string> ray = {"--spp", "--max-depth"};
-    const std::vector<std::string> raster = {"--interp", "--cull"};
+    const std::vector<std::string> ray = {"--spp", "--max-depth", "--shadows"};
+    const std::vector<std::string> raster = {"--interp", "--cull", "--shadows",
+                                             "--shadow-map-size"};
     EXPECT_EQ(option_flags(*find_method("raytrace")), ray);
     for (const char* name : {"zbuffer", "scanline", "depthsort", "depthsort-naive"})
         EXPECT_EQ(option_flags(*find_method(name)), raster) << name;
@@ -105,8 +106,45 @@ TEST(Methods, EveryMethodDeclaresItsOptions) {
     // Each option once, whichever methods share it.
     std::vector<std::string> all;
     for (const MethodOption* option : method_options()) all.emplace_back(option->flag);
-    EXPECT_EQ(all, (std::vector<std::string>{"--spp", "--max-depth", "--interp", "--cull",
-                                             "--line-width", "--line-color"}));
+    EXPECT_EQ(all,
+              (std::vector<std::string>{"--spp", "--max-depth", "--shadows", "--interp", "--cull",
+                                        "--shadow-map-size", "--line-width", "--line-color"}));
+}
+
+TEST(Methods, EveryMethodNamesItsShadowModesDefaultFirst) {
+    EXPECT_EQ(shadow_mode_list(*find_method("raytrace")), "ray, none");
+    for (const char* name : {"zbuffer", "scanline", "depthsort", "depthsort-naive"}) {
+        EXPECT_EQ(shadow_mode_list(*find_method(name)), "map, volume, none") << name;
+        EXPECT_TRUE(does_shadows(*find_method(name), ShadowMode::volume));
+        EXPECT_FALSE(does_shadows(*find_method(name), ShadowMode::ray));
+    }
+    EXPECT_TRUE(find_method("wireframe")->shadow_modes.empty());
+}
+
+TEST(Methods, ShadowsNoneMatchesAMethodWithoutShadowRays) {
+    // A sphere over a plane: with --shadows none the ray tracer's picture is the shadowless
+    // one, which every raster method draws with --shadows none too.
+    const Scene scene = testing::raster_scene_from(R"({
+      "camera": {"eye": [0, 2, 4], "look_at": [0, 0.5, 0], "width": 48, "height": 32},
+      "ambient": [0.1, 0.1, 0.1], "materials": {"m": {"ka": [1, 1, 1], "kd": [0.8, 0.8, 0.8]}},
+      "lights": [{"type": "point", "position": [0, 5, 0], "intensity": [20, 20, 20]}],
+      "objects": [{"type": "sphere", "center": [0, 1, 0], "radius": 0.5, "material": "m"},
+                  {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "m"}]})");
+    MethodSettings own;
+    const Framebuffer lit = find_method("raytrace")->render(scene, Film(scene.camera), {}, own);
+    own.shadows = ShadowMode::none;
+    const Framebuffer none = find_method("raytrace")->render(scene, Film(scene.camera), {}, own);
+    const Framebuffer raster = find_method("zbuffer")->render(scene, Film(scene.camera), {}, own);
+    // Under the sphere the plane is dark with shadow rays, lit without them, and lit alike by
+    // the shadowless raster render.
+    int shadowed = 0;
+    for (size_t i = 0; i < none.film.linear().pixels.size(); ++i) {
+        const float unshadowed = none.film.linear().pixels[i].x;
+        if (lit.film.linear().pixels[i].x > 0.5f * unshadowed) continue;
+        ++shadowed;
+        EXPECT_NEAR(raster.film.linear().pixels[i].x, unshadowed, 0.02f) << i;
+    }
+    EXPECT_GT(shadowed, 20);
 }
 
 /// The method option called `flag`; fails the test when there is none.

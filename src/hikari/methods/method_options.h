@@ -22,6 +22,8 @@ struct MethodSettings {
     RasterSettings raster;    ///< zbuffer, scanline, depthsort, depthsort-naive (and --cull for
                               ///< the line methods)
     LineSettings lines;       ///< wireframe, hiddenline
+    /// `--shadows` when given; otherwise each method's default (Method::shadow_modes).
+    std::optional<ShadowMode> shadows;
 };
 
 /// A word an option takes and the value it stands for (`--interp gouraud`).
@@ -52,6 +54,15 @@ inline constexpr Choice<Interpolation> k_interpolation_choices[] = {
     {"flat", Interpolation::flat},
     {"gouraud", Interpolation::gouraud},
     {"phong", Interpolation::phong},
+};
+
+/// `--shadows`: how a method decides whether a light reaches a point (Fig 4.24). Which of them
+/// a method can do is in its Method::shadow_modes.
+inline constexpr Choice<std::optional<ShadowMode>> k_shadow_choices[] = {
+    {"none", ShadowMode::none},
+    {"ray", ShadowMode::ray},
+    {"map", ShadowMode::map},
+    {"volume", ShadowMode::volume},
 };
 
 /// `--cull`: RasterSettings::cull_back_faces.
@@ -93,7 +104,7 @@ struct MethodOption {
     std::string_view help;  ///< one line for --help
     /// The values it takes and the field they go to.
     std::variant<IntegerOption, RealOption, ColorOption, ChoiceOption<Interpolation>,
-                 ChoiceOption<bool>>
+                 ChoiceOption<bool>, ChoiceOption<std::optional<ShadowMode>>>
         value;
 };
 

@@ -4,6 +4,8 @@
 #include <array>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "hikari/frame/depth_cue.h"
 #include "hikari/integrators/whitted/whitted.h"
 #include "hikari/raster/depth_sort.h"
@@ -16,13 +18,35 @@ namespace hikari {
 
 namespace {
 
-/// A method function `render(scene, film, settings, own)` as a RenderFunction: `part` picks its
-/// own settings out of MethodSettings.
-template <auto render, auto part>
-Framebuffer with_own_settings(const Scene& scene, Film film, const RenderSettings& settings,
-                              const MethodSettings& own) {
-    return render(scene, std::move(film), settings, own.*part);
+/// The ray tracer with its settings and `--shadows` (shadow rays, its default, or none).
+Framebuffer ray_trace(const Scene& scene, Film film, const RenderSettings& settings,
+                      const MethodSettings& own) {
+    WhittedSettings whitted = own.whitted;
+    whitted.shadow_rays = own.shadows.value_or(ShadowMode::ray) == ShadowMode::ray;
+    return render_whitted(scene, std::move(film), settings, whitted);
 }
+
+/// A raster method `render(scene, film, settings, raster)` with the raster settings and
+/// `--shadows` (shadow maps, their default, volumes or none).
+template <auto render>
+Framebuffer rasterize(const Scene& scene, Film film, const RenderSettings& settings,
+                      const MethodSettings& own) {
+    RasterSettings raster = own.raster;
+    raster.shadows = own.shadows.value_or(ShadowMode::map);
+    return render(scene, std::move(film), settings, raster);
+}
+
+constexpr ShadowMode k_ray_shadow_modes[] = {ShadowMode::ray, ShadowMode::none};
+constexpr ShadowMode k_raster_shadow_modes[] = {ShadowMode::map, ShadowMode::volume,
+                                                ShadowMode::none};
+
+constexpr MethodOption k_shadows_option = {
+    "--shadows",
+    "Shadows (Fig 4.24): ray (shadow rays; raytrace's default), map (shadow mapping; the "
+    "raster methods' default), volume (shadow volumes, z-fail stencil), none",
+    ChoiceOption<std::optional<ShadowMode>>{
+        k_shadow_choices,
+        [](MethodSettings& s) -> std::optional<ShadowMode>& { return s.shadows; }}};
 
 constexpr MethodOption k_ray_tracing_options[] = {
     {"--spp", "Samples per pixel (1 = pixel centres; more: stratified)",
@@ -30,6 +54,7 @@ constexpr MethodOption k_ray_tracing_options[] = {
                    [](MethodSettings& s) -> int& { return s.whitted.samples_per_pixel; }}},
     {"--max-depth", "Ray segments per path, the primary ray included (Whitted recursion)",
      IntegerOption{1, 64, [](MethodSettings& s) -> int& { return s.whitted.max_depth; }}},
+    k_shadows_option,
 };
 
 constexpr MethodOption k_cull_option = {
@@ -47,6 +72,9 @@ constexpr MethodOption k_raster_options[] = {
          k_interpolation_choices,
          [](MethodSettings& s) -> Interpolation& { return s.raster.interp; }}},
     k_cull_option,
+    k_shadows_option,
+    {"--shadow-map-size", "Texels per side of each shadow map (a cube map has six faces)",
+     IntegerOption{16, 16384, [](MethodSettings& s) -> int& { return s.raster.shadow_map_size; }}},
 };
 
 constexpr MethodOption k_line_options[] = {
@@ -77,25 +105,25 @@ LineDrawing drawing_with_line_settings(const Scene& scene, const MethodSettings&
     return draw(scene, line_settings(own));
 }
 
-constexpr auto k_whitted = &with_own_settings<&render_whitted, &MethodSettings::whitted>;
+constexpr auto k_whitted = &ray_trace;
 template <auto render>
-constexpr auto k_raster = &with_own_settings<render, &MethodSettings::raster>;
+constexpr auto k_raster = &rasterize<render>;
 
 constexpr std::array k_methods = {
     Method{"raytrace",
            "Whitted ray tracing (Alg 4.3): nearest hit, shadow rays, reflection, refraction",
-           k_whitted, k_ray_tracing_options},
+           k_whitted, k_ray_tracing_options, nullptr, k_ray_shadow_modes},
     Method{"zbuffer", "Z-buffer (Alg 4.2): rasterize every triangle, keep the nearest per pixel",
-           k_raster<&render_zbuffer>, k_raster_options},
+           k_raster<&render_zbuffer>, k_raster_options, nullptr, k_raster_shadow_modes},
     Method{"scanline",
            "scanline (Alg 4.1): edge table, active edges, nearest segment per sample span",
-           k_raster<&render_scanline>, k_raster_options},
+           k_raster<&render_scanline>, k_raster_options, nullptr, k_raster_shadow_modes},
     Method{"depthsort",
            "depth sort (Newell et al. 1972): sort, overlap tests, reorder, split cycles",
-           k_raster<&render_depth_sort>, k_raster_options},
+           k_raster<&render_depth_sort>, k_raster_options, nullptr, k_raster_shadow_modes},
     Method{"depthsort-naive",
            "painter's algorithm by centroid depth (Fig 4.7): fails on overlap cycles",
-           k_raster<&render_depth_sort_naive>, k_raster_options},
+           k_raster<&render_depth_sort_naive>, k_raster_options, nullptr, k_raster_shadow_modes},
     Method{"wireframe", "wireframe (Fig 4.1a): every edge of every face, anti-aliased lines",
            &with_line_settings<&render_wireframe>, k_line_options,
            &drawing_with_line_settings<&draw_wireframe>},
@@ -131,6 +159,19 @@ LineDrawing draw_scene(const Method& method, const Scene& scene, const MethodSet
     LineDrawing drawing = method.draw(scene, own);
     if (scene.depth_cue) return depth_cued(drawing, *scene.depth_cue);
     return drawing;
+}
+
+bool does_shadows(const Method& method, ShadowMode mode) {
+    return std::find(method.shadow_modes.begin(), method.shadow_modes.end(), mode) !=
+           method.shadow_modes.end();
+}
+
+std::string shadow_mode_list(const Method& method) {
+    std::string list;
+    for (const ShadowMode mode : method.shadow_modes)
+        list += fmt::format("{}{}", list.empty() ? "" : ", ",
+                            choice_name<std::optional<ShadowMode>>(k_shadow_choices, mode));
+    return list;
 }
 
 std::vector<const MethodOption*> method_options() {

@@ -3,6 +3,7 @@
 // which also lists the options the method understands.
 
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -30,6 +31,8 @@ struct Method {
     RenderFunction render;                  ///< the method itself
     std::span<const MethodOption> options;  ///< the method options it understands
     DrawFunction draw = nullptr;            ///< its segments, for the line methods; else null
+    /// The `--shadows` modes it can do, its default first; empty when it draws no shadows.
+    std::span<const ShadowMode> shadow_modes = {};
 };
 
 /// Every registered method, the default (raytrace) first.
@@ -49,6 +52,12 @@ Framebuffer render_scene(const Method& method, const Scene& scene, Film film,
 /// The segments `method` draws for `scene` (method.draw must be set), depth-cued as the scene
 /// asks (frame/line_drawing.h, depth_cued): what its image shows, as vectors.
 LineDrawing draw_scene(const Method& method, const Scene& scene, const MethodSettings& own);
+
+/// Whether `method` can draw shadows by `mode`.
+bool does_shadows(const Method& method, ShadowMode mode);
+
+/// The words of `method`'s shadow modes, e.g. "map, volume, none".
+std::string shadow_mode_list(const Method& method);
 
 /// Every option of any method, once each, in the order the methods list them.
 std::vector<const MethodOption*> method_options();

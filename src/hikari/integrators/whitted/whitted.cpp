@@ -481,6 +481,17 @@ void report_bvh(const SceneIntersector& intersector, RenderStats* stats) {
 
 Framebuffer render_whitted(const Scene& scene, Film film, const RenderSettings& settings,
                            const WhittedSettings& whitted) {
+    if (!whitted.shadow_rays) {
+        // No shadows: the same render of a scene where nothing casts one (shadow rays pass
+        // through every primitive that does not cast, so every light reaches every point).
+        Scene unshadowed = scene;
+        for (Sphere& s : unshadowed.spheres) s.casts_shadow = false;
+        for (Plane& p : unshadowed.planes) p.casts_shadow = false;
+        unshadowed.triangles.casts_shadow.assign(unshadowed.triangles.size(), 0);
+        WhittedSettings with_rays = whitted;
+        with_rays.shadow_rays = true;
+        return render_whitted(unshadowed, std::move(film), settings, with_rays);
+    }
     const Camera& cam = scene.camera;
     // Every pixel is set below (by its tile), so 8-bit colour may start unwritten: its pages are
     // first touched by the tiles, in parallel.

@@ -13,6 +13,7 @@ namespace hikari {
 struct WhittedSettings {
     int samples_per_pixel = 1;  ///< 1: one ray through each pixel centre; more: stratified jitter
     int max_depth = 5;          ///< ray segments per path, the primary ray included
+    bool shadow_rays = true;    ///< false: every light reaches every point facing it
 };
 
 /// `--method raytrace`: one ray per pixel centre (or stratified jittered samples), the nearest
