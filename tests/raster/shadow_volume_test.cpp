@@ -148,5 +148,22 @@ TEST(ShadowVolume, RasterVolumesAgreeWithTheRayTracer) {
     EXPECT_GE(testing::psnr(render_depth_sort(scene, Film(scene.camera), {}, raster), ray), 40.0);
 }
 
+TEST(ShadowVolume, ObjectsThatCastNoShadowAreLeftOut) {
+    std::string boxes = box({-0.5f, 0.5f, -0.5f}, {0.5f, 1.5f, 0.5f});
+    // Every triangle of the box: "casts_shadow": false.
+    for (size_t at = 0; (at = boxes.find(R"("material": "m"})", at)) != std::string::npos; at += 10)
+        boxes.replace(at, 16, R"("material": "m", "casts_shadow": false})");
+    const Scene scene =
+        scene_of(R"({"eye": [0, 3, 4], "look_at": [0, 0.5, 0], "width": 64, "height": 48})",
+                 R"({"type": "point", "position": [0.3, 5, 0.2], "intensity": [20, 20, 20]})",
+                 boxes + ", " + k_ground);
+    RasterSettings raster;
+    raster.shadows = ShadowMode::volume;
+    const Framebuffer volume = render_zbuffer(scene, Film(scene.camera), {}, raster);
+    raster.shadows = ShadowMode::none;
+    const Framebuffer none = render_zbuffer(scene, Film(scene.camera), {}, raster);
+    EXPECT_EQ(volume.film.linear().pixels, none.film.linear().pixels);
+}
+
 }  // namespace
 }  // namespace hikari

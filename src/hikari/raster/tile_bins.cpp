@@ -4,6 +4,30 @@
 
 namespace hikari {
 
+namespace {
+
+/// Whether the triangle may cover a pixel centre of the tile whose top-left pixel is
+/// (x0, y0): false when all four corner centres of the tile lie outside one edge, so that a
+/// long thin triangle is not handed to every tile of its bounding box (shadow volume sides,
+/// grazing floors).
+bool may_cover_tile(const HalfSpaceTriangle& t, int x0, int y0) {
+    const int64_t px0 = int64_t{x0} * k_subpixel_one + k_subpixel_one / 2;
+    const int64_t py0 = int64_t{y0} * k_subpixel_one + k_subpixel_one / 2;
+    const int64_t span = int64_t{k_tile_size - 1} * k_subpixel_one;
+    for (int e = 0; e < 3; ++e) {
+        const int a = (e + 1) % 3, b = (e + 2) % 3;
+        const int64_t dx = t.x[b] - t.x[a], dy = t.y[b] - t.y[a];
+        // E(p) = dx (p.y − a.y) − dy (p.x − a.x) + bias is affine: its largest value over the
+        // tile's corner centres is at the corner that the edge's inward normal points to.
+        const int64_t px = -dy > 0 ? px0 + span : px0;
+        const int64_t py = dx > 0 ? py0 + span : py0;
+        if (dx * (py - t.y[a]) - dy * (px - t.x[a]) + t.bias[e] < 0) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
 size_t TileBins::tile_at(int x0, int y0) const {
     return static_cast<size_t>(y0 / k_tile_size) * tiles_x + x0 / k_tile_size;
 }
@@ -17,7 +41,8 @@ TileBins bin_triangles(const std::vector<HalfSpaceTriangle>& setup,
     auto for_tiles = [&](const HalfSpaceTriangle& t, auto&& fn) {
         for (int ty = t.y0 / k_tile_size; ty <= (t.y1 - 1) / k_tile_size; ++ty)
             for (int tx = t.x0 / k_tile_size; tx <= (t.x1 - 1) / k_tile_size; ++tx)
-                fn(static_cast<size_t>(ty) * bins.tiles_x + tx);
+                if (may_cover_tile(t, tx * k_tile_size, ty * k_tile_size))
+                    fn(static_cast<size_t>(ty) * bins.tiles_x + tx);
     };
     for (size_t i = 0; i < setup.size(); ++i)
         if (valid[i]) for_tiles(setup[i], [&](size_t tile) { ++bins.begin[tile + 1]; });
