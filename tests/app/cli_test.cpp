@@ -352,7 +352,9 @@ TEST_F(Cli, DepthCueFollowsTheLecturesBlendForEveryMethod) {
     write("scene.json", k_cue_scene);
     for (const char* method : {"raytrace", "zbuffer", "scanline", "depthsort"}) {
         SCOPED_TRACE(method);
-        const std::string m = std::string(" -m ") + method + " -q -o ";
+        const std::string m = std::string(" -m ") + method +
+                              (method == std::string("raytrace") ? "" : " --shadow-map-size 256") +
+                              " -q -o ";
         ASSERT_EQ(run("render " + path("scene.json") + m + path("plain.pfm")).status, 0);
         ASSERT_EQ(
             run("render " + path("scene.json") + m + path("depth.pfm") + " --aov depth").status, 0);
