@@ -1,5 +1,9 @@
 #include "hikari/raster/tile_bins.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include "hikari/frame/tiles.h"
 
 namespace hikari {
@@ -26,6 +30,34 @@ bool may_cover_tile(const HalfSpaceTriangle& t, int x0, int y0) {
     return true;
 }
 
+/// The pixel columns [first, last] in which the triangle can cover a pixel centre of rows
+/// [row0, row1], widened by a pixel on each side; false when it covers none of those rows:
+/// the triangle cut to the band of the rows' centres, its x extent. A long thin triangle (a
+/// shadow volume's side) then visits only the tiles along it, not its whole bounding box.
+bool columns_in_rows(const HalfSpaceTriangle& t, int row0, int row1, int& first, int& last) {
+    const double lo = static_cast<double>(row0) * k_subpixel_one + k_subpixel_one / 2;
+    const double hi = static_cast<double>(row1) * k_subpixel_one + k_subpixel_one / 2;
+    double x_min = std::numeric_limits<double>::infinity(), x_max = -x_min;
+    auto take = [&](double x) {
+        x_min = std::min(x_min, x);
+        x_max = std::max(x_max, x);
+    };
+    for (int i = 0; i < 3; ++i) {
+        const double ax = static_cast<double>(t.x[i]), ay = static_cast<double>(t.y[i]);
+        const double bx = static_cast<double>(t.x[(i + 1) % 3]);
+        const double by = static_cast<double>(t.y[(i + 1) % 3]);
+        if (ay >= lo && ay <= hi) take(ax);
+        for (const double y : {lo, hi})
+            if ((ay - y) * (by - y) < 0.0) take(ax + (bx - ax) * (y - ay) / (by - ay));
+    }
+    if (!(x_min <= x_max)) return false;
+    first = std::max(
+        t.x0, static_cast<int>(std::floor((x_min - k_subpixel_one / 2) / k_subpixel_one)) - 1);
+    last = std::min(t.x1 - 1,
+                    static_cast<int>(std::ceil((x_max - k_subpixel_one / 2) / k_subpixel_one)) + 1);
+    return first <= last;
+}
+
 }  // namespace
 
 size_t TileBins::tile_at(int x0, int y0) const {
@@ -39,10 +71,15 @@ TileBins bin_triangles(const std::vector<HalfSpaceTriangle>& setup,
     bins.tiles_y = (height + k_tile_size - 1) / k_tile_size;
     bins.begin.assign(static_cast<size_t>(bins.tiles_x) * bins.tiles_y + 1, 0);
     auto for_tiles = [&](const HalfSpaceTriangle& t, auto&& fn) {
-        for (int ty = t.y0 / k_tile_size; ty <= (t.y1 - 1) / k_tile_size; ++ty)
-            for (int tx = t.x0 / k_tile_size; tx <= (t.x1 - 1) / k_tile_size; ++tx)
+        for (int ty = t.y0 / k_tile_size; ty <= (t.y1 - 1) / k_tile_size; ++ty) {
+            int first = 0, last = 0;
+            const int row0 = std::max(t.y0, ty * k_tile_size);
+            const int row1 = std::min(t.y1 - 1, ty * k_tile_size + k_tile_size - 1);
+            if (!columns_in_rows(t, row0, row1, first, last)) continue;
+            for (int tx = first / k_tile_size; tx <= last / k_tile_size; ++tx)
                 if (may_cover_tile(t, tx * k_tile_size, ty * k_tile_size))
                     fn(static_cast<size_t>(ty) * bins.tiles_x + tx);
+        }
     };
     for (size_t i = 0; i < setup.size(); ++i)
         if (valid[i]) for_tiles(setup[i], [&](size_t tile) { ++bins.begin[tile + 1]; });
