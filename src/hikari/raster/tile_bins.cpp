@@ -35,8 +35,9 @@ bool may_cover_tile(const HalfSpaceTriangle& t, int x0, int y0) {
 /// the triangle cut to the band of the rows' centres, its x extent. A long thin triangle (a
 /// shadow volume's side) then visits only the tiles along it, not its whole bounding box.
 bool columns_in_rows(const HalfSpaceTriangle& t, int row0, int row1, int& first, int& last) {
-    const double lo = static_cast<double>(row0) * k_subpixel_one + k_subpixel_one / 2;
-    const double hi = static_cast<double>(row1) * k_subpixel_one + k_subpixel_one / 2;
+    const auto one = static_cast<double>(k_subpixel_one);
+    const double lo = (row0 + 0.5) * one;
+    const double hi = (row1 + 0.5) * one;
     double x_min = std::numeric_limits<double>::infinity(), x_max = -x_min;
     auto take = [&](double x) {
         x_min = std::min(x_min, x);
@@ -51,10 +52,8 @@ bool columns_in_rows(const HalfSpaceTriangle& t, int row0, int row1, int& first,
             if ((ay - y) * (by - y) < 0.0) take(ax + (bx - ax) * (y - ay) / (by - ay));
     }
     if (!(x_min <= x_max)) return false;
-    first = std::max(
-        t.x0, static_cast<int>(std::floor((x_min - k_subpixel_one / 2) / k_subpixel_one)) - 1);
-    last = std::min(t.x1 - 1,
-                    static_cast<int>(std::ceil((x_max - k_subpixel_one / 2) / k_subpixel_one)) + 1);
+    first = std::max(t.x0, static_cast<int>(std::floor(x_min / one - 0.5)) - 1);
+    last = std::min(t.x1 - 1, static_cast<int>(std::ceil(x_max / one - 0.5)) + 1);
     return first <= last;
 }
 
