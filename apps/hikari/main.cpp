@@ -158,8 +158,13 @@ std::string default_output(const RenderOptions& o) {
     return stem + (o.aov == Aov::color ? "" : "-" + std::string(aov)) + ".png";
 }
 
-/// Refuses, before any work is done, an output the render could not be written to.
-void check_output_path(const std::filesystem::path& output) {
+/// Refuses, before any work is done, an output the render could not be written to, or that is
+/// the scene file itself (a scene named `scene.png` rendered without -o).
+void check_output_path(const std::filesystem::path& output, const std::string& scene_file) {
+    std::error_code same_error;
+    if (!scene_file.empty() && std::filesystem::equivalent(output, scene_file, same_error))
+        throw InputError(fmt::format("{}: refusing to overwrite the scene file with the render",
+                                     output.string()));
     if (!is_supported_image_extension(output) && !is_svg_path(output))
         throw InputError(fmt::format(
             "{}: unsupported output format (use .png, .ppm, .pfm, .exr, or .svg for lines)",
@@ -278,7 +283,7 @@ int run_drawing(const RenderOptions& o, const Method& method, const std::string&
 int run_render(const RenderOptions& o, const Method& method) {
     const std::string output = o.output.empty() ? default_output(o) : o.output;
     const auto load_start = Clock::now();
-    check_output_path(output);
+    check_output_path(output, o.scene_file);
     check_svg_output(output, method, o.aov);
     if (is_svg_path(output)) return run_drawing(o, method, output);
     const Scene scene = load_render_scene(o);

@@ -92,6 +92,15 @@ TEST_F(Cli, BadSceneExitsWithOneAndWritesNothing) {
     EXPECT_EQ(file_count(), 1u);  // only bad.json
 }
 
+TEST_F(Cli, RefusesToOverwriteTheSceneFile) {
+    const std::string scene = R"({"objects": [{"type": "sphere", "center": [0, 0, -3]}]})";
+    write("scene.png", scene);
+    const Result r = run("render " + path("scene.png") + " --width 8 -o " + path("scene.png"));
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("refusing to overwrite the scene file"), std::string::npos) << r.output;
+    EXPECT_EQ(hikari::testing::read_text(path("scene.png")), scene);
+}
+
 TEST_F(Cli, MissingSceneFileExitsWithOne) {
     const Result r = run("render " + path("missing.json") + " -o " + path("out.png"));
     EXPECT_EQ(r.status, 1);

@@ -51,6 +51,20 @@ TEST(Mat4, SingularMatrixDoesNotInvert) {
     EXPECT_EQ(inv, Mat4::identity());
 }
 
+TEST(Mat4, FarTranslationsInvertAndDoNotFlatten) {
+    // A model placed far from the origin (CAD, georeferenced): the translation does not make
+    // the transform singular.
+    const Mat4 m = translate({1e4f, 0, -3e3f}) * rotate({0, 1, 0}, 20) * scale(Vec3(2.0f));
+    Mat4 inv;
+    ASSERT_TRUE(invert(m, inv));
+    expect_near(transform_point(inv, transform_point(m, {1, 2, 3})), {1, 2, 3}, 1e-3f);
+    EXPECT_TRUE(invert(translate({1e6f, 0, -3e5f}) * scale(Vec3(0.001f)), inv));
+    EXPECT_FALSE(flattens_space(m));
+    EXPECT_FALSE(flattens_space(translate({1000, 0, 0})));
+    EXPECT_TRUE(flattens_space(scale({1, 0, 1})));
+    EXPECT_TRUE(flattens_space(scale({1, 1e-10f, 1})));
+}
+
 TEST(Mat4, DeterminantOfScaleIsProduct) {
     EXPECT_NEAR(determinant(scale({2, 3, 4})), 24.0f, 1e-5f);
 }

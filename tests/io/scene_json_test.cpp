@@ -78,6 +78,19 @@ TEST(SceneJson, TransformStepsApplyInOrder) {
     EXPECT_EQ(s.triangles.positions[1], Vec3(1, 2, 0));
 }
 
+TEST(SceneJson, FarTranslationsAreNotSingular) {
+    // The singularity test looks at the linear part: a model moved 1000 units or more loads.
+    const Scene s = parse(R"({"objects": [
+        {"type": "triangle", "vertices": [[1, 0, 0], [0, 1, 0], [0, 0, 1]],
+         "transform": [{"translate": [5000, 0, -20000]}]}]})");
+    EXPECT_EQ(s.triangles.positions[0], Vec3(5001, 0, -20000));
+    EXPECT_NE(error_of(R"({"objects": [
+        {"type": "triangle", "vertices": [[1, 0, 0], [0, 1, 0], [0, 0, 1]],
+         "transform": [{"scale": [1, 0, 1]}, {"translate": [5000, 0, 0]}]}]})")
+                  .find("the transform is singular"),
+              std::string::npos);
+}
+
 TEST(SceneJson, SyntaxErrorGivesLineAndColumn) {
     const std::string e = error_of("{\n  \"objects\": [\n    {\"type\": \"sphere\",}\n  ]\n}");
     EXPECT_EQ(e.rfind("s.json:3:", 0), 0u) << e;

@@ -74,18 +74,27 @@ float determinant(const Mat4& a) { return static_cast<float>(determinant_d(to_do
 bool invert(const Mat4& a, Mat4& out) {
     const Mat4d d = to_double(a);
     const double det = determinant_d(d);
-    // Relative test: scale by the largest entry so that tiny but well-conditioned matrices invert.
-    double largest = 0;
-    for (const auto& row : d)
-        for (double v : row) largest = std::max(largest, std::abs(v));
-    if (!std::isfinite(det) || largest == 0 || std::abs(det) <= 1e-12 * std::pow(largest, 4))
-        return false;
+    if (!std::isfinite(det) || det == 0.0) return false;
     Mat4 r;
     for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j)  // inverse = adjugate / det, adjugate = cofactor transpose
+        for (int j = 0; j < 4; ++j) {  // inverse = adjugate / det, adjugate = cofactor transpose
             r.m[i][j] = static_cast<float>(cofactor(d, j, i) / det);
+            if (!std::isfinite(r.m[i][j])) return false;
+        }
     out = r;
     return true;
+}
+
+bool flattens_space(const Mat4& a) {
+    const Mat4d d = to_double(a);
+    double largest = 0;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) largest = std::max(largest, std::abs(d[i][j]));
+    const double det = d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) -
+                       d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
+                       d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
+    return !std::isfinite(det) || largest == 0 ||
+           std::abs(det) <= 1e-9 * largest * largest * largest;
 }
 
 Vec3 transform_point(const Mat4& a, Vec3 p) {

@@ -34,9 +34,15 @@ Mat4 operator*(const Mat4& a, const Mat4& b);
 Vec4 operator*(const Mat4& a, Vec4 v);
 
 Mat4 transpose(const Mat4& a);
-/// The inverse by cofactors, computed in double. Returns false when `a` is singular
-/// (|det| below a relative tolerance); `out` is then left unchanged.
+/// The inverse by cofactors, computed in double. Returns false when `a` is singular (zero or
+/// non-finite determinant, or an inverse that does not fit in floats); `out` is then left
+/// unchanged. Nearly singular matrices are judged by their use: see flattens_space().
 bool invert(const Mat4& a, Mat4& out);
+
+/// Whether the linear part of `a` (its upper-left 3 × 3) squashes space flat: its determinant is
+/// below 10⁻⁹ times the cube of its largest entry. Scale-free (a model in millimetres passes) and
+/// blind to the translation, so a model placed far from the origin is not judged singular.
+bool flattens_space(const Mat4& a);
 /// Determinant (in double, rounded to float).
 float determinant(const Mat4& a);
 

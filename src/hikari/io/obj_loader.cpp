@@ -150,11 +150,16 @@ class MtlReader : public tinyobj::MaterialReader {
                     std::map<std::string, int>* material_map, std::string* warn,
                     std::string* err) override {
         const std::filesystem::path mtl = m_dir / name;
-        std::ifstream stream(mtl, std::ios::binary);
-        if (!stream) {
-            *warn += "cannot open material library " + mtl.string() + "\n";
+        // Through read_file_bytes, which reads only regular files and bounds the read: an
+        // `mtllib /dev/zero` must not run until memory is gone.
+        std::string text;
+        try {
+            text = read_file_bytes(mtl);
+        } catch (const InputError& e) {
+            *warn += std::string("cannot open material library: ") + e.what() + "\n";
             return false;
         }
+        std::istringstream stream(std::move(text));
         tinyobj::LoadMtl(material_map, materials, &stream, warn, err);
         m_library_of.resize(materials->size(), mtl);
         return true;

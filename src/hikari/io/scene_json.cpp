@@ -256,7 +256,8 @@ Mat4 parse_transform(const JsonNode& node) {
         m = s * m;
     }
     Mat4 inverse;
-    if (!invert(m, inverse)) node.fail("the transform is singular (it flattens the object)");
+    if (flattens_space(m) || !invert(m, inverse))
+        node.fail("the transform is singular (it flattens the object)");
     return m;
 }
 
