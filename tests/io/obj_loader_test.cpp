@@ -35,6 +35,23 @@ std::string load_error(const std::filesystem::path& path, Load load = load_obj) 
 /// A unit quad in the z = 0 plane, counter-clockwise seen from +z.
 const char* k_quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
 
+TEST(ObjLoader, FaceIndicesAreParsedExactly) {
+    // tinyobjloader reads indices with atoi: 2^32 + 3 would wrap to 3, "3abc" would be 3.
+    TempDir dir;
+    for (const char* corner : {"4294967299", "2147483648", "3abc", "12345678901234567890",
+                               "-99999999999", "0", "1/2/3/4", "2/", "+3", "1.5"}) {
+        SCOPED_TRACE(corner);
+        write_text(dir / "bad.obj",
+                   std::string(k_quad) + "vt 0 0\nvn 0 0 1\n\nf 1 2 " + corner + "\n");
+        const std::string e = load_error(dir / "bad.obj");
+        EXPECT_NE(e.find("bad.obj:8: 'f': '" + std::string(corner) + "' is not a corner"),
+                  std::string::npos)
+            << e;
+    }
+    write_text(dir / "good.obj", std::string(k_quad) + "vt 0 0\nvn 0 0 1\nf 1/1/1 2//1 -1/1 4\n");
+    EXPECT_EQ(load_error(dir / "good.obj"), "");
+}
+
 TEST(ObjLoader, QuadBecomesTwoTrianglesInOrder) {
     TempDir dir;
     write_text(dir / "quad.obj", std::string(k_quad) + "f 1 2 3 4\n");

@@ -86,6 +86,45 @@ void check_numbers(const std::filesystem::path& file, size_t line, const char* s
     });
 }
 
+/// Whether `part` is an OBJ index: an optional '-' and decimal digits, nonzero, of magnitude at
+/// most 2^31 − 1 (tinyobjloader reads them with atoi, which wraps or overflows silently).
+bool is_obj_index(std::string_view part) {
+    const std::string_view digits = part.starts_with('-') ? part.substr(1) : part;
+    if (digits.empty() || digits.size() > 10) return false;
+    int64_t value = 0;
+    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    return ec == std::errc() && end == digits.data() + digits.size() && value > 0 &&
+           value <= std::numeric_limits<int32_t>::max();
+}
+
+/// Checks every corner of a face: `v`, `v/vt`, `v//vn` or `v/vt/vn`, each an OBJ index.
+void check_face_corners(const std::filesystem::path& file, size_t line, std::string_view rest) {
+    for_each_token(rest, [&](std::string_view corner) {
+        std::string_view parts[3];
+        size_t count = 0;  // parts found; 4 stands for "more than three"
+        for (size_t start = 0;;) {
+            if (count == 3) {
+                count = 4;
+                break;
+            }
+            const size_t slash = corner.find('/', start);
+            parts[count++] = corner.substr(
+                start, slash == std::string_view::npos ? std::string_view::npos : slash - start);
+            if (slash == std::string_view::npos) break;
+            start = slash + 1;
+        }
+        const bool valid = count <= 3 && is_obj_index(parts[0]) &&
+                           (count < 2 || parts[1].empty() || is_obj_index(parts[1])) &&
+                           (count < 3 || is_obj_index(parts[2])) &&
+                           !(count == 2 && parts[1].empty());
+        if (!valid)
+            fail(file, line,
+                 fmt::format("'f': '{}' is not a corner (v, v/vt, v//vn or v/vt/vn, each a "
+                             "nonzero index of at most 10 digits that fits in 32 bits)",
+                             corner));
+    });
+}
+
 /// Where the line that starts at `pos` ends: its first \r or \n, or the end of the text. Two
 /// memchr calls, not find_first_of, which libstdc++ runs as a search of the set per character
 /// (6% of a million-triangle render's process time).
@@ -128,6 +167,7 @@ LineTable scan_obj_text(const std::filesystem::path& file, std::string_view text
                 fail(file, line,
                      "a face needs 3 to 255 corners, this one has " + std::to_string(corners));
             }
+            check_face_corners(file, line, s.substr(2));
             table.f.push_back(line);
         }
     }
