@@ -56,6 +56,12 @@ class Cli : public ::testing::Test {
     size_t file_count() const {
         return static_cast<size_t>(std::distance(fs::directory_iterator(m_dir), {}));
     }
+    /// `render ARGS -o out.png` exits 2 with "hikari: error: MESSAGE".
+    void expect_usage_error(const std::string& args, const std::string& message) const {
+        const Result r = run("render " + args + " -o " + path("out.png"));
+        EXPECT_EQ(r.status, 2) << args << ": " << r.output;
+        EXPECT_NE(r.output.find("hikari: error: " + message), std::string::npos) << r.output;
+    }
 
     fs::path m_dir;
 };
@@ -182,29 +188,24 @@ TEST_F(Cli, RasterOptionsRenderAndRejectBadValues) {
 // An option the chosen method does not understand is a usage error that names it and the
 // method, before anything is written; both ways round.
 TEST_F(Cli, OptionForeignToTheMethodExitsTwoAndWritesNothing) {
-    const auto expect_refused = [&](const std::string& args, const std::string& message) {
-        const Result r = run("render " + args + " -o " + path("out.png"));
-        EXPECT_EQ(r.status, 2) << args << ": " << r.output;
-        EXPECT_NE(r.output.find("hikari: error: " + message), std::string::npos) << r.output;
-    };
-    expect_refused("--interp flat --width 16",
-                   "--interp is not an option of method raytrace (it understands: --spp, "
-                   "--max-depth, --shadows)");
-    expect_refused("-m zbuffer --spp 4 --width 16",
-                   "--spp is not an option of method zbuffer (it understands: --interp, --cull, "
-                   "--shadows, --shadow-map-size)");
-    expect_refused("-m depthsort --max-depth 2",
-                   "--max-depth is not an option of method depthsort");
-    expect_refused("-m raytrace --cull back", "--cull is not an option of method raytrace");
-    expect_refused("-m wireframe --shadows map", "--shadows is not an option of method wireframe");
+    expect_usage_error("--interp flat --width 16",
+                       "--interp is not an option of method raytrace (it understands: --spp, "
+                       "--max-depth, --shadows)");
+    expect_usage_error(
+        "-m zbuffer --spp 4 --width 16",
+        "--spp is not an option of method zbuffer (it understands: --interp, --cull, "
+        "--shadows, --shadow-map-size)");
+    expect_usage_error("-m depthsort --max-depth 2",
+                       "--max-depth is not an option of method depthsort");
+    expect_usage_error("-m raytrace --cull back", "--cull is not an option of method raytrace");
+    expect_usage_error("-m wireframe --shadows map",
+                       "--shadows is not an option of method wireframe");
     EXPECT_EQ(file_count(), 0u);
 }
 
 TEST_F(Cli, ShadowModeAMethodCannotDrawExitsTwo) {
     const auto expect_refused = [&](const std::string& args, const std::string& message) {
-        const Result r = run("render " + args + " --width 16 -o " + path("out.png"));
-        EXPECT_EQ(r.status, 2) << args << ": " << r.output;
-        EXPECT_NE(r.output.find("hikari: error: " + message), std::string::npos) << r.output;
+        expect_usage_error(args + " --width 16", message);
     };
     expect_refused("--shadows map",
                    "--shadows map: method raytrace cannot draw shadows that way (it can: ray, "

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "hikari/frame/framebuffer.h"
 #include "hikari/io/scene_json.h"
 
@@ -44,6 +46,23 @@ inline double psnr(const Framebuffer& a, const Framebuffer& b) {
         }
     const double mse = sum / (3.0 * static_cast<double>(a.film.linear().pixels.size()));
     return mse > 0 ? 10 * std::log10(1.0 / mse) : 1000.0;
+}
+
+/// A closed box from `lo` to `hi` as 12 triangle objects of scene JSON (comma-separated, for an
+/// "objects" list), wound outward, material "m".
+inline std::string box(Vec3 lo, Vec3 hi) {
+    std::string out;
+    const Vec3 c[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z},
+                       {lo.x, hi.y, lo.z}, {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z},
+                       {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
+    const int quads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                             {3, 7, 6, 2}, {0, 4, 7, 3}, {1, 2, 6, 5}};
+    auto v = [&](int i) { return fmt::format("[{}, {}, {}]", c[i].x, c[i].y, c[i].z); };
+    for (const auto& q : quads)
+        out += fmt::format(
+            R"({}{{"type": "triangle", "vertices": [{}, {}, {}], "material": "m"}}, {{"type": "triangle", "vertices": [{}, {}, {}], "material": "m"}})",
+            out.empty() ? "" : ", ", v(q[0]), v(q[1]), v(q[2]), v(q[0]), v(q[2]), v(q[3]));
+    return out;
 }
 
 }  // namespace hikari::testing

@@ -137,27 +137,11 @@ TEST(ShadowMap, PlanesBlockExactlyTheOtherSide) {
     }
 }
 
-/// A closed box of 12 triangles from `lo` to `hi`, outward-facing.
-std::string box(Vec3 lo, Vec3 hi) {
-    std::string out;
-    const Vec3 c[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z},
-                       {lo.x, hi.y, lo.z}, {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z},
-                       {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
-    const int quads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                             {3, 7, 6, 2}, {0, 4, 7, 3}, {1, 2, 6, 5}};
-    auto v = [&](int i) { return fmt::format("[{}, {}, {}]", c[i].x, c[i].y, c[i].z); };
-    for (const auto& q : quads)
-        out += fmt::format(
-            R"({}{{"type": "triangle", "vertices": [{}, {}, {}], "material": "m"}}, {{"type": "triangle", "vertices": [{}, {}, {}], "material": "m"}})",
-            out.empty() ? "" : ", ", v(q[0]), v(q[1]), v(q[2]), v(q[0]), v(q[2]), v(q[3]));
-    return out;
-}
-
 TEST(ShadowMap, RasterShadowsAgreeWithTheRayTracer) {
     // Boxes and a sphere on a ground of triangles under a point and a directional light.
     const std::string objects =
-        box({-1.2f, 0, -0.6f}, {-0.2f, 1, 0.4f}) + ", " +
-        box({0.4f, 0, -1.4f}, {1.0f, 1.6f, -0.8f}) +
+        testing::box({-1.2f, 0, -0.6f}, {-0.2f, 1, 0.4f}) + ", " +
+        testing::box({0.4f, 0, -1.4f}, {1.0f, 1.6f, -0.8f}) +
         R"(, {"type": "sphere", "center": [0.9, 0.5, 0.8], "radius": 0.5, "material": "m"},
         {"type": "triangle", "vertices": [[-6, 0, -6], [-6, 0, 6], [6, 0, 6]], "material": "m"},
         {"type": "triangle", "vertices": [[-6, 0, -6], [6, 0, 6], [6, 0, -6]], "material": "m"})";

@@ -89,22 +89,6 @@ TEST(ShadowVolume, OpenMeshesKeepTheirBorders) {
     EXPECT_EQ(below.size(), 5u);
 }
 
-/// A box of 12 triangle objects from `lo` to `hi`, outward-facing, material "m".
-std::string box(Vec3 lo, Vec3 hi) {
-    std::string out;
-    const Vec3 c[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z},
-                       {lo.x, hi.y, lo.z}, {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z},
-                       {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
-    const int quads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                             {3, 7, 6, 2}, {0, 4, 7, 3}, {1, 2, 6, 5}};
-    auto v = [&](int i) { return fmt::format("[{}, {}, {}]", c[i].x, c[i].y, c[i].z); };
-    for (const auto& q : quads)
-        out += fmt::format(
-            R"({}{{"type": "triangle", "vertices": [{}, {}, {}], "material": "m"}}, {{"type": "triangle", "vertices": [{}, {}, {}], "material": "m"}})",
-            out.empty() ? "" : ", ", v(q[0]), v(q[1]), v(q[2]), v(q[0]), v(q[2]), v(q[3]));
-    return out;
-}
-
 const char* const k_ground =
     R"({"type": "triangle", "vertices": [[-8, 0, -8], [-8, 0, 8], [8, 0, 8]], "material": "m"},
        {"type": "triangle", "vertices": [[-8, 0, -8], [8, 0, 8], [8, 0, -8]], "material": "m"})";
@@ -124,8 +108,8 @@ TEST(ShadowVolume, EyeInsideTheShadowStillCountsRight) {
     const Scene scene = scene_of(
         R"({"eye": [0, 0.6, 0.3], "look_at": [0.4, 0, -2], "fov_y": 70, "width": 120, "height": 90})",
         R"({"type": "point", "position": [0.2, 6, 0.5], "intensity": [30, 30, 30]})",
-        box({-1.5f, 1, -1.5f}, {1.5f, 1.2f, 1.5f}) + ", " +
-            box({0.5f, 0, -2}, {0.9f, 0.4f, -1.6f}) + ", " + k_ground);
+        testing::box({-1.5f, 1, -1.5f}, {1.5f, 1.2f, 1.5f}) + ", " +
+            testing::box({0.5f, 0, -2}, {0.9f, 0.4f, -1.6f}) + ", " + k_ground);
     const Framebuffer ray = render_whitted(scene, Film(scene.camera));
     RasterSettings raster;
     raster.shadows = ShadowMode::volume;
@@ -137,8 +121,8 @@ TEST(ShadowVolume, RasterVolumesAgreeWithTheRayTracer) {
         R"({"eye": [1.5, 3.5, 5], "look_at": [0, 0.3, 0], "fov_y": 50, "width": 160, "height": 120})",
         R"({"type": "point", "position": [2, 4, 2], "intensity": [12, 12, 12]},
            {"type": "directional", "direction": [-0.5, -1, -0.3], "intensity": [0.6, 0.6, 0.6]})",
-        box({-1.2f, 0, -0.6f}, {-0.2f, 1, 0.4f}) + ", " +
-            box({0.4f, 0, -1.4f}, {1.0f, 1.6f, -0.8f}) +
+        testing::box({-1.2f, 0, -0.6f}, {-0.2f, 1, 0.4f}) + ", " +
+            testing::box({0.4f, 0, -1.4f}, {1.0f, 1.6f, -0.8f}) +
             R"(, {"type": "sphere", "center": [0.9, 0.5, 0.8], "radius": 0.5, "material": "m"}, )" +
             k_ground);
     const Framebuffer ray = render_whitted(scene, Film(scene.camera));
@@ -149,7 +133,7 @@ TEST(ShadowVolume, RasterVolumesAgreeWithTheRayTracer) {
 }
 
 TEST(ShadowVolume, ObjectsThatCastNoShadowAreLeftOut) {
-    std::string boxes = box({-0.5f, 0.5f, -0.5f}, {0.5f, 1.5f, 0.5f});
+    std::string boxes = testing::box({-0.5f, 0.5f, -0.5f}, {0.5f, 1.5f, 0.5f});
     // Every triangle of the box: "casts_shadow": false.
     for (size_t at = 0; (at = boxes.find(R"("material": "m"})", at)) != std::string::npos; at += 10)
         boxes.replace(at, 16, R"("material": "m", "casts_shadow": false})");
