@@ -92,9 +92,10 @@ std::vector<std::string> option_flags(const Method& method) {
 }
 
 TEST(Methods, EveryMethodDeclaresItsOptions) {
-    const std::vector<std::string> ray = {"--spp", "--max-depth", "--shadows"};
+    const std::vector<std::string> ray = {"--spp", "--max-depth", "--shadows",
+                                          "--light-samples"};
     const std::vector<std::string> raster = {"--interp", "--cull", "--shadows",
-                                             "--shadow-map-size"};
+                                             "--shadow-map-size", "--light-samples"};
     EXPECT_EQ(option_flags(*find_method("raytrace")), ray);
     for (const char* name : {"zbuffer", "scanline", "depthsort", "depthsort-naive"})
         EXPECT_EQ(option_flags(*find_method(name)), raster) << name;
@@ -114,14 +115,16 @@ TEST(Methods, EveryMethodDeclaresItsOptions) {
     std::vector<std::string> all;
     for (const MethodOption* option : method_options()) all.emplace_back(option->flag);
     EXPECT_EQ(all,
-              (std::vector<std::string>{"--spp", "--max-depth", "--shadows", "--interp", "--cull",
-                                        "--shadow-map-size", "--line-width", "--line-color"}));
+              (std::vector<std::string>{"--spp", "--max-depth", "--shadows", "--light-samples",
+                                        "--interp", "--cull", "--shadow-map-size", "--line-width",
+                                        "--line-color"}));
 }
 
 TEST(Methods, EveryMethodNamesItsShadowModesDefaultFirst) {
-    EXPECT_EQ(shadow_mode_list(*find_method("raytrace")), "ray, none");
+    EXPECT_EQ(shadow_mode_list(*find_method("raytrace")), "ray, analytic, none");
     for (const char* name : {"zbuffer", "scanline", "depthsort", "depthsort-naive"}) {
-        EXPECT_EQ(shadow_mode_list(*find_method(name)), "map, volume, none") << name;
+        EXPECT_EQ(shadow_mode_list(*find_method(name)), "map, volume, pcf, pcss, analytic, none")
+            << name;
         EXPECT_TRUE(does_shadows(*find_method(name), ShadowMode::volume));
         EXPECT_FALSE(does_shadows(*find_method(name), ShadowMode::ray));
     }

@@ -30,7 +30,13 @@ enum class ShadowMode {
     ray,     ///< a shadow ray toward the light (ray tracing)
     map,     ///< a Z-buffer seen from the light (shadow mapping, raster/shadow_map.h)
     volume,  ///< shadow volumes counted in a stencil buffer
+    pcf,       ///< shadow maps filtered by percentage-closer filtering (Reeves et al. 1987)
+    pcss,      ///< percentage-closer soft shadows (Fernando 2005)
+    analytic,  ///< area lights: the visible part of the light in closed form (Nishita & Nakamae)
 };
+
+/// Samples per area or environment light per shaded point (`--light-samples`) unless given.
+inline constexpr int k_default_light_samples = 16;
 
 /// Settings every method takes; each method's own (integrators/whitted/whitted.h,
 /// raster/raster_settings.h) come beside them.

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -11,6 +12,7 @@
 #include "hikari/core/error.h"
 #include "hikari/core/mat4.h"
 #include "hikari/io/default_scene.h"
+#include "hikari/io/image_read.h"
 #include "hikari/io/json_reader.h"
 #include "hikari/io/obj_loader.h"
 #include "hikari/io/read_file.h"
@@ -200,10 +202,61 @@ DirectionalLight parse_directional_light(const JsonNode& node) {
     return {normalize(node.at("direction").as_direction()), node.at("intensity").as_colour()};
 }
 
+AreaLight parse_area_light(const JsonNode& node) {
+    node.expect_object({"type", "corner", "edge1", "edge2", "radiance", "two_sided"});
+    AreaLight light{node.at("corner").as_vec3(), node.at("edge1").as_vec3(),
+                    node.at("edge2").as_vec3(), node.at("radiance").as_colour()};
+    if (node.has("two_sided")) light.two_sided = node.at("two_sided").as_bool();
+    // Parallel or zero edges span no area: no light could leave it.
+    const Vec3 n = light.area_normal();
+    const float scale = length(light.edge1) * length(light.edge2);
+    if (!(length(n) > 1e-6f * scale) || !(scale > 0.0f) || !is_finite(n))
+        node.fail("degenerate area light: edge1 and edge2 must be nonzero and not parallel");
+    return light;
+}
+
+/// An environment light: a constant "radiance", or a latitude–longitude map "file" (.hdr or
+/// .exr, relative to the scene) times "scale", turned by "rotation_degrees" about +y.
+EnvironmentLight parse_environment_light(const JsonNode& node, SceneBuilder& b) {
+    node.expect_object({"type", "radiance", "file", "scale", "rotation_degrees"});
+    EnvironmentLight light;
+    if (node.has("radiance") == node.has("file"))
+        node.fail("an environment light needs exactly one of \"radiance\" (constant) or \"file\" (a map)");
+    if (node.has("radiance")) {
+        for (const char* key : {"scale", "rotation_degrees"})
+            if (node.has(key)) node.at(key).fail("only a map (\"file\") takes this");
+        light.radiance = node.at("radiance").as_colour();
+        return light;
+    }
+    if (node.has("scale")) light.radiance = node.at("scale").as_colour();
+    const float rotation = node.has("rotation_degrees") ? node.at("rotation_degrees").as_number() : 0.0f;
+    const JsonNode file_node = node.at("file");
+    const std::string file = file_node.as_string();
+    Image image;
+    try {
+        image = read_image(b.base_dir / file);
+    } catch (const InputError& e) {
+        file_node.fail(fmt::format("cannot read environment map \"{}\": {}", file, e.what()));
+    }
+    if (image.width != 2 * image.height)
+        file_node.fail(fmt::format(
+            "environment map \"{}\" is {}x{}: a latitude-longitude map is twice as wide as high",
+            file, image.width, image.height));
+    for (const Vec3& texel : image.pixels)
+        if (!is_finite(texel) || min_component(texel) < 0.0f)
+            file_node.fail(fmt::format("environment map \"{}\" has a negative or non-finite texel", file));
+    light.map = std::make_shared<const EnvironmentMap>(std::move(image), rotation);
+    return light;
+}
+
 /// Every light kind's parser (scene/light.h): one line per kind.
-constexpr std::array<KindParser<Light>, 2> k_light_parsers = {{
-    {"point", [](const JsonNode& n) -> Light { return parse_point_light(n); }},
-    {"directional", [](const JsonNode& n) -> Light { return parse_directional_light(n); }},
+constexpr std::array<KindParser<Light, SceneBuilder>, 4> k_light_parsers = {{
+    {"point", [](const JsonNode& n, SceneBuilder&) -> Light { return parse_point_light(n); }},
+    {"directional",
+     [](const JsonNode& n, SceneBuilder&) -> Light { return parse_directional_light(n); }},
+    {"area", [](const JsonNode& n, SceneBuilder&) -> Light { return parse_area_light(n); }},
+    {"environment",
+     [](const JsonNode& n, SceneBuilder& b) -> Light { return parse_environment_light(n, b); }},
 }};
 
 /// The material an object names, or a neutral grey one shared by objects that name none.
@@ -439,8 +492,13 @@ Scene parse_scene(std::string_view text, const std::string& file,
     if (root.has("lights")) {
         const JsonNode lights = root.at("lights");
         lights.expect_array();
-        for (size_t i = 0; i < lights.value().size(); ++i)
-            b.scene.lights.push_back(parse_kind(lights.at(i), "light", k_light_parsers));
+        bool environment = false;
+        for (size_t i = 0; i < lights.value().size(); ++i) {
+            b.scene.lights.push_back(parse_kind(lights.at(i), "light", k_light_parsers, b));
+            if (!std::holds_alternative<EnvironmentLight>(b.scene.lights.back())) continue;
+            if (environment) lights.at(i).fail("a scene has at most one environment light");
+            environment = true;
+        }
     }
     const JsonNode objects = root.at("objects");
     objects.expect_array();

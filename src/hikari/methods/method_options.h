@@ -24,6 +24,8 @@ struct MethodSettings {
     LineSettings lines;       ///< wireframe, hiddenline
     /// `--shadows` when given; otherwise each method's default (Method::shadow_modes).
     std::optional<ShadowMode> shadows;
+    /// `--light-samples`: samples per area or environment light per point, for every method.
+    int light_samples = k_default_light_samples;
 };
 
 /// A word an option takes and the value it stands for (`--interp gouraud`).
@@ -63,6 +65,9 @@ inline constexpr Choice<std::optional<ShadowMode>> k_shadow_choices[] = {
     {"ray", ShadowMode::ray},
     {"map", ShadowMode::map},
     {"volume", ShadowMode::volume},
+    {"pcf", ShadowMode::pcf},
+    {"pcss", ShadowMode::pcss},
+    {"analytic", ShadowMode::analytic},
 };
 
 /// `--cull`: RasterSettings::cull_back_faces.

@@ -22,7 +22,10 @@ namespace {
 Framebuffer ray_trace(const Scene& scene, Film film, const RenderSettings& settings,
                       const MethodSettings& own) {
     WhittedSettings whitted = own.whitted;
-    whitted.shadow_rays = own.shadows.value_or(ShadowMode::ray) == ShadowMode::ray;
+    const ShadowMode mode = own.shadows.value_or(ShadowMode::ray);
+    whitted.shadow_rays = mode != ShadowMode::none;
+    whitted.analytic_area_shadows = mode == ShadowMode::analytic;
+    whitted.light_samples = own.light_samples;
     return render_whitted(scene, std::move(film), settings, whitted);
 }
 
@@ -33,20 +36,30 @@ Framebuffer rasterize(const Scene& scene, Film film, const RenderSettings& setti
                       const MethodSettings& own) {
     RasterSettings raster = own.raster;
     raster.shadows = own.shadows.value_or(ShadowMode::map);
+    raster.light_samples = own.light_samples;
     return render(scene, std::move(film), settings, raster);
 }
 
-constexpr ShadowMode k_ray_shadow_modes[] = {ShadowMode::ray, ShadowMode::none};
-constexpr ShadowMode k_raster_shadow_modes[] = {ShadowMode::map, ShadowMode::volume,
-                                                ShadowMode::none};
+constexpr ShadowMode k_ray_shadow_modes[] = {ShadowMode::ray, ShadowMode::analytic,
+                                             ShadowMode::none};
+constexpr ShadowMode k_raster_shadow_modes[] = {ShadowMode::map,  ShadowMode::volume,
+                                                ShadowMode::pcf,  ShadowMode::pcss,
+                                                ShadowMode::analytic, ShadowMode::none};
 
 constexpr MethodOption k_shadows_option = {
     "--shadows",
     "Shadows (Fig 4.24): ray (shadow rays; raytrace's default), map (shadow mapping; the "
-    "raster methods' default), volume (shadow volumes, z-fail stencil), none",
+    "raster methods' default), volume (shadow volumes, z-fail stencil), pcf (filtered maps, "
+    "5x5 texels), pcss (percentage-closer soft shadows), analytic (area lights' visible part in "
+    "closed form), none",
     ChoiceOption<std::optional<ShadowMode>>{
         k_shadow_choices,
         [](MethodSettings& s) -> std::optional<ShadowMode>& { return s.shadows; }}};
+
+constexpr MethodOption k_light_samples_option = {
+    "--light-samples",
+    "Stratified samples per area or environment light per shaded point (default 16)",
+    IntegerOption{1, 65536, [](MethodSettings& s) -> int& { return s.light_samples; }}};
 
 constexpr MethodOption k_ray_tracing_options[] = {
     {"--spp", "Samples per pixel (1 = pixel centres; more: stratified)",
@@ -55,6 +68,7 @@ constexpr MethodOption k_ray_tracing_options[] = {
     {"--max-depth", "Ray segments per path, the primary ray included (Whitted recursion)",
      IntegerOption{1, 64, [](MethodSettings& s) -> int& { return s.whitted.max_depth; }}},
     k_shadows_option,
+    k_light_samples_option,
 };
 
 constexpr MethodOption k_cull_option = {
@@ -75,6 +89,7 @@ constexpr MethodOption k_raster_options[] = {
     k_shadows_option,
     {"--shadow-map-size", "Texels per side of each shadow map (a cube map has six faces)",
      IntegerOption{16, 16384, [](MethodSettings& s) -> int& { return s.raster.shadow_map_size; }}},
+    k_light_samples_option,
 };
 
 constexpr MethodOption k_line_options[] = {

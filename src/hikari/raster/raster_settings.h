@@ -17,8 +17,10 @@ enum class Interpolation {
 struct RasterSettings {
     Interpolation interp = Interpolation::phong;  ///< shading interpolation
     bool cull_back_faces = false;                 ///< drop triangles facing away (Fig 4.3)
-    ShadowMode shadows = ShadowMode::none;        ///< none or map
+    ShadowMode shadows = ShadowMode::none;        ///< none, map, volume, pcf, pcss or analytic
     int shadow_map_size = 2048;                   ///< texels per side of each shadow map face
+    /// Samples of the specular term per area light and point (the diffuse term is analytic).
+    int light_samples = k_default_light_samples;
 };
 
 }  // namespace hikari

@@ -7,7 +7,10 @@
 #include "hikari/raster/cull.h"
 #include "hikari/raster/shadow_map.h"
 #include "hikari/raster/shadow_volume.h"
+#include "hikari/geometry/ray_offset.h"
 #include "hikari/shading/direct.h"
+#include "hikari/shading/soft_shadows/occluders.h"
+#include "hikari/shading/spherical_harmonics.h"
 #include "hikari/shading/lights.h"
 #include "hikari/shading/material_eval.h"
 
@@ -23,9 +26,13 @@ struct ShadeContext {
     CameraFrame frame;
     int width, height;
     LightingEnvironment lighting;
-    ShadowMode shadows;                                  ///< none, map or volume
-    const ShadowMaps* shadow_maps;                       ///< the maps, for ShadowMode::map
+    ShadowMode shadows;                                  ///< how lights are blocked
+    const ShadowMaps* shadow_maps;                       ///< the maps, for map, pcf and pcss
     const std::vector<std::vector<uint8_t>>* in_volume;  ///< per light and pixel, for volume
+    const OccluderSet* occluders;                        ///< the casters, for analytic
+    /// Per light: an environment light's irradiance (raster lights it unshadowed).
+    const std::vector<std::optional<IrradianceSh>>* environment_sh;
+    int light_samples;  ///< specular samples per area light
 };
 
 /// Where a pixel's shadows are decided: its visible point, face normal toward the eye, and
@@ -53,19 +60,69 @@ struct PixelSurface {
     PixelUv tex;             ///< texture coordinates and their pixel derivatives
 };
 
-/// Whether light `l` reaches the pixel's point, by its shadow map or stencil (planes, which no
-/// finite map or mesh volume holds, answered exactly).
-bool light_reaches(const ShadeContext& ctx, size_t l, const ShadowQuery& q) {
-    if (ctx.shadows == ShadowMode::none) return true;
+/// Half the mean edge length of an area light: the radius PCSS gives it.
+float light_radius(const Light& light) {
+    const auto* area = std::get_if<AreaLight>(&light);
+    return area ? 0.25f * (length(area->edge1) + length(area->edge2)) : 0.0f;
+}
+
+/// How much of light `l` reaches the pixel's point (0 to 1), by its shadow map (filtered for
+/// pcf and pcss) or stencil (planes, which no finite map or mesh volume holds, answered
+/// exactly), or, for analytic shadows, by the casters themselves: the visible fraction of an
+/// area light's diffuse light, a segment test toward a point or directional light. Area lights
+/// are seen by maps and volumes from their centre.
+float light_fraction(const ShadeContext& ctx, size_t l, const ShadowQuery& q) {
+    if (ctx.shadows == ShadowMode::none) return 1.0f;
     const Light& light = ctx.scene.lights[l];
-    if (plane_blocks_light(ctx.scene, light, q.point)) return false;
-    if (ctx.shadows == ShadowMode::volume) return (*ctx.in_volume)[l][q.pixel] == 0;
+    if (ctx.shadows == ShadowMode::analytic) {
+        if (const auto* area = std::get_if<AreaLight>(&light)) {
+            const float open = visible_light(*area, q.point, q.ng, q.ng, nullptr).cosine_solid_angle;
+            if (!(open > 0.0f)) return 1.0f;
+            return visible_light(*area, q.point, q.ng, q.ng, ctx.occluders).cosine_solid_angle /
+                   open;
+        }
+        if (plane_blocks_light(ctx.scene, light, q.point)) return 0.0f;
+        const LightSample toward = sample_light(light, q.point);
+        const Vec3 ng = dot(q.ng, toward.to_light) < 0.0f ? -q.ng : q.ng;
+        const Vec3 from = offset_ray_origin(q.point, ng);
+        return ctx.occluders->blocks_segment(from, toward.to_light, toward.distance) ? 0.0f : 1.0f;
+    }
+    if (plane_blocks_light(ctx.scene, light, q.point)) return 0.0f;
+    if (ctx.shadows == ShadowMode::volume) return (*ctx.in_volume)[l][q.pixel] == 0 ? 1.0f : 0.0f;
     const std::optional<LightShadowMap>& map = ctx.shadow_maps->lights[l];
-    if (!map) return true;
+    if (!map) return 1.0f;
     // The normal offset moves the lookup off the surface on the light's side.
     const Vec3 to_light = sample_light(light, q.point).to_light;
-    return lit_in_shadow_map(*map, q.point, dot(q.ng, to_light) < 0.0f ? -q.ng : q.ng);
+    const Vec3 n = dot(q.ng, to_light) < 0.0f ? -q.ng : q.ng;
+    switch (ctx.shadows) {
+        case ShadowMode::pcf: return pcf_shadow_fraction(*map, q.point, n);
+        case ShadowMode::pcss: return pcss_shadow_fraction(*map, q.point, n, light_radius(light));
+        default: return lit_in_shadow_map(*map, q.point, n) ? 1.0f : 0.0f;
+    }
 }
+
+/// Area and environment lights in the rasterizer: an area light's diffuse term in closed form
+/// over the whole light and its specular term sampled over it, both times the pixel's
+/// light_fraction; an environment light's irradiance from its spherical harmonics, times kd
+/// (unshadowed, no highlight).
+struct RasterExtendedLights {
+    const ShadeContext& ctx;
+    const ShadowQuery& query;
+
+    template <class Visible>
+    Vec3 operator()(size_t l, const Light& light, const SurfacePoint<float>& s,
+                    const MaterialSample<float>& m, bool specular, Visible&, int32_t&) const {
+        if (const auto* area = std::get_if<AreaLight>(&light)) {
+            const float fraction = light_fraction(ctx, l, query);
+            if (!(fraction > 0.0f)) return Vec3(0.0f);
+            const VisibleLight whole = visible_light(*area, s.position, s.normal, s.normal, nullptr);
+            return fraction *
+                   area_light_reflection(*area, whole, l, s, m, specular, ctx.light_samples);
+        }
+        const std::optional<IrradianceSh>& sh = (*ctx.environment_sh)[l];
+        return sh ? m.kd * sh->irradiance(s.normal) : Vec3(0.0f);
+    }
+};
 
 /// The material at `p` (its texture applied) lit by every light that reaches the pixel of
 /// `shadow`.
@@ -81,9 +138,10 @@ Vec3 shade_point(const ShadeContext& ctx, uint32_t material, Vec3 p, Vec3 n, Vec
     const MaterialSample<float> m =
         evaluate_material<float>(ctx.scene.materials.data(), static_cast<int32_t>(material), s);
     const auto lit = [&](size_t l, const LightSample&, const SurfacePoint<float>&, bool) {
-        return light_reaches(ctx, l, shadow);
+        return light_fraction(ctx, l, shadow);
     };
-    return direct_lighting<float>(ctx.lighting, s, m, true, lit).colour;
+    return direct_lighting<float>(ctx.lighting, s, m, true, lit, RasterExtendedLights{ctx, shadow})
+        .colour;
 }
 
 /// `n` turned to the side of `ng_front` (the face normal facing the viewer), as the ray tracer
@@ -159,6 +217,15 @@ Vec3 shade_surface(const ShadeContext& ctx, const PixelSurface& s, size_t pixel)
     return Vec3(0.0f);
 }
 
+/// What a pixel that sees no triangle shows: the environment map along its camera ray when the
+/// scene has an environment light, else the background colour.
+Vec3 background_at(const ShadeContext& ctx, int x, int y) {
+    for (const Light& light : ctx.scene.lights)
+        if (const auto* env = std::get_if<EnvironmentLight>(&light))
+            return env->radiance_from(camera_ray(ctx.frame, x + 0.5f, y + 0.5f).direction);
+    return ctx.scene.background;
+}
+
 /// Colour and AOVs of every pixel of `tile`.
 void shade_tile(const ShadeContext& ctx, const VisibilityBuffer& vis, const Tile& tile,
                 Framebuffer& fb) {
@@ -167,7 +234,7 @@ void shade_tile(const ShadeContext& ctx, const VisibilityBuffer& vis, const Tile
             const size_t pixel = static_cast<size_t>(y) * ctx.width + x;
             const uint32_t t = vis.triangle[pixel];
             if (t == k_no_triangle) {
-                fb.set_color(pixel, ctx.scene.background);
+                fb.set_color(pixel, background_at(ctx, x, y));
                 continue;
             }
             const PixelSurface s = surface_at(ctx, ctx.ps.triangles[t].source, x, y);
@@ -284,12 +351,26 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
                      {scene.lights.data(), scene.lights.size(), scene.ambient},
                      scene.lights.empty() ? ShadowMode::none : raster.shadows,
                      nullptr,
-                     nullptr};
+                     nullptr,
+                     nullptr,
+                     nullptr,
+                     raster.light_samples};
+    std::vector<std::optional<IrradianceSh>> environment_sh;
+    for (const Light& light : scene.lights) {
+        const auto* env = std::get_if<EnvironmentLight>(&light);
+        environment_sh.push_back(env ? std::optional(project_environment(*env)) : std::nullopt);
+    }
+    ctx.environment_sh = &environment_sh;
     // The shadow pass, shared by every visibility method: maps from the lights, or a stencil
     // per light counted against the depth of each pixel's visible point.
     ShadowMaps maps;
     std::vector<std::vector<uint8_t>> in_volume;
-    if (ctx.shadows == ShadowMode::map) {
+    std::optional<OccluderSet> occluders;
+    if (ctx.shadows == ShadowMode::analytic) {
+        occluders.emplace(scene);
+        ctx.occluders = &*occluders;
+    } else if (ctx.shadows == ShadowMode::map || ctx.shadows == ShadowMode::pcf ||
+               ctx.shadows == ShadowMode::pcss) {
         maps = build_shadow_maps(scene, ps.scene, shadow_casting_triangles(scene, ps.scene),
                                  visible_bounds(ps, vis), raster.shadow_map_size);
         ctx.shadow_maps = &maps;
@@ -297,6 +378,10 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
         const std::vector<float> depth = visible_depth(ctx, vis);
         const std::vector<uint8_t> casters = shadow_casting_triangles(scene, ps.scene);
         for (const Light& light : scene.lights) {
+            if (std::holds_alternative<EnvironmentLight>(light)) {
+                in_volume.emplace_back();  // lit unshadowed: never asked
+                continue;
+            }
             const std::vector<VolumePolygon> volume =
                 shadow_volume_polygons(ps.scene.triangles, casters, light);
             in_volume.push_back(stencil_shadow_mask(volume, ps.view, ctx.frame, depth));

@@ -6,7 +6,6 @@
 #include <limits>
 
 #include "hikari/core/parallel.h"
-#include "hikari/core/visit.h"
 #include "hikari/raster/cull.h"
 #include "hikari/raster/zbuffer.h"
 
@@ -143,11 +142,10 @@ std::optional<LightShadowMap> directional_map(const DirectionalLight& light,
 
 /// A point light's cube map: six 90° views along ±x, ±y, ±z, in that order (face 2a + (d_a < 0)
 /// holds the directions whose largest component is axis a).
-std::optional<LightShadowMap> point_map(const PointLight& light, const RasterScene& casters,
-                                        int size) {
+std::optional<LightShadowMap> point_map(Vec3 position, const RasterScene& casters, int size) {
     if (casters.triangles.indices.empty()) return std::nullopt;
     LightShadowMap map;
-    map.origin = light.position;
+    map.origin = position;
     map.size = size;
     map.texel_size = 2.0f / static_cast<float>(size);
     Aabb bounds;
@@ -158,23 +156,23 @@ std::optional<LightShadowMap> point_map(const PointLight& light, const RasterSce
         const Vec3 p{(corner & 1) ? bounds.max.x : bounds.min.x,
                      (corner & 2) ? bounds.max.y : bounds.min.y,
                      (corner & 4) ? bounds.max.z : bounds.min.z};
-        far_dist = std::max(far_dist, length(p - light.position));
+        far_dist = std::max(far_dist, length(p - position));
     }
-    const Vec3 nearest = max(min(light.position, bounds.max), bounds.min);
+    const Vec3 nearest = max(min(position, bounds.max), bounds.min);
     // A point at distance d has depth at least d / √3 in the face that holds it.
     const float near_plane =
-        std::max(0.5f * length(nearest - light.position), 1e-5f * far_dist) / std::sqrt(3.0f);
+        std::max(0.5f * length(nearest - position), 1e-5f * far_dist) / std::sqrt(3.0f);
     const std::array<Vec3, 6> axes = {Vec3(1, 0, 0),  Vec3(-1, 0, 0), Vec3(0, 1, 0),
                                       Vec3(0, -1, 0), Vec3(0, 0, 1),  Vec3(0, 0, -1)};
-    const Vec3 origin = light.position;
+    const Vec3 origin = position;
     for (const Vec3& axis : axes) {
         RasterView view;
-        view.eye = light.position;
+        view.eye = position;
         view.width = view.height = size;
         view.near_plane = near_plane;
         view.far_plane = 1.01f * far_dist + near_plane;
         const Vec3 up = axis.y != 0.0f ? Vec3(0, 0, 1) : Vec3(0, 1, 0);
-        view.view_from_world = look_at(light.position, light.position + axis, up);
+        view.view_from_world = look_at(position, position + axis, up);
         view.clip_from_view = perspective(90.0f, 1.0f, view.near_plane, view.far_plane);
         view.screen_from_clip = viewport(size, size);
         view.clip_from_world = view.clip_from_view * view.view_from_world;
@@ -213,36 +211,114 @@ ShadowMaps build_shadow_maps(const Scene& scene, const RasterScene& raster,
     if (receivers.empty()) return maps;
     const RasterScene caster_triangles = caster_scene(raster, casters);
     for (size_t l = 0; l < scene.lights.size(); ++l)
-        maps.lights[l] = visit_kind(scene.lights[l], [&](const auto& light) {
-            using Kind = std::decay_t<decltype(light)>;
-            if constexpr (std::is_same_v<Kind, DirectionalLight>)
-                return directional_map(light, caster_triangles, receivers, size);
-            else
-                return point_map(light, caster_triangles, size);
-        });
+        if (const auto* d = std::get_if<DirectionalLight>(&scene.lights[l]))
+            maps.lights[l] = directional_map(*d, caster_triangles, receivers, size);
+        else if (const std::optional<Vec3> at = light_position(scene.lights[l]))
+            maps.lights[l] = point_map(*at, caster_triangles, size);  // area lights: their centre
     return maps;
 }
 
-bool lit_in_shadow_map(const LightShadowMap& map, Vec3 p, Vec3 n) {
+namespace {
+
+/// A receiver point as the map sees it: the lookup point (moved off the surface by the normal
+/// offset), its depth, the world size of a texel there, and the depth bias allowed.
+struct MapLookup {
+    Vec3 q;
+    float depth = 0;
+    float texel = 0;
+    float tan_theta = 0;
+    Vec3 across1, across2;  ///< unit directions across the map at q (its texel rows, columns)
+};
+
+MapLookup map_lookup(const LightShadowMap& map, Vec3 p, Vec3 n) {
+    MapLookup m;
     const Vec3 to_light = map.directional ? -map.direction : normalize(map.origin - p);
-    const float texel = map.directional ? map.texel_size : map.texel_size * length(p - map.origin);
+    m.texel = map.directional ? map.texel_size : map.texel_size * length(p - map.origin);
     const float cos_theta = std::clamp(dot(n, to_light), 0.0f, 1.0f);
     const float sin_theta = std::sqrt(1.0f - cos_theta * cos_theta);
-    const float tan_theta = std::min(sin_theta / std::max(cos_theta, 1e-6f), k_max_slope);
-    const Vec3 q = p + n * (k_normal_offset_texels * texel);
+    m.tan_theta = std::min(sin_theta / std::max(cos_theta, 1e-6f), k_max_slope);
+    m.q = p + n * (k_normal_offset_texels * m.texel);
+    m.depth = map.directional ? dot(m.q - map.origin, map.direction) : length(m.q - map.origin);
+    const Vec3 w = map.directional ? map.direction : normalize(m.q - map.origin);
+    const Vec3 up = std::abs(w.y) < 0.9f ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
+    m.across1 = normalize(cross(up, w));
+    m.across2 = cross(w, m.across1);
+    return m;
+}
+
+/// The caster depth the map holds in the direction of world point `x` (seen from the light),
+/// or +infinity outside the map.
+float caster_depth(const LightShadowMap& map, Vec3 x) {
     const ShadowMapFace& face =
-        map.directional ? map.faces.front() : map.faces[cube_face(q - map.origin)];
-    const Vec4 clip = face.view.clip_from_world * Vec4(q, 1.0f);
-    if (!(clip.w > 0.0f)) return true;
+        map.directional ? map.faces.front() : map.faces[cube_face(x - map.origin)];
+    const Vec4 clip = face.view.clip_from_world * Vec4(x, 1.0f);
+    if (!(clip.w > 0.0f)) return k_no_caster;
     const Vec3 screen = transform_point(face.view.screen_from_clip, clip.xyz() / clip.w);
     if (!(screen.x >= 0.0f && screen.y >= 0.0f && screen.x < static_cast<float>(map.size) &&
           screen.y < static_cast<float>(map.size)))
-        return true;  // outside the map: no caster there
-    const size_t texel_index = static_cast<size_t>(screen.y) * static_cast<size_t>(map.size) +
-                               static_cast<size_t>(screen.x);
-    const float depth =
-        map.directional ? dot(q - map.origin, map.direction) : length(q - map.origin);
-    return depth <= face.depth[texel_index] + texel * (k_constant_bias_texels + tan_theta);
+        return k_no_caster;  // outside the map: no caster there
+    return face.depth[static_cast<size_t>(screen.y) * static_cast<size_t>(map.size) +
+                      static_cast<size_t>(screen.x)];
+}
+
+/// The lookup point moved (i, j) texels across the map, at the receiver's distance (for a cube
+/// map, a texel's angle about the light).
+Vec3 offset_lookup(const MapLookup& m, float i, float j) {
+    return m.q + (i * m.texel) * m.across1 + (j * m.texel) * m.across2;
+}
+
+/// The fraction of a (2k + 1)² grid of lookups, `stride` texels apart around m, that see no
+/// caster nearer than the receiver (percentage-closer filtering: Reeves, Salesin & Cook 1987).
+float percentage_closer(const LightShadowMap& map, const MapLookup& m, int k, float stride) {
+    // Neighbouring lookups on a receiver sloped by θ differ in depth by up to tan θ per texel.
+    const float bias = m.texel * (k_constant_bias_texels + m.tan_theta * (1.0f + k * stride));
+    int lit = 0;
+    for (int j = -k; j <= k; ++j)
+        for (int i = -k; i <= k; ++i)
+            lit += m.depth <= caster_depth(map, offset_lookup(m, i * stride, j * stride)) + bias
+                       ? 1
+                       : 0;
+    return static_cast<float>(lit) / static_cast<float>((2 * k + 1) * (2 * k + 1));
+}
+
+}  // namespace
+
+bool lit_in_shadow_map(const LightShadowMap& map, Vec3 p, Vec3 n) {
+    const MapLookup m = map_lookup(map, p, n);
+    return m.depth <= caster_depth(map, m.q) + m.texel * (k_constant_bias_texels + m.tan_theta);
+}
+
+float pcf_shadow_fraction(const LightShadowMap& map, Vec3 p, Vec3 n) {
+    return percentage_closer(map, map_lookup(map, p, n), k_pcf_radius_texels, 1.0f);
+}
+
+float pcss_shadow_fraction(const LightShadowMap& map, Vec3 p, Vec3 n, float light_radius) {
+    if (map.directional || !(light_radius > 0.0f)) return pcf_shadow_fraction(map, p, n);
+    const MapLookup m = map_lookup(map, p, n);
+    // Texels are m.texel wide at the receiver's distance d_r; an occluder at depth d_b hides part
+    // of a light of radius R from it when it lies within R (d_r − d_b) / d_b of the receiver's
+    // line to the light's centre, measured at the receiver: up to 3R for d_b >= d_r / 4.
+    const float search = std::min(3.0f * light_radius / m.texel, k_pcss_max_radius_texels);
+    const int k = 3;
+    const float stride = std::max(search / k, 1.0f);
+    const float bias = m.texel * (k_constant_bias_texels + m.tan_theta * (1.0f + k * stride));
+    double blocker_sum = 0;
+    int blockers = 0;
+    for (int j = -k; j <= k; ++j)
+        for (int i = -k; i <= k; ++i) {
+            const float d = caster_depth(map, offset_lookup(m, i * stride, j * stride));
+            if (d + bias < m.depth) {
+                blocker_sum += d;
+                ++blockers;
+            }
+        }
+    if (blockers == 0) return 1.0f;
+    // Fernando 2005: penumbra width w = R (d_r − d_b) / d_b at the receiver, by similar triangles.
+    const float d_blocker = static_cast<float>(blocker_sum / blockers);
+    const float penumbra = light_radius * (m.depth - d_blocker) / std::max(d_blocker, 1e-6f);
+    const float radius = std::clamp(penumbra / m.texel, 1.0f, k_pcss_max_radius_texels);
+    const int steps = std::min(static_cast<int>(std::ceil(radius)), k_pcss_max_steps);
+    return percentage_closer(map, m, steps, radius / static_cast<float>(steps));
 }
 
 bool plane_blocks_light(const Scene& scene, const Light& light, Vec3 p) {
@@ -251,13 +327,11 @@ bool plane_blocks_light(const Scene& scene, const Light& light, Vec3 p) {
         const float side = dot(p - plane.point, plane.normal);
         // A point on the plane (the plane itself, as a receiver) is never behind it.
         if (!(std::abs(side) > 1e-4f * (1.0f + length(p - plane.point)))) continue;
-        const bool blocked = visit_kind(light, [&](const auto& l) {
-            using Kind = std::decay_t<decltype(l)>;
-            if constexpr (std::is_same_v<Kind, DirectionalLight>)
-                return side * dot(-l.direction, plane.normal) < 0.0f;
-            else
-                return side * dot(l.position - plane.point, plane.normal) < 0.0f;
-        });
+        bool blocked = false;
+        if (const auto* d = std::get_if<DirectionalLight>(&light))
+            blocked = side * dot(-d->direction, plane.normal) < 0.0f;
+        else if (const std::optional<Vec3> at = light_position(light))
+            blocked = side * dot(*at - plane.point, plane.normal) < 0.0f;
         if (blocked) return true;
     }
     return false;

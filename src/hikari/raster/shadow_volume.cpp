@@ -9,7 +9,6 @@
 
 #include "hikari/core/parallel.h"
 #include "hikari/core/ray.h"
-#include "hikari/core/visit.h"
 #include "hikari/frame/tiles.h"
 #include "hikari/raster/clip.h"
 #include "hikari/raster/cull.h"
@@ -161,15 +160,12 @@ CasterMesh caster_mesh(const TriangleSet& tris, const std::vector<uint8_t>& cast
 class VolumeBuilder {
   public:
     VolumeBuilder(const Light& light, std::vector<VolumePolygon>& out) : m_out(out) {
-        visit_kind(light, [&](const auto& l) {
-            using Kind = std::decay_t<decltype(l)>;
-            if constexpr (std::is_same_v<Kind, DirectionalLight>) {
-                m_directional = true;
-                m_direction = normalize(l.direction);
-            } else {
-                m_position = l.position;
-            }
-        });
+        if (const auto* d = std::get_if<DirectionalLight>(&light)) {
+            m_directional = true;
+            m_direction = normalize(d->direction);
+        } else {
+            m_position = light_position(light).value_or(Vec3(0.0f));
+        }
     }
 
     bool faces_light(Vec3 a, Vec3 b, Vec3 c) const {

@@ -229,7 +229,9 @@ void PrimaryHitTracer::finish(const TriangleHit* triangle_hits, PrimaryBlock& bl
 
     // 5. The hits' shadow rays, one light at a time against all of them (Boulos et al. 2007 trace
     // shadow rays as packets too: from nearby points toward one light they stay coherent).
-    block.shadows_known = m_scene.lights.size() <= k_max_block_lights;
+    // Area and environment lights take many shadow rays per hit: the one-ray code casts them.
+    block.shadows_known = m_scene.lights.size() <= k_max_block_lights &&
+                          std::all_of(m_scene.lights.begin(), m_scene.lights.end(), is_delta_light);
     if (!block.shadows_known) return;
     for (int c = 0; c < chunks; ++c) std::fill_n(lanes.chunks[c].lit, k_lane_chunk, 0);
     const auto shadows = simd_pick(m_level, detail::primary_shadows_portable,

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "hikari/bvh/scene_intersector.h"
 #include "hikari/core/rng.h"
+#include "hikari/core/strata.h"
 #include "hikari/frame/tiles.h"
 #include "hikari/geometry/ray_offset.h"
 #include "hikari/integrators/whitted/primary_hits.h"
@@ -19,6 +21,41 @@ namespace hikari {
 
 namespace {
 
+/// What rays see of the lights themselves: the area lights' faces (radiance L), and the
+/// environment where a ray escapes.
+struct Emitters {
+    std::vector<AreaLight> areas;
+    const EnvironmentLight* environment = nullptr;
+
+    explicit Emitters(const Scene& scene) {
+        for (const Light& light : scene.lights) {
+            if (const auto* a = std::get_if<AreaLight>(&light)) areas.push_back(*a);
+            if (const auto* e = std::get_if<EnvironmentLight>(&light)) environment = e;
+        }
+    }
+    bool any() const { return !areas.empty() || environment; }
+
+    /// The radiance `ray` meets at a light's face nearer than `t_hit` (the emitting side, or
+    /// either side of a two-sided light), if it meets one.
+    std::optional<Vec3> light_face(const Ray& ray, float t_hit) const {
+        std::optional<Vec3> seen;
+        for (const AreaLight& a : areas) {
+            const Vec3 n = a.area_normal();
+            const float facing = dot(n, ray.direction);
+            if (facing == 0.0f || (!a.two_sided && facing > 0.0f)) continue;
+            const float t = dot(n, a.corner - ray.origin) / facing;
+            if (!(t > 0.0f && t < t_hit)) continue;
+            const Vec3 x = ray.origin + t * ray.direction - a.corner;
+            const float area2 = dot(n, n);
+            const float u = dot(x, cross(a.edge2, n)) / area2, v = dot(x, cross(n, a.edge1)) / area2;
+            if (u < 0.0f || u > 1.0f || v < 0.0f || v > 1.0f) continue;
+            t_hit = t;
+            seen = a.radiance;
+        }
+        return seen;
+    }
+};
+
 /// What every ray of a render reads, plus the ray count of the tile being rendered (each tile
 /// works on its own copy, so counting needs no atomics per ray).
 struct TraceContext {
@@ -28,6 +65,7 @@ struct TraceContext {
     CameraCones camera_cones;  ///< the camera rays' cones, by direction
     bool textured;             ///< some material has a texture: rays carry their cones
     int max_depth;
+    const Emitters& emitters;  ///< what rays see of the lights themselves
     uint64_t rays = 0;
 };
 
@@ -174,6 +212,11 @@ class WaveTracer {
             }
             m_ctx.rays += static_cast<uint64_t>(shadow_rays);
             if (scalar != 0) shade_one_ray_at_a_time(block, c, rays, nodes, base, cones);
+            if (m_ctx.emitters.any()) {
+                see_emitters(block, c, rays, nodes, base);
+                children = 0;
+                for (int j = 0; j < rays; ++j) children += lane.children[j];
+            }
             if (children != 0) {
                 spawn_rays(lane, rays, nodes, base, cones);
             } else {
@@ -198,6 +241,23 @@ class WaveTracer {
                 shade_hit(direction, block.hit(i), cone_of(cones, base + j, direction),
                           block.shadows_known, block.lit(i));
             for (int a = 0; a < 3; ++a) nodes.colour[a][base + j] = colour[a];
+        }
+    }
+
+    /// Where chunk c's rays see a light itself: a light's face nearer than the hit takes the
+    /// node's colour (and the hit spawns nothing), an escaping ray sees the environment.
+    void see_emitters(PrimaryBlock& block, int c, int rays, PathLevel& nodes, size_t base) const {
+        detail::LaneChunk& lane = block.lanes.chunks[c];
+        for (int j = 0; j < rays; ++j) {
+            const Ray ray = block.ray(c * k_lane_chunk + j);
+            const bool hit = lane.active[j] != 0;
+            std::optional<Vec3> seen = m_ctx.emitters.light_face(ray, hit ? lane.t[j] : k_infinity);
+            if (!seen && !hit && m_ctx.emitters.environment)
+                seen = m_ctx.emitters.environment->radiance_from(ray.direction);
+            if (!seen) continue;
+            for (int a = 0; a < 3; ++a) nodes.colour[a][base + j] = (*seen)[a];
+            lane.mirror_weight[j] = lane.refract_weight[j] = 0.0f;
+            lane.children[j] = 0;
         }
     }
 
@@ -359,13 +419,6 @@ class WaveTracer {
     WaveScratch& m_s;
 };
 
-/// Strata for `n` jittered samples: the most square grid cols × rows = n.
-void strata(int n, int& cols, int& rows) {
-    cols = static_cast<int>(std::sqrt(static_cast<double>(n)));
-    while (n % cols != 0) --cols;
-    rows = n / cols;
-}
-
 /// Everything a render's tiles share.
 struct WhittedRender {
     const Scene& scene;
@@ -374,7 +427,9 @@ struct WhittedRender {
     Framebuffer& fb;
     const CameraFrame frame;
     const SceneIntersector intersector;
+    const std::optional<OccluderSet> occluders;  ///< for analytic area-light shadows
     const WhittedScene shading;
+    const Emitters emitters;
     const PrimaryHitTracer primary;
     const LaneShader shader;
 
@@ -385,7 +440,10 @@ struct WhittedRender {
           fb(f),
           frame(make_camera_frame(s.camera)),
           intersector(s),
-          shading(s),
+          occluders(w.analytic_area_shadows ? std::optional<OccluderSet>(OccluderSet(s))
+                                            : std::nullopt),
+          shading(s, w.light_samples, occluders ? &*occluders : nullptr),
+          emitters(s),
           primary(intersector, s, frame),
           shader(shading) {}
 
@@ -502,7 +560,8 @@ Framebuffer render_whitted(const Scene& scene, Film film, const RenderSettings& 
 
     for_each_tile(cam.width, cam.height, settings.control, [&](const Tile& tile) {
         TraceContext ctx{render.intersector,        render.shading,     scene,
-                         CameraCones(scene.camera), has_texture(scene), whitted.max_depth};
+                         CameraCones(scene.camera), has_texture(scene), whitted.max_depth,
+                         render.emitters};
         thread_local std::unique_ptr<WaveScratch> scratch;
         if (!scratch) scratch = std::make_unique<WaveScratch>();
         WaveTracer wave(ctx, render.primary, render.shader, *scratch);

@@ -14,6 +14,10 @@ struct WhittedSettings {
     int samples_per_pixel = 1;  ///< 1: one ray through each pixel centre; more: stratified jitter
     int max_depth = 5;          ///< ray segments per path, the primary ray included
     bool shadow_rays = true;    ///< false: every light reaches every point facing it
+    /// Stratified samples per area or environment light per shaded point (`--light-samples`).
+    int light_samples = k_default_light_samples;
+    /// Area lights' shadows in closed form (`--shadows analytic`) instead of by sampling.
+    bool analytic_area_shadows = false;
 };
 
 /// `--method raytrace`: one ray per pixel centre (or stratified jittered samples), the nearest

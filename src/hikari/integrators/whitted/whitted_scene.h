@@ -3,6 +3,7 @@
 
 #include "hikari/scene/scene.h"
 #include "hikari/shading/lighting_environment.h"
+#include "hikari/shading/soft_shadows/occluders.h"
 
 namespace hikari {
 
@@ -12,12 +13,18 @@ struct WhittedScene {
     const Material* materials = nullptr;
     const Sky* sky = nullptr;
     Vec3 background{0.0f};
+    /// Samples per area or environment light per point.
+    int light_samples = 1;
+    /// The shadow casters of analytic area-light shadows; null: area lights are sampled.
+    const OccluderSet* occluders = nullptr;
 
-    explicit WhittedScene(const Scene& scene)
+    explicit WhittedScene(const Scene& scene, int samples = 1, const OccluderSet* casters = nullptr)
         : lighting{scene.lights.data(), scene.lights.size(), scene.ambient},
           materials(scene.materials.data()),
           sky(&scene.sky),
-          background(scene.background) {}
+          background(scene.background),
+          light_samples(samples),
+          occluders(casters) {}
 };
 
 }  // namespace hikari

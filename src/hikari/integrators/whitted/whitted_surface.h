@@ -71,7 +71,12 @@ HIKARI_INLINE WhittedShading<F> shade_whitted_hit(const WhittedScene& scene,
     WhittedShading<F> out;
     out.point = face_the_ray(hit, out.entering);
     out.material = evaluate_material<F>(scene.materials, hit.material, out.point);
-    out.direct = direct_lighting<F>(scene.lighting, out.point, out.material, active, visible);
+    if (scene.occluders)
+        out.direct = direct_lighting<F>(scene.lighting, out.point, out.material, active, visible,
+                                        AnalyticAreaLights{scene.light_samples, scene.occluders});
+    else
+        out.direct = direct_lighting<F>(scene.lighting, out.point, out.material, active, visible,
+                                        SampledLights{scene.light_samples});
     return out;
 }
 

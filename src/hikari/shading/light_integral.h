@@ -1,0 +1,115 @@
+#pragma once
+// Area and environment lights integrated at a surface point, for every method: the lecture's
+// reflection term summed over many samples of the light instead of one (its area light is "a
+// set of point lights", its environment light "a set of directional lights").
+//   Σ_k visible_k · I_k (kd cos α_k + ks cos^n γ_k) / N,   I_k = L(y_k) · cos θ′_k / (r_k² pdf_k)
+// The samples are stratified over the light (core/strata.h) and drawn from a random stream
+// seeded by the point and the light, so images are the same for any thread count.
+// Two ways to integrate an area light are here: sampling, with the caller's visibility test per
+// sample (shadow rays), and the analytic one (shading/soft_shadows/visible_light.h): the diffuse
+// term in closed form over the visible part of the light, the specular term sampled over it.
+
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+
+#include "hikari/core/rng.h"
+#include "hikari/core/strata.h"
+#include "hikari/scene/light.h"
+#include "hikari/shading/lights.h"
+#include "hikari/shading/material_sample.h"
+#include "hikari/shading/phong.h"
+#include "hikari/shading/soft_shadows/visible_light.h"
+#include "hikari/shading/surface.h"
+
+namespace hikari {
+
+/// The random stream of light `light`'s samples at point `p`: a hash of the point's coordinates
+/// (splitmix64's finalizer) and the light's index.
+inline Pcg32 light_sample_stream(Vec3 p, size_t light) {
+    uint64_t h = (static_cast<uint64_t>(std::bit_cast<uint32_t>(p.x)) << 32) ^
+                 std::bit_cast<uint32_t>(p.y) ^
+                 (static_cast<uint64_t>(std::bit_cast<uint32_t>(p.z)) * 0x9e3779b97f4a7c15ULL);
+    h ^= h >> 30;
+    h *= 0xbf58476d1ce4e5b9ULL;
+    h ^= h >> 27;
+    h *= 0x94d049bb133111ebULL;
+    h ^= h >> 31;
+    return Pcg32(h, light);
+}
+
+/// One sample of an area light (uniform over its area) or an environment light (its importance
+/// density) at `s`, for the point (u, v) of the unit square.
+inline LightSample sample_extended_light(const Light& light, const SurfacePoint<float>& s,
+                                         Vec2 uv) {
+    if (const auto* area = std::get_if<AreaLight>(&light))
+        return sample_area_light<float>(*area, s.position, uv.x, uv.y);
+    if (const auto* env = std::get_if<EnvironmentLight>(&light))
+        return sample_environment(*env, s.normal, uv.x, uv.y);
+    return sample_light<float>(light, s.position);
+}
+
+/// Area and environment lights by sampling: `samples` stratified samples, each lighting the
+/// point where `visible(l, sample, s, true)` says it is not blocked (the method's shadow test:
+/// a shadow ray for the ray tracer).
+struct SampledLights {
+    int samples = 1;
+
+    template <class Visible>
+    Vec3 operator()(size_t l, const Light& light, const SurfacePoint<float>& s,
+                    const MaterialSample<float>& m, bool specular, Visible& visible,
+                    int32_t& tested) const {
+        StratifiedSquare pattern(samples, light_sample_stream(s.position, l));
+        Vec3 sum(0.0f);
+        for (int k = 0; k < samples; ++k) {
+            const LightSample sample = sample_extended_light(light, s, pattern.next(k));
+            const float cos_alpha = dot(s.normal, sample.to_light);
+            if (!(cos_alpha > 0.0f) || max_component(sample.irradiance) <= 0.0f) continue;
+            ++tested;
+            if (!visible(l, sample, s, true)) continue;
+            sum += phong_reflected(m, s, sample, cos_alpha, specular);
+        }
+        return sum / static_cast<float>(samples);
+    }
+};
+
+/// An area light's reflection at `s` over the part `seen` of it the point sees: the diffuse term
+/// kd·L·∫cos θ dω in closed form, the specular term from `samples` stratified samples of the
+/// light, those outside `seen` left dark.
+inline Vec3 area_light_reflection(const AreaLight& light, const VisibleLight& seen, size_t l,
+                                  const SurfacePoint<float>& s, const MaterialSample<float>& m,
+                                  bool specular, int samples) {
+    Vec3 colour = m.kd * light.radiance * seen.cosine_solid_angle;
+    if (!specular || seen.piece_count() == 0) return colour;
+    StratifiedSquare pattern(samples, light_sample_stream(s.position, l));
+    Vec3 highlight(0.0f);
+    for (int k = 0; k < samples; ++k) {
+        const Vec2 uv = pattern.next(k);
+        const LightSample sample = sample_area_light<float>(light, s.position, uv.x, uv.y);
+        if (!(dot(s.normal, sample.to_light) > 0.0f) || !seen.sees(uv)) continue;
+        highlight += sample.irradiance * phong_specular(m, s, sample.to_light);
+    }
+    return colour + m.ks * highlight / static_cast<float>(samples);
+}
+
+/// Area lights analytically (`--shadows analytic`): the part of the light not hidden by
+/// `occluders` (Nishita & Nakamae 1983), then area_light_reflection. Environment lights are
+/// sampled as SampledLights does.
+struct AnalyticAreaLights {
+    int samples = 1;
+    const OccluderSet* occluders = nullptr;
+
+    template <class Visible>
+    Vec3 operator()(size_t l, const Light& light, const SurfacePoint<float>& s,
+                    const MaterialSample<float>& m, bool specular, Visible& visible,
+                    int32_t& tested) const {
+        if (const auto* area = std::get_if<AreaLight>(&light)) {
+            const VisibleLight seen =
+                visible_light(*area, s.position, s.normal, s.geometric_normal, occluders);
+            return area_light_reflection(*area, seen, l, s, m, specular, samples);
+        }
+        return SampledLights{samples}(l, light, s, m, specular, visible, tested);
+    }
+};
+
+}  // namespace hikari

@@ -1,0 +1,43 @@
+#pragma once
+// The area light's sampling routines. Every patch dA of the parallelogram is a point light of
+// intensity L·cos θ′·dA, so a point p receives from it
+//   E = ∫ L·cos θ′ / r² dA      (r = |y − p|, θ′ between the light's normal and p − y)
+// times the lecture's reflection term. Sampled uniformly over the area (pdf 1/A), one sample
+// y is a point light of irradiance L·A·cos θ′ / r² at p; the light seen from far away is that
+// point light at its centre.
+
+#include <cmath>
+
+#include "hikari/core/lanes.h"
+#include "hikari/core/vec.h"
+#include "hikari/scene/light.h"
+#include "hikari/shading/light_sample.h"
+
+namespace hikari {
+
+/// The light of `light` toward `p` from the light's point corner + u.x·edge1 + u.y·edge2,
+/// weighted by 1 / pdf = A: irradiance L·A·cos θ′ / r², zero where p is behind a one-sided
+/// light.
+template <class F>
+HIKARI_INLINE LightSampleT<F> sample_area_light(const AreaLight& light, const Vec3T<F>& p,
+                                                const F& u, const F& v) {
+    const Vec3T<F> y = Vec3T<F>(light.corner) + Vec3T<F>(light.edge1) * u + Vec3T<F>(light.edge2) * v;
+    const Vec3T<F> d = y - p;
+    const F d2 = dot(d, d);
+    const F distance = sqrt_of(d2);
+    const Vec3T<F> to_light = d / distance;
+    // A·cos θ′ = (edge1 × edge2)·(p − y) / r.
+    F area_cos = -dot(Vec3T<F>(light.area_normal()), to_light);
+    if (light.two_sided) area_cos = select(area_cos < F(0.0f), -area_cos, area_cos);
+    area_cos = select(area_cos > F(0.0f), area_cos, F(0.0f));
+    return {to_light, distance, Vec3T<F>(light.radiance) * (area_cos / d2)};
+}
+
+/// The area light as one point light at its centre (what a light far away and small is; also
+/// what shadow maps and shadow volumes, which see from one point, take it for).
+template <class F>
+HIKARI_INLINE LightSampleT<F> sample_light(const AreaLight& light, const Vec3T<F>& p) {
+    return sample_area_light<F>(light, p, F(0.5f), F(0.5f));
+}
+
+}  // namespace hikari
