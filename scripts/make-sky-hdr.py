@@ -29,7 +29,7 @@ def radiance(theta, phi):
     t = elevation / (math.pi / 2)
     sky = (0.55 + (0.15 - 0.55) * t, 0.7 + (0.3 - 0.7) * t, 0.95 + (0.8 - 0.95) * t)
     if cos_sun > math.cos(math.radians(3.0)):
-        return (900.0, 820.0, 700.0)
+        return (160.0, 150.0, 130.0)
     glow = 2.0 * max(0.0, cos_sun) ** 64
     return tuple(c + glow for c in sky)
 

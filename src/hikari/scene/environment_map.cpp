@@ -34,7 +34,8 @@ Vec2 EnvironmentMap::uv_of(Vec3 toward) const {
     const float x = m_cos_rotation * toward.x - m_sin_rotation * toward.z;
     const float z = m_sin_rotation * toward.x + m_cos_rotation * toward.z;
     const float phi = std::atan2(x, -z);  // 0 toward −z, π/2 toward +x
-    const float theta = std::acos(std::clamp(toward.y, -1.0f, 1.0f));
+    // atan2, not acos: exact near the poles, where cos θ rounds to ±1.
+    const float theta = std::atan2(std::sqrt(x * x + z * z), toward.y);
     float u = 0.5f + phi / (2.0f * k_pi);
     u -= std::floor(u);
     return {u, theta / k_pi};
