@@ -190,11 +190,11 @@ TEST_F(Cli, RasterOptionsRenderAndRejectBadValues) {
 TEST_F(Cli, OptionForeignToTheMethodExitsTwoAndWritesNothing) {
     expect_usage_error("--interp flat --width 16",
                        "--interp is not an option of method raytrace (it understands: --spp, "
-                       "--max-depth, --shadows)");
+                       "--max-depth, --shadows, --light-samples)");
     expect_usage_error(
         "-m zbuffer --spp 4 --width 16",
         "--spp is not an option of method zbuffer (it understands: --interp, --cull, "
-        "--shadows, --shadow-map-size)");
+        "--shadows, --shadow-map-size, --light-samples)");
     expect_usage_error("-m depthsort --max-depth 2",
                        "--max-depth is not an option of method depthsort");
     expect_usage_error("-m raytrace --cull back", "--cull is not an option of method raytrace");
@@ -209,11 +209,11 @@ TEST_F(Cli, ShadowModeAMethodCannotDrawExitsTwo) {
     };
     expect_refused("--shadows map",
                    "--shadows map: method raytrace cannot draw shadows that way (it can: ray, "
-                   "none)");
+                   "analytic, none)");
     expect_refused("-m scanline --shadows ray",
                    "--shadows ray: method scanline cannot draw shadows that way (it can: map, "
-                   "volume, none)");
-    expect_refused("-m zbuffer --shadows soft", "--shadows: soft not in {none,ray,map,volume}");
+                   "volume, pcf, pcss, analytic, none)");
+    expect_refused("-m zbuffer --shadows soft", "--shadows: soft not in {none,ray,map,volume,pcf,pcss,analytic}");
     EXPECT_EQ(file_count(), 0u);
     for (const char* ok : {"--shadows none", "-m zbuffer --shadows volume",
                            "-m depthsort --shadows map --shadow-map-size 64"}) {
@@ -403,6 +403,42 @@ TEST_F(Cli, DepthCueMistakesAreErrors) {
     EXPECT_NE(equal.output.find("depth_cue.far: far must be greater than near"), std::string::npos)
         << equal.output;
     EXPECT_EQ(file_count(), 2u);  // the two scene files: no image written
+}
+
+TEST_F(Cli, BadLightsExitOneAndWriteNothing) {
+    write("area.json", R"({"lights": [{"type": "area", "corner": [0, 2, 0], "edge1": [1, 0, 0],
+        "edge2": [-2, 0, 0], "radiance": 1}], "objects": []})");
+    const Result area = run("render " + path("area.json") + " -o " + path("out.png"));
+    EXPECT_EQ(area.status, 1);
+    EXPECT_NE(area.output.find("hikari: error: "), std::string::npos) << area.output;
+    EXPECT_NE(area.output.find("lights[0]: degenerate area light"), std::string::npos) << area.output;
+    write("sky.json", R"({"lights": [{"type": "environment", "file": "missing.hdr"}], "objects": []})");
+    const Result sky = run("render " + path("sky.json") + " -o " + path("out.png"));
+    EXPECT_EQ(sky.status, 1);
+    EXPECT_NE(sky.output.find("lights[0].file: cannot read environment map"), std::string::npos)
+        << sky.output;
+    write("bad.hdr", "#?RADIANCE\nnot really\n");
+    write("garbled.json", R"({"lights": [{"type": "environment", "file": "bad.hdr"}], "objects": []})");
+    const Result garbled = run("render " + path("garbled.json") + " -o " + path("out.png"));
+    EXPECT_EQ(garbled.status, 1) << garbled.output;
+    EXPECT_EQ(file_count(), 4u);  // the scene files and bad.hdr: no image
+}
+
+TEST_F(Cli, LightSamplesAndSoftShadowModesRender) {
+    write("area.json", R"({"camera": {"width": 16, "height": 16, "eye": [0, 3, 3]},
+        "lights": [{"type": "area", "corner": [-0.5, 2, -0.5], "edge1": [1, 0, 0],
+                    "edge2": [0, 0, 1], "radiance": 4}],
+        "objects": [{"type": "sphere", "center": [0, 0.5, 0], "radius": 0.5},
+                    {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0]}]})");
+    for (const char* args : {"-m raytrace --light-samples 4", "-m raytrace --shadows analytic",
+                             "-m zbuffer --shadows pcf", "-m scanline --shadows pcss",
+                             "-m depthsort --shadows analytic"}) {
+        const Result r = run("render " + path("area.json") + " " + args + " -o " + path("a.png"));
+        EXPECT_EQ(r.status, 0) << args << ": " << r.output;
+    }
+    expect_usage_error(path("area.json") + " --light-samples 0", "--light-samples");
+    expect_usage_error(path("area.json") + " -m raytrace --shadows pcss",
+                       "--shadows pcss: method raytrace cannot draw shadows that way");
 }
 
 }  // namespace

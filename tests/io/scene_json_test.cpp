@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "hikari/core/error.h"
+#include "hikari/io/image_write.h"
 #include "temp_dir.h"
 
 namespace hikari {
@@ -202,6 +203,75 @@ TEST(SceneJson, NegativeIntensityIsRefused) {
     EXPECT_EQ(error_of(R"({"lights": [{"type": "point", "position": [0, 0, 0],
                                        "intensity": [1, -1, 1]}], "objects": []})"),
               "s.json: lights[0].intensity[1]: expected a number >= 0");
+}
+
+TEST(SceneJson, AreaAndEnvironmentLightsParse) {
+    const Scene s = testing::parse(R"({"lights": [
+        {"type": "area", "corner": [0, 2, 0], "edge1": [1, 0, 0], "edge2": [0, 0, 2],
+         "radiance": [1, 2, 3], "two_sided": true},
+        {"type": "environment", "radiance": 0.5}], "objects": []})");
+    const auto& area = std::get<AreaLight>(s.lights[0]);
+    EXPECT_EQ(area.edge2, Vec3(0, 0, 2));
+    EXPECT_EQ(area.radiance, Vec3(1, 2, 3));
+    EXPECT_TRUE(area.two_sided);
+    EXPECT_EQ(area.area_normal(), Vec3(0, -2, 0));
+    const auto& env = std::get<EnvironmentLight>(s.lights[1]);
+    EXPECT_EQ(env.radiance, Vec3(0.5f));
+    EXPECT_EQ(env.map, nullptr);
+}
+
+TEST(SceneJson, BadAreaAndEnvironmentLightsAreRefused) {
+    const auto light_error = [](const std::string& light) {
+        return error_of(R"({"lights": [)" + light + R"(], "objects": []})");
+    };
+    const std::string degenerate =
+        "s.json: lights[0]: degenerate area light: edge1 and edge2 must be nonzero and not "
+        "parallel";
+    EXPECT_EQ(light_error(R"({"type": "area", "corner": [0, 2, 0], "edge1": [1, 0, 0],
+                              "edge2": [2, 0, 0], "radiance": 1})"),
+              degenerate);
+    EXPECT_EQ(light_error(R"({"type": "area", "corner": [0, 2, 0], "edge1": [0, 0, 0],
+                              "edge2": [0, 0, 1], "radiance": 1})"),
+              degenerate);
+    EXPECT_EQ(light_error(R"({"type": "area", "corner": [0, 2, 0], "edge1": [1, 0, 0],
+                              "edge2": [0, 0, 1], "radiance": [1, -2, 1]})"),
+              "s.json: lights[0].radiance[1]: expected a number >= 0");
+    EXPECT_EQ(light_error(R"({"type": "environment", "radiance": -1})"),
+              "s.json: lights[0].radiance: expected a number >= 0");
+    EXPECT_NE(light_error(R"({"type": "environment", "file": "no-such-sky.hdr"})")
+                  .find("s.json: lights[0].file: cannot read environment map \"no-such-sky.hdr\""),
+              std::string::npos);
+    EXPECT_NE(light_error(R"({"type": "environment"})").find("exactly one of"), std::string::npos);
+    EXPECT_NE(light_error(R"({"type": "environment", "radiance": 1},
+                             {"type": "environment", "radiance": 1})")
+                  .find("lights[1]: a scene has at most one environment light"),
+              std::string::npos);
+}
+
+TEST(SceneJson, EnvironmentMapMustBeTwiceAsWideAsHigh) {
+    const testing::TempDir dir;
+    write_image(dir / "square.exr", Image(8, 8, Vec3(1.0f)));
+    write_image(dir / "sky.exr", Image(16, 8, Vec3(1.0f)));
+    std::vector<std::string> warnings;
+    const auto load = [&](const std::string& file) {
+        return parse_scene(R"({"lights": [{"type": "environment", "file": ")" + file +
+                               R"(", "scale": 2, "rotation_degrees": 45}], "objects": []})",
+                           "s.json", dir.path(), warnings);
+    };
+    try {
+        load("square.exr");
+        ADD_FAILURE() << "a square map was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("lights[0].file: environment map \"square.exr\" is "
+                                             "8x8: a latitude-longitude map is twice as wide as high"),
+                  std::string::npos)
+            << e.what();
+    }
+    const Scene s = load("sky.exr");
+    const auto& env = std::get<EnvironmentLight>(s.lights[0]);
+    ASSERT_NE(env.map, nullptr);
+    EXPECT_EQ(env.radiance, Vec3(2.0f));
+    EXPECT_EQ(env.radiance_from({0, 1, 0}), Vec3(2.0f));
 }
 
 TEST(SceneJson, HugeNumbersAreRefused) {
