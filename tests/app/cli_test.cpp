@@ -213,7 +213,8 @@ TEST_F(Cli, ShadowModeAMethodCannotDrawExitsTwo) {
     expect_refused("-m scanline --shadows ray",
                    "--shadows ray: method scanline cannot draw shadows that way (it can: map, "
                    "volume, pcf, pcss, analytic, none)");
-    expect_refused("-m zbuffer --shadows soft", "--shadows: soft not in {none,ray,map,volume,pcf,pcss,analytic}");
+    expect_refused("-m zbuffer --shadows soft",
+                   "--shadows: soft not in {none,ray,map,volume,pcf,pcss,analytic}");
     EXPECT_EQ(file_count(), 0u);
     for (const char* ok : {"--shadows none", "-m zbuffer --shadows volume",
                            "-m depthsort --shadows map --shadow-map-size 64"}) {
@@ -411,14 +412,17 @@ TEST_F(Cli, BadLightsExitOneAndWriteNothing) {
     const Result area = run("render " + path("area.json") + " -o " + path("out.png"));
     EXPECT_EQ(area.status, 1);
     EXPECT_NE(area.output.find("hikari: error: "), std::string::npos) << area.output;
-    EXPECT_NE(area.output.find("lights[0]: degenerate area light"), std::string::npos) << area.output;
-    write("sky.json", R"({"lights": [{"type": "environment", "file": "missing.hdr"}], "objects": []})");
+    EXPECT_NE(area.output.find("lights[0]: degenerate area light"), std::string::npos)
+        << area.output;
+    write("sky.json",
+          R"({"lights": [{"type": "environment", "file": "missing.hdr"}], "objects": []})");
     const Result sky = run("render " + path("sky.json") + " -o " + path("out.png"));
     EXPECT_EQ(sky.status, 1);
     EXPECT_NE(sky.output.find("lights[0].file: cannot read environment map"), std::string::npos)
         << sky.output;
     write("bad.hdr", "#?RADIANCE\nnot really\n");
-    write("garbled.json", R"({"lights": [{"type": "environment", "file": "bad.hdr"}], "objects": []})");
+    write("garbled.json",
+          R"({"lights": [{"type": "environment", "file": "bad.hdr"}], "objects": []})");
     const Result garbled = run("render " + path("garbled.json") + " -o " + path("out.png"));
     EXPECT_EQ(garbled.status, 1) << garbled.output;
     EXPECT_EQ(file_count(), 4u);  // the scene files and bad.hdr: no image

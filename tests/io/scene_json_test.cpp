@@ -262,9 +262,10 @@ TEST(SceneJson, EnvironmentMapMustBeTwiceAsWideAsHigh) {
         load("square.exr");
         ADD_FAILURE() << "a square map was accepted";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("lights[0].file: environment map \"square.exr\" is "
-                                             "8x8: a latitude-longitude map is twice as wide as high"),
-                  std::string::npos)
+        EXPECT_NE(
+            std::string(e.what()).find("lights[0].file: environment map \"square.exr\" is "
+                                       "8x8: a latitude-longitude map is twice as wide as high"),
+            std::string::npos)
             << e.what();
     }
     const Scene s = load("sky.exr");

@@ -92,10 +92,9 @@ std::vector<std::string> option_flags(const Method& method) {
 }
 
 TEST(Methods, EveryMethodDeclaresItsOptions) {
-    const std::vector<std::string> ray = {"--spp", "--max-depth", "--shadows",
-                                          "--light-samples"};
-    const std::vector<std::string> raster = {"--interp", "--cull", "--shadows",
-                                             "--shadow-map-size", "--light-samples"};
+    const std::vector<std::string> ray = {"--spp", "--max-depth", "--shadows", "--light-samples"};
+    const std::vector<std::string> raster = {"--interp", "--cull", "--shadows", "--shadow-map-size",
+                                             "--light-samples"};
     EXPECT_EQ(option_flags(*find_method("raytrace")), ray);
     for (const char* name : {"zbuffer", "scanline", "depthsort", "depthsort-naive"})
         EXPECT_EQ(option_flags(*find_method(name)), raster) << name;
@@ -114,10 +113,9 @@ TEST(Methods, EveryMethodDeclaresItsOptions) {
     // Each option once, whichever methods share it.
     std::vector<std::string> all;
     for (const MethodOption* option : method_options()) all.emplace_back(option->flag);
-    EXPECT_EQ(all,
-              (std::vector<std::string>{"--spp", "--max-depth", "--shadows", "--light-samples",
-                                        "--interp", "--cull", "--shadow-map-size", "--line-width",
-                                        "--line-color"}));
+    EXPECT_EQ(all, (std::vector<std::string>{"--spp", "--max-depth", "--shadows", "--light-samples",
+                                             "--interp", "--cull", "--shadow-map-size",
+                                             "--line-width", "--line-color"}));
 }
 
 TEST(Methods, EveryMethodNamesItsShadowModesDefaultFirst) {

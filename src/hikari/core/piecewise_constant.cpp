@@ -64,8 +64,8 @@ float PiecewiseConstant2D::pdf(Vec2 uv) const {
     const int rows = m_marginal.size();
     const int row = std::clamp(static_cast<int>(uv.y * static_cast<float>(rows)), 0, rows - 1);
     const PiecewiseConstant1D& columns = m_rows[static_cast<size_t>(row)];
-    const int column =
-        std::clamp(static_cast<int>(uv.x * static_cast<float>(columns.size())), 0, columns.size() - 1);
+    const int column = std::clamp(static_cast<int>(uv.x * static_cast<float>(columns.size())), 0,
+                                  columns.size() - 1);
     return m_marginal.pdf(row) * columns.pdf(column);
 }
 

@@ -27,7 +27,8 @@ class StratifiedSquare {
     /// Sample k in [0, n): a point of cell (k mod cols, k div cols).
     Vec2 next(int k) {
         const float x = (static_cast<float>(k % m_cols) + m_stream.next_float()) / m_cols;
-        const float y = (static_cast<float>(k / m_cols) + m_stream.next_float()) / m_rows;
+        const int row = k / m_cols;
+        const float y = (static_cast<float>(row) + m_stream.next_float()) / m_rows;
         return {x, y};
     }
 

@@ -26,10 +26,10 @@ struct RenderStats {
 
 /// How a method decides whether a light reaches a point (`--shadows`, the lecture's Fig 4.24).
 enum class ShadowMode {
-    none,    ///< every light reaches every point that faces it
-    ray,     ///< a shadow ray toward the light (ray tracing)
-    map,     ///< a Z-buffer seen from the light (shadow mapping, raster/shadow_map.h)
-    volume,  ///< shadow volumes counted in a stencil buffer
+    none,      ///< every light reaches every point that faces it
+    ray,       ///< a shadow ray toward the light (ray tracing)
+    map,       ///< a Z-buffer seen from the light (shadow mapping, raster/shadow_map.h)
+    volume,    ///< shadow volumes counted in a stencil buffer
     pcf,       ///< shadow maps filtered by percentage-closer filtering (Reeves et al. 1987)
     pcss,      ///< percentage-closer soft shadows (Fernando 2005)
     analytic,  ///< area lights: the visible part of the light in closed form (Nishita & Nakamae)

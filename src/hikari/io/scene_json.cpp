@@ -221,7 +221,9 @@ EnvironmentLight parse_environment_light(const JsonNode& node, SceneBuilder& b) 
     node.expect_object({"type", "radiance", "file", "scale", "rotation_degrees"});
     EnvironmentLight light;
     if (node.has("radiance") == node.has("file"))
-        node.fail("an environment light needs exactly one of \"radiance\" (constant) or \"file\" (a map)");
+        node.fail(
+            "an environment light needs exactly one of \"radiance\" (constant) or \"file\" (a "
+            "map)");
     if (node.has("radiance")) {
         for (const char* key : {"scale", "rotation_degrees"})
             if (node.has(key)) node.at(key).fail("only a map (\"file\") takes this");
@@ -229,7 +231,8 @@ EnvironmentLight parse_environment_light(const JsonNode& node, SceneBuilder& b) 
         return light;
     }
     if (node.has("scale")) light.radiance = node.at("scale").as_colour();
-    const float rotation = node.has("rotation_degrees") ? node.at("rotation_degrees").as_number() : 0.0f;
+    const float rotation =
+        node.has("rotation_degrees") ? node.at("rotation_degrees").as_number() : 0.0f;
     const JsonNode file_node = node.at("file");
     const std::string file = file_node.as_string();
     Image image;
@@ -244,7 +247,8 @@ EnvironmentLight parse_environment_light(const JsonNode& node, SceneBuilder& b) 
             file, image.width, image.height));
     for (const Vec3& texel : image.pixels)
         if (!is_finite(texel) || min_component(texel) < 0.0f)
-            file_node.fail(fmt::format("environment map \"{}\" has a negative or non-finite texel", file));
+            file_node.fail(
+                fmt::format("environment map \"{}\" has a negative or non-finite texel", file));
     light.map = std::make_shared<const EnvironmentMap>(std::move(image), rotation);
     return light;
 }

@@ -61,12 +61,8 @@ inline constexpr Choice<Interpolation> k_interpolation_choices[] = {
 /// `--shadows`: how a method decides whether a light reaches a point (Fig 4.24). Which of them
 /// a method can do is in its Method::shadow_modes.
 inline constexpr Choice<std::optional<ShadowMode>> k_shadow_choices[] = {
-    {"none", ShadowMode::none},
-    {"ray", ShadowMode::ray},
-    {"map", ShadowMode::map},
-    {"volume", ShadowMode::volume},
-    {"pcf", ShadowMode::pcf},
-    {"pcss", ShadowMode::pcss},
+    {"none", ShadowMode::none},         {"ray", ShadowMode::ray}, {"map", ShadowMode::map},
+    {"volume", ShadowMode::volume},     {"pcf", ShadowMode::pcf}, {"pcss", ShadowMode::pcss},
     {"analytic", ShadowMode::analytic},
 };
 

@@ -42,8 +42,8 @@ Framebuffer rasterize(const Scene& scene, Film film, const RenderSettings& setti
 
 constexpr ShadowMode k_ray_shadow_modes[] = {ShadowMode::ray, ShadowMode::analytic,
                                              ShadowMode::none};
-constexpr ShadowMode k_raster_shadow_modes[] = {ShadowMode::map,  ShadowMode::volume,
-                                                ShadowMode::pcf,  ShadowMode::pcss,
+constexpr ShadowMode k_raster_shadow_modes[] = {ShadowMode::map,      ShadowMode::volume,
+                                                ShadowMode::pcf,      ShadowMode::pcss,
                                                 ShadowMode::analytic, ShadowMode::none};
 
 constexpr MethodOption k_shadows_option = {

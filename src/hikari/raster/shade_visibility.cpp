@@ -4,15 +4,15 @@
 #include <utility>
 
 #include "hikari/frame/tiles.h"
+#include "hikari/geometry/ray_offset.h"
 #include "hikari/raster/cull.h"
 #include "hikari/raster/shadow_map.h"
 #include "hikari/raster/shadow_volume.h"
-#include "hikari/geometry/ray_offset.h"
 #include "hikari/shading/direct.h"
-#include "hikari/shading/soft_shadows/occluders.h"
-#include "hikari/shading/spherical_harmonics.h"
 #include "hikari/shading/lights.h"
 #include "hikari/shading/material_eval.h"
+#include "hikari/shading/soft_shadows/occluders.h"
+#include "hikari/shading/spherical_harmonics.h"
 
 namespace hikari {
 
@@ -76,7 +76,8 @@ float light_fraction(const ShadeContext& ctx, size_t l, const ShadowQuery& q) {
     const Light& light = ctx.scene.lights[l];
     if (ctx.shadows == ShadowMode::analytic) {
         if (const auto* area = std::get_if<AreaLight>(&light)) {
-            const float open = visible_light(*area, q.point, q.ng, q.ng, nullptr).cosine_solid_angle;
+            const float open =
+                visible_light(*area, q.point, q.ng, q.ng, nullptr).cosine_solid_angle;
             if (!(open > 0.0f)) return 1.0f;
             return visible_light(*area, q.point, q.ng, q.ng, ctx.occluders).cosine_solid_angle /
                    open;
@@ -95,9 +96,12 @@ float light_fraction(const ShadeContext& ctx, size_t l, const ShadowQuery& q) {
     const Vec3 to_light = sample_light(light, q.point).to_light;
     const Vec3 n = dot(q.ng, to_light) < 0.0f ? -q.ng : q.ng;
     switch (ctx.shadows) {
-        case ShadowMode::pcf: return pcf_shadow_fraction(*map, q.point, n);
-        case ShadowMode::pcss: return pcss_shadow_fraction(*map, q.point, n, light_radius(light));
-        default: return lit_in_shadow_map(*map, q.point, n) ? 1.0f : 0.0f;
+        case ShadowMode::pcf:
+            return pcf_shadow_fraction(*map, q.point, n);
+        case ShadowMode::pcss:
+            return pcss_shadow_fraction(*map, q.point, n, light_radius(light));
+        default:
+            return lit_in_shadow_map(*map, q.point, n) ? 1.0f : 0.0f;
     }
 }
 
@@ -115,7 +119,8 @@ struct RasterExtendedLights {
         if (const auto* area = std::get_if<AreaLight>(&light)) {
             const float fraction = light_fraction(ctx, l, query);
             if (!(fraction > 0.0f)) return Vec3(0.0f);
-            const VisibleLight whole = visible_light(*area, s.position, s.normal, s.normal, nullptr);
+            const VisibleLight whole =
+                visible_light(*area, s.position, s.normal, s.normal, nullptr);
             return fraction *
                    area_light_reflection(*area, whole, l, s, m, specular, ctx.light_samples);
         }

@@ -22,7 +22,8 @@ EnvironmentMap::EnvironmentMap(Image image, float rotation_degrees) : m_image(st
     const int w = m_image.width, h = m_image.height;
     std::vector<float> weights(static_cast<size_t>(w) * static_cast<size_t>(h));
     for (int y = 0; y < h; ++y) {
-        const float sin_theta = std::sin(k_pi * (static_cast<float>(y) + 0.5f) / static_cast<float>(h));
+        const float sin_theta =
+            std::sin(k_pi * (static_cast<float>(y) + 0.5f) / static_cast<float>(h));
         for (int x = 0; x < w; ++x)
             weights[static_cast<size_t>(y) * w + x] = luminance(m_image.at(x, y)) * sin_theta;
     }

@@ -27,7 +27,8 @@ template <class F>
 HIKARI_INLINE LightSampleT<F> sample_light(const Light& light, const Vec3T<F>& p) {
     return visit_kind(light, [&](const auto& kind) {
         if constexpr (std::is_same_v<std::decay_t<decltype(kind)>, EnvironmentLight>)
-            return LightSampleT<F>{Vec3T<F>(Vec3(0, 1, 0)), F(std::numeric_limits<float>::infinity()), Vec3T<F>(0.0f)};
+            return LightSampleT<F>{Vec3T<F>(Vec3(0, 1, 0)),
+                                   F(std::numeric_limits<float>::infinity()), Vec3T<F>(0.0f)};
         else
             return sample_light<F>(kind, p);
     });

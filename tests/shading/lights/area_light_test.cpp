@@ -57,8 +57,8 @@ TEST(AreaLight, ContourFormulaMatchesClosedForms) {
             const double x = (i + 0.5) / n, z = (j + 0.5) / n, r2 = x * x + 1 + z * z;
             sum += 1.0 / (r2 * r2);  // cos θ cos θ′ / r² with both cosines 1 / r
         }
-    EXPECT_NEAR(visible_light(corner, {0, 0, 0}, up, up, nullptr).cosine_solid_angle,
-                sum / (n * n), 1e-5);
+    EXPECT_NEAR(visible_light(corner, {0, 0, 0}, up, up, nullptr).cosine_solid_angle, sum / (n * n),
+                1e-5);
     // Cut by the horizon: a light standing vertically beside the point counts only above it.
     const AreaLight wall{{1, -1, -1}, {0, 0, 2}, {0, 2, 0}, Vec3(1.0f)};
     const AreaLight upper{{1, 0, -1}, {0, 0, 2}, {0, 1, 0}, Vec3(1.0f)};
@@ -86,7 +86,8 @@ double brute_force(const AreaLight& light, Vec3 p, const Vec3 (&t)[3], int n) {
     double sum = 0;
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) {
-            const Vec3 y = light.corner + ((i + 0.5f) / n) * light.edge1 + ((j + 0.5f) / n) * light.edge2;
+            const Vec3 y =
+                light.corner + ((i + 0.5f) / n) * light.edge1 + ((j + 0.5f) / n) * light.edge2;
             if (segment_hits(p, y, t[0], t[1], t[2])) continue;
             const Vec3 d = y - p;
             const double r2 = dot(d, d), r = std::sqrt(r2);
@@ -107,7 +108,8 @@ struct TriangleOccluderScene {
     std::vector<Vec3> ground() const {
         std::vector<Vec3> points;
         for (int i = 0; i < 12; ++i)
-            for (int j = 0; j < 12; ++j) points.push_back({-1.2f + 0.2f * i, 0.0f, -1.1f + 0.2f * j});
+            for (int j = 0; j < 12; ++j)
+                points.push_back({-1.2f + 0.2f * i, 0.0f, -1.1f + 0.2f * j});
         return points;
     }
 };
@@ -136,7 +138,8 @@ TEST(AreaLight, SamplingConvergesToTheAnalyticShadow) {
     MaterialSample<float> m;
     m.kd = Vec3(1.0f);
     const Light light = s.light;
-    const auto visible = [&](size_t, const LightSample& sample, const SurfacePoint<float>& at, bool) {
+    const auto visible = [&](size_t, const LightSample& sample, const SurfacePoint<float>& at,
+                             bool) {
         const Vec3 q = at.position + sample.distance * sample.to_light;
         return !segment_hits(at.position, q, s.triangle[0], s.triangle[1], s.triangle[2]);
     };
@@ -144,8 +147,8 @@ TEST(AreaLight, SamplingConvergesToTheAnalyticShadow) {
     const int counts[2] = {4, 64};
     for (const Vec3 p : s.ground()) {
         point.position = p;
-        const double exact = visible_light(s.light, p, point.normal, point.normal, &s.occluders)
-                                 .cosine_solid_angle;
+        const double exact =
+            visible_light(s.light, p, point.normal, point.normal, &s.occluders).cosine_solid_angle;
         for (int k = 0; k < 2; ++k) {
             int32_t tested = 0;
             const double sampled =
@@ -189,7 +192,8 @@ TEST(AreaLight, VisiblePiecesAnswerWhichLightPointsAreSeen) {
         for (int j = 0; j < 40; ++j) {
             const Vec2 ab{(i + 0.5f) / 40, (j + 0.5f) / 40};
             const Vec3 y = s.light.corner + ab.x * s.light.edge1 + ab.y * s.light.edge2;
-            agree += seen.sees(ab) == !segment_hits(p, y, s.triangle[0], s.triangle[1], s.triangle[2]);
+            agree +=
+                seen.sees(ab) == !segment_hits(p, y, s.triangle[0], s.triangle[1], s.triangle[2]);
             ++total;
         }
     EXPECT_GE(agree, total - 4);  // only points on the shadow's edge may differ

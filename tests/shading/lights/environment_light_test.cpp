@@ -27,7 +27,8 @@ Image test_sky(int height) {
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < 2 * height; ++x) {
             const Vec3 d = frame.direction_of({(x + 0.5f) / (2 * height), (y + 0.5f) / height});
-            const float blob = std::pow(std::max(0.0f, dot(d, normalize(Vec3(1, 0.4f, 0.2f)))), 30.0f);
+            const float blob =
+                std::pow(std::max(0.0f, dot(d, normalize(Vec3(1, 0.4f, 0.2f)))), 30.0f);
             image.at(x, y) = d.y > 0 ? Vec3(0.3f, 0.4f, 0.6f) + Vec3(8, 7, 5) * blob : Vec3(0.1f);
         }
     return image;
@@ -52,11 +53,11 @@ TEST(PiecewiseConstant, SamplesFollowTheWeights) {
 TEST(EnvironmentMap, OrientationIsTheDocumentedOne) {
     const EnvironmentMap map(Image(64, 32), 0.0f);
     const auto near = [](Vec3 a, Vec3 b) { return length(a - b) < 1e-5f; };
-    EXPECT_TRUE(near(map.direction_of({0.5f, 0.5f}), {0, 0, -1}));   // middle column: −z
-    EXPECT_TRUE(near(map.direction_of({0.75f, 0.5f}), {1, 0, 0}));   // right: +x
+    EXPECT_TRUE(near(map.direction_of({0.5f, 0.5f}), {0, 0, -1}));  // middle column: −z
+    EXPECT_TRUE(near(map.direction_of({0.75f, 0.5f}), {1, 0, 0}));  // right: +x
     EXPECT_TRUE(near(map.direction_of({0.25f, 0.5f}), {-1, 0, 0}));
-    EXPECT_NEAR(map.direction_of({0.3f, 0.0f}).y, 1.0f, 1e-6f);       // row 0: zenith
-    const EnvironmentMap turned(Image(64, 32), 90.0f);               // counter-clockwise from above
+    EXPECT_NEAR(map.direction_of({0.3f, 0.0f}).y, 1.0f, 1e-6f);  // row 0: zenith
+    const EnvironmentMap turned(Image(64, 32), 90.0f);           // counter-clockwise from above
     EXPECT_TRUE(near(turned.direction_of({0.5f, 0.5f}), {-1, 0, 0}));
     Pcg32 rng(3, 3);
     for (int i = 0; i < 100; ++i) {
@@ -73,8 +74,8 @@ TEST(EnvironmentMap, ImportanceSamplingIsUnbiased) {
     const Image& img = map.image();
     double exact = 0;
     for (int y = 0; y < img.height; ++y) {
-        const double d_omega = (2 * k_pi / img.width) * (k_pi / img.height) *
-                               std::sin(k_pi * (y + 0.5) / img.height);
+        const double d_omega =
+            (2 * k_pi / img.width) * (k_pi / img.height) * std::sin(k_pi * (y + 0.5) / img.height);
         for (int x = 0; x < img.width; ++x) exact += img.at(x, y).y * d_omega;
     }
     Pcg32 rng(11, 5);
@@ -126,9 +127,11 @@ TEST(SphericalHarmonics, IrradianceMatchesDirectIntegration) {
         double e = 0;
         for (int y = 0; y < img.height; ++y) {
             const double v = (y + 0.5) / img.height;
-            const double d_omega = (2 * k_pi / img.width) * (k_pi / img.height) * std::sin(k_pi * v);
+            const double d_omega =
+                (2 * k_pi / img.width) * (k_pi / img.height) * std::sin(k_pi * v);
             for (int x = 0; x < img.width; ++x) {
-                const Vec3 d = light.map->direction_of({(x + 0.5f) / img.width, static_cast<float>(v)});
+                const Vec3 d =
+                    light.map->direction_of({(x + 0.5f) / img.width, static_cast<float>(v)});
                 e += img.at(x, y).y * std::max(0.0f, dot(n, d)) * d_omega;
             }
         }

@@ -47,7 +47,8 @@ struct Emitters {
             if (!(t > 0.0f && t < t_hit)) continue;
             const Vec3 x = ray.origin + t * ray.direction - a.corner;
             const float area2 = dot(n, n);
-            const float u = dot(x, cross(a.edge2, n)) / area2, v = dot(x, cross(n, a.edge1)) / area2;
+            const float u = dot(x, cross(a.edge2, n)) / area2,
+                        v = dot(x, cross(n, a.edge1)) / area2;
             if (u < 0.0f || u > 1.0f || v < 0.0f || v > 1.0f) continue;
             t_hit = t;
             seen = a.radiance;
@@ -237,10 +238,13 @@ class WaveTracer {
             if (!lane.active[j] || (block.shadows_known && !lane.scalar_only[j])) continue;
             const int i = c * k_lane_chunk + j;
             const Vec3 direction = block.ray(i).direction;
-            const Vec3 colour =
+            const DirectLighting<float> direct =
                 shade_hit(direction, block.hit(i), cone_of(cones, base + j, direction),
                           block.shadows_known, block.lit(i));
-            for (int a = 0; a < 3; ++a) nodes.colour[a][base + j] = colour[a];
+            for (int a = 0; a < 3; ++a) nodes.colour[a][base + j] = direct.colour[a];
+            // The lanes counted the point and directional lights' shadow rays; these add the
+            // area and environment lights' samples.
+            m_ctx.rays += static_cast<uint64_t>(std::max(0, direct.tested - lane.shadow_rays[j]));
         }
     }
 
@@ -265,8 +269,8 @@ class WaveTracer {
     /// texture coordinates and footprint, where the material has a texture); light l is visible
     /// where bit l of `lit` is set when `lit_known`, else where its shadow ray finds nothing in the
     /// way.
-    Vec3 shade_hit(Vec3 direction, const SurfaceHit& hit, const RayCone& cone, bool lit_known,
-                   uint32_t lit) const {
+    DirectLighting<float> shade_hit(Vec3 direction, const SurfaceHit& hit, const RayCone& cone,
+                                    bool lit_known, uint32_t lit) const {
         WhittedHit<float> h{direction, hit.position, hit.geometric_normal, hit.shading_normal,
                             static_cast<int32_t>(hit.material)};
         if (m_ctx.shading.materials[hit.material].texture) {
@@ -283,7 +287,7 @@ class WaveTracer {
             const Ray shadow{offset_ray_origin(s.position, s.geometric_normal), light.to_light};
             return !m_ctx.intersector.occluded(shadow, {0.0f, light.distance});
         };
-        return shade_whitted_hit<float>(m_ctx.shading, h, true, visible).direct.colour;
+        return shade_whitted_hit<float>(m_ctx.shading, h, true, visible).direct;
     }
 
     /// The next level's rays of a chunk's lanes, and their nodes' indices and weights: mirror
@@ -559,9 +563,9 @@ Framebuffer render_whitted(const Scene& scene, Film film, const RenderSettings& 
     static_assert(k_tile_size <= k_primary_block);
 
     for_each_tile(cam.width, cam.height, settings.control, [&](const Tile& tile) {
-        TraceContext ctx{render.intersector,        render.shading,     scene,
-                         CameraCones(scene.camera), has_texture(scene), whitted.max_depth,
-                         render.emitters};
+        TraceContext ctx{
+            render.intersector, render.shading,    scene,          CameraCones(scene.camera),
+            has_texture(scene), whitted.max_depth, render.emitters};
         thread_local std::unique_ptr<WaveScratch> scratch;
         if (!scratch) scratch = std::make_unique<WaveScratch>();
         WaveTracer wave(ctx, render.primary, render.shader, *scratch);

@@ -21,7 +21,8 @@ namespace hikari {
 template <class F>
 HIKARI_INLINE LightSampleT<F> sample_area_light(const AreaLight& light, const Vec3T<F>& p,
                                                 const F& u, const F& v) {
-    const Vec3T<F> y = Vec3T<F>(light.corner) + Vec3T<F>(light.edge1) * u + Vec3T<F>(light.edge2) * v;
+    const Vec3T<F> y =
+        Vec3T<F>(light.corner) + Vec3T<F>(light.edge1) * u + Vec3T<F>(light.edge2) * v;
     const Vec3T<F> d = y - p;
     const F d2 = dot(d, d);
     const F distance = sqrt_of(d2);

@@ -28,7 +28,8 @@ inline LightSample sample_environment(const EnvironmentLight& light, Vec3 n, flo
         // Cosine-weighted (Malley's method): a uniform point on the disc lifted to the hemisphere.
         const float r = std::sqrt(u), phi = 2.0f * k_pi * v;
         const float cos_theta = std::sqrt(std::max(0.0f, 1.0f - u));
-        const Vec3 dir = OrthonormalBasis(n).to_world({r * std::cos(phi), r * std::sin(phi), cos_theta});
+        const Vec3 dir =
+            OrthonormalBasis(n).to_world({r * std::cos(phi), r * std::sin(phi), cos_theta});
         if (!(cos_theta > 0.0f)) return {dir, k_far, Vec3(0.0f)};
         return {dir, k_far, light.radiance * (k_pi / cos_theta)};
     }

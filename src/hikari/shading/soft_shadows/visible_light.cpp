@@ -65,9 +65,9 @@ float signed_area(const std::vector<Vec2>& c) {
 /// The light's plane and (a, b) coordinates, and the side the point is on.
 struct LightFrame {
     Vec3 corner, e1, e2;
-    Vec3 unit_normal;  ///< toward the point's side
+    Vec3 unit_normal;   ///< toward the point's side
     Vec3 dual1, dual2;  ///< a = dot(y − corner, dual1), b = dot(y − corner, dual2)
-    float height = 0;  ///< the point's distance from the light's plane
+    float height = 0;   ///< the point's distance from the light's plane
 
     Vec3 world(Vec2 ab) const { return corner + ab.x * e1 + ab.y * e2; }
     Vec2 coords(Vec3 y) const { return {dot(y - corner, dual1), dot(y - corner, dual2)}; }
@@ -193,8 +193,12 @@ VisibleLight visible_light(const AreaLight& light, Vec3 p, Vec3 n, Vec3 ng,
     const Vec3 normal = light.area_normal();
     const float area2 = dot(normal, normal);
     if (!(area2 > 0.0f)) return out;
-    LightFrame f{light.corner, light.edge1, light.edge2, normal / std::sqrt(area2),
-                 cross(light.edge2, normal) / area2, cross(normal, light.edge1) / area2};
+    LightFrame f{light.corner,
+                 light.edge1,
+                 light.edge2,
+                 normal / std::sqrt(area2),
+                 cross(light.edge2, normal) / area2,
+                 cross(normal, light.edge1) / area2};
     f.height = f.above(p);
     if (f.height < 0.0f) {
         if (!light.two_sided) return out;
@@ -224,8 +228,8 @@ VisibleLight visible_light(const AreaLight& light, Vec3 p, Vec3 n, Vec3 ng,
             next.clear();
             std::vector<Vec2> inside, outside;
             for (int k = 0; k < pieces.count(); ++k) {
-                split(pieces.corners.data() + pieces.starts[k], pieces.starts[k + 1] - pieces.starts[k],
-                      keep, inside, outside);
+                split(pieces.corners.data() + pieces.starts[k],
+                      pieces.starts[k + 1] - pieces.starts[k], keep, inside, outside);
                 if (inside.size() >= 3) next.add(inside.data(), static_cast<int>(inside.size()));
             }
             std::swap(pieces, next);
@@ -234,7 +238,8 @@ VisibleLight visible_light(const AreaLight& light, Vec3 p, Vec3 n, Vec3 ng,
         const float scale = 1.0f + std::max(std::abs(p.x), std::max(std::abs(p.y), std::abs(p.z)));
         const float eps = 1e-5f * scale;
         std::array<Vec4, 7> bounds;
-        const Vec3 corners[4] = {f.world({0, 0}), f.world({1, 0}), f.world({1, 1}), f.world({0, 1})};
+        const Vec3 corners[4] = {f.world({0, 0}), f.world({1, 0}), f.world({1, 1}),
+                                 f.world({0, 1})};
         const Vec3 centre = light.centre();
         for (int i = 0; i < 4; ++i) {
             Vec3 m = cross(corners[i] - p, corners[(i + 1) % 4] - p);
@@ -242,9 +247,9 @@ VisibleLight visible_light(const AreaLight& light, Vec3 p, Vec3 n, Vec3 ng,
             bounds[i] = Vec4(m.x, m.y, m.z, dot(m, p));
         }
         const Vec3 u = f.unit_normal;
-        bounds[4] = Vec4(u.x, u.y, u.z, dot(u, f.corner) + eps);             // the light's side
-        bounds[5] = Vec4(-u.x, -u.y, -u.z, -dot(u, p) + eps);                // nearer than p
-        bounds[6] = Vec4(ng.x, ng.y, ng.z, dot(ng, p) + eps);                // above p's surface
+        bounds[4] = Vec4(u.x, u.y, u.z, dot(u, f.corner) + eps);  // the light's side
+        bounds[5] = Vec4(-u.x, -u.y, -u.z, -dot(u, p) + eps);     // nearer than p
+        bounds[6] = Vec4(ng.x, ng.y, ng.z, dot(ng, p) + eps);     // above p's surface
         // Every occluder's shadow on the light, projected first, then cut out largest first:
         // the big ones leave fewer pieces for the small ones to cut.
         Pieces holes;
@@ -289,7 +294,8 @@ VisibleLight visible_light(const AreaLight& light, Vec3 p, Vec3 n, Vec3 ng,
     std::vector<Vec3> world;
     for (size_t k = 0; k + 1 < out.starts.size(); ++k) {
         world.clear();
-        for (int i = out.starts[k]; i < out.starts[k + 1]; ++i) world.push_back(f.world(out.corners[i]));
+        for (int i = out.starts[k]; i < out.starts[k + 1]; ++i)
+            world.push_back(f.world(out.corners[i]));
         e += polygon_cosine_solid_angle(p, n, world.data(), static_cast<int>(world.size()));
     }
     out.cosine_solid_angle = static_cast<float>(e);
