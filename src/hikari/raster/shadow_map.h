@@ -67,10 +67,13 @@ bool lit_in_shadow_map(const LightShadowMap& map, Vec3 p, Vec3 n);
 
 /// Texel radius of percentage-closer filtering: a 5 × 5 texel kernel.
 inline constexpr int k_pcf_radius_texels = 2;
-/// The largest blocker search and filter radius of PCSS, in texels, and the most lookups per
-/// side of its filter ((2 · steps + 1)², spread over the radius).
-inline constexpr float k_pcss_max_radius_texels = 32.0f;
-inline constexpr int k_pcss_max_steps = 4;
+/// The largest blocker search and filter radius of PCSS, as a fraction of the map's side, and
+/// the most lookups per side of its filter ((2 · steps + 1)², spread over the radius: wider
+/// kernels take lookups more than a texel apart).
+inline constexpr float k_pcss_max_radius_fraction = 0.125f;
+inline constexpr int k_pcss_max_steps = 6;
+/// Lookups per side of the blocker search: (2 · steps + 1)² over the search radius.
+inline constexpr int k_pcss_search_steps = 4;
 
 /// The fraction of `p` lit according to `map`: lit_in_shadow_map's test at a 5 × 5 grid of
 /// texels around p, averaged (percentage-closer filtering, Reeves, Salesin & Cook 1987,
@@ -80,8 +83,8 @@ float pcf_shadow_fraction(const LightShadowMap& map, Vec3 p, Vec3 n);
 /// Percentage-closer soft shadows (Fernando 2005): the mean depth of the casters found around p
 /// (blocker search), the penumbra width a light of radius `light_radius` casts from there,
 /// w = R (d_receiver − d_blocker) / d_blocker, and percentage-closer filtering over that width
-/// (at most k_pcss_max_radius_texels). Penumbrae widen with the distance between caster and
-/// receiver. A directional map or a light of radius 0 gets pcf_shadow_fraction.
+/// (at most k_pcss_max_radius_fraction of the map). Penumbrae widen with the distance between
+/// caster and receiver. A directional map or a light of radius 0 gets pcf_shadow_fraction.
 float pcss_shadow_fraction(const LightShadowMap& map, Vec3 p, Vec3 n, float light_radius);
 
 /// Whether one of `scene`'s shadow-casting planes lies between `p` and light `light`: a
