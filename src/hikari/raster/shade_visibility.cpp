@@ -79,8 +79,11 @@ float light_fraction(const ShadeContext& ctx, size_t l, const ShadowQuery& q) {
             const float open =
                 visible_light(*area, q.point, q.ng, q.ng, nullptr).cosine_solid_angle;
             if (!(open > 0.0f)) return 1.0f;
-            return visible_light(*area, q.point, q.ng, q.ng, ctx.occluders).cosine_solid_angle /
-                   open;
+            const VisibleLight seen = visible_light(*area, q.point, q.ng, q.ng, ctx.occluders);
+            if (!seen.exact)
+                return sampled_light_fraction(*area, q.point, q.ng, q.ng, *ctx.occluders,
+                                              ctx.light_samples);
+            return seen.cosine_solid_angle / open;
         }
         if (plane_blocks_light(ctx.scene, light, q.point)) return 0.0f;
         const LightSample toward = sample_light(light, q.point);

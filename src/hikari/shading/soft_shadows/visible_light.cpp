@@ -2,11 +2,15 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <utility>
 
 #include "hikari/core/orthonormal_basis.h"
+#include "hikari/core/rng.h"
+#include "hikari/core/strata.h"
 
 namespace hikari {
 
@@ -279,6 +283,10 @@ VisibleLight visible_light(const AreaLight& light, Vec3 p, Vec3 n, Vec3 ng,
         for (const Sphere& sphere : occluders->spheres()) {
             if (sphere_outline(sphere, p, bounds, poly)) project();
         }
+        if (order.size() > k_max_analytic_occluders) {
+            out.exact = false;
+            order.clear();
+        }
         std::sort(order.begin(), order.end());
         for (const auto& [area, k] : order) {
             if (pieces.count() == 0) break;
@@ -300,6 +308,35 @@ VisibleLight visible_light(const AreaLight& light, Vec3 p, Vec3 n, Vec3 ng,
     }
     out.cosine_solid_angle = static_cast<float>(e);
     return out;
+}
+
+float sampled_light_fraction(const AreaLight& light, Vec3 p, Vec3 n, Vec3 ng,
+                             const OccluderSet& occluders, int samples) {
+    StratifiedSquare pattern(samples, Pcg32(std::bit_cast<uint32_t>(p.x) ^
+                                                (uint64_t{std::bit_cast<uint32_t>(p.z)} << 32),
+                                            std::bit_cast<uint32_t>(p.y)));
+    const Vec3 from =
+        p + ng * (1e-4f * (1.0f + std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)})));
+    const Vec3 normal = light.area_normal();
+    double open = 0, seen = 0;
+    for (int k = 0; k < samples; ++k) {
+        const Vec2 ab = pattern.next(k);
+        const Vec3 y = light.corner + ab.x * light.edge1 + ab.y * light.edge2;
+        const Vec3 d = y - from;
+        const float r2 = dot(d, d);
+        const float weight = std::max(0.0f, dot(n, d)) * std::abs(dot(normal, d)) / (r2 * r2);
+        if (!(weight > 0.0f)) continue;
+        open += weight;
+        bool blocked = false;
+        for (const Plane& plane : occluders.planes()) {
+            const float a = dot(from - plane.point, plane.normal),
+                        b = dot(y - plane.point, plane.normal);
+            blocked |= (a > 0.0f && b < 0.0f) || (a < 0.0f && b > 0.0f);
+        }
+        const float r = std::sqrt(r2);
+        if (!blocked && !occluders.blocks_segment(from, d / r, r)) seen += weight;
+    }
+    return open > 0 ? static_cast<float>(seen / open) : 1.0f;
 }
 
 }  // namespace hikari

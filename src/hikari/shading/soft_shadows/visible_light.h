@@ -23,11 +23,18 @@ struct VisibleLight {
     std::vector<int> starts;    ///< piece k's corners are [starts[k], starts[k + 1])
     /// ∫ cos θ dω over the visible pieces (θ from the normal): the irradiance divided by L.
     float cosine_solid_angle = 0;
+    /// False when more than k_max_analytic_occluders occluders lie between the point and the
+    /// light: the pieces were not cut (they hold the unoccluded light) and the caller samples
+    /// the shadow instead (a dense mesh would cut the light into too many pieces).
+    bool exact = true;
 
     size_t piece_count() const { return starts.empty() ? 0 : starts.size() - 1; }
     /// Whether light point (a, b) is among the visible pieces.
     bool sees(Vec2 ab) const;
 };
+
+/// The most occluder polygons one point's light is cut by in closed form.
+inline constexpr size_t k_max_analytic_occluders = 96;
 
 /// What of `light` the point `p` with unit shading normal `n` sees above its horizon, past the
 /// triangles and planes of `occluders` (none when null). `ng` is the unit geometric normal on
@@ -35,6 +42,12 @@ struct VisibleLight {
 /// ignored (they cannot block light that reaches the surface, and the surface itself is there).
 VisibleLight visible_light(const AreaLight& light, Vec3 p, Vec3 n, Vec3 ng,
                            const OccluderSet* occluders);
+
+/// The share of `light`'s diffuse light at `p` (unit normal `n`, geometric normal `ng` on the
+/// light's side) that `occluders` let through, from `samples` stratified points of the light,
+/// each tested with a segment toward it: what replaces visible_light when it is not exact.
+float sampled_light_fraction(const AreaLight& light, Vec3 p, Vec3 n, Vec3 ng,
+                             const OccluderSet& occluders, int samples);
 
 /// ∫ cos θ dω over the polygon `corners` (world space) seen from `p` with unit normal `n`:
 /// Lambert's contour formula, for a polygon wholly above the horizon of p.
