@@ -199,5 +199,43 @@ TEST(AreaLight, VisiblePiecesAnswerWhichLightPointsAreSeen) {
     EXPECT_GE(agree, total - 4);  // only points on the shadow's edge may differ
 }
 
+TEST(AreaLight, DenseOccludersAreSampledInstead) {
+    // A checkerboard of 2 x 200 small triangles between the point and the light.
+    const AreaLight light = square_light(1, 2);
+    std::vector<Vec3> positions;
+    std::vector<std::array<uint32_t, 3>> indices;
+    for (int i = 0; i < 20; ++i)
+        for (int j = 0; j < 20; ++j) {
+            if ((i + j) % 2) continue;
+            const float x = -0.5f + 0.05f * i, z = -0.5f + 0.05f * j;
+            const auto base = static_cast<uint32_t>(positions.size());
+            positions.insert(
+                positions.end(),
+                {{x, 1, z}, {x + 0.05f, 1, z}, {x + 0.05f, 1, z + 0.05f}, {x, 1, z + 0.05f}});
+            indices.push_back({base, base + 1, base + 2});
+            indices.push_back({base, base + 2, base + 3});
+        }
+    const OccluderSet occluders(positions, indices, {}, {}, {});
+    const Vec3 up(0, 1, 0), p(0.1f, 0, 0.05f);
+    const VisibleLight seen = visible_light(light, p, up, up, &occluders);
+    EXPECT_FALSE(seen.exact);
+    // Brute force: the cosine-weighted share of light points whose segment misses every square.
+    double open = 0, visible = 0;
+    constexpr int n = 300;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const Vec3 y{-0.5f + (i + 0.5f) / n, 2, -0.5f + (j + 0.5f) / n};
+            const Vec3 d = y - p;
+            const double w = d.y * d.y / (dot(d, d) * dot(d, d));
+            const Vec3 at = p + 0.5f * d;  // where the segment crosses y = 1
+            const int cx = static_cast<int>(std::floor((at.x + 0.5f) / 0.05f));
+            const int cz = static_cast<int>(std::floor((at.z + 0.5f) / 0.05f));
+            const bool blocked = cx >= 0 && cx < 20 && cz >= 0 && cz < 20 && (cx + cz) % 2 == 0;
+            open += w;
+            visible += blocked ? 0 : w;
+        }
+    EXPECT_NEAR(sampled_light_fraction(light, p, up, up, occluders, 1024), visible / open, 0.02);
+}
+
 }  // namespace
 }  // namespace hikari
