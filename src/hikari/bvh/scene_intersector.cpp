@@ -119,7 +119,10 @@ uint32_t SceneIntersector::occluded_by_triangles(const RayPacket& packet, uint32
 }
 
 bool SceneIntersector::occluded(const Ray& ray, Interval range) const {
-    if (occluded_by_triangles(ray, range)) return true;
+    return occluded_by_triangles(ray, range) || occluded_by_spheres_and_planes(ray, range);
+}
+
+bool SceneIntersector::occluded_by_spheres_and_planes(const Ray& ray, Interval range) const {
     for (const Sphere& s : m_scene.spheres)
         if (s.casts_shadow && !std::isnan(intersect_sphere(ray, s.center, s.radius, range)))
             return true;

@@ -41,6 +41,8 @@ class SceneIntersector {
 
     /// Whether a shadow-casting triangle blocks `ray` inside `range` (occluded's first part).
     bool occluded_by_triangles(const Ray& ray, Interval range) const;
+    /// Whether a shadow-casting sphere or plane blocks `ray` inside `range` (occluded's rest).
+    bool occluded_by_spheres_and_planes(const Ray& ray, Interval range) const;
     /// occluded_by_triangles for the lanes `active` of a packet, each with its own interval:
     /// the mask of blocked lanes, each lane's answer exactly the single ray's (wide_bvh_packet.h).
     uint32_t occluded_by_triangles(const RayPacket& packet, uint32_t active) const;

@@ -10,6 +10,7 @@
 // term in closed form over the visible part of the light, the specular term sampled over it.
 
 #include <bit>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 
@@ -49,9 +50,21 @@ inline LightSample sample_extended_light(const Light& light, const SurfacePoint<
     return sample_light<float>(light, s.position);
 }
 
+/// Samples a visibility test may answer together (one packet of shadow rays).
+inline constexpr int k_light_sample_batch = 16;
+
+/// A visibility test that can answer up to k_light_sample_batch samples of one light at once:
+/// `visible.many(l, samples, count, s)` returns the mask of the unblocked ones.
+template <class Visible>
+concept BatchVisibility = requires(Visible& v, const LightSample* samples,
+                                   const SurfacePoint<float>& s) {
+    { v.many(size_t{0}, samples, 0, s) } -> std::convertible_to<uint32_t>;
+};
+
 /// Area and environment lights by sampling: `samples` stratified samples, each lighting the
 /// point where `visible(l, sample, s, true)` says it is not blocked (the method's shadow test:
-/// a shadow ray for the ray tracer).
+/// a shadow ray for the ray tracer; where the test can, k_light_sample_batch samples at a time:
+/// their shadow rays share an origin, so they traverse the BVH well as one packet).
 struct SampledLights {
     int samples = 1;
 
@@ -61,14 +74,32 @@ struct SampledLights {
                     int32_t& tested) const {
         StratifiedSquare pattern(samples, light_sample_stream(s.position, l));
         Vec3 sum(0.0f);
+        LightSample batch[k_light_sample_batch];
+        float cosines[k_light_sample_batch];
+        int pending = 0;
+        // The samples asked so far, in order: their light where visible.
+        const auto flush = [&]() {
+            uint32_t lit = 0;
+            if constexpr (BatchVisibility<Visible>) {
+                lit = visible.many(l, batch, pending, s);
+            } else {
+                for (int i = 0; i < pending; ++i)
+                    lit |= visible(l, batch[i], s, true) ? 1u << i : 0u;
+            }
+            for (int i = 0; i < pending; ++i)
+                if ((lit >> i) & 1u) sum += phong_reflected(m, s, batch[i], cosines[i], specular);
+            pending = 0;
+        };
         for (int k = 0; k < samples; ++k) {
             const LightSample sample = sample_extended_light(light, s, pattern.next(k));
             const float cos_alpha = dot(s.normal, sample.to_light);
             if (!(cos_alpha > 0.0f) || max_component(sample.irradiance) <= 0.0f) continue;
             ++tested;
-            if (!visible(l, sample, s, true)) continue;
-            sum += phong_reflected(m, s, sample, cos_alpha, specular);
+            batch[pending] = sample;
+            cosines[pending++] = cos_alpha;
+            if (pending == k_light_sample_batch) flush();
         }
+        flush();
         return sum / static_cast<float>(samples);
     }
 };

@@ -57,6 +57,44 @@ struct Emitters {
     }
 };
 
+/// The ray tracer's shadow test at one hit: the front end's answers for point and directional
+/// lights where it traced them (bit l of `lit`, when `lit_known`), else a shadow ray from
+/// offset_ray_origin(position, geometric normal) toward the light; the samples of an area or
+/// environment light as packets of rays from that one origin.
+struct ShadowRays {
+    const SceneIntersector& intersector;
+    bool lit_known;
+    uint32_t lit;
+
+    bool operator()(size_t l, const LightSample& light, const SurfacePoint<float>& s, bool) const {
+        if (lit_known && l < k_max_block_lights) return ((lit >> l) & 1u) != 0;
+        const Ray shadow{offset_ray_origin(s.position, s.geometric_normal), light.to_light};
+        return !intersector.occluded(shadow, {0.0f, light.distance});
+    }
+
+    /// The mask of samples[0, count) (count <= k_packet_size) whose shadow rays are unblocked,
+    /// each exactly as operator() answers it.
+    uint32_t many(size_t, const LightSample* samples, int count,
+                  const SurfacePoint<float>& s) const {
+        const Vec3 origin = offset_ray_origin(s.position, s.geometric_normal);
+        RayPacket packet;
+        for (int i = 0; i < static_cast<int>(k_packet_size); ++i) {
+            const LightSample& sample = samples[i < count ? i : 0];
+            packet.set(static_cast<uint32_t>(i), {origin, sample.to_light},
+                       {0.0f, sample.distance});
+        }
+        const uint32_t active = count >= 32 ? ~0u : (1u << count) - 1;
+        uint32_t open = active & ~intersector.occluded_by_triangles(packet, active);
+        for (int i = 0; i < count; ++i)
+            if (((open >> i) & 1u) != 0 &&
+                intersector.occluded_by_spheres_and_planes(packet.ray(static_cast<uint32_t>(i)),
+                                                           {0.0f, samples[i].distance}))
+                open &= ~(1u << i);
+        return open;
+    }
+};
+static_assert(k_light_sample_batch <= static_cast<int>(k_packet_size));
+
 /// What every ray of a render reads, plus the ray count of the tile being rendered (each tile
 /// works on its own copy, so counting needs no atomics per ray).
 struct TraceContext {
@@ -281,12 +319,7 @@ class WaveTracer {
             h.du_dx = footprint.du_dx, h.dv_dx = footprint.dv_dx;
             h.du_dy = footprint.du_dy, h.dv_dy = footprint.dv_dy;
         }
-        const auto visible = [&](size_t l, const LightSample& light, const SurfacePoint<float>& s,
-                                 bool) {
-            if (lit_known) return ((lit >> l) & 1u) != 0;
-            const Ray shadow{offset_ray_origin(s.position, s.geometric_normal), light.to_light};
-            return !m_ctx.intersector.occluded(shadow, {0.0f, light.distance});
-        };
+        const ShadowRays visible{m_ctx.intersector, lit_known, lit};
         return shade_whitted_hit<float>(m_ctx.shading, h, true, visible).direct;
     }
 
