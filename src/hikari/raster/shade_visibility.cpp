@@ -1,6 +1,8 @@
 #include "hikari/raster/shade_visibility.h"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include "hikari/frame/tiles.h"
@@ -32,7 +34,8 @@ struct ShadeContext {
     const OccluderSet* occluders;                        ///< the casters, for analytic
     /// Per light: an environment light's irradiance (raster lights it unshadowed).
     const std::vector<std::optional<IrradianceSh>>* environment_sh;
-    int light_samples;  ///< specular samples per area light
+    int light_samples;             ///< specular samples per area light
+    bool has_area_lights = false;  ///< camera rays may see a light's face
 };
 
 /// Where a pixel's shadows are decided: its visible point, face normal toward the eye, and
@@ -234,6 +237,22 @@ Vec3 background_at(const ShadeContext& ctx, int x, int y) {
     return ctx.scene.background;
 }
 
+/// The radiance of an area light's face that pixel (x, y)'s camera ray meets before eye
+/// distance `depth`, if one does (the ray tracer's camera rays see the lights the same way).
+std::optional<Vec3> light_face_at(const ShadeContext& ctx, int x, int y, float depth) {
+    std::optional<Vec3> seen;
+    for (const Light& light : ctx.scene.lights) {
+        const auto* area = std::get_if<AreaLight>(&light);
+        if (!area) continue;
+        const Ray ray = camera_ray(ctx.frame, x + 0.5f, y + 0.5f);
+        const float t = area_light_hit(*area, ray.origin, ray.direction, depth);
+        if (t == depth) continue;
+        depth = t;
+        seen = area->radiance;
+    }
+    return seen;
+}
+
 /// Colour and AOVs of every pixel of `tile`.
 void shade_tile(const ShadeContext& ctx, const VisibilityBuffer& vis, const Tile& tile,
                 Framebuffer& fb) {
@@ -242,11 +261,16 @@ void shade_tile(const ShadeContext& ctx, const VisibilityBuffer& vis, const Tile
             const size_t pixel = static_cast<size_t>(y) * ctx.width + x;
             const uint32_t t = vis.triangle[pixel];
             if (t == k_no_triangle) {
-                fb.set_color(pixel, background_at(ctx, x, y));
+                const std::optional<Vec3> light =
+                    ctx.has_area_lights ? light_face_at(ctx, x, y, k_infinity) : std::nullopt;
+                fb.set_color(pixel, light ? *light : background_at(ctx, x, y));
                 continue;
             }
             const PixelSurface s = surface_at(ctx, ctx.ps.triangles[t].source, x, y);
-            fb.set_color(pixel, shade_surface(ctx, s, pixel));
+            const float eye_distance = length(s.point - ctx.scene.camera.eye);
+            const std::optional<Vec3> light =
+                ctx.has_area_lights ? light_face_at(ctx, x, y, eye_distance) : std::nullopt;
+            fb.set_color(pixel, light ? *light : shade_surface(ctx, s, pixel));
             fb.depth[pixel] = length(s.point - ctx.scene.camera.eye);
             fb.id[pixel] = ctx.tris.id[s.src] + 1;
             const float nl = length(s.n_interp);
@@ -369,6 +393,9 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
         environment_sh.push_back(env ? std::optional(project_environment(*env)) : std::nullopt);
     }
     ctx.environment_sh = &environment_sh;
+    ctx.has_area_lights = std::any_of(scene.lights.begin(), scene.lights.end(), [](const Light& l) {
+        return std::holds_alternative<AreaLight>(l);
+    });
     // The shadow pass, shared by every visibility method: maps from the lights, or a stencil
     // per light counted against the depth of each pixel's visible point.
     ShadowMaps maps;

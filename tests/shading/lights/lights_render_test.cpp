@@ -92,6 +92,7 @@ TEST(LightsRender, RaysSeeTheLightsThemselves) {
     EXPECT_EQ(img.at(8, 15), Vec3(0.2f, 0.3f, 0.4f));  // below the horizon: the light's face
     EXPECT_EQ(img.at(8, 0), Vec3(0.9f, 0.8f, 0.7f));   // above it: the sky, not the background
     const Framebuffer raster = rasterize(scene, ShadowMode::none);
+    EXPECT_EQ(raster.film.linear().at(8, 15), Vec3(0.2f, 0.3f, 0.4f));
     EXPECT_EQ(raster.film.linear().at(8, 0), Vec3(0.9f, 0.8f, 0.7f));
 }
 

@@ -40,16 +40,8 @@ struct Emitters {
     std::optional<Vec3> light_face(const Ray& ray, float t_hit) const {
         std::optional<Vec3> seen;
         for (const AreaLight& a : areas) {
-            const Vec3 n = a.area_normal();
-            const float facing = dot(n, ray.direction);
-            if (facing == 0.0f || (!a.two_sided && facing > 0.0f)) continue;
-            const float t = dot(n, a.corner - ray.origin) / facing;
-            if (!(t > 0.0f && t < t_hit)) continue;
-            const Vec3 x = ray.origin + t * ray.direction - a.corner;
-            const float area2 = dot(n, n);
-            const float u = dot(x, cross(a.edge2, n)) / area2,
-                        v = dot(x, cross(n, a.edge1)) / area2;
-            if (u < 0.0f || u > 1.0f || v < 0.0f || v > 1.0f) continue;
+            const float t = area_light_hit(a, ray.origin, ray.direction, t_hit);
+            if (t == t_hit) continue;
             t_hit = t;
             seen = a.radiance;
         }

@@ -34,6 +34,22 @@ HIKARI_INLINE LightSampleT<F> sample_area_light(const AreaLight& light, const Ve
     return {to_light, distance, Vec3T<F>(light.radiance) * (area_cos / d2)};
 }
 
+/// Where the ray from `origin` along unit `direction` meets the emitting side of `light` (either
+/// side when two-sided) strictly between 0 and `t_max`: the distance, or t_max when it does not.
+/// What camera rays see of the light: its radiance L.
+inline float area_light_hit(const AreaLight& light, Vec3 origin, Vec3 direction, float t_max) {
+    const Vec3 n = light.area_normal();
+    const float facing = dot(n, direction);
+    if (facing == 0.0f || (!light.two_sided && facing > 0.0f)) return t_max;
+    const float t = dot(n, light.corner - origin) / facing;
+    if (!(t > 0.0f && t < t_max)) return t_max;
+    const Vec3 x = origin + t * direction - light.corner;
+    const float area2 = dot(n, n);
+    const float a = dot(x, cross(light.edge2, n)) / area2,
+                b = dot(x, cross(n, light.edge1)) / area2;
+    return a >= 0.0f && a <= 1.0f && b >= 0.0f && b <= 1.0f ? t : t_max;
+}
+
 /// The area light as one point light at its centre (what a light far away and small is; also
 /// what shadow maps and shadow volumes, which see from one point, take it for).
 template <class F>
