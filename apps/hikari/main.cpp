@@ -31,6 +31,7 @@
 #include "hikari/io/image_write.h"
 #include "hikari/io/scene_json.h"
 #include "hikari/io/svg_write.h"
+#include "hikari/io/xlsx_write.h"
 #include "hikari/methods/registry.h"
 #include "hikari/version.h"
 
@@ -167,7 +168,7 @@ void check_output_path(const std::filesystem::path& output, const std::string& s
                                      output.string()));
     if (!is_supported_image_extension(output) && !is_svg_path(output))
         throw InputError(fmt::format(
-            "{}: unsupported output format (use .png, .ppm, .pfm, .exr, or .svg for lines)",
+            "{}: unsupported output format (use .png, .ppm, .pfm, .exr, .xlsx, or .svg for lines)",
             output.string()));
     const std::filesystem::path dir = output.has_parent_path() ? output.parent_path() : ".";
     std::error_code ec;
@@ -179,6 +180,15 @@ void check_output_path(const std::filesystem::path& output, const std::string& s
                                      output.string(), dir.string()));
     if (std::filesystem::is_directory(output, ec))
         throw InputError(fmt::format("{}: cannot write: it is a directory", output.string()));
+}
+
+/// Refuses, before rendering, a spreadsheet output larger than a sheet holds.
+void check_spreadsheet_size(const std::filesystem::path& output, const Camera& camera) {
+    if (image_format_from_extension(output) != ImageFormat::Xlsx) return;
+    if (camera.width > k_xlsx_max_columns || camera.height > k_xlsx_max_rows)
+        throw InputError(fmt::format(
+            "{}: a {}x{} image does not fit a spreadsheet (at most {} columns and {} rows)",
+            output.string(), camera.width, camera.height, k_xlsx_max_columns, k_xlsx_max_rows));
 }
 
 /// Wall times of run_render's phases, for `--stats`.
@@ -230,7 +240,8 @@ Scene load_render_scene(const RenderOptions& o) {
 Film output_film(const Camera& camera, const std::string& output, Aov aov) {
     const std::optional<ImageFormat> format = image_format_from_extension(output);
     const bool srgb8 =
-        aov == Aov::color && (format == ImageFormat::Png || format == ImageFormat::Ppm);
+        aov == Aov::color &&
+        (format == ImageFormat::Png || format == ImageFormat::Ppm || format == ImageFormat::Xlsx);
     return Film(camera, srgb8 ? FilmFormat::srgb8 : FilmFormat::linear);
 }
 
@@ -287,6 +298,7 @@ int run_render(const RenderOptions& o, const Method& method) {
     check_svg_output(output, method, o.aov);
     if (is_svg_path(output)) return run_drawing(o, method, output);
     const Scene scene = load_render_scene(o);
+    check_spreadsheet_size(output, scene.camera);
     RenderSettings settings;
     settings.control = &g_control;
     settings.stats = &g_stats;

@@ -445,5 +445,17 @@ TEST_F(Cli, LightSamplesAndSoftShadowModesRender) {
                        "--shadows pcss: method raytrace cannot draw shadows that way");
 }
 
+TEST_F(Cli, RendersIntoASpreadsheet) {
+    const Result r = run("render --width 16 --height 12 -o " + path("sphere.xlsx"));
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(hikari::testing::read_text(path("sphere.xlsx")).substr(0, 2), "PK");
+    const Result wide = run("render --width 16385 --height 1 -o " + path("wide.xlsx"));
+    EXPECT_EQ(wide.status, 1) << wide.output;
+    EXPECT_NE(wide.output.find("does not fit a spreadsheet (at most 16384 columns"),
+              std::string::npos)
+        << wide.output;
+    EXPECT_EQ(file_count(), 1u);
+}
+
 }  // namespace
 }  // namespace hikari

@@ -14,6 +14,7 @@ std::optional<ImageFormat> image_format_from_extension(const std::filesystem::pa
     if (ext == ".pfm") return ImageFormat::Pfm;
     if (ext == ".exr") return ImageFormat::Exr;
     if (ext == ".hdr") return ImageFormat::Hdr;
+    if (ext == ".xlsx") return ImageFormat::Xlsx;
     return std::nullopt;
 }
 

@@ -451,6 +451,8 @@ Image read_image(const std::filesystem::path& path) {
             return read_exr(path, bytes);
         case ImageFormat::Hdr:
             return read_hdr(path, bytes);
+        case ImageFormat::Xlsx:
+            break;
     }
     fail(path, "unsupported image format");
 }

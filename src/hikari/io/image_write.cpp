@@ -14,6 +14,7 @@
 #include "hikari/io/atomic_file.h"
 #include "hikari/io/image_format.h"
 #include "hikari/io/png_write.h"
+#include "hikari/io/xlsx_write.h"
 
 namespace hikari {
 
@@ -116,6 +117,8 @@ Bytes encode(const std::filesystem::path& path, const Srgb8Image& image, ImageFo
             return encode_png(image);
         case ImageFormat::Ppm:
             return encode_ppm(image);
+        case ImageFormat::Xlsx:
+            return encode_xlsx(path, image);
         default:
             break;
     }
@@ -127,6 +130,7 @@ Bytes encode(const std::filesystem::path& path, const Image& image, ImageFormat 
     switch (format) {
         case ImageFormat::Png:
         case ImageFormat::Ppm:
+        case ImageFormat::Xlsx:
             return encode(path, encode_srgb8(image), format);
         case ImageFormat::Pfm:
             return encode_pfm(image);

@@ -8,8 +8,8 @@
 
 namespace hikari {
 
-/// The extensions write_image() accepts, for messages: ".png, .ppm, .pfm, .exr".
-inline constexpr const char* k_writable_image_extensions = ".png, .ppm, .pfm, .exr";
+/// The extensions write_image() accepts, for messages: ".png, .ppm, .pfm, .exr, .xlsx".
+inline constexpr const char* k_writable_image_extensions = ".png, .ppm, .pfm, .exr, .xlsx";
 
 /// True when write_image() can write `path`, judged by its extension alone (case-insensitive).
 /// Lets the command line reject `-o picture.bmp` before spending time on a render.
@@ -20,6 +20,8 @@ bool is_supported_image_extension(const std::filesystem::path& path);
 /// - `.ppm`: binary P6, 8-bit, sRGB-encoded and clamped like PNG;
 /// - `.pfm`: 32-bit float linear RGB, unclamped, little-endian, rows bottom to top;
 /// - `.exr`: 32-bit float linear RGB (channels stored B, G, R), unclamped, ZIP-compressed.
+/// - `.xlsx`: a workbook whose cells are the pixels (io/xlsx_write.h), sRGB-encoded and clamped
+///   like PNG.
 /// The file is written atomically (see write_file_atomically). Throws InputError for an unknown
 /// extension, an empty image, or any OS error.
 void write_image(const std::filesystem::path& path, const Image& image);
