@@ -24,6 +24,7 @@
 #include <tbb/global_control.h>
 #include <CLI/CLI.hpp>
 
+#include "gallery.h"
 #include "hikari/bench/bench_runner.h"
 #include "hikari/core/error.h"
 #include "hikari/io/atomic_file.h"
@@ -571,6 +572,31 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& b) {
     return bench;
 }
 
+/// `hikari gallery` and its options.
+CLI::App* add_gallery_command(CLI::App& app, GalleryOptions& g) {
+    CLI::App* gallery = app.add_subcommand(
+        "gallery",
+        "Render the lecture's figures (Fig 4.1 to 4.43) into a directory with an "
+        "index.html contact sheet.");
+    gallery->add_option("-o,--output", g.dir, "Directory for the images, scenes and index.html")
+        ->capture_default_str();
+    gallery->add_option("--model", g.model,
+                        "Mesh for Fig 4.1 and the others (OBJ; default: the repository's teapot)");
+    gallery->add_option("--width", g.width, "Image width in pixels")
+        ->check(CLI::Range(16, 4096))
+        ->capture_default_str();
+    gallery->add_option("--threads", g.threads, "Render threads (default: all cores)")
+        ->check(CLI::Range(1, 1024));
+    return gallery;
+}
+
+/// This program's own path, to run `hikari render` for each figure.
+std::string own_program(const char* argv0) {
+    std::error_code ec;
+    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+    return ec ? std::string(argv0) : self.string();
+}
+
 /// Parses the command line (and checks the render's method options); returns the exit status
 /// when the program ends there: after --help or --version, or on a usage error.
 std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, const CLI::App& render,
@@ -595,11 +621,13 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, cons
 
 /// Runs the parsed subcommand; an error becomes one line on stderr and an exit status.
 int run_command(const CLI::App& render, const RenderOptions& o, const CLI::App& bench,
-                const BenchOptions& b) {
+                const BenchOptions& b, const CLI::App& gallery, const GalleryOptions& g,
+                const std::string& program) {
     try {
         // The method name was checked by the parser.
         if (render.parsed()) exit_after_render(run_render(o, *find_method(o.method)));
         if (bench.parsed()) return run_bench_command(b);
+        if (gallery.parsed()) return run_gallery(g, program);
     } catch (const Interrupted&) {
         fmt::print(stderr, "\nhikari: interrupted; no image written\n");
         return k_exit_interrupted;
@@ -629,8 +657,10 @@ int main(int argc, char** argv) {
     BenchOptions b;
     const CLI::App* render = add_render_command(app, o);
     const CLI::App* bench = add_bench_command(app, b);
+    GalleryOptions g;
+    const CLI::App* gallery = add_gallery_command(app, g);
     if (const std::optional<int> status = parse_command_line(app, argc, argv, *render, o))
         return *status;
     install_signal_handlers();
-    return run_command(*render, o, *bench, b);
+    return run_command(*render, o, *bench, b, *gallery, g, own_program(argv[0]));
 }

@@ -457,5 +457,45 @@ TEST_F(Cli, RendersIntoASpreadsheet) {
     EXPECT_EQ(file_count(), 1u);
 }
 
+TEST_F(Cli, GalleryRendersTheLecturesFiguresOnAnyModel) {
+    // A model of our own (a square pyramid), not the repository's teapot.
+    write("pyramid.obj",
+          "v -1 0 -1\nv 1 0 -1\nv 1 0 1\nv -1 0 1\nv 0 1.5 0\n"
+          "f 1 2 3 4\nf 1 5 2\nf 2 5 3\nf 3 5 4\nf 4 5 1\n");
+    const Result r =
+        run("gallery --width 48 --model " + path("pyramid.obj") + " -o " + path("gallery"));
+    ASSERT_EQ(r.status, 0) << r.output;
+    const std::string index = hikari::testing::read_text(path("gallery/index.html"));
+    size_t images = 0;
+    for (const auto& entry : fs::directory_iterator(path("gallery"))) {
+        if (entry.path().extension() != ".png") continue;
+        ++images;
+        EXPECT_NE(index.find("\"" + entry.path().filename().string() + "\""), std::string::npos)
+            << entry.path();
+        EXPECT_GT(fs::file_size(entry.path()), 60u) << entry.path();
+    }
+    EXPECT_GE(images, 25u);
+    for (const char* fig : {"Fig 4.1a", "Fig 4.3", "Fig 4.7", "Fig 4.9a", "Fig 4.9c", "Fig 4.14",
+                            "Fig 4.24", "Fig 4.29", "Fig 4.39", "Fig 4.43", "Alg 4.1", "Alg 4.2"})
+        EXPECT_NE(index.find(fig), std::string::npos) << fig;
+    EXPECT_NE(index.find("hikari render scenes/model.json -m hiddenline"), std::string::npos);
+    EXPECT_NE(index.find("triangles face away from the eye and are culled"), std::string::npos);
+    EXPECT_NE(index.find("id buffers of scanline and zbuffer agree on"), std::string::npos);
+    EXPECT_TRUE(fs::exists(path("gallery/scenes/model.json")));
+    EXPECT_FALSE(fs::exists(path("gallery/data")));
+}
+
+TEST_F(Cli, GalleryMistakesExitOneAndMakeNothing) {
+    const Result missing = run("gallery --model " + path("none.obj") + " -o " + path("g"));
+    EXPECT_EQ(missing.status, 1);
+    EXPECT_NE(missing.output.find("hikari: error: "), std::string::npos) << missing.output;
+    EXPECT_FALSE(fs::exists(path("g")));
+    write("file", "not a directory");
+    const Result blocked = run("gallery --width 32 -o " + path("file/g"));
+    EXPECT_EQ(blocked.status, 1);
+    EXPECT_NE(blocked.output.find("cannot write into"), std::string::npos) << blocked.output;
+    EXPECT_EQ(run("gallery --width 2").status, 2);
+}
+
 }  // namespace
 }  // namespace hikari
