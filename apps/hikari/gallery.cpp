@@ -465,11 +465,13 @@ void plan(Gallery& g, const PlacedModel& model) {
                        {"corner", vec(-0.4f, 2.6f, 0.1f)},
                        {"edge1", vec(0.8f, 0, 0)},
                        {"edge2", vec(0, 0, 0.8f)},
-                       {"radiance", vec(22, 21, 20)}};
+                       {"radiance", vec(9, 8.6f, 8.2f)}};
     const std::vector<std::tuple<std::string, std::string, Json>> lights = {
         {"point",
          "point light (1/d²)",
-         {{{"type", "point"}, {"position", vec(0, 2.6f, 0.5f)}, {"intensity", vec(14, 13, 12)}}}},
+         {{{"type", "point"},
+           {"position", vec(0, 2.6f, 0.5f)},
+           {"intensity", vec(6.5f, 6.2f, 5.8f)}}}},
         {"directional",
          "directional light",
          {{{"type", "directional"},
