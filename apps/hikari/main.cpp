@@ -501,9 +501,10 @@ void add_render_inputs(CLI::App& render, RenderOptions& o) {
                       "Scene file (JSON, see docs/scene-format.md); default: the lecture's "
                       "assignment, a Phong-shaded sphere");
     render.add_option("-o,--output", o.output,
-                      "Output image: .png (8-bit sRGB), .ppm, .pfm or .exr (linear float), or "
-                      ".svg (the segments of wireframe and hiddenline); default: <scene "
-                      "name>.png in the current directory");
+                      "Output image: .png (8-bit sRGB), .ppm, .pfm or .exr (linear float), "
+                      ".xlsx (a spreadsheet whose cells are the pixels), or .svg (the segments "
+                      "of wireframe and hiddenline); default: <scene name>.png in the current "
+                      "directory");
     std::vector<std::string> names;
     for (const Method& m : methods()) names.emplace_back(m.name);
     render.add_option("-m,--method", o.method, "Rendering method")
