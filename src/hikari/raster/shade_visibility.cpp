@@ -34,8 +34,9 @@ struct ShadeContext {
     const OccluderSet* occluders;                        ///< the casters, for analytic
     /// Per light: an environment light's irradiance (raster lights it unshadowed).
     const std::vector<std::optional<IrradianceSh>>* environment_sh;
-    int light_samples;             ///< specular samples per area light
-    bool has_area_lights = false;  ///< camera rays may see a light's face
+    int light_samples;                              ///< specular samples per area light
+    bool has_area_lights = false;                   ///< camera rays may see a light's face
+    const EnvironmentLight* environment = nullptr;  ///< what pixels without a surface show
 };
 
 /// Where a pixel's shadows are decided: its visible point, face normal toward the eye, and
@@ -231,26 +232,15 @@ Vec3 shade_surface(const ShadeContext& ctx, const PixelSurface& s, size_t pixel)
 /// What a pixel that sees no triangle shows: the environment map along its camera ray when the
 /// scene has an environment light, else the background colour.
 Vec3 background_at(const ShadeContext& ctx, int x, int y) {
-    for (const Light& light : ctx.scene.lights)
-        if (const auto* env = std::get_if<EnvironmentLight>(&light))
-            return env->radiance_from(camera_ray(ctx.frame, x + 0.5f, y + 0.5f).direction);
-    return ctx.scene.background;
+    if (!ctx.environment) return ctx.scene.background;
+    return ctx.environment->radiance_from(camera_ray(ctx.frame, x + 0.5f, y + 0.5f).direction);
 }
 
 /// The radiance of an area light's face that pixel (x, y)'s camera ray meets before eye
 /// distance `depth`, if one does (the ray tracer's camera rays see the lights the same way).
 std::optional<Vec3> light_face_at(const ShadeContext& ctx, int x, int y, float depth) {
-    std::optional<Vec3> seen;
-    for (const Light& light : ctx.scene.lights) {
-        const auto* area = std::get_if<AreaLight>(&light);
-        if (!area) continue;
-        const Ray ray = camera_ray(ctx.frame, x + 0.5f, y + 0.5f);
-        const float t = area_light_hit(*area, ray.origin, ray.direction, depth);
-        if (t == depth) continue;
-        depth = t;
-        seen = area->radiance;
-    }
-    return seen;
+    const Ray ray = camera_ray(ctx.frame, x + 0.5f, y + 0.5f);
+    return light_face_seen(ctx.scene.lights, ray.origin, ray.direction, depth);
 }
 
 /// Colour and AOVs of every pixel of `tile`.
@@ -393,6 +383,7 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
         environment_sh.push_back(env ? std::optional(project_environment(*env)) : std::nullopt);
     }
     ctx.environment_sh = &environment_sh;
+    ctx.environment = find_environment(scene.lights);
     ctx.has_area_lights = std::any_of(scene.lights.begin(), scene.lights.end(), [](const Light& l) {
         return std::holds_alternative<AreaLight>(l);
     });

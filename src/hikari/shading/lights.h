@@ -8,6 +8,8 @@
 // samples by shading/light_integral.h.
 
 #include <limits>
+#include <optional>
+#include <span>
 #include <type_traits>
 
 #include "hikari/core/lanes.h"
@@ -32,6 +34,30 @@ HIKARI_INLINE LightSampleT<F> sample_light(const Light& light, const Vec3T<F>& p
         else
             return sample_light<F>(kind, p);
     });
+}
+
+/// The radiance a ray from `origin` along unit `direction` meets at the nearest area light's
+/// face among `lights` strictly before `t_max` (what camera, mirror and refracted rays see of
+/// the lights in every method), if it meets one.
+inline std::optional<Vec3> light_face_seen(std::span<const Light> lights, Vec3 origin,
+                                           Vec3 direction, float t_max) {
+    std::optional<Vec3> seen;
+    for (const Light& light : lights) {
+        const auto* area = std::get_if<AreaLight>(&light);
+        if (!area) continue;
+        const float t = area_light_hit(*area, origin, direction, t_max);
+        if (t == t_max) continue;
+        t_max = t;
+        seen = area->radiance;
+    }
+    return seen;
+}
+
+/// The scene's environment light among `lights`, or null (a scene has at most one).
+inline const EnvironmentLight* find_environment(std::span<const Light> lights) {
+    for (const Light& light : lights)
+        if (const auto* env = std::get_if<EnvironmentLight>(&light)) return env;
+    return nullptr;
 }
 
 }  // namespace hikari

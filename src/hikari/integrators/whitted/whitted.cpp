@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -24,29 +25,16 @@ namespace {
 /// What rays see of the lights themselves: the area lights' faces (radiance L), and the
 /// environment where a ray escapes.
 struct Emitters {
-    std::vector<AreaLight> areas;
+    std::span<const Light> lights;  ///< the scene's
+    bool areas = false;             ///< some light is an area light
     const EnvironmentLight* environment = nullptr;
 
-    explicit Emitters(const Scene& scene) {
-        for (const Light& light : scene.lights) {
-            if (const auto* a = std::get_if<AreaLight>(&light)) areas.push_back(*a);
-            if (const auto* e = std::get_if<EnvironmentLight>(&light)) environment = e;
-        }
-    }
-    bool any() const { return !areas.empty() || environment; }
-
-    /// The radiance `ray` meets at a light's face nearer than `t_hit` (the emitting side, or
-    /// either side of a two-sided light), if it meets one.
-    std::optional<Vec3> light_face(const Ray& ray, float t_hit) const {
-        std::optional<Vec3> seen;
-        for (const AreaLight& a : areas) {
-            const float t = area_light_hit(a, ray.origin, ray.direction, t_hit);
-            if (t == t_hit) continue;
-            t_hit = t;
-            seen = a.radiance;
-        }
-        return seen;
-    }
+    explicit Emitters(const Scene& scene)
+        : lights(scene.lights),
+          areas(std::any_of(scene.lights.begin(), scene.lights.end(),
+                            [](const Light& l) { return std::holds_alternative<AreaLight>(l); })),
+          environment(find_environment(scene.lights)) {}
+    bool any() const { return areas || environment; }
 };
 
 /// The ray tracer's shadow test at one hit: the front end's answers for point and directional
@@ -285,7 +273,10 @@ class WaveTracer {
         for (int j = 0; j < rays; ++j) {
             const Ray ray = block.ray(c * k_lane_chunk + j);
             const bool hit = lane.active[j] != 0;
-            std::optional<Vec3> seen = m_ctx.emitters.light_face(ray, hit ? lane.t[j] : k_infinity);
+            std::optional<Vec3> seen =
+                m_ctx.emitters.areas ? light_face_seen(m_ctx.emitters.lights, ray.origin,
+                                                       ray.direction, hit ? lane.t[j] : k_infinity)
+                                     : std::nullopt;
             if (!seen && !hit && m_ctx.emitters.environment)
                 seen = m_ctx.emitters.environment->radiance_from(ray.direction);
             if (!seen) continue;
