@@ -206,6 +206,9 @@ void print_stats(const PhaseTimes& times) {
                1e3 * times.load, 1e3 * times.render, 1e3 * times.write);
     if (rays > 0)
         fmt::print(stderr, "; {} rays, {:.2f} Mrays/s", rays, 1e-6 * double(rays) / times.render);
+    if (const uint64_t paths = g_stats.paths_traced.load(); paths > 0)
+        fmt::print(stderr, "; {} paths, {:.2f} Mpaths/s, {} NaN/Inf samples", paths,
+                   1e-6 * double(paths) / times.render, g_stats.bad_samples.load());
     fmt::print(stderr, "\n");
     const uint64_t triangles = g_stats.bvh_triangles.load();
     if (triangles > 0)
@@ -257,6 +260,15 @@ void write_output(const std::string& output, Framebuffer&& fb, Aov aov) {
     g_writing = false;
 }
 
+/// `--progressive`: the image so far written over `output` (atomically, as every image is: a
+/// viewer watching the file sees the old image or the new one, never half of one).
+void write_progressive_snapshot(const std::string& output, const Image& mean) {
+    if (g_control.cancel.load()) return;
+    g_writing = true;
+    write_image(output, mean);
+    g_writing = false;
+}
+
 /// Refuses, before any work is done, an SVG output that the method or --aov cannot give.
 void check_svg_output(const std::string& output, const Method& method, Aov aov) {
     if (!is_svg_path(output)) return;
@@ -300,6 +312,14 @@ int run_render(const RenderOptions& o, const Method& method) {
     if (is_svg_path(output)) return run_drawing(o, method, output);
     const Scene scene = load_render_scene(o);
     check_spreadsheet_size(output, scene.camera);
+    if (method.warnings)
+        for (const std::string& w : method.warnings(scene))
+            fmt::print(stderr, "hikari: warning: {}\n", w);
+    MethodSettings own = o.own;
+    if (own.path.progressive_seconds > 0.0f && o.aov == Aov::color)
+        own.path.snapshot = [&output](const Image& mean, int) {
+            write_progressive_snapshot(output, mean);
+        };
     RenderSettings settings;
     settings.control = &g_control;
     settings.stats = &g_stats;
@@ -315,7 +335,7 @@ int run_render(const RenderOptions& o, const Method& method) {
     Framebuffer fb;
     {
         ProgressReporter progress(!o.quiet);
-        fb = render_scene(method, scene, output_film(scene.camera, output, o.aov), settings, o.own);
+        fb = render_scene(method, scene, output_film(scene.camera, output, o.aov), settings, own);
     }
     const auto rendered = Clock::now();
     times.render = std::chrono::duration<double>(rendered - start).count();
@@ -325,6 +345,11 @@ int run_render(const RenderOptions& o, const Method& method) {
     if (!o.quiet)
         fmt::print(stderr, "hikari: wrote {} ({}x{}, {}, {:.3f} s)\n", output, width, height,
                    method.name, times.render);
+    if (const uint64_t bad = g_stats.bad_samples.load(); bad > 0)
+        fmt::print(stderr,
+                   "hikari: warning: {} samples were NaN or infinite and were left out of the "
+                   "image (their pixels average the other samples as if these were black)\n",
+                   bad);
     if (o.stats) print_stats(times);
     return 0;
 }
@@ -412,6 +437,17 @@ CLI::Option* add_method_option(CLI::App& app, const MethodOption& option,
         ->capture_default_str();
 }
 
+/// A method option whose value is an integer in a range, unset unless given.
+CLI::Option* add_method_option(CLI::App& app, const MethodOption& option,
+                               const OptionalIntegerOption& integer, MethodSettings& own) {
+    std::optional<int>& target = integer.field(own);
+    return app
+        .add_option_function<int>(
+            std::string(option.flag), [&target](int value) { target = value; },
+            std::string(option.help))
+        ->check(CLI::Range(integer.min, integer.max));
+}
+
 /// A method option whose value is a real number in a range.
 CLI::Option* add_method_option(CLI::App& app, const MethodOption& option, const RealOption& real,
                                MethodSettings& own) {
@@ -488,6 +524,9 @@ void check_method_options(const CLI::App& render, const Method& method, const Me
             "{} is not an option of method {} ({})", option->flag, method.name,
             method.options.empty() ? "it takes none" : "it understands: " + option_list(method)));
     }
+    if (method.name == "raytrace" && own.max_depth == 0)
+        throw CLI::ValidationError(
+            "--max-depth 0: raytrace needs at least 1 ray segment (the camera ray)");
     if (own.shadows && !does_shadows(method, *own.shadows))
         throw CLI::ValidationError(
             fmt::format("--shadows {}: method {} cannot draw shadows that way (it can: {})",
@@ -543,7 +582,8 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
     render->add_flag("-q,--quiet", o.quiet, "No progress or summary on stderr");
     render->add_flag(
         "--stats", o.stats,
-        "Print the load, render and write times, rays per second and BVH figures on stderr");
+        "Print the load, render and write times, rays (and paths) per second and BVH figures "
+        "on stderr");
     add_method_options(*render, o.own);
     render->footer(method_list());
     return render;

@@ -205,6 +205,15 @@ TEST(SceneJson, NegativeIntensityIsRefused) {
               "s.json: lights[0].intensity[1]: expected a number >= 0");
 }
 
+TEST(SceneJson, EmissionMakesAMaterialALight) {
+    const Scene scene = parse(R"({"materials": {"lamp": {"emission": [17, 12, 4]}},
+      "objects": [{"type": "sphere", "center": [0, 0, -3], "radius": 1, "material": "lamp"}]})");
+    EXPECT_EQ(scene.materials.back().emission, Vec3(17, 12, 4));
+    EXPECT_NE(error_of(R"({"materials": {"lamp": {"emission": [1, -2, 0]}}, "objects": []})")
+                  .find("materials.lamp.emission[1]"),
+              std::string::npos);
+}
+
 TEST(SceneJson, AreaAndEnvironmentLightsParse) {
     const Scene s = testing::parse(R"({"lights": [
         {"type": "area", "corner": [0, 2, 0], "edge1": [1, 0, 0], "edge2": [0, 0, 2],

@@ -114,8 +114,11 @@ TEST(Methods, EveryMethodDeclaresItsOptions) {
     std::vector<std::string> all;
     for (const MethodOption* option : method_options()) all.emplace_back(option->flag);
     EXPECT_EQ(all, (std::vector<std::string>{"--spp", "--max-depth", "--shadows", "--light-samples",
-                                             "--interp", "--cull", "--shadow-map-size",
-                                             "--line-width", "--line-color"}));
+                                             "--clamp", "--time-limit", "--progressive", "--filter",
+                                             "--filter-width", "--interp", "--cull",
+                                             "--shadow-map-size", "--line-width", "--line-color"}));
+    EXPECT_TRUE(takes_option(*find_method("path"), "--spp"));
+    EXPECT_FALSE(takes_option(*find_method("path"), "--shadows"));
 }
 
 TEST(Methods, EveryMethodNamesItsShadowModesDefaultFirst) {
@@ -165,8 +168,8 @@ const MethodOption& option_named(std::string_view flag) {
 
 TEST(Methods, OptionsSetTheirMethodsSettings) {
     MethodSettings own;
-    std::get<IntegerOption>(option_named("--spp").value).field(own) = 9;
-    std::get<IntegerOption>(option_named("--max-depth").value).field(own) = 2;
+    std::get<OptionalIntegerOption>(option_named("--spp").value).field(own) = 9;
+    std::get<OptionalIntegerOption>(option_named("--max-depth").value).field(own) = 2;
     std::get<ChoiceOption<Interpolation>>(option_named("--interp").value).field(own) =
         Interpolation::gouraud;
     std::get<ChoiceOption<bool>>(option_named("--cull").value).field(own) = true;
@@ -174,8 +177,8 @@ TEST(Methods, OptionsSetTheirMethodsSettings) {
     std::get<ColorOption>(option_named("--line-color").value).field(own) = Vec3(1, 0, 0);
     EXPECT_EQ(own.lines.width, 2.5f);
     EXPECT_EQ(own.lines.color, Vec3(1, 0, 0));
-    EXPECT_EQ(own.whitted.samples_per_pixel, 9);
-    EXPECT_EQ(own.whitted.max_depth, 2);
+    EXPECT_EQ(own.samples_per_pixel, 9);
+    EXPECT_EQ(own.max_depth, 2);
     EXPECT_EQ(own.raster.interp, Interpolation::gouraud);
     EXPECT_TRUE(own.raster.cull_back_faces);
 }

@@ -4,7 +4,12 @@
 #include <cmath>
 #include <cstdint>
 
+#include "hikari/core/vec.h"
+
 namespace hikari {
+
+/// The luminance Y of linear RGB with the Rec. 709 (sRGB) primaries.
+inline float luminance(Vec3 c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
 /// Linear [0, 1] to the sRGB transfer curve (IEC 61966-2-1); values outside are clamped.
 inline float linear_to_srgb(float v) {

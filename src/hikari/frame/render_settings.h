@@ -17,7 +17,10 @@ struct RenderControl {
 
 /// Figures a render reports for `hikari render --stats`; a method that has none leaves them 0.
 struct RenderStats {
-    std::atomic<uint64_t> rays_traced{0};    ///< camera, secondary and shadow rays
+    std::atomic<uint64_t> rays_traced{0};   ///< camera, secondary and shadow rays
+    std::atomic<uint64_t> paths_traced{0};  ///< path tracing: camera samples traced
+    /// Path tracing: samples whose radiance came out NaN or infinite, left out of the image.
+    std::atomic<uint64_t> bad_samples{0};
     std::atomic<uint64_t> bvh_triangles{0};  ///< triangles in the BVH
     std::atomic<uint64_t> bvh_nodes{0};      ///< wide BVH nodes
     std::atomic<uint64_t> bvh_bytes{0};      ///< BVH nodes + triangle data + ids

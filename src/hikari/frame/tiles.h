@@ -21,14 +21,16 @@ struct Tile {
 };
 
 /// Calls `fn(const Tile&)` for every tile of a width × height image, on all cores of the current
-/// task arena. Reports each finished tile to `control` and throws Interrupted once all running
-/// tiles are done when `control->cancel` is set.
+/// task arena. Reports each finished tile to `control` (unless `report_tiles` is false: a
+/// caller that loops over the image several times counts its own work) and throws Interrupted
+/// once all running tiles are done when `control->cancel` is set.
 template <class TileFn>
-void for_each_tile(int width, int height, RenderControl* control, TileFn&& fn) {
+void for_each_tile(int width, int height, RenderControl* control, TileFn&& fn,
+                   bool report_tiles = true) {
     const int tiles_x = (width + k_tile_size - 1) / k_tile_size;
     const int tiles_y = (height + k_tile_size - 1) / k_tile_size;
     const int64_t tile_count = int64_t{tiles_x} * tiles_y;
-    if (control) control->work_total = static_cast<uint64_t>(tile_count);
+    if (control && report_tiles) control->work_total = static_cast<uint64_t>(tile_count);
     hikari::parallel_for(tbb::blocked_range<int64_t>(0, tile_count, 1),
                          [&](const tbb::blocked_range<int64_t>& range) {
                              for (int64_t t = range.begin(); t != range.end(); ++t) {
@@ -40,7 +42,7 @@ void for_each_tile(int width, int height, RenderControl* control, TileFn&& fn) {
                                                  std::min(width, (tx + 1) * k_tile_size),
                                                  std::min(height, (ty + 1) * k_tile_size)};
                                  fn(tile);
-                                 if (control)
+                                 if (control && report_tiles)
                                      control->work_done.fetch_add(1, std::memory_order_relaxed);
                              }
                          });

@@ -349,11 +349,15 @@ Material to_material(const std::filesystem::path& file, const tinyobj::material_
     out.ior = static_cast<float>(m.ior);
     out.transparency = std::clamp(1.0f - static_cast<float>(m.dissolve), 0.0f, 1.0f);
     out.reflectivity = 0;
+    out.emission = to_vec3(m.emission);
     if (!is_finite(out.ka) || !is_finite(out.kd) || !is_finite(out.ks) ||
-        !std::isfinite(out.shininess) || !std::isfinite(out.ior) ||
+        !is_finite(out.emission) || !std::isfinite(out.shininess) || !std::isfinite(out.ior) ||
         !std::isfinite(static_cast<float>(m.dissolve))) {
         fail(file, 0, "material '" + m.name + "' has a non-finite coefficient");
     }
+    if (out.emission.x < 0.0f || out.emission.y < 0.0f || out.emission.z < 0.0f)
+        fail(library, mtl_statement_line(library, m.name, "Ke"),
+             "material '" + m.name + "': Ke (emission) must not be negative");
     // map_Kd colours ka and kd alike, as a scene material's texture does; map_Ka, when present,
     // takes over ka.
     if (!m.diffuse_texname.empty())

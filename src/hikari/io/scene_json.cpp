@@ -168,8 +168,8 @@ bool casts_shadow(const JsonNode& object) {
 }
 
 Material parse_material(const JsonNode& node, std::string name, SceneBuilder& b) {
-    node.expect_object(
-        {"ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior", "texture"});
+    node.expect_object({"ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior",
+                        "texture", "emission"});
     Material m;
     m.name = std::move(name);
     if (node.has("ka")) m.ka = node.at("ka").as_colour();
@@ -179,6 +179,7 @@ Material parse_material(const JsonNode& node, std::string name, SceneBuilder& b)
     if (node.has("reflectivity")) m.reflectivity = node.at("reflectivity").as_non_negative();
     if (node.has("transparency")) m.transparency = node.at("transparency").as_non_negative();
     if (node.has("ior")) m.ior = node.at("ior").as_positive();
+    if (node.has("emission")) m.emission = node.at("emission").as_colour();
     if (node.has("texture"))
         m.texture = parse_kind(node.at("texture"), "texture", k_texture_parsers, b);
     return m;

@@ -10,18 +10,26 @@
 #include <variant>
 
 #include "hikari/core/vec.h"
+#include "hikari/integrators/path/path_tracer.h"
 #include "hikari/integrators/whitted/whitted.h"
 #include "hikari/raster/line_settings.h"
 #include "hikari/raster/raster_settings.h"
 
 namespace hikari {
 
+/// The most samples per pixel `--spp` accepts.
+inline constexpr int k_max_samples_per_pixel = 1 << 20;
+
 /// Every method's own settings; each method reads its part.
 struct MethodSettings {
     WhittedSettings whitted;  ///< raytrace
-    RasterSettings raster;    ///< zbuffer, scanline, depthsort, depthsort-naive (and --cull for
-                              ///< the line methods)
-    LineSettings lines;       ///< wireframe, hiddenline
+    PathSettings path;        ///< path
+    /// `--spp` and `--max-depth` when given (raytrace and path read them, each with its own
+    /// default and meaning).
+    std::optional<int> samples_per_pixel, max_depth;
+    RasterSettings raster;  ///< zbuffer, scanline, depthsort, depthsort-naive (and --cull for
+                            ///< the line methods)
+    LineSettings lines;     ///< wireframe, hiddenline
     /// `--shadows` when given; otherwise each method's default (Method::shadow_modes).
     std::optional<ShadowMode> shadows;
     /// `--light-samples`: samples per area or environment light per point, for every method.
@@ -66,6 +74,13 @@ inline constexpr Choice<std::optional<ShadowMode>> k_shadow_choices[] = {
     {"analytic", ShadowMode::analytic},
 };
 
+/// `--filter`: the path tracer's pixel filter.
+inline constexpr Choice<PixelFilterKind> k_filter_choices[] = {
+    {"box", PixelFilterKind::box},
+    {"gaussian", PixelFilterKind::gaussian},
+    {"blackman-harris", PixelFilterKind::blackman_harris},
+};
+
 /// `--cull`: RasterSettings::cull_back_faces.
 inline constexpr Choice<bool> k_cull_choices[] = {{"back", true}, {"none", false}};
 
@@ -78,6 +93,14 @@ struct IntegerOption {
     int min;                   ///< smallest value accepted
     int max;                   ///< largest value accepted
     SettingsField<int> field;  ///< where the value goes
+};
+
+/// An option whose value is an integer in [min, max], unset unless given (each method that
+/// reads it has its own default).
+struct OptionalIntegerOption {
+    int min;                                  ///< smallest value accepted
+    int max;                                  ///< largest value accepted
+    SettingsField<std::optional<int>> field;  ///< where the value goes
 };
 
 /// An option whose value is a real number in [min, max].
@@ -104,8 +127,9 @@ struct MethodOption {
     std::string_view flag;  ///< its one name, e.g. "--spp"
     std::string_view help;  ///< one line for --help
     /// The values it takes and the field they go to.
-    std::variant<IntegerOption, RealOption, ColorOption, ChoiceOption<Interpolation>,
-                 ChoiceOption<bool>, ChoiceOption<std::optional<ShadowMode>>>
+    std::variant<IntegerOption, OptionalIntegerOption, RealOption, ColorOption,
+                 ChoiceOption<Interpolation>, ChoiceOption<bool>,
+                 ChoiceOption<std::optional<ShadowMode>>, ChoiceOption<PixelFilterKind>>
         value;
 };
 

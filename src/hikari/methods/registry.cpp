@@ -22,11 +22,25 @@ namespace {
 Framebuffer ray_trace(const Scene& scene, Film film, const RenderSettings& settings,
                       const MethodSettings& own) {
     WhittedSettings whitted = own.whitted;
+    whitted.samples_per_pixel = own.samples_per_pixel.value_or(whitted.samples_per_pixel);
+    whitted.max_depth = own.max_depth.value_or(whitted.max_depth);
     const ShadowMode mode = own.shadows.value_or(ShadowMode::ray);
     whitted.shadow_rays = mode != ShadowMode::none;
     whitted.analytic_area_shadows = mode == ShadowMode::analytic;
     whitted.light_samples = own.light_samples;
     return render_whitted(scene, std::move(film), settings, whitted);
+}
+
+/// The path tracer with its settings. With a time limit and no --spp, samples go on until
+/// the time is up.
+Framebuffer path_trace(const Scene& scene, Film film, const RenderSettings& settings,
+                       const MethodSettings& own) {
+    PathSettings path = own.path;
+    const bool timed = path.time_limit_seconds > 0.0f;
+    path.samples_per_pixel =
+        own.samples_per_pixel.value_or(timed ? k_max_samples_per_pixel : path.samples_per_pixel);
+    path.max_depth = own.max_depth.value_or(path.max_depth);
+    return render_path(scene, std::move(film), settings, path);
 }
 
 /// A raster method `render(scene, film, settings, raster)` with the raster settings and
@@ -61,14 +75,52 @@ constexpr MethodOption k_light_samples_option = {
     "Stratified samples per area or environment light per shaded point (default 16)",
     IntegerOption{1, 65536, [](MethodSettings& s) -> int& { return s.light_samples; }}};
 
+constexpr MethodOption k_spp_option = {
+    "--spp",
+    "Samples per pixel (raytrace: 1 = pixel centres, more: stratified, default 1; path: "
+    "default 64, or as many as --time-limit allows)",
+    OptionalIntegerOption{1, k_max_samples_per_pixel, [](MethodSettings& s) -> std::optional<int>& {
+                              return s.samples_per_pixel;
+                          }}};
+
+constexpr MethodOption k_max_depth_option = {
+    "--max-depth",
+    "raytrace: ray segments per path, the primary ray included (default 5); path: bounces "
+    "after the first hit, 0 = direct light only (default 8)",
+    OptionalIntegerOption{0, 64,
+                          [](MethodSettings& s) -> std::optional<int>& { return s.max_depth; }}};
+
 constexpr MethodOption k_ray_tracing_options[] = {
-    {"--spp", "Samples per pixel (1 = pixel centres; more: stratified)",
-     IntegerOption{1, 65536,
-                   [](MethodSettings& s) -> int& { return s.whitted.samples_per_pixel; }}},
-    {"--max-depth", "Ray segments per path, the primary ray included (Whitted recursion)",
-     IntegerOption{1, 64, [](MethodSettings& s) -> int& { return s.whitted.max_depth; }}},
+    k_spp_option,
+    k_max_depth_option,
     k_shadows_option,
     k_light_samples_option,
+};
+
+constexpr MethodOption k_path_options[] = {
+    k_spp_option,
+    k_max_depth_option,
+    {"--clamp",
+     "Scale each sample's radiance down to at most this per channel (removes fireflies, "
+     "biased; default 0 = off)",
+     RealOption{0.0f, 1e30f, [](MethodSettings& s) -> float& { return s.path.clamp; }}},
+    {"--time-limit",
+     "Stop after this many seconds of path tracing (at least one sample per pixel); without "
+     "--spp, sample until then",
+     RealOption{0.0f, 1e7f, [](MethodSettings& s) -> float& { return s.path.time_limit_seconds; }}},
+    {"--progressive",
+     "Rewrite the output file about every this many seconds with the samples so far "
+     "(atomically: a viewer always sees a whole image)",
+     RealOption{0.0f, 1e7f,
+                [](MethodSettings& s) -> float& { return s.path.progressive_seconds; }}},
+    {"--filter",
+     "Pixel filter: box (the pixel's square), gaussian, blackman-harris (samples drawn with "
+     "the filter's density)",
+     ChoiceOption<PixelFilterKind>{
+         k_filter_choices, [](MethodSettings& s) -> PixelFilterKind& { return s.path.filter; }}},
+    {"--filter-width",
+     "Pixel filter width in pixels (default: 1 for box, 1.5 for gaussian and blackman-harris)",
+     RealOption{0.0f, 16.0f, [](MethodSettings& s) -> float& { return s.path.filter_width; }}},
 };
 
 constexpr MethodOption k_cull_option = {
@@ -128,6 +180,14 @@ constexpr std::array k_methods = {
     Method{"raytrace",
            "Whitted ray tracing (Alg 4.3): nearest hit, shadow rays, reflection, refraction",
            k_whitted, k_ray_tracing_options, nullptr, k_ray_shadow_modes},
+    Method{"path",
+           "path tracing (Kajiya 1986): global illumination, light sampling and BSDF sampling "
+           "combined by MIS",
+           &path_trace,
+           k_path_options,
+           nullptr,
+           {},
+           &path_scene_warnings},
     Method{"zbuffer", "Z-buffer (Alg 4.2): rasterize every triangle, keep the nearest per pixel",
            k_raster<&render_zbuffer>, k_raster_options, nullptr, k_raster_shadow_modes},
     Method{"scanline",

@@ -24,6 +24,9 @@ using RenderFunction = Framebuffer (*)(const Scene& scene, Film film,
 /// Draws a whole scene as line segments (the line methods; what `-o drawing.svg` writes).
 using DrawFunction = LineDrawing (*)(const Scene& scene, const MethodSettings& own);
 
+/// What a method has to say about a scene before it renders it (one line per warning).
+using SceneWarnings = std::vector<std::string> (*)(const Scene& scene);
+
 /// A named rendering method selectable with `--method`.
 struct Method {
     std::string_view name;                  ///< as given to --method
@@ -33,6 +36,8 @@ struct Method {
     DrawFunction draw = nullptr;            ///< its segments, for the line methods; else null
     /// The `--shadows` modes it can do, its default first; empty when it draws no shadows.
     std::span<const ShadowMode> shadow_modes = {};
+    /// Its warnings about a scene (e.g. materials it must change), or null for none.
+    SceneWarnings warnings = nullptr;
 };
 
 /// Every registered method, the default (raytrace) first.

@@ -5,12 +5,12 @@
 #include <numbers>
 #include <utility>
 
+#include "hikari/core/color.h"
+
 namespace hikari {
 
 namespace {
 constexpr float k_pi = std::numbers::pi_v<float>;
-
-float luminance(Vec3 c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 }  // namespace
 
 EnvironmentMap::EnvironmentMap(Image image, float rotation_degrees) : m_image(std::move(image)) {

@@ -20,6 +20,9 @@ struct Material {
     float reflectivity = 0;  ///< weight of the colour seen along the mirror direction
     float transparency = 0;  ///< weight of the colour seen along the refracted direction
     float ior = 1.0f;        ///< index of refraction of the inside (outside is 1)
+    /// Radiance emitted from the front side of every surface with this material (a mesh or
+    /// triangle becomes a light). Only light transport (--method path) sees it.
+    Vec3 emission{0.0f};
     /// When set, ka and kd are multiplied by the texture's colour at the surface point
     /// (shading/material_eval.h, in every method).
     std::optional<Texture> texture;

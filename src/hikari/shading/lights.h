@@ -36,21 +36,36 @@ HIKARI_INLINE LightSampleT<F> sample_light(const Light& light, const Vec3T<F>& p
     });
 }
 
+/// Where a ray meets an area light's face: which light of the list, and at what distance.
+struct LightFaceHit {
+    size_t light = 0;
+    float t = 0;
+};
+
+/// The nearest area light's face among `lights` that a ray from `origin` along unit `direction`
+/// meets strictly before `t_max` (either side of a two-sided light, else its emitting side).
+inline std::optional<LightFaceHit> nearest_light_face(std::span<const Light> lights, Vec3 origin,
+                                                      Vec3 direction, float t_max) {
+    std::optional<LightFaceHit> nearest;
+    for (size_t l = 0; l < lights.size(); ++l) {
+        const auto* area = std::get_if<AreaLight>(&lights[l]);
+        if (!area) continue;
+        const float t = area_light_hit(*area, origin, direction, t_max);
+        if (t == t_max) continue;
+        t_max = t;
+        nearest = LightFaceHit{l, t};
+    }
+    return nearest;
+}
+
 /// The radiance a ray from `origin` along unit `direction` meets at the nearest area light's
 /// face among `lights` strictly before `t_max` (what camera, mirror and refracted rays see of
 /// the lights in every method), if it meets one.
 inline std::optional<Vec3> light_face_seen(std::span<const Light> lights, Vec3 origin,
                                            Vec3 direction, float t_max) {
-    std::optional<Vec3> seen;
-    for (const Light& light : lights) {
-        const auto* area = std::get_if<AreaLight>(&light);
-        if (!area) continue;
-        const float t = area_light_hit(*area, origin, direction, t_max);
-        if (t == t_max) continue;
-        t_max = t;
-        seen = area->radiance;
-    }
-    return seen;
+    const std::optional<LightFaceHit> hit = nearest_light_face(lights, origin, direction, t_max);
+    if (!hit) return std::nullopt;
+    return std::get<AreaLight>(lights[hit->light]).radiance;
 }
 
 /// The scene's environment light among `lights`, or null (a scene has at most one).

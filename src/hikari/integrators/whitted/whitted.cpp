@@ -13,6 +13,7 @@
 #include "hikari/core/strata.h"
 #include "hikari/frame/tiles.h"
 #include "hikari/geometry/ray_offset.h"
+#include "hikari/integrators/hit_aovs.h"
 #include "hikari/integrators/whitted/primary_hits.h"
 #include "hikari/integrators/whitted/ray_cone.h"
 #include "hikari/integrators/whitted/whitted_shade.h"
@@ -469,10 +470,7 @@ struct WhittedRender {
 
     /// The AOVs of pixel i from the hit of the ray through its centre.
     void store_aovs(size_t i, const Ray& centre, const SurfaceHit& first) const {
-        fb.depth[i] = first.t;
-        fb.id[i] = first.id + 1;
-        fb.normal[i] = dot(first.shading_normal, centre.direction) < 0.0f ? first.shading_normal
-                                                                          : -first.shading_normal;
+        store_hit_aovs(fb, i, centre.direction, first);
     }
 
     /// The AOVs of the tile's pixels whose centre ray hit something.

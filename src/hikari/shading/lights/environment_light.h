@@ -14,6 +14,7 @@
 #include "hikari/core/orthonormal_basis.h"
 #include "hikari/core/vec.h"
 #include "hikari/scene/light.h"
+#include "hikari/shading/bsdf/lambert.h"
 #include "hikari/shading/light_sample.h"
 
 namespace hikari {
@@ -25,11 +26,9 @@ inline LightSample sample_environment(const EnvironmentLight& light, Vec3 n, flo
     constexpr float k_pi = std::numbers::pi_v<float>;
     constexpr float k_far = std::numeric_limits<float>::infinity();
     if (!light.map) {
-        // Cosine-weighted (Malley's method): a uniform point on the disc lifted to the hemisphere.
-        const float r = std::sqrt(u), phi = 2.0f * k_pi * v;
-        const float cos_theta = std::sqrt(std::max(0.0f, 1.0f - u));
-        const Vec3 dir =
-            OrthonormalBasis(n).to_world({r * std::cos(phi), r * std::sin(phi), cos_theta});
+        const Vec3 local = cosine_hemisphere_local({u, v});
+        const float cos_theta = local.z;
+        const Vec3 dir = OrthonormalBasis(n).to_world(local);
         if (!(cos_theta > 0.0f)) return {dir, k_far, Vec3(0.0f)};
         return {dir, k_far, light.radiance * (k_pi / cos_theta)};
     }

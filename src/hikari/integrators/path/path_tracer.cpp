@@ -1,0 +1,372 @@
+#include "hikari/integrators/path/path_tracer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "hikari/bvh/scene_intersector.h"
+#include "hikari/core/sobol.h"
+#include "hikari/frame/tiles.h"
+#include "hikari/geometry/ray_offset.h"
+#include "hikari/integrators/hit_aovs.h"
+#include "hikari/integrators/path/emitters.h"
+#include "hikari/shading/bsdf/scattering.h"
+#include "hikari/shading/lights.h"
+#include "hikari/shading/material_eval.h"
+
+namespace hikari {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// Bounces before Russian roulette may end a path.
+constexpr int k_roulette_after = 3;
+
+/// Veach's power heuristic (β = 2) for a sample drawn with density `a` against density `b`.
+inline float power_heuristic(float a, float b) {
+    const float a2 = a * a, b2 = b * b;
+    return a2 + b2 > 0.0f ? a2 / (a2 + b2) : 0.0f;
+}
+
+/// The factor that brings a material's lobes down to conserving energy (1 where they do).
+float energy_scale(const Material& m) {
+    const float total = scattered_fraction(m.kd, m.ks, m.reflectivity, m.transparency);
+    return total > 1.0f ? 1.0f / total : 1.0f;
+}
+
+/// A pixel's seed: its index hashed, so neighbouring pixels' sequences are unrelated.
+inline uint32_t pixel_seed(size_t pixel) {
+    return hash_u32(static_cast<uint32_t>(pixel) ^ hash_u32(static_cast<uint32_t>(pixel >> 32)));
+}
+
+/// Everything a render's paths read.
+class PathIntegrator {
+  public:
+    PathIntegrator(const Scene& scene, const PathSettings& settings)
+        : m_scene(scene),
+          m_settings(settings),
+          m_intersector(scene),
+          m_emitters(scene),
+          m_environment(find_environment(scene.lights)),
+          m_has_area_lights(
+              std::any_of(scene.lights.begin(), scene.lights.end(),
+                          [](const Light& l) { return std::holds_alternative<AreaLight>(l); })) {
+        m_scale.reserve(scene.materials.size());
+        for (const Material& m : scene.materials) m_scale.push_back(energy_scale(m));
+    }
+
+    const SceneIntersector& intersector() const { return m_intersector; }
+
+    /// The radiance arriving along `ray`, from one path; `rays` counts the rays it traces.
+    Vec3 radiance(Ray ray, SobolSampler& sampler, uint64_t& rays) const {
+        Vec3 sum(0.0f), throughput(1.0f);
+        // Emitters found by a camera ray or after a delta bounce count fully (no light sample
+        // could have found them); after a smooth bounce they are weighed against light sampling.
+        bool specular = true;
+        float bsdf_pdf = 0.0f;
+        Vec3 last_normal(0.0f);
+        for (int bounce = 0;; ++bounce) {
+            SurfaceHit hit;
+            ++rays;
+            const bool found = m_intersector.closest(ray, {0.0f, k_infinity}, hit);
+            if (m_has_area_lights) {
+                const std::optional<LightFaceHit> face = nearest_light_face(
+                    m_scene.lights, ray.origin, ray.direction, found ? hit.t : k_infinity);
+                if (face) {
+                    const float w =
+                        specular
+                            ? 1.0f
+                            : power_heuristic(bsdf_pdf, m_emitters.area_pdf(
+                                                            face->light, ray.direction, face->t));
+                    sum +=
+                        throughput * std::get<AreaLight>(m_scene.lights[face->light]).radiance * w;
+                    break;
+                }
+            }
+            if (!found) {
+                sum += throughput * escaped(ray.direction, specular, bsdf_pdf, last_normal);
+                break;
+            }
+            const Material& material = m_scene.materials[hit.material];
+            const bool front = dot(hit.geometric_normal, ray.direction) < 0.0f;
+            if (front && max_component(material.emission) > 0.0f) {
+                const float light_pdf =
+                    hit.kind == HitKind::triangle
+                        ? m_emitters.triangle_pdf(hit.index, ray.direction, hit.t)
+                        : 0.0f;
+                sum += throughput * material.emission *
+                       (specular ? 1.0f : power_heuristic(bsdf_pdf, light_pdf));
+            }
+            // The random numbers of this vertex, drawn whether used or not, so that every vertex
+            // of every path reads the same dimensions.
+            const float u_choice = sampler.next_1d();
+            const Vec2 u_light = sampler.next_2d();
+            const float u_lobe = sampler.next_1d();
+            const Vec2 u_direction = sampler.next_2d();
+            const float u_roulette = sampler.next_1d();
+
+            ScatterFrame at;
+            at.to_eye = -ray.direction;
+            at.entering = front;
+            at.geometric_normal = front ? hit.geometric_normal : -hit.geometric_normal;
+            at.normal = dot(hit.shading_normal, at.geometric_normal) < 0.0f ? -hit.shading_normal
+                                                                            : hit.shading_normal;
+            const Scattering bsdf(material_at(hit, at), m_scale[hit.material]);
+            if (bsdf.black()) break;
+            if (bsdf.smooth() && !m_emitters.empty())
+                sum += throughput * light_sample(hit.position, at, bsdf, u_choice, u_light, rays);
+            if (bounce >= m_settings.max_depth) break;
+
+            const ScatterSample next = bsdf.sample(at, u_lobe, u_direction);
+            if (!(max_component(next.weight) > 0.0f)) break;
+            throughput = throughput * next.weight;
+            specular = next.delta;
+            bsdf_pdf = next.pdf;
+            last_normal = at.normal;
+            if (bounce + 1 >= k_roulette_after) {
+                // Russian roulette: continue with probability q, carrying 1/q (unbiased).
+                const float q = std::min(1.0f, max_component(throughput));
+                if (!(u_roulette < q)) break;
+                throughput = throughput / q;
+            }
+            const Vec3 side = dot(next.direction, at.geometric_normal) > 0.0f
+                                  ? at.geometric_normal
+                                  : -at.geometric_normal;
+            ray = {offset_ray_origin(hit.position, side), next.direction};
+        }
+        return sum;
+    }
+
+  private:
+    /// The material at `hit`, its texture applied.
+    MaterialSample<float> material_at(const SurfaceHit& hit, const ScatterFrame& at) const {
+        SurfacePoint<float> point{hit.position, at.normal, at.geometric_normal, at.to_eye};
+        if (m_scene.materials[hit.material].texture ||
+            m_scene.materials[hit.material].ambient_texture) {
+            const SurfaceUv uv = m_intersector.surface_uv(hit);
+            point.u = uv.uv.x, point.v = uv.uv.y;
+        }
+        return evaluate_material<float>(m_scene.materials.data(),
+                                        static_cast<int32_t>(hit.material), point);
+    }
+
+    /// What a ray that leaves the scene along `dir` brings back: the environment light (weighed
+    /// against light sampling after a smooth bounce), else, for camera rays and mirror chains,
+    /// the backdrop (the sky or background colour, which lights nothing).
+    Vec3 escaped(Vec3 dir, bool specular, float bsdf_pdf, Vec3 last_normal) const {
+        if (m_environment) {
+            const float w =
+                specular ? 1.0f
+                         : power_heuristic(bsdf_pdf, m_emitters.environment_pdf(dir, last_normal));
+            return m_environment->radiance_from(dir) * w;
+        }
+        return specular ? m_scene.sky.colour(dir, m_scene.background) : Vec3(0.0f);
+    }
+
+    /// Next-event estimation at `p`: one light sample, its shadow ray, weighed by MIS.
+    Vec3 light_sample(Vec3 p, const ScatterFrame& at, const Scattering& bsdf, float u_choice,
+                      Vec2 u, uint64_t& rays) const {
+        const EmitterSample light = m_emitters.sample(p, at.normal, u_choice, u);
+        if (!(light.pdf > 0.0f) || !(max_component(light.radiance) > 0.0f)) return Vec3(0.0f);
+        float bsdf_pdf = 0.0f;
+        const Vec3 f = bsdf.evaluate(at, light.to_light, bsdf_pdf);
+        if (!(max_component(f) > 0.0f)) return Vec3(0.0f);
+        // Stop just short of a sampled surface point, or the light's own face would block it.
+        const float t_max =
+            std::isinf(light.distance) ? k_infinity : light.distance * (1.0f - 1e-4f);
+        ++rays;
+        if (m_intersector.occluded({offset_ray_origin(p, at.geometric_normal), light.to_light},
+                                   {0.0f, t_max}))
+            return Vec3(0.0f);
+        const float w = light.delta ? 1.0f : power_heuristic(light.pdf, bsdf_pdf);
+        return f * light.radiance * (dot(at.normal, light.to_light) * w / light.pdf);
+    }
+
+    const Scene& m_scene;
+    const PathSettings& m_settings;
+    SceneIntersector m_intersector;
+    EmitterTable m_emitters;
+    const EnvironmentLight* m_environment;
+    bool m_has_area_lights;
+    std::vector<float> m_scale;  ///< energy_scale per material
+};
+
+/// A render's sample sums and how they are scheduled.
+class PathRender {
+  public:
+    PathRender(const Scene& scene, const RenderSettings& settings, const PathSettings& path)
+        : m_scene(scene),
+          m_settings(settings),
+          m_path(path),
+          m_integrator(scene, path),
+          m_frame(make_camera_frame(scene.camera)),
+          m_filter(path.filter, path.filter_width > 0.0f ? path.filter_width
+                                                         : default_filter_width(path.filter)),
+          m_sums(static_cast<size_t>(scene.camera.width) * scene.camera.height, Vec3(0.0f)) {}
+
+    const SceneIntersector& intersector() const { return m_integrator.intersector(); }
+
+    /// Samples [first, first + count) of every pixel, added to the sums.
+    void add_samples(int first, int count, uint64_t& paths_done) {
+        const int width = m_scene.camera.width;
+        RenderControl* control = m_settings.control;
+        for_each_tile(
+            width, m_scene.camera.height, control,
+            [&](const Tile& tile) {
+                uint64_t rays = 0, bad = 0;
+                for (int y = tile.y0; y < tile.y1; ++y)
+                    for (int x = tile.x0; x < tile.x1; ++x) {
+                        const size_t pixel = static_cast<size_t>(y) * width + x;
+                        Vec3 sum(0.0f);
+                        for (int s = first; s < first + count; ++s) {
+                            const Vec3 value = sample(x, y, pixel, static_cast<uint32_t>(s), rays);
+                            if (is_finite(value))
+                                sum += value;
+                            else
+                                ++bad;
+                        }
+                        m_sums[pixel] += sum;
+                    }
+                const uint64_t pixels = static_cast<uint64_t>(tile.x1 - tile.x0) *
+                                        static_cast<uint64_t>(tile.y1 - tile.y0);
+                if (m_settings.stats) {
+                    m_settings.stats->rays_traced += rays;
+                    m_settings.stats->paths_traced += pixels * static_cast<uint64_t>(count);
+                    m_settings.stats->bad_samples += bad;
+                }
+                if (control)
+                    control->work_done.fetch_add(pixels * count, std::memory_order_relaxed);
+            },
+            false);
+        paths_done += static_cast<uint64_t>(count);
+    }
+
+    /// The mean of `samples` samples per pixel as linear RGB.
+    Image mean(int samples) const {
+        Image image(m_scene.camera.width, m_scene.camera.height);
+        const float inverse = 1.0f / static_cast<float>(samples);
+        for (size_t i = 0; i < m_sums.size(); ++i) image.pixels[i] = m_sums[i] * inverse;
+        return image;
+    }
+
+    /// The AOVs of every pixel, from the ray through its centre.
+    void store_aovs(Framebuffer& fb) const {
+        const int width = m_scene.camera.width;
+        for_each_tile(
+            width, m_scene.camera.height, nullptr,
+            [&](const Tile& tile) {
+                for (int y = tile.y0; y < tile.y1; ++y)
+                    for (int x = tile.x0; x < tile.x1; ++x) {
+                        const Ray ray = camera_ray(m_frame, static_cast<float>(x) + 0.5f,
+                                                   static_cast<float>(y) + 0.5f);
+                        SurfaceHit hit;
+                        if (intersector().closest(ray, {0.0f, k_infinity}, hit))
+                            store_hit_aovs(fb, static_cast<size_t>(y) * width + x, ray.direction,
+                                           hit);
+                    }
+            },
+            false);
+    }
+
+  private:
+    /// Sample `s` of pixel (x, y): a camera ray through the point the pixel filter draws.
+    Vec3 sample(int x, int y, size_t pixel, uint32_t s, uint64_t& rays) const {
+        SobolSampler sampler(pixel_seed(pixel), s);
+        const Vec2 offset = m_filter.offset(sampler.next_2d());
+        const Ray ray = camera_ray(m_frame, static_cast<float>(x) + 0.5f + offset.x,
+                                   static_cast<float>(y) + 0.5f + offset.y);
+        Vec3 value = m_integrator.radiance(ray, sampler, rays);
+        if (m_path.clamp > 0.0f) {
+            const float peak = max_component(value);
+            if (peak > m_path.clamp) value = value * (m_path.clamp / peak);
+        }
+        return value;
+    }
+
+    const Scene& m_scene;
+    const RenderSettings& m_settings;
+    const PathSettings& m_path;
+    PathIntegrator m_integrator;
+    CameraFrame m_frame;
+    PixelFilter m_filter;
+    std::vector<Vec3> m_sums;
+};
+
+}  // namespace
+
+Framebuffer render_path(const Scene& scene, Film film, const RenderSettings& settings,
+                        const PathSettings& path) {
+    const Camera& cam = scene.camera;
+    Framebuffer fb(std::move(film), cam.width, cam.height, settings.aov_buffers);
+    PathRender render(scene, settings, path);
+    if (settings.stats) {
+        const WideBvh& bvh = render.intersector().bvh();
+        settings.stats->bvh_triangles = bvh.triangle_count();
+        settings.stats->bvh_nodes = bvh.nodes.size();
+        settings.stats->bvh_bytes = bvh.memory_bytes();
+        settings.stats->bvh_build_us =
+            static_cast<uint64_t>(render.intersector().build_ms() * 1000.0);
+    }
+    if (settings.aov_buffers) render.store_aovs(fb);
+
+    const int target = std::max(1, path.samples_per_pixel);
+    const bool timed = path.time_limit_seconds > 0.0f,
+               progressive = path.progressive_seconds > 0.0f;
+    const uint64_t pixels = static_cast<uint64_t>(cam.width) * static_cast<uint64_t>(cam.height);
+    if (settings.control) settings.control->work_total = pixels * static_cast<uint64_t>(target);
+    const auto start = Clock::now();
+    double next_snapshot = path.progressive_seconds;
+    uint64_t done = 0;
+    int samples = 0;
+    while (samples < target) {
+        // Without a clock to watch, every sample in one pass (each tile keeps its pixels' paths
+        // together); with one, passes that double until one would overrun the limit or the next
+        // snapshot, judged by the time per sample so far.
+        int count = target - samples;
+        if (timed || progressive) {
+            count = std::min(count, std::max(1, samples));
+            const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+            if (samples > 0) {
+                const double per_sample = elapsed / samples;
+                double budget = std::numeric_limits<double>::infinity();
+                if (timed) budget = path.time_limit_seconds - elapsed;
+                if (progressive) budget = std::min(budget, next_snapshot - elapsed);
+                count = std::clamp(static_cast<int>(budget / per_sample), 1, count);
+            }
+        }
+        render.add_samples(samples, count, done);
+        samples += count;
+        const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+        if (timed && elapsed >= path.time_limit_seconds) break;
+        if (timed && settings.control)
+            settings.control->work_total =
+                pixels * static_cast<uint64_t>(std::min<double>(
+                             target, samples * path.time_limit_seconds / std::max(elapsed, 1e-3)));
+        if (progressive && path.snapshot && elapsed >= next_snapshot && samples < target) {
+            path.snapshot(render.mean(samples), samples);
+            next_snapshot = elapsed + path.progressive_seconds;
+        }
+    }
+    const Image image = render.mean(samples);
+    fb.set_colors(0, image.pixels.data(), image.pixels.size());
+    return fb;
+}
+
+std::vector<std::string> path_scene_warnings(const Scene& scene) {
+    std::vector<std::string> warnings;
+    for (const Material& m : scene.materials) {
+        const float total = scattered_fraction(m.kd, m.ks, m.reflectivity, m.transparency);
+        if (total > 1.0f + 1e-4f)
+            warnings.push_back(fmt::format(
+                "material '{}' would reflect more light than it receives (max(kd + ks) + "
+                "reflectivity + transparency = {:.3g} > 1); path tracing scales it by {:.3g}",
+                m.name, total, 1.0f / total));
+    }
+    return warnings;
+}
+
+}  // namespace hikari
