@@ -1,4 +1,5 @@
-// The hikari command line: `hikari render [SCENE] [options]`, `hikari bench B1|B2 --mesh FILE`.
+// The hikari command line: `hikari render [SCENE] [options]`, `hikari bench B1|B2 --mesh FILE`,
+// `hikari bench B5`, `hikari gallery`.
 
 #include <unistd.h>
 
@@ -26,6 +27,7 @@
 
 #include "gallery.h"
 #include "hikari/bench/bench_runner.h"
+#include "hikari/bench/path_bench.h"
 #include "hikari/core/error.h"
 #include "hikari/io/atomic_file.h"
 #include "hikari/io/image_format.h"
@@ -363,18 +365,41 @@ constexpr Choice<std::optional<SimdLevel>> k_simd_choices[] = {{"auto", std::nul
 struct BenchOptions {
     std::string bench;
     std::string mesh;
+    std::string scene;  // B5; empty: the repository's scenes/bench/cornell.json
     std::optional<SimdLevel> simd;
     int threads = 1;
-    int repetitions = 5;
+    std::optional<int> repetitions;  // default: 5 for B1 and B2, 3 for B5 (the SPEC's)
     bool packets = false;
 };
 
-/// `hikari bench`: one JSON object on stdout (SPEC's B1 or B2 on one mesh).
+/// `hikari bench B5`: the path tracer on the Cornell box (SPEC §7), one JSON object on stdout.
+int run_path_bench_command(const BenchOptions& o) {
+    if (!o.mesh.empty() || o.packets || o.simd)
+        throw InputError("B5 renders a scene: --mesh, --packets and --simd are for B1 and B2");
+    const std::string file =
+        o.scene.empty() ? std::string(HIKARI_SOURCE_DIR) + "/scenes/bench/cornell.json" : o.scene;
+    std::vector<std::string> warnings;
+    const Scene scene = load_scene_file(file, warnings);
+    for (const std::string& w : warnings) fmt::print(stderr, "hikari: warning: {}\n", w);
+    const tbb::global_control thread_limit(tbb::global_control::max_allowed_parallelism,
+                                           static_cast<size_t>(o.threads));
+    PathBenchSettings settings;
+    settings.threads = o.threads;
+    settings.repetitions = o.repetitions.value_or(settings.repetitions);
+    fmt::print("{}\n", run_path_bench(scene, settings).to_json());
+    return 0;
+}
+
+/// `hikari bench`: one JSON object on stdout (SPEC's B1 or B2 on one mesh, or B5).
 int run_bench_command(const BenchOptions& o) {
+    if (o.bench == "B5") return run_path_bench_command(o);
+    if (o.mesh.empty())
+        throw InputError(fmt::format("{} needs --mesh FILE (an OBJ mesh)", o.bench));
+    if (!o.scene.empty()) throw InputError("--scene is for B5");
     BenchSettings settings;
     settings.bench = o.bench;
     settings.threads = o.threads;
-    settings.repetitions = o.repetitions;
+    settings.repetitions = o.repetitions.value_or(settings.repetitions);
     settings.packets = o.packets;
     if (o.packets && o.bench != "B1") throw InputError("--packets is for B1 only");
     if (o.simd) {
@@ -593,18 +618,24 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
 CLI::App* add_bench_command(CLI::App& app, BenchOptions& b) {
     CLI::App* bench = app.add_subcommand(
         "bench", "Run a peer benchmark (bench/SPEC.md) and print one JSON object on stdout.");
-    bench->add_option("name", b.bench, "B1 (primary rays, closest hit) or B2 (occlusion rays)")
+    bench
+        ->add_option("name", b.bench,
+                     "B1 (primary rays, closest hit), B2 (occlusion rays) or B5 (path-traced "
+                     "Cornell box, 64 spp, 8 bounces)")
         ->required()
-        ->check(CLI::IsMember({"B1", "B2"}));
+        ->check(CLI::IsMember({"B1", "B2", "B5"}));
     // No CLI::ExistingFile: a missing or unreadable mesh is an input error (exit 1), as for
     // a render's scene file, reported by the loader.
-    bench->add_option("--mesh", b.mesh, "OBJ mesh (positions and faces are read)")->required();
+    bench->add_option("--mesh", b.mesh, "B1, B2: OBJ mesh (positions and faces are read)");
+    bench->add_option("--scene", b.scene,
+                      "B5: scene file (default: the repository's scenes/bench/cornell.json)");
     bench->add_option("--threads", b.threads, "Threads for build and trace")
         ->check(CLI::Range(1, 1024))
         ->capture_default_str();
-    bench->add_option("--reps", b.repetitions, "Timed repetitions after one warm-up")
-        ->check(CLI::Range(1, 1000))
-        ->capture_default_str();
+    bench
+        ->add_option("--reps", b.repetitions,
+                     "Timed repetitions after one warm-up (default: 5; B5: 3)")
+        ->check(CLI::Range(1, 1000));
     add_choice_option<std::optional<SimdLevel>>(
         *bench, "--simd", "Traversal kernel: auto (best), portable, avx2, avx512", k_simd_choices,
         b.simd);

@@ -31,16 +31,6 @@ float scene_radius(const Scene& scene) {
     return std::max(0.5f * length(box.max - box.min), 1e-3f);
 }
 
-/// Twice the area of triangle i, and its front normal (unit, counter-clockwise side).
-float triangle_double_area(const TriangleSet& tris, uint32_t i, Vec3& normal) {
-    const auto& [a, b, c] = tris.indices[i];
-    const Vec3 n =
-        cross(tris.positions[b] - tris.positions[a], tris.positions[c] - tris.positions[a]);
-    const float len = length(n);
-    normal = len > 0.0f ? n / len : Vec3(0.0f);
-    return len;
-}
-
 /// The mean radiance of an environment light over all directions.
 float mean_luminance(const EnvironmentLight& env) {
     if (!env.map) return luminance(env.radiance);
@@ -61,12 +51,27 @@ float mean_luminance(const EnvironmentLight& env) {
 EmitterTable::EmitterTable(const Scene& scene) : m_scene(scene) {
     const float radius = scene_radius(scene);
     double total = 0.0;
-    const auto add = [&](EmitterKind kind, uint32_t index, double power) -> int32_t {
+    std::vector<double> powers;
+    const auto add = [&](const Entry& entry, double power) -> int32_t {
         if (!(power > 0.0) || !std::isfinite(power)) return -1;
-        m_entries.push_back({kind, index});
+        m_entries.push_back(entry);
+        powers.push_back(power);
         total += power;
         m_cdf.push_back(total);
         return static_cast<int32_t>(m_entries.size() - 1);
+    };
+    // A parallelogram or triangle spanned by two edges from a corner.
+    const auto surface = [](EmitterKind kind, uint32_t index, Vec3 corner, Vec3 edge1, Vec3 edge2,
+                            Vec3 radiance, bool two_sided) {
+        Entry e{kind, index};
+        e.corner = corner, e.edge1 = edge1, e.edge2 = edge2;
+        const Vec3 n = cross(edge1, edge2);
+        const float len = length(n);
+        e.front = len > 0.0f ? n / len : Vec3(0.0f);
+        e.area = kind == EmitterKind::triangle ? 0.5f * len : len;
+        e.radiance = radiance;
+        e.two_sided = two_sided;
+        return e;
     };
     // Powers: what each emits in all, Φ = π·L·A for a one-sided face, 4π·I for a point light;
     // lights at infinity by what crosses the scene's disc.
@@ -75,77 +80,69 @@ EmitterTable::EmitterTable(const Scene& scene) : m_scene(scene) {
         const Vec3 emission = scene.materials[tris.material[i]].emission;
         if (max_component(emission) <= 0.0f) continue;
         if (m_triangle_entry.empty()) m_triangle_entry.assign(tris.size(), -1);
-        Vec3 normal;
-        const float area = 0.5f * triangle_double_area(tris, i, normal);
-        m_triangle_entry[i] = add(EmitterKind::triangle, i, k_pi * luminance(emission) * area);
+        const auto& [a, b, c] = tris.indices[i];
+        const Vec3 pa = tris.positions[a];
+        const Entry e = surface(EmitterKind::triangle, i, pa, tris.positions[b] - pa,
+                                tris.positions[c] - pa, emission, false);
+        m_triangle_entry[i] = add(e, k_pi * luminance(emission) * e.area);
     }
     m_light_entry.assign(scene.lights.size(), -1);
     for (uint32_t l = 0; l < scene.lights.size(); ++l) {
         const Light& light = scene.lights[l];
         if (const auto* area = std::get_if<AreaLight>(&light)) {
-            const double sides = area->two_sided ? 2.0 : 1.0;
+            const Entry e = surface(EmitterKind::area, l, area->corner, area->edge1, area->edge2,
+                                    area->radiance, area->two_sided);
             m_light_entry[l] =
-                add(EmitterKind::area, l,
-                    sides * k_pi * luminance(area->radiance) * length(area->area_normal()));
+                add(e, (area->two_sided ? 2.0 : 1.0) * k_pi * luminance(area->radiance) * e.area);
         } else if (const auto* env = std::get_if<EnvironmentLight>(&light)) {
-            m_light_entry[l] = m_environment_entry = add(
-                EmitterKind::environment, l, k_pi * k_pi * radius * radius * mean_luminance(*env));
+            m_light_entry[l] = m_environment_entry =
+                add({EmitterKind::environment, l},
+                    k_pi * k_pi * radius * radius * mean_luminance(*env));
         } else if (const auto* point = std::get_if<PointLight>(&light)) {
-            m_light_entry[l] = add(EmitterKind::point, l, 4.0 * k_pi * luminance(point->intensity));
+            m_light_entry[l] =
+                add({EmitterKind::point, l}, 4.0 * k_pi * luminance(point->intensity));
         } else if (const auto* sun = std::get_if<DirectionalLight>(&light)) {
-            m_light_entry[l] = add(EmitterKind::directional, l,
+            m_light_entry[l] = add({EmitterKind::directional, l},
                                    k_pi * radius * radius * luminance(sun->intensity));
         }
     }
+    for (size_t i = 0; i < m_entries.size(); ++i)
+        m_entries[i].choice = static_cast<float>(powers[i] / total);
 }
 
-float EmitterTable::choice_probability(size_t entry) const {
-    const double below = entry == 0 ? 0.0 : m_cdf[entry - 1];
-    return static_cast<float>((m_cdf[entry] - below) / m_cdf.back());
+float EmitterTable::surface_pdf(const Entry& entry, Vec3 dir, float t) {
+    float cos_y = -dot(entry.front, dir);
+    if (entry.two_sided) cos_y = std::abs(cos_y);
+    if (!(cos_y > 0.0f) || !(entry.area > 0.0f)) return 0.0f;
+    return entry.choice * t * t / (entry.area * cos_y);
 }
 
 EmitterSample EmitterTable::sample(Vec3 p, Vec3 n, float u_choice, Vec2 u) const {
     EmitterSample s;
     if (m_cdf.empty()) return s;
     const double target = static_cast<double>(u_choice) * m_cdf.back();
-    const size_t entry = std::min<size_t>(
+    const size_t chosen = std::min<size_t>(
         static_cast<size_t>(std::upper_bound(m_cdf.begin(), m_cdf.end(), target) - m_cdf.begin()),
         m_cdf.size() - 1);
-    const float choice = choice_probability(entry);
-    const Entry& e = m_entries[entry];
-    // A point y on a surface emitter with front normal n_y: per solid angle the density of a
-    // uniform area sample is r² / (A cos θ_y).
-    const auto surface_point = [&](Vec3 y, Vec3 front, float area, Vec3 radiance, bool two_sided) {
-        const Vec3 d = y - p;
-        const float r2 = dot(d, d);
-        s.distance = std::sqrt(r2);
-        s.to_light = d / s.distance;
-        float cos_y = -dot(front, s.to_light);
-        if (two_sided) cos_y = std::abs(cos_y);
-        if (!(cos_y > 0.0f) || !(r2 > 0.0f)) return;
-        s.radiance = radiance;
-        s.pdf = choice * r2 / (area * cos_y);
-    };
+    const Entry& e = m_entries[chosen];
     switch (e.kind) {
-        case EmitterKind::triangle: {
-            const TriangleSet& tris = m_scene.triangles;
-            const auto& [a, b, c] = tris.indices[e.index];
-            Vec3 front;
-            const float area = 0.5f * triangle_double_area(tris, e.index, front);
-            // Uniform over the triangle: the square folded by the square root (Turk 1990).
-            const float su = std::sqrt(u.x);
-            const Vec3 y = (1.0f - su) * tris.positions[a] + su * (1.0f - u.y) * tris.positions[b] +
-                           su * u.y * tris.positions[c];
-            surface_point(y, front, area, m_scene.materials[tris.material[e.index]].emission,
-                          false);
-            break;
-        }
+        case EmitterKind::triangle:
         case EmitterKind::area: {
-            const AreaLight& light = std::get<AreaLight>(m_scene.lights[e.index]);
-            const Vec3 normal = light.area_normal();
-            const float area = length(normal);
-            surface_point(light.corner + u.x * light.edge1 + u.y * light.edge2, normal / area, area,
-                          light.radiance, light.two_sided);
+            // Uniform over the area; a triangle folds the square by the square root (Turk 1990).
+            Vec3 y;
+            if (e.kind == EmitterKind::triangle) {
+                const float su = std::sqrt(u.x);
+                y = e.corner + (su * (1.0f - u.y)) * e.edge1 + (su * u.y) * e.edge2;
+            } else {
+                y = e.corner + u.x * e.edge1 + u.y * e.edge2;
+            }
+            const Vec3 d = y - p;
+            const float r2 = dot(d, d);
+            if (!(r2 > 0.0f)) break;
+            s.distance = std::sqrt(r2);
+            s.to_light = d / s.distance;
+            s.pdf = surface_pdf(e, s.to_light, s.distance);
+            if (s.pdf > 0.0f) s.radiance = e.radiance;
             break;
         }
         case EmitterKind::environment: {
@@ -156,13 +153,13 @@ EmitterSample EmitterTable::sample(Vec3 p, Vec3 n, float u_choice, Vec2 u) const
                 s.to_light = d.direction;
                 if (!(d.pdf > 0.0f)) break;
                 s.radiance = env.radiance * d.radiance;
-                s.pdf = choice * d.pdf;
+                s.pdf = e.choice * d.pdf;
             } else {
                 s.to_light = cosine_hemisphere_direction(n, u);
                 const float pdf = cosine_hemisphere_pdf(dot(n, s.to_light));
                 if (!(pdf > 0.0f)) break;
                 s.radiance = env.radiance;
-                s.pdf = choice * pdf;
+                s.pdf = e.choice * pdf;
             }
             break;
         }
@@ -172,7 +169,7 @@ EmitterSample EmitterTable::sample(Vec3 p, Vec3 n, float u_choice, Vec2 u) const
             s.to_light = light.to_light;
             s.distance = light.distance;
             s.radiance = light.irradiance;
-            s.pdf = choice;
+            s.pdf = e.choice;
             s.delta = true;
             break;
         }
@@ -182,31 +179,20 @@ EmitterSample EmitterTable::sample(Vec3 p, Vec3 n, float u_choice, Vec2 u) const
 
 float EmitterTable::triangle_pdf(uint32_t triangle, Vec3 dir, float t) const {
     if (m_triangle_entry.empty() || m_triangle_entry[triangle] < 0) return 0.0f;
-    Vec3 front;
-    const float area = 0.5f * triangle_double_area(m_scene.triangles, triangle, front);
-    const float cos_y = -dot(front, dir);
-    if (!(cos_y > 0.0f) || !(area > 0.0f)) return 0.0f;
-    return choice_probability(static_cast<size_t>(m_triangle_entry[triangle])) * t * t /
-           (area * cos_y);
+    return surface_pdf(m_entries[static_cast<size_t>(m_triangle_entry[triangle])], dir, t);
 }
 
 float EmitterTable::area_pdf(size_t light, Vec3 dir, float t) const {
     if (m_light_entry[light] < 0) return 0.0f;
-    const AreaLight& a = std::get<AreaLight>(m_scene.lights[light]);
-    const Vec3 normal = a.area_normal();
-    const float area = length(normal);
-    float cos_y = -dot(normal, dir) / area;
-    if (a.two_sided) cos_y = std::abs(cos_y);
-    if (!(cos_y > 0.0f)) return 0.0f;
-    return choice_probability(static_cast<size_t>(m_light_entry[light])) * t * t / (area * cos_y);
+    return surface_pdf(m_entries[static_cast<size_t>(m_light_entry[light])], dir, t);
 }
 
 float EmitterTable::environment_pdf(Vec3 dir, Vec3 n) const {
     if (m_environment_entry < 0) return 0.0f;
-    const auto& env = std::get<EnvironmentLight>(
-        m_scene.lights[m_entries[static_cast<size_t>(m_environment_entry)].index]);
+    const Entry& e = m_entries[static_cast<size_t>(m_environment_entry)];
+    const auto& env = std::get<EnvironmentLight>(m_scene.lights[e.index]);
     const float pdf = env.map ? env.map->pdf(dir) : cosine_hemisphere_pdf(dot(n, dir));
-    return choice_probability(static_cast<size_t>(m_environment_entry)) * pdf;
+    return e.choice * pdf;
 }
 
 }  // namespace hikari

@@ -57,12 +57,22 @@ class EmitterTable {
     }
 
   private:
+    /// One emitter, with what sampling it reads, in one place.
     struct Entry {
         EmitterKind kind;
-        uint32_t index;  ///< a triangle, or a light of Scene::lights
+        uint32_t index;    ///< a triangle, or a light of Scene::lights
+        float choice = 0;  ///< the probability of choosing it
+        // Surfaces (triangles, area lights): corner + a·edge1 + b·edge2.
+        Vec3 corner, edge1, edge2;
+        Vec3 front{0.0f};  ///< unit normal of the emitting side
+        float area = 0;
+        Vec3 radiance{0.0f};  ///< emitted radiance
+        bool two_sided = false;
     };
 
-    float choice_probability(size_t entry) const;
+    /// The density per solid angle of `entry`'s uniform area samples seen along unit `dir` at
+    /// distance `t`: choice · t² / (A cos θ_y); 0 from behind a one-sided face.
+    static float surface_pdf(const Entry& entry, Vec3 dir, float t);
 
     const Scene& m_scene;
     std::vector<Entry> m_entries;
