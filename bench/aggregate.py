@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Pools the samples of a bench/run.sh log folder (hikari.jsonl, embree.log, pov_*.log) and prints
+"""Pools the samples of a bench/run.sh log folder (hikari.jsonl, embree.log, pov_*.log, cycles.log) and prints
 a markdown table: medians (and min-max) for hikari and the peer, and hikari / peer ratios
 (throughput: higher is better for hikari; times: peer / hikari, so > 1 means hikari is faster)."""
 import json, os, re, statistics, sys
@@ -21,6 +21,11 @@ for f in sorted(os.listdir(log)):
         d = pov.setdefault(int(m.group(1)), {"trace": [], "wall": []})
         if t: d["trace"].append(1000 * float(t.group(1)))
         if w: d["wall"].append(1000 * float(w.group(1)))
+
+cyc = []
+p = os.path.join(log, "cycles.log")
+if os.path.exists(p):
+    cyc = [dict(re.findall(r"(\w+)=(\S+)", l)) for l in open(p) if l.startswith("RESULT")]
 
 def med(v): return statistics.median(v) if v else float("nan")
 def samples(s): return [float(x) for x in s.split(",") if x]
@@ -56,6 +61,18 @@ for t in (1, 2):
     P = pov.get(t, {"trace": [], "wall": []})
     print(f"| B3 | whitted | {t} | hikari process wall vs POV trace, ms | {med(H):.0f} ({min(H)}-{max(H)}) | "
           f"{med(P['trace']):.0f} (wall {med(P['wall']):.0f}) | {med(P['trace']) / med(H):.2f} (peer/hikari) | |")
+for t in (1, 2):
+    H = [r for r in hik if r.get("bench") == "B5" and r.get("threads") == t]
+    if not H: continue
+    hm = [x for r in H for x in r["ms_all"]]
+    C = [r for r in cyc if r.get("bench") == "B5"] if t == 2 else []
+    cm = [x for r in C for x in samples(r.get("samples_ms", ""))]
+    img = [r for r in cyc if r.get("bench") == "B5img"]
+    hv = "({:.4f}, {:.4f}, {:.4f})".format(*H[-1]["mean_srgb"])
+    cv = "({}, {}, {})".format(img[-1]["mean_r"], img[-1]["mean_g"], img[-1]["mean_b"]) if img else "-"
+    ratio = f"{med(hm) / med(cm):.2f} (hikari/peer)" if cm else "-"
+    print(f"| B5 | cornell | {t} | render wall, ms (64 spp, 8 bounces) | {med(hm):.0f} ({min(hm):.0f}-{max(hm):.0f}) | "
+          f"{med(cm):.0f} | {ratio} | mean sRGB {hv} vs {cv} |")
 p = os.path.join(log, "psnr.txt")
 if os.path.exists(p):
     print("\n" + open(p).read().strip())

@@ -1,8 +1,9 @@
 #!/bin/bash
-# The one command for hikari's benchmarks beside the peers' (../bench/SPEC.md, B1-B3):
+# The one command for hikari's benchmarks beside the peers' (../bench/SPEC.md, B1-B3, B5):
 #   bench/run.sh                 RUNS=3 interleaved process runs per configuration
 #   RUNS=1 bench/run.sh          quick
-#   ONLY="B1" bench/run.sh       B1 and B2 only (B3: POV-Ray scene)
+#   ONLY="B1" bench/run.sh       B1 and B2 only (B3: POV-Ray scene; B5: path-traced Cornell box
+#                                beside Blender's Cycles when `blender` is installed)
 # Builds hikari (Release), generates bumpy1m into build/bench/data, runs `hikari bench` and,
 # when the peers are built and installed (make -C $PEERS; Embree, POV-Ray), the peers'
 # programs interleaved with ours, then prints medians and ratios (bench/aggregate.py). B1p16 is
@@ -12,7 +13,7 @@ ROOT=$(cd "$(dirname "$0")/.." && pwd)
 PEERS=${PEERS:-/work/shared/bench/peers}
 BUILD=${BUILD:-$ROOT/build}
 RUNS=${RUNS:-3}
-ONLY=${ONLY:-"B1 B3"}
+ONLY=${ONLY:-"B1 B3 B5"}
 OUT=$BUILD/bench
 LOG=${LOG:-$OUT/logs/$(date +%Y%m%d-%H%M%S)}
 has() { [[ " $ONLY " == *" $1 "* ]]; }
@@ -27,6 +28,7 @@ BUMPY=$OUT/data/bumpy1m.obj
 EMBREE=$PEERS/build/embree_bench
 [ -x "$EMBREE" ] || EMBREE=""
 POVRAY=$(command -v povray || true)
+BLENDER=$(command -v blender || true)
 { date -Is; grep -m1 "model name" /proc/cpuinfo; nproc; uname -r; git -C "$ROOT" rev-parse --short HEAD; } > "$LOG/machine.txt"
 
 # B3's wall clock is read from bash's own $EPOCHREALTIME (bash 5, microseconds): no process is
@@ -57,6 +59,15 @@ for r in $(seq "$RUNS"); do
         rm -f "$LOG/pov.tmp"
       fi
     done
+  fi
+  # B5: hikari's path tracer and Cycles, each one warm-up and 3 timed renders in one process
+  # (the Cycles script renders with 2 threads, as the SPEC fixes).
+  if has B5; then
+    "$HIKARI" bench B5 --threads 2 >> "$LOG/hikari.jsonl"
+    if [ -n "$BLENDER" ]; then
+      "$BLENDER" -b --factory-startup -noaudio -P "$PEERS/cornell_cycles.py" -- 3 "$OUT/out/cornell_cycles.png" 2>&1 \
+        | grep "^RESULT" >> "$LOG/cycles.log"
+    fi
   fi
 done
 if has B3 && [ -s "$OUT/out/whitted_pov.png" ]; then

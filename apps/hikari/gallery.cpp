@@ -507,6 +507,20 @@ void plan(Gallery& g, const PlacedModel& model) {
         g.add(srt, "Fig 4.43", fmt::format("refraction, ior {}", ior),
               fmt::format("fig4-43-ior-{}.png", ior), file, {"-m", "raytrace"});
     }
+    // Global illumination: the inter-reflection the ambient term stands in for.
+    const std::string sgi = "Global illumination: light that bounces (path tracing)";
+    for (const char* name : {"bench/cornell.json", "cornell-glass.json"}) {
+        Json scene = repository_scene(name);
+        scene["camera"]["width"] = w / 2;
+        scene["camera"]["height"] = w / 2;
+        g.write_scene(fs::path(name).filename().string(), scene);
+    }
+    g.add(sgi, "GI", "direct light only (--max-depth 0)", "gi-direct.png", "cornell.json",
+          {"-m", "path", "--max-depth", "0"});
+    g.add(sgi, "GI", "with inter-reflection: 8 bounces", "gi-path.png", "cornell.json",
+          {"-m", "path"});
+    g.add(sgi, "GI", "glass and mirror: caustics, 256 samples per pixel", "gi-glass.png",
+          "cornell-glass.json", {"-m", "path", "--spp", "256"});
     // The assignment.
     const std::string sas = "The assignment: ray trace a sphere";
     for (const char* stage : {"assignment-1-hit-miss.json", "assignment-2-diffuse.json",

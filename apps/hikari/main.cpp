@@ -672,10 +672,13 @@ std::string own_program(const char* argv0) {
 /// Parses the command line (and checks the render's method options); returns the exit status
 /// when the program ends there: after --help or --version, or on a usage error.
 std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, const CLI::App& render,
-                                      const RenderOptions& o) {
+                                      const RenderOptions& o, const CLI::App& bench,
+                                      const BenchOptions& b) {
     try {
         app.parse(argc, argv);
         if (render.parsed()) check_method_options(render, *find_method(o.method), o.own);
+        if (bench.parsed() && b.bench != "B5" && b.mesh.empty())
+            throw CLI::ValidationError(fmt::format("{} needs --mesh FILE (an OBJ mesh)", b.bench));
         if (!o.depth_cue.empty() && !(o.depth_cue[1] > o.depth_cue[0]))
             throw CLI::ValidationError("--depth-cue: FAR must be greater than NEAR");
         return std::nullopt;
@@ -731,7 +734,8 @@ int main(int argc, char** argv) {
     const CLI::App* bench = add_bench_command(app, b);
     GalleryOptions g;
     const CLI::App* gallery = add_gallery_command(app, g);
-    if (const std::optional<int> status = parse_command_line(app, argc, argv, *render, o))
+    if (const std::optional<int> status =
+            parse_command_line(app, argc, argv, *render, o, *bench, b))
         return *status;
     install_signal_handlers();
     return run_command(*render, o, *bench, b, *gallery, g, own_program(argv[0]));

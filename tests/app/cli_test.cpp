@@ -497,5 +497,52 @@ TEST_F(Cli, GalleryMistakesExitOneAndMakeNothing) {
     EXPECT_EQ(run("gallery --width 2").status, 2);
 }
 
+/// A small scene for the path tracer: a lamp over a floor, and a material that would create
+/// light (kd + ks = 1.3).
+constexpr const char* k_lamp_scene = R"({
+  "camera": {"eye": [0, 1, 3], "look_at": [0, 0.5, 0], "fov_y": 50, "width": 24, "height": 16},
+  "materials": {"lamp": {"emission": [4, 4, 4]}, "floor": {"kd": 0.8, "ks": 0.5}},
+  "objects": [{"type": "sphere", "center": [0, 1.5, 0], "radius": 0.3, "material": "lamp"},
+              {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "floor"}]})";
+
+TEST_F(Cli, PathTracesWithStatsAndWarnings) {
+    write("lamp.json", k_lamp_scene);
+    const Result r = run("render " + path("lamp.json") + " -m path --spp 4 --max-depth 3 --stats " +
+                         "--filter gaussian --clamp 100 -o " + path("lamp.exr"));
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_TRUE(fs::exists(path("lamp.exr")));
+    EXPECT_NE(r.output.find("Mpaths/s"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("0 NaN/Inf samples"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("warning: material 'floor' would reflect more light"),
+              std::string::npos)
+        << r.output;
+    const Image image = read_image(path("lamp.exr"));
+    EXPECT_EQ(image.width, 24);
+    // Without --spp, a time limit samples until the time is up; progressive snapshots rewrite
+    // the output meanwhile and the final image replaces them.
+    const Result timed = run("render " + path("lamp.json") + " -m path -q --time-limit 0.5 " +
+                             "--progressive 0.1 -o " + path("timed.png"));
+    EXPECT_EQ(timed.status, 0) << timed.output;
+    EXPECT_TRUE(fs::exists(path("timed.png")));
+    EXPECT_EQ(file_count(), 3U);  // the scene and two images: no temporary files left
+}
+
+TEST_F(Cli, PathOptionMistakesAreUsageErrors) {
+    expect_usage_error("-m path --shadows ray", "--shadows is not an option of method path");
+    expect_usage_error("-m raytrace --clamp 2", "--clamp is not an option of method raytrace");
+    expect_usage_error("-m raytrace --max-depth 0", "--max-depth 0: raytrace needs");
+    expect_usage_error("-m path --filter tent", "--filter: tent not in");
+}
+
+TEST_F(Cli, BenchB5RendersTheCornellBoxAsJson) {
+    write("lamp.json", k_lamp_scene);
+    const Result r = run("bench B5 --scene " + path("lamp.json") + " --reps 1 2>/dev/null");
+    EXPECT_EQ(r.status, 0) << r.output;
+    for (const char* key :
+         {"\"bench\": \"B5\"", "\"threads\": 1", "\"ms\": ", "\"mean_srgb\": [", "\"spp\": 64"})
+        EXPECT_NE(r.output.find(key), std::string::npos) << key << " in " << r.output;
+    EXPECT_EQ(run("bench B5 --mesh " + path("lamp.json")).status, 1);
+}
+
 }  // namespace
 }  // namespace hikari

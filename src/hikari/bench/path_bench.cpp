@@ -52,7 +52,7 @@ PathBenchResult run_path_bench(const Scene& scene, const PathBenchSettings& sett
         last.film.srgb8().bytes;
     double sum[3] = {};
     for (size_t i = 0; i < bytes.size(); ++i) sum[i % 3] += bytes[i];
-    const double pixels = static_cast<double>(bytes.size() / 3);
+    const double pixels = static_cast<double>(bytes.size()) / 3.0;
     for (int a = 0; a < 3; ++a)
         result.mean_srgb[a] = static_cast<float>(sum[a] / (255.0 * std::max(1.0, pixels)));
     return result;

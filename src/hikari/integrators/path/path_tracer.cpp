@@ -211,7 +211,7 @@ class PathRender {
     const SceneIntersector& intersector() const { return m_integrator.intersector(); }
 
     /// Samples [first, first + count) of every pixel, added to the sums.
-    void add_samples(int first, int count, uint64_t& paths_done) {
+    void add_samples(int first, int count) {
         const int width = m_scene.camera.width;
         RenderControl* control = m_settings.control;
         for_each_tile(
@@ -242,7 +242,6 @@ class PathRender {
                     control->work_done.fetch_add(pixels * count, std::memory_order_relaxed);
             },
             false);
-        paths_done += static_cast<uint64_t>(count);
     }
 
     /// The mean of `samples` samples per pixel as linear RGB.
@@ -320,7 +319,6 @@ Framebuffer render_path(const Scene& scene, Film film, const RenderSettings& set
     if (settings.control) settings.control->work_total = pixels * static_cast<uint64_t>(target);
     const auto start = Clock::now();
     double next_snapshot = path.progressive_seconds;
-    uint64_t done = 0;
     int samples = 0;
     while (samples < target) {
         // Without a clock to watch, every sample in one pass (each tile keeps its pixels' paths
@@ -338,7 +336,7 @@ Framebuffer render_path(const Scene& scene, Film film, const RenderSettings& set
                 count = std::clamp(static_cast<int>(budget / per_sample), 1, count);
             }
         }
-        render.add_samples(samples, count, done);
+        render.add_samples(samples, count);
         samples += count;
         const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
         if (timed && elapsed >= path.time_limit_seconds) break;
