@@ -57,7 +57,12 @@ std::vector<Case> cases() {
         all.push_back({scene, "--width 64", "png"});
         all.push_back({scene, "--width 64 --aov id", "pfm"});
         all.push_back({scene, "--width 48 --spp 4", "pfm"});
+        // The path tracer (the same scenes, lit the physical way; their lights have no size,
+        // so light sampling finds them all).
+        all.push_back({scene, "-m path --width 32 --spp 4", "pfm"});
     }
+    all.push_back({"bench/cornell", "-m path --width 32 --spp 8", "pfm"});
+    all.push_back({"cornell-glass", "-m path --width 32 --spp 8", "pfm"});
     all.push_back(
         {"bunny", "-m zbuffer --width 64 --interp gouraud --cull back --shadows none", "pfm"});
     all.push_back({"teapot", "-m scanline --width 64 --interp flat --shadows none", "pfm"});

@@ -46,7 +46,8 @@ class RecursiveWhitted {
         const Material& m = m_scene.materials[hit.material];
         Vec3 colour = local(m, hit.position, n, ng, -ray.direction);
         if (segment >= m_max_depth) return colour;
-        const Vec3 mirror = reflect(ray.direction, n);
+        const Vec3 reflected = reflect(ray.direction, n);
+        const Vec3 mirror = reflected * (1.0f / std::sqrt(dot(reflected, reflected)));
         std::optional<Vec3> refracted;
         if (m.transparency > 0.0f)
             refracted = refract(ray.direction, n, entering ? 1.0f / m.ior : m.ior);

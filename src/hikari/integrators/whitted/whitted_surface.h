@@ -102,7 +102,12 @@ HIKARI_INLINE SecondaryRays<F> whitted_secondary_rays(const WhittedShading<F>& s
     const MaskOf<F> reflective = active & (m.reflectivity > F(0.0f));
     SecondaryRays<F> rays;
     if (!any(transparent | reflective)) return rays;
-    rays.mirror_direction = reflect(direction, s.normal);
+    // Renormalized: reflect() keeps unit length only up to rounding, and a ray trapped by total
+    // internal reflection is reflected again and again, each time from a direction a little
+    // off unit length; the sphere and plane tests take the direction as unit, so the drift
+    // (about 1e-7 per bounce) would compound until the ray left the sphere.
+    const Vec3T<F> mirror = reflect(direction, s.normal);
+    rays.mirror_direction = mirror * (F(1.0f) / sqrt_of(dot(mirror, mirror)));
     rays.mirror_origin = offset_ray_origin(s.position, s.geometric_normal);
     if (!any(transparent)) {
         rays.mirror_weight = select(active, m.reflectivity, F(0.0f));

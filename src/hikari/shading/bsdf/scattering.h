@@ -119,7 +119,8 @@ class Scattering {
     static ScatterSample delta_reflection(const ScatterFrame& at, float weight) {
         ScatterSample s;
         s.delta = true;
-        s.direction = reflect(-at.to_eye, at.normal);
+        // Renormalized: along a chain of mirrors the rounding of reflect() would compound.
+        s.direction = normalize(reflect(-at.to_eye, at.normal));
         if (dot(at.geometric_normal, s.direction) > 0.0f) s.weight = Vec3(weight);
         return s;
     }
