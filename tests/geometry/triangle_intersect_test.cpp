@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "../bvh/test_meshes.h"
+#include "hikari/core/orthonormal_basis.h"
 #include "hikari/core/rng.h"
 
 namespace hikari {
@@ -175,6 +176,43 @@ TEST(TriangleOccludes, AgreesWithTheDistanceAwayFromTheBounds) {
     }
     EXPECT_GT(hits, 500);  // both outcomes seen, including lines that meet the triangle
     EXPECT_GT(misses_by_distance, 500);  // outside the interval
+}
+
+}  // namespace
+}  // namespace hikari
+
+namespace hikari {
+namespace {
+
+// A triangle whose plane contains the ray's origin, seen edge-on: every ray from the origin
+// crosses its plane at the origin itself, so none hits it, whatever rounding says (issue 28:
+// camera rays "hit" such a triangle at t ≈ 1e-7).
+TEST(TriangleIntersect, AnOriginInTheTrianglesPlaneIsNoHit) {
+    Pcg32 rng(5, 9);
+    for (int i = 0; i < 2000; ++i) {
+        // A big triangle around the origin in a random plane through it.
+        const Vec3 n = normalize(
+            Vec3(rng.next_float() - 0.5f, rng.next_float() - 0.5f, rng.next_float() - 0.5f));
+        const OrthonormalBasis basis(n);
+        const float size = 0.1f + 100.0f * rng.next_float();
+        const Vec3 p0 = size * basis.t, p1 = size * (-0.5f * basis.t + 0.87f * basis.b),
+                   p2 = size * (-0.5f * basis.t - 0.87f * basis.b);
+        const Vec3 d = normalize(
+            Vec3(rng.next_float() - 0.5f, rng.next_float() - 0.5f, rng.next_float() - 0.5f));
+        // Rounding the vertices moves the plane off the origin by about an ulp of their
+        // coordinates: a ray grazing that plane can truly meet it a little way out. Every other
+        // ray must miss.
+        if (std::abs(dot(d, n)) < 0.02f) continue;
+        const auto h = intersect_triangle(Ray{Vec3(0.0f), d}, p0, p1, p2, {0.0f, k_infinity});
+        EXPECT_FALSE(h) << i << " t " << (h ? h->t : 0.0f) << " d.n " << dot(d, n) << " size "
+                        << size << " plane offset " << dot(p0, normalize(cross(p1 - p0, p2 - p0)));
+        EXPECT_FALSE(
+            triangle_occludes(WatertightRay(Ray{Vec3(0.0f), d}), p0, p1, p2, {0.0f, k_infinity}))
+            << i;
+    }
+    // Hits just in front of the origin still count: 1e-4 of the way to the vertices.
+    EXPECT_TRUE(intersect_triangle(Ray{Vec3(0, 0, 1e-4f), Vec3(0, 0, -1)}, Vec3(-1, -1, 0),
+                                   Vec3(1, -1, 0), Vec3(0, 1, 0), {0.0f, k_infinity}));
 }
 
 }  // namespace

@@ -177,12 +177,16 @@ template <typename Ops>
     // No branch on `inside`: for coherent rays whether a triangle is hit is a coin toss, and a
     // mispredicted branch costs more than the rest of the test.
     const V det = Ops::add(Ops::add(e0, e1), e2);
-    const uint32_t inside = ~(negative & positive) & lanes & ~on_edge & Ops::neq(det, zero);
     /* step 5, scaled: the distance times det */
     const V sz = Ops::load(r.shear[2]);
-    const V t_scaled =
-        Ops::add(Ops::add(Ops::mul(e0, Ops::mul(sz, az)), Ops::mul(e1, Ops::mul(sz, bz))),
-                 Ops::mul(e2, Ops::mul(sz, cz)));
+    const V z0 = Ops::mul(e0, Ops::mul(sz, az)), z1 = Ops::mul(e1, Ops::mul(sz, bz)),
+            z2 = Ops::mul(e2, Ops::mul(sz, cz));
+    const V t_scaled = Ops::add(Ops::add(z0, z1), z2);
+    // Within rounding of the origin: no hit (triangle_intersect.h, k_t_rounding).
+    const V band = Ops::mul(Ops::set1(k_t_rounding),
+                            Ops::add(Ops::add(Ops::abs(z0), Ops::abs(z1)), Ops::abs(z2)));
+    const uint32_t inside = ~(negative & positive) & lanes & ~on_edge & Ops::neq(det, zero) &
+                            Ops::gt(Ops::abs(t_scaled), band);
     return {e1, e2, det, t_scaled, inside, on_edge};
 }
 

@@ -180,10 +180,20 @@ struct Simd8Ops {
             const __m256 det = _mm256_add_ps(_mm256_add_ps(e0, e1), e2);
             inside &= HIKARI_CMP_MASK(det, zero, _CMP_NEQ_UQ);
             /* step 5: the hit distance */
-            const __m256 t_scaled =
-                _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(e0, _mm256_mul_ps(sz_, az)),
-                                            _mm256_mul_ps(e1, _mm256_mul_ps(sz_, bz))),
-                              _mm256_mul_ps(e2, _mm256_mul_ps(sz_, cz)));
+            const __m256 z0 = _mm256_mul_ps(e0, _mm256_mul_ps(sz_, az));
+            const __m256 z1 = _mm256_mul_ps(e1, _mm256_mul_ps(sz_, bz));
+            const __m256 z2 = _mm256_mul_ps(e2, _mm256_mul_ps(sz_, cz));
+            const __m256 t_scaled = _mm256_add_ps(_mm256_add_ps(z0, z1), z2);
+            {
+                // Within rounding of the origin: no hit (triangle_intersect.h, k_t_rounding).
+                const __m256 sign_bit = _mm256_set1_ps(-0.0f);
+                const __m256 band =
+                    _mm256_mul_ps(_mm256_set1_ps(k_t_rounding),
+                                  _mm256_add_ps(_mm256_add_ps(_mm256_andnot_ps(sign_bit, z0),
+                                                              _mm256_andnot_ps(sign_bit, z1)),
+                                                _mm256_andnot_ps(sign_bit, z2)));
+                inside &= HIKARI_CMP_MASK(_mm256_andnot_ps(sign_bit, t_scaled), band, _CMP_GT_OQ);
+            }
             if constexpr (k_any_hit) {
                 // scaled_distance_inside: no division for a shadow ray.
                 const __m256 sign_bit = _mm256_set1_ps(-0.0f);

@@ -52,6 +52,14 @@ struct WatertightRay {
     }
 };
 
+/// How far the scaled distance may be off by rounding, relative to the sum of its terms'
+/// magnitudes: a hit whose |t_scaled| is within this band of 0 lies at the ray's origin within
+/// the precision of the triangle's own coordinates (a triangle whose plane contains the origin,
+/// edge-on to the ray, "hit" at t ≈ 1e-7), and is a miss. 32 ulps: a true hit is rejected only
+/// nearer than about 2e-6 of the distance to the triangle's vertices, inside the band that
+/// secondary rays already leave by offset_ray_origin.
+inline constexpr float k_t_rounding = 32.0f * 0x1p-24f;
+
 /// A triangle the ray's line passes through, before the division: Woop et al. 2013's scaled
 /// barycentrics (e0, e1, e2 weigh p0, p1, p2), their sum det (never 0), and the hit distance
 /// times det.
@@ -100,7 +108,12 @@ inline std::optional<ScaledTriangleHit> scaled_triangle_hit(const WatertightRay&
     if (det == 0.0f) return std::nullopt;
 
     // Step 5: the hit distance times det, interpolated from the vertices' scaled z.
-    const float t_scaled = e0 * (ray.sz * az) + e1 * (ray.sz * bz) + e2 * (ray.sz * cz);
+    const float z0 = e0 * (ray.sz * az), z1 = e1 * (ray.sz * bz), z2 = e2 * (ray.sz * cz);
+    const float t_scaled = z0 + z1 + z2;
+    // Within rounding of the origin (the ray's line in the triangle's plane, or the origin on
+    // it): no hit (k_t_rounding).
+    if (!(std::abs(t_scaled) > k_t_rounding * (std::abs(z0) + std::abs(z1) + std::abs(z2))))
+        return std::nullopt;
     return ScaledTriangleHit{e0, e1, e2, det, t_scaled};
 }
 

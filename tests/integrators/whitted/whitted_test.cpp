@@ -159,5 +159,23 @@ TEST(Whitted, AovsDescribeThePixelCentre) {
     EXPECT_GT(fb.depth[bottom], 0.0f);
 }
 
+TEST(Whitted, AnEdgeOnTriangleThroughTheEyeIsNotSeen) {
+    // The triangle's plane contains the eye: every camera ray crosses it at the eye, where no
+    // surface can be seen (issue 28: 1,031 of 9,216 pixels used to come out as speckles).
+    const Scene scene = scene_from(R"({
+      "camera": {"eye": [0.3, 1, 2], "look_at": [0, 0, -1], "fov_y": 60, "width": 96, "height": 96},
+      "materials": {"grey": {"kd": 0.5}},
+      "objects": [{"type": "triangle", "vertices": [[-20, 1, 22], [20, 1, 22], [0.3, 1, -30]], "material": "grey"},
+                  {"type": "sphere", "center": [0, 0, -1], "radius": 0.5, "material": "grey"}]})");
+    const Framebuffer fb = render_whitted(scene, Film(scene.camera, FilmFormat::linear));
+    int seen = 0, sphere = 0;
+    for (const uint32_t id : fb.id) {
+        seen += id == 1 ? 1 : 0;
+        sphere += id == 2 ? 1 : 0;
+    }
+    EXPECT_EQ(seen, 0);
+    EXPECT_GT(sphere, 100);
+}
+
 }  // namespace
 }  // namespace hikari
