@@ -69,6 +69,23 @@ TEST(Phong, SpecularPeaksAtMirrorDirection) {
     EXPECT_NEAR(c.y, 0.3f * cos_alpha + 0.6f, 1e-5);
 }
 
+TEST(Phong, ShininessZeroIsOneWhereverTheLightArrives) {
+    // max(0, R·V)^0 read literally: 1, also where R·V ≤ 0 (x⁰ = 1), so the "highlight" is the
+    // constant ks wherever N·L > 0, not a disc. The eye here looks from the light's side, so
+    // R·V < 0.
+    Material m = clay();
+    m.kd = Vec3(0.0f);
+    m.shininess = 0;
+    const Vec3 n{0, 1, 0};
+    const Vec3 l = normalize(Vec3{-1, 1, 0});
+    const Vec3 v = normalize(Vec3{-1, 0.2f, 0});
+    EXPECT_NEAR(shade_direct(m, n, l, v, Vec3(1.0f)).x, 0.6f, 1e-6);
+    EXPECT_NEAR(shade_direct(m, n, l, n, Vec3(1.0f)).x, 0.6f, 1e-6);
+    // With n > 0 the same eye sees none of it.
+    m.shininess = 1;
+    EXPECT_EQ(shade_direct(m, n, l, v, Vec3(1.0f)).x, 0.0f);
+}
+
 TEST(Phong, HandComputedValueAwayFromTheHighlight) {
     // N = +z, L at 60 degrees from N in the xz plane, V straight along N:
     // R = (−sin60, 0, cos60)·(−1, 0, ... ) → R·V = cos 60 = 0.5, so spec = 0.5^n.

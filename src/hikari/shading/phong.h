@@ -57,7 +57,9 @@ HIKARI_INLINE float phong_power(float cos_gamma, float n) {
     return phong_power<float>(cos_gamma, phong_integer_exponent(n), n);
 }
 
-/// The specular factor max(0, R·V)^n, R the mirror direction of the light about the normal.
+/// The specular factor max(0, R·V)^n, R the mirror direction of the light about the normal,
+/// read literally: with n = 0 it is 1 wherever the light reaches the point (x⁰ = 1, also for
+/// x = 0, as C's pow has it), not a disc where R·V > 0; for n > 0, 0 where R·V ≤ 0.
 template <class F>
 HIKARI_INLINE F phong_specular(const MaterialSample<F>& m, const SurfacePoint<F>& s,
                                const Vec3T<F>& to_light) {
@@ -65,10 +67,10 @@ HIKARI_INLINE F phong_specular(const MaterialSample<F>& m, const SurfacePoint<F>
     const Vec3T<F> r = reflect(-to_light, s.normal);
     const F cos_gamma = dot(r, s.to_eye);
     if constexpr (k_is_scalar<F>)
-        return cos_gamma > 0.0f ? phong_power(cos_gamma, m.exponent, m.shininess) : 0.0f;
+        return phong_power(cos_gamma > 0.0f ? cos_gamma : 0.0f, m.exponent, m.shininess);
     else
-        return select(cos_gamma > F(0.0f), phong_power(cos_gamma, m.exponent, m.shininess),
-                      F(0.0f));
+        return phong_power(select(cos_gamma > F(0.0f), cos_gamma, F(0.0f)), m.exponent,
+                           m.shininess);
 }
 
 /// Light from one source reflected toward the eye where it faces the surface (cos α = N·L > 0):

@@ -81,7 +81,7 @@ class RecursiveWhitted {
             if (m_intersector.occluded({origin, ls.to_light}, {0.0f, ls.distance})) continue;
             const Vec3 r = reflect(-ls.to_light, n);
             const float cos_gamma = dot(r, to_eye);
-            const float specular = cos_gamma > 0.0f ? phong_power(cos_gamma, m.shininess) : 0.0f;
+            const float specular = phong_power(cos_gamma > 0.0f ? cos_gamma : 0.0f, m.shininess);
             colour += ls.irradiance * (kd * cos_alpha + m.ks * specular);
         }
         return colour;
