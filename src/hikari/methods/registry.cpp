@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "hikari/frame/depth_cue.h"
+#include "hikari/frame/subpixel.h"
 #include "hikari/integrators/whitted/whitted.h"
 #include "hikari/raster/depth_sort.h"
 #include "hikari/raster/hidden_line.h"
@@ -31,6 +32,33 @@ Framebuffer ray_trace(const Scene& scene, Film film, const RenderSettings& setti
     return render_whitted(scene, std::move(film), settings, whitted);
 }
 
+/// Anti-aliasing by supersampling (`--spp N` for the raster methods): N whole renders, each
+/// sampling every pixel at one of the sub-pixel points the ray tracer takes (frame/subpixel.h),
+/// their linear colours averaged; the AOVs come from one more render at the pixel centres, as
+/// the ray tracer's do. Costs N (+1 with AOVs) times one render, shadow maps included.
+template <class RenderPass>
+Framebuffer supersample(Film film, const RenderSettings& settings, int spp, RenderPass&& pass) {
+    const int width = film.width(), height = film.height();
+    Framebuffer out =
+        settings.aov_buffers
+            ? pass(Film(width, height, FilmFormat::linear), settings, Vec2{})
+            : Framebuffer(Film(width, height, FilmFormat::linear), width, height, false);
+    RenderSettings colour_only = settings;
+    colour_only.aov_buffers = false;
+    std::vector<Vec3> sum(static_cast<size_t>(width) * static_cast<size_t>(height), Vec3(0.0f));
+    for (int s = 0; s < spp; ++s) {
+        const Vec2 at = subpixel_sample(s, spp);
+        const Framebuffer fb = pass(Film(width, height, FilmFormat::linear), colour_only,
+                                    Vec2{at.x - 0.5f, at.y - 0.5f});
+        const auto& pixels = fb.film.linear().pixels;
+        for (size_t i = 0; i < sum.size(); ++i) sum[i] += pixels[i];
+    }
+    for (Vec3& c : sum) c = c / static_cast<float>(spp);
+    out.film = std::move(film);
+    out.set_colors(0, sum.data(), sum.size());
+    return out;
+}
+
 /// The path tracer with its settings. With a time limit and no --spp, samples go on until
 /// the time is up.
 Framebuffer path_trace(const Scene& scene, Film film, const RenderSettings& settings,
@@ -51,7 +79,12 @@ Framebuffer rasterize(const Scene& scene, Film film, const RenderSettings& setti
     RasterSettings raster = own.raster;
     raster.shadows = own.shadows.value_or(ShadowMode::map);
     raster.light_samples = own.light_samples;
-    return render(scene, std::move(film), settings, raster);
+    const int spp = own.samples_per_pixel.value_or(1);
+    if (spp == 1) return render(scene, std::move(film), settings, raster);
+    return supersample(film, settings, spp, [&](Film pass, const RenderSettings& s, Vec2 offset) {
+        raster.sample_offset = offset;
+        return render(scene, std::move(pass), s, raster);
+    });
 }
 
 constexpr ShadowMode k_ray_shadow_modes[] = {ShadowMode::ray, ShadowMode::analytic,
@@ -77,8 +110,9 @@ constexpr MethodOption k_light_samples_option = {
 
 constexpr MethodOption k_spp_option = {
     "--spp",
-    "Samples per pixel (raytrace: 1 = pixel centres, more: stratified, default 1; path: "
-    "default 64, or as many as --time-limit allows)",
+    "Samples per pixel (raytrace: 1 = pixel centres, more: stratified, default 1; raster "
+    "methods: supersampling at the same sub-pixel points, one render per sample, default 1; "
+    "path: default 64, or as many as --time-limit allows)",
     OptionalIntegerOption{1, k_max_samples_per_pixel, [](MethodSettings& s) -> std::optional<int>& {
                               return s.samples_per_pixel;
                           }}};
@@ -131,6 +165,7 @@ constexpr MethodOption k_cull_option = {
                        [](MethodSettings& s) -> bool& { return s.raster.cull_back_faces; }}};
 
 constexpr MethodOption k_raster_options[] = {
+    k_spp_option,
     {"--interp",
      "Raster shading interpolation: flat (one colour per polygon), gouraud (vertex colours "
      "blended), phong (normals interpolated, shaded per pixel)",

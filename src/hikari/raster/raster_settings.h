@@ -1,6 +1,7 @@
 #pragma once
 // The raster methods' own settings (zbuffer, scanline, depthsort, depthsort-naive).
 
+#include "hikari/core/vec.h"
 #include "hikari/frame/render_settings.h"
 
 namespace hikari {
@@ -21,6 +22,10 @@ struct RasterSettings {
     int shadow_map_size = 2048;                   ///< texels per side of each shadow map face
     /// Samples of the specular term per area light and point (the diffuse term is analytic).
     int light_samples = k_default_light_samples;
+    /// Where each pixel is sampled, relative to its centre, in pixels (each coordinate in
+    /// [−½, ½)): the image is shifted so that pixel centres land there. The supersampling of
+    /// `--spp` renders one pass per sub-pixel sample (frame/subpixel.h).
+    Vec2 sample_offset{0.0f, 0.0f};
 };
 
 }  // namespace hikari

@@ -54,7 +54,7 @@ int project_one(const ProjectedScene& ps, uint32_t t, bool cull, ScreenTriangle*
 
 }  // namespace
 
-RasterView make_raster_view(const Camera& camera, const RasterScene& scene) {
+RasterView make_raster_view(const Camera& camera, const RasterScene& scene, Vec2 sample_offset) {
     RasterView v;
     v.eye = camera.eye;
     v.width = camera.width;
@@ -79,7 +79,9 @@ RasterView make_raster_view(const Camera& camera, const RasterScene& scene) {
     v.near_plane = std::max(0.9f * nearest * cos_half_diag, 1e-6f * v.far_plane);
     v.view_from_world = view_matrix(camera);
     v.clip_from_view = perspective(camera.fov_y_degrees, aspect, v.near_plane, v.far_plane);
-    v.screen_from_clip = viewport(camera.width, camera.height);
+    // Sampling at centre + offset is the image moved by −offset under fixed pixel centres.
+    v.screen_from_clip = translate(Vec3(-sample_offset.x, -sample_offset.y, 0.0f)) *
+                         viewport(camera.width, camera.height);
     v.clip_from_world = v.clip_from_view * v.view_from_world;
     return v;
 }
@@ -113,7 +115,7 @@ ProjectedScene project_triangles(RasterScene scene, const RasterView& view, bool
 
 ProjectedScene project_scene(const Scene& scene, const RasterSettings& raster) {
     RasterScene rs = tessellate_scene(scene);
-    const RasterView view = make_raster_view(scene.camera, rs);
+    const RasterView view = make_raster_view(scene.camera, rs, raster.sample_offset);
     return project_triangles(std::move(rs), view, raster.cull_back_faces);
 }
 

@@ -34,7 +34,8 @@ struct RasterView {
 /// smallest view depth the bounding box can have inside the frustum, but at least 10⁻⁶ far. Depth
 /// tests should compare view depth 1 / inv_w, whose float precision is relative, rather than
 /// ScreenVertex::position.z, which degrades with far / near.
-RasterView make_raster_view(const Camera& camera, const RasterScene& scene);
+RasterView make_raster_view(const Camera& camera, const RasterScene& scene,
+                            Vec2 sample_offset = {0.0f, 0.0f});
 
 /// A scene after the vertex stage.
 struct ProjectedScene {

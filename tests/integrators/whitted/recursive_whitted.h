@@ -8,9 +8,9 @@
 #include <optional>
 
 #include "hikari/bvh/scene_intersector.h"
-#include "hikari/core/rng.h"
 #include "hikari/frame/film.h"
 #include "hikari/frame/framebuffer.h"
+#include "hikari/frame/subpixel.h"
 #include "hikari/geometry/ray_offset.h"
 #include "hikari/integrators/whitted/whitted.h"
 #include "hikari/scene/scene.h"
@@ -100,9 +100,6 @@ inline Framebuffer render_whitted_recursive(const Scene& scene, const WhittedSet
     const RecursiveWhitted tracer(scene, whitted.max_depth);
     const CameraFrame frame = make_camera_frame(cam);
     const int spp = whitted.samples_per_pixel;
-    int cols = static_cast<int>(std::sqrt(static_cast<double>(spp)));
-    while (spp % cols != 0) --cols;
-    const int rows = spp / cols;
     for (int y = 0; y < cam.height; ++y)
         for (int x = 0; x < cam.width; ++x) {
             const size_t i = static_cast<size_t>(y) * cam.width + x;
@@ -112,11 +109,10 @@ inline Framebuffer render_whitted_recursive(const Scene& scene, const WhittedSet
             if (spp == 1) {
                 sum = tracer.trace(centre, 1);
             } else {
-                Pcg32 rng(i, 0x68696b617269ULL);
+                // The same points in every pixel (frame/subpixel.h).
                 for (int s = 0; s < spp; ++s) {
-                    const float sx = (static_cast<float>(s % cols) + rng.next_float()) / cols;
-                    const float sy = (static_cast<float>(s / cols) + rng.next_float()) / rows;
-                    sum += tracer.trace(camera_ray(frame, fx + sx, fy + sy), 1);
+                    const Vec2 offset = subpixel_sample(s, spp);
+                    sum += tracer.trace(camera_ray(frame, fx + offset.x, fy + offset.y), 1);
                 }
                 sum = sum / static_cast<float>(spp);
             }

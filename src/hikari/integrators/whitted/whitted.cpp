@@ -9,8 +9,7 @@
 #include <vector>
 
 #include "hikari/bvh/scene_intersector.h"
-#include "hikari/core/rng.h"
-#include "hikari/core/strata.h"
+#include "hikari/frame/subpixel.h"
 #include "hikari/frame/tiles.h"
 #include "hikari/geometry/ray_offset.h"
 #include "hikari/integrators/hit_aovs.h"
@@ -113,8 +112,7 @@ struct WaveScratch {
     /// The ray cones of `rays`, `next_rays` and `next_refracted`, entry for entry (empty when
     /// no material has a texture: nothing reads them).
     std::vector<RayCone> cones, next_cones, next_refracted_cones;
-    // Jittered samples: each pixel's random stream, colour sum, and one sample's camera rays.
-    std::vector<Pcg32> streams;
+    // Jittered samples: each pixel's colour sum, and one sample's camera rays.
     std::vector<Vec3> sums;
     std::vector<Ray> camera_rays;
 };
@@ -497,33 +495,25 @@ struct WhittedRender {
         }
     }
 
-    /// `spp` stratified jittered samples per pixel, one in each stratum, from a random stream
-    /// seeded by the pixel alone; the AOVs describe the pixel centre.
+    /// `spp` stratified jittered samples per pixel, one in each stratum, at the same points in
+    /// every pixel (frame/subpixel.h, as the raster methods take them); the AOVs describe the
+    /// pixel centre.
     void render_samples(const Tile& tile, WaveTracer& wave, WaveScratch& scratch) const {
         const int spp = whitted.samples_per_pixel, width = scene.camera.width;
-        int cols = 1, rows = 1;
-        strata(spp, cols, rows);
         if (settings.aov_buffers) {
             primary.trace(tile.x0, tile.y0, tile.x1 - tile.x0, tile.y1 - tile.y0, scratch.block);
             store_block_aovs(tile, scratch.block);
         }
-        std::vector<Pcg32>& streams = scratch.streams;
         std::vector<Vec3>& sums = scratch.sums;
-        streams.clear(), sums.assign(tile_pixels(tile), Vec3(0.0f));
-        for (int y = tile.y0; y < tile.y1; ++y)
-            for (int x = tile.x0; x < tile.x1; ++x)
-                streams.emplace_back(static_cast<size_t>(y) * width + x, 0x68696b617269ULL);
+        sums.assign(tile_pixels(tile), Vec3(0.0f));
         for (int s = 0; s < spp; ++s) {
             std::vector<Ray>& rays = scratch.camera_rays;
             rays.clear();
-            const int column = s % cols, row = s / cols;
-            for (int y = tile.y0, k = 0; y < tile.y1; ++y)
-                for (int x = tile.x0; x < tile.x1; ++x, ++k) {
-                    const float sx = (static_cast<float>(column) + streams[k].next_float()) / cols;
-                    const float sy = (static_cast<float>(row) + streams[k].next_float()) / rows;
-                    rays.push_back(
-                        camera_ray(frame, static_cast<float>(x) + sx, static_cast<float>(y) + sy));
-                }
+            const Vec2 offset = subpixel_sample(s, spp);
+            for (int y = tile.y0; y < tile.y1; ++y)
+                for (int x = tile.x0; x < tile.x1; ++x)
+                    rays.push_back(camera_ray(frame, static_cast<float>(x) + offset.x,
+                                              static_cast<float>(y) + offset.y));
             const PathLevel& colours = wave.trace_camera_rays(rays.data(), rays.size());
             for (size_t k = 0; k < sums.size(); ++k) sums[k] += colours.colour_at(k);
         }
