@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "../io/scene_test_util.h"
 #include "../raster/raster_test_util.h"
 #include "hikari/core/color.h"
 #include "hikari/core/srgb8_encoder.h"
@@ -384,6 +385,44 @@ TEST(Methods, RasterSupersamplingMatchesTheRayTracersSamples) {
         EXPECT_EQ(smooth.id, aliased.id);
         EXPECT_EQ(smooth.depth, aliased.depth);
     }
+}
+
+// Issue 28: a floor under a camera 0.001 above it is drawn to the bottom row by every raster
+// method, with or without an unrelated far plane, at any field of view: the near plane comes
+// from the geometry in front of the eye, not from the far plane.
+TEST(Methods, LowCameraKeepsTheFloorInEveryRasterMethod) {
+    for (const bool far_wall : {false, true})
+        for (const float fov : {60.0f, 120.0f, 179.0f})
+            for (const bool sphere : {false, true}) {
+                SCOPED_TRACE(fmt::format("far wall {}, fov {}, sphere {}", far_wall, fov, sphere));
+                std::string objects =
+                    R"({"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "m"})";
+                if (far_wall)
+                    objects +=
+                        R"(, {"type": "plane", "point": [0, 0, -50], "normal": [0, 0, 1], "material": "m"})";
+                if (sphere)
+                    objects +=
+                        R"(, {"type": "sphere", "center": [1, 0.5, -4], "radius": 0.5, "material": "m"})";
+                const Scene scene = testing::parse(fmt::format(
+                    R"({{"camera": {{"eye": [0, 0.001, 0], "look_at": [0.2, 0.0005, -1], "fov_y": {},
+                          "width": 48, "height": 36}},
+                        "materials": {{"m": {{"kd": 0.5}}}}, "objects": [{}]}})",
+                    fov, objects));
+                const Framebuffer ray =
+                    render_scene(*find_method("raytrace"), scene, Film(scene.camera), {}, {});
+                for (const char* name : {"zbuffer", "scanline", "depthsort"}) {
+                    SCOPED_TRACE(name);
+                    MethodSettings own;
+                    own.shadows = ShadowMode::none;
+                    const Framebuffer raster =
+                        render_scene(*find_method(name), scene, Film(scene.camera), {}, own);
+                    EXPECT_GT(testing::id_agreement(raster, ray), 0.995);
+                    // The bottom row is all floor (primitive 0).
+                    const size_t last = raster.id.size() - scene.camera.width;
+                    for (int x = 0; x < scene.camera.width; ++x)
+                        ASSERT_EQ(raster.id[last + x], 1U) << "pixel " << x;
+                }
+            }
 }
 
 }  // namespace

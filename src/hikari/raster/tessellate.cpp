@@ -221,6 +221,12 @@ RasterScene tessellate_scene(const Scene& scene) {
         out.edge_flags.push_back(in.edge_flags.empty() ? k_all_edges : in.edge_flags[t]);
     }
     while (next < items.size()) emit(items[next++]);
+    rs.planes = scene.planes;
+    for (const Vec3& p : in.positions) rs.object_bounds.extend(p);
+    for (const Sphere& s : scene.spheres) {
+        rs.object_bounds.extend(s.center - Vec3(s.radius));
+        rs.object_bounds.extend(s.center + Vec3(s.radius));
+    }
     return rs;
 }
 

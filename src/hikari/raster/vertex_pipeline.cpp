@@ -20,6 +20,24 @@ float distance_to_box(Vec3 p, const Aabb& b) {
     return length(d);
 }
 
+/// The smallest view depth (distance along the view axis) of the points of `plane` that the
+/// view frustum of `frame` shows, or infinity where it shows none. Over the image, 1/depth of a
+/// plane is affine in the image coordinates (why perspective-correct interpolation works), so
+/// its largest value, the nearest point, is at a corner of the image: the corner ray
+/// eye + s·d meets the plane at s = −h / (n·d), h the eye's height above it.
+float nearest_visible_depth(const Plane& plane, const CameraFrame& frame) {
+    const float h = dot(plane.normal, frame.eye - plane.point);
+    if (h == 0.0f) return 0.0f;
+    float most = 0.0f;  // the largest 1/depth over the corners
+    for (const float x : {-1.0f, 1.0f})
+        for (const float y : {-1.0f, 1.0f}) {
+            const Vec3 d = frame.forward + (x * frame.tan_half_fov_y * frame.aspect) * frame.right +
+                           (y * frame.tan_half_fov_y) * frame.up;
+            most = std::max(most, -dot(plane.normal, d) / h);
+        }
+    return most > 0.0f ? 1.0f / most : k_infinity;
+}
+
 bool finite(Vec4 p) {
     return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
 }
@@ -75,8 +93,18 @@ RasterView make_raster_view(const Camera& camera, const RasterScene& scene, Vec2
     const float tan_half_y = std::tan(camera.fov_y_degrees * std::numbers::pi_v<float> / 360.0f);
     const float cos_half_diag =
         1.0f / std::sqrt(1.0f + tan_half_y * tan_half_y * (1 + aspect * aspect));
-    const float nearest = bounds.empty() ? 0.0f : distance_to_box(camera.eye, bounds);
-    v.near_plane = std::max(0.9f * nearest * cos_half_diag, 1e-6f * v.far_plane);
+    // Near: just in front of the nearest geometry the view can show. For meshes and spheres the
+    // nearest point of their bounds (at least d cos(half diagonal) deep); for an infinite plane
+    // its exact nearest visible depth. Planes are tessellated out to 10⁴ times the scene, so
+    // a near plane derived from the far one would cut the floor under a low camera away.
+    float nearest = scene.object_bounds.empty()
+                        ? k_infinity
+                        : distance_to_box(camera.eye, scene.object_bounds) * cos_half_diag;
+    const CameraFrame frame = make_camera_frame(camera);
+    for (const Plane& plane : scene.planes)
+        nearest = std::min(nearest, nearest_visible_depth(plane, frame));
+    // Nothing in front, or the eye on a surface: a sliver of the far distance.
+    v.near_plane = std::isfinite(nearest) && nearest > 0.0f ? 0.9f * nearest : 1e-6f * v.far_plane;
     v.view_from_world = view_matrix(camera);
     v.clip_from_view = perspective(camera.fov_y_degrees, aspect, v.near_plane, v.far_plane);
     // Sampling at centre + offset is the image moved by −offset under fixed pixel centres.
