@@ -60,10 +60,17 @@ EmitterTable::EmitterTable(const Scene& scene) : m_scene(scene) {
         m_cdf.push_back(total);
         return static_cast<int32_t>(m_entries.size() - 1);
     };
+    // An emitter with no surface (a light at a point or at infinity).
+    const auto only = [](EmitterKind kind, uint32_t index) {
+        Entry e;
+        e.kind = kind;
+        e.index = index;
+        return e;
+    };
     // A parallelogram or triangle spanned by two edges from a corner.
-    const auto surface = [](EmitterKind kind, uint32_t index, Vec3 corner, Vec3 edge1, Vec3 edge2,
-                            Vec3 radiance, bool two_sided) {
-        Entry e{kind, index};
+    const auto surface = [&only](EmitterKind kind, uint32_t index, Vec3 corner, Vec3 edge1,
+                                 Vec3 edge2, Vec3 radiance, bool two_sided) {
+        Entry e = only(kind, index);
         e.corner = corner, e.edge1 = edge1, e.edge2 = edge2;
         const Vec3 n = cross(edge1, edge2);
         const float len = length(n);
@@ -96,13 +103,13 @@ EmitterTable::EmitterTable(const Scene& scene) : m_scene(scene) {
                 add(e, (area->two_sided ? 2.0 : 1.0) * k_pi * luminance(area->radiance) * e.area);
         } else if (const auto* env = std::get_if<EnvironmentLight>(&light)) {
             m_light_entry[l] = m_environment_entry =
-                add({EmitterKind::environment, l},
+                add(only(EmitterKind::environment, l),
                     k_pi * k_pi * radius * radius * mean_luminance(*env));
         } else if (const auto* point = std::get_if<PointLight>(&light)) {
             m_light_entry[l] =
-                add({EmitterKind::point, l}, 4.0 * k_pi * luminance(point->intensity));
+                add(only(EmitterKind::point, l), 4.0 * k_pi * luminance(point->intensity));
         } else if (const auto* sun = std::get_if<DirectionalLight>(&light)) {
-            m_light_entry[l] = add({EmitterKind::directional, l},
+            m_light_entry[l] = add(only(EmitterKind::directional, l),
                                    k_pi * radius * radius * luminance(sun->intensity));
         }
     }
