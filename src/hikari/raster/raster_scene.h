@@ -2,9 +2,9 @@
 // The scene as the rasterizer sees it: nothing but triangles. Spheres and planes are tessellated
 // (raster/tessellate.h), meshes keep their own triangles.
 
+#include <limits>
 #include <vector>
 
-#include "hikari/core/aabb.h"
 #include "hikari/scene/scene.h"
 
 namespace hikari {
@@ -18,8 +18,10 @@ struct RasterScene {
     /// The infinite planes tessellated into `triangles`, as the scene gave them: the view setup
     /// finds the nearest of their visible points exactly (make_raster_view).
     std::vector<Plane> planes;
-    /// The bounds of every triangle but the planes' (meshes and tessellated spheres).
-    Aabb object_bounds;
+    /// The distance from the eye to the nearest mesh triangle or sphere that the view could
+    /// show (tessellate_scene: triangles wholly behind the eye, or edge-on with the eye in their
+    /// plane, are left out); infinity for none.
+    float nearest_object = std::numeric_limits<float>::infinity();
 };
 
 }  // namespace hikari

@@ -179,6 +179,31 @@ float plane_half_extent(const Scene& scene) {
     return 1e4f * std::max(size, 1e-3f);
 }
 
+float nearest_object(const Scene& scene) {
+    const Vec3 eye = scene.camera.eye;
+    const Vec3 forward = normalize(scene.camera.look_at - eye);
+    float nearest = k_infinity;
+    for (const Sphere& s : scene.spheres)
+        nearest = std::min(nearest, std::max(0.0f, length(s.center - eye) - s.radius));
+    const TriangleSet& tris = scene.triangles;
+    for (size_t t = 0; t < tris.size(); ++t) {
+        const Vec3 a = tris.positions[tris.indices[t][0]], b = tris.positions[tris.indices[t][1]],
+                   c = tris.positions[tris.indices[t][2]];
+        // Wholly behind the eye: never in view.
+        if (dot(a - eye, forward) <= 0.0f && dot(b - eye, forward) <= 0.0f &&
+            dot(c - eye, forward) <= 0.0f)
+            continue;
+        // The eye in the triangle's plane: seen edge-on, a line of no area.
+        const Vec3 n = cross(b - a, c - a);
+        const float size = std::max({length(b - a), length(c - a), length(c - b)});
+        if (std::abs(dot(n, eye - a)) <= 1e-6f * length(n) * size) continue;
+        // The distance to its bounds: no farther than to the triangle itself.
+        const Vec3 lo = min(min(a, b), c), hi = max(max(a, b), c);
+        nearest = std::min(nearest, length(max(max(lo - eye, eye - hi), Vec3(0.0f))));
+    }
+    return nearest;
+}
+
 RasterScene tessellate_scene(const Scene& scene) {
     RasterScene rs;
     TriangleSet& out = rs.triangles;
@@ -222,11 +247,7 @@ RasterScene tessellate_scene(const Scene& scene) {
     }
     while (next < items.size()) emit(items[next++]);
     rs.planes = scene.planes;
-    for (const Vec3& p : in.positions) rs.object_bounds.extend(p);
-    for (const Sphere& s : scene.spheres) {
-        rs.object_bounds.extend(s.center - Vec3(s.radius));
-        rs.object_bounds.extend(s.center + Vec3(s.radius));
-    }
+    rs.nearest_object = nearest_object(scene);
     return rs;
 }
 

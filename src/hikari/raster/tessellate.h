@@ -29,4 +29,10 @@ float plane_half_extent(const Scene& scene);
 /// sphere's projected size through `scene.camera`.
 RasterScene tessellate_scene(const Scene& scene);
 
+/// The distance from the camera's eye to the nearest sphere or mesh triangle it could see
+/// (RasterScene::nearest_object): triangles wholly behind the eye, and triangles edge-on with
+/// the eye in their plane, are left out; a triangle counts by its bounding box (never farther
+/// than the triangle). Infinity when there is none.
+float nearest_object(const Scene& scene);
+
 }  // namespace hikari

@@ -14,12 +14,6 @@ namespace hikari {
 
 namespace {
 
-/// Distance from `p` to the box `b` (0 inside).
-float distance_to_box(Vec3 p, const Aabb& b) {
-    const Vec3 d = max(max(b.min - p, p - b.max), Vec3(0.0f));
-    return length(d);
-}
-
 /// The smallest view depth (distance along the view axis) of the points of `plane` that the
 /// view frustum of `frame` shows, or infinity where it shows none. Over the image, 1/depth of a
 /// plane is affine in the image coordinates (why perspective-correct interpolation works), so
@@ -94,12 +88,10 @@ RasterView make_raster_view(const Camera& camera, const RasterScene& scene, Vec2
     const float cos_half_diag =
         1.0f / std::sqrt(1.0f + tan_half_y * tan_half_y * (1 + aspect * aspect));
     // Near: just in front of the nearest geometry the view can show. For meshes and spheres the
-    // nearest point of their bounds (at least d cos(half diagonal) deep); for an infinite plane
-    // its exact nearest visible depth. Planes are tessellated out to 10⁴ times the scene, so
-    // a near plane derived from the far one would cut the floor under a low camera away.
-    float nearest = scene.object_bounds.empty()
-                        ? k_infinity
-                        : distance_to_box(camera.eye, scene.object_bounds) * cos_half_diag;
+    // distance d to the nearest one (a point at d is at least d cos(half diagonal) deep); for an
+    // infinite plane its exact nearest visible depth. Planes are tessellated out to 10⁴ times the
+    // scene, so a near plane derived from the far one would cut the floor under a low camera away.
+    float nearest = scene.nearest_object * cos_half_diag;
     const CameraFrame frame = make_camera_frame(camera);
     for (const Plane& plane : scene.planes)
         nearest = std::min(nearest, nearest_visible_depth(plane, frame));
