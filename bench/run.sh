@@ -19,7 +19,7 @@ LOG=${LOG:-$OUT/logs/$(date +%Y%m%d-%H%M%S)}
 has() { [[ " $ONLY " == *" $1 "* ]]; }
 
 cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null || exit 1
-cmake --build "$BUILD" --target hikari_cli hikari_psnr > /dev/null || exit 1
+cmake --build "$BUILD" --target hikari_cli > /dev/null || exit 1
 HIKARI=$BUILD/hikari
 mkdir -p "$OUT/data" "$OUT/out" "$LOG"
 BUNNY=$ROOT/scenes/models/stanford-bunny.obj
@@ -71,6 +71,6 @@ for r in $(seq "$RUNS"); do
   fi
 done
 if has B3 && [ -s "$OUT/out/whitted_pov.png" ]; then
-  echo "B3 PSNR hikari vs POV-Ray (dB): $("$BUILD/bench/hikari_psnr" "$OUT/out/whitted_hikari.png" "$OUT/out/whitted_pov.png")" > "$LOG/psnr.txt"
+  echo "B3 PSNR hikari vs POV-Ray (dB): $("$HIKARI" compare --psnr "$OUT/out/whitted_hikari.png" "$OUT/out/whitted_pov.png")" > "$LOG/psnr.txt"
 fi
 python3 "$ROOT/bench/aggregate.py" "$LOG" | tee "$LOG/table.md"

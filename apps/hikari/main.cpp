@@ -1,5 +1,5 @@
 // The hikari command line: `hikari render [SCENE] [options]`, `hikari bench B1|B2 --mesh FILE`,
-// `hikari bench B5`, `hikari gallery`.
+// `hikari bench B5`, `hikari gallery`, `hikari compare A B`.
 
 #include <unistd.h>
 
@@ -8,6 +8,7 @@
 #endif
 
 #include <atomic>
+#include <cctype>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -29,8 +30,10 @@
 #include "hikari/bench/bench_runner.h"
 #include "hikari/bench/path_bench.h"
 #include "hikari/core/error.h"
+#include "hikari/frame/image_compare.h"
 #include "hikari/io/atomic_file.h"
 #include "hikari/io/image_format.h"
+#include "hikari/io/image_read.h"
 #include "hikari/io/image_write.h"
 #include "hikari/io/scene_json.h"
 #include "hikari/io/svg_write.h"
@@ -644,6 +647,72 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& b) {
     return bench;
 }
 
+/// `hikari compare` and its options.
+struct CompareOptions {
+    std::string a, b;
+    std::string output;  // the false-colour difference image; empty: none
+    float tolerance = 0.0f;
+    bool psnr_only = false;
+};
+
+/// Whether `path` is a format that stores 8-bit sRGB values.
+bool is_eight_bit_image(const std::filesystem::path& path) {
+    const std::optional<ImageFormat> format = image_format_from_extension(path);
+    std::string ext = path.extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return format == ImageFormat::Png || format == ImageFormat::Ppm || ext == ".jpg" ||
+           ext == ".jpeg";
+}
+
+/// `hikari compare A B`: PSNR, the largest difference and the differing pixels of two images,
+/// and a false-colour picture of where they differ.
+int run_compare(const CompareOptions& o) {
+    if (!o.output.empty()) check_output_path(o.output, "");
+    const Image a = read_image(o.a), b = read_image(o.b);
+    if (a.width != b.width || a.height != b.height)
+        throw InputError(fmt::format("{} is {}x{} but {} is {}x{}: only images of one size compare",
+                                     o.a, a.width, a.height, o.b, b.width, b.height));
+    const ImageDifference d =
+        compare_images(a, b, is_eight_bit_image(o.a) && is_eight_bit_image(o.b), o.tolerance);
+    if (o.psnr_only) {
+        fmt::print("{:.3f}\n", d.psnr_db);
+    } else {
+        fmt::print("PSNR {:.3f} dB (sRGB values, RGB channels)\n", d.psnr_db);
+        fmt::print("max difference {:.4f} ({:.1f}/255) at pixel ({}, {})\n", d.max_difference,
+                   255.0 * d.max_difference, d.max_x, d.max_y);
+        fmt::print("differing pixels {} of {} ({:.2f} %)\n", d.differing, d.pixels,
+                   100.0 * static_cast<double>(d.differing) / static_cast<double>(d.pixels));
+    }
+    if (!o.output.empty()) {
+        write_image(o.output, difference_image(a, b, d.max_difference));
+        if (!o.psnr_only)
+            fmt::print(
+                "wrote {}: black where equal, blue, red, yellow up to the largest "
+                "difference\n",
+                o.output);
+    }
+    return 0;
+}
+
+/// `hikari compare` and its options.
+CLI::App* add_compare_command(CLI::App& app, CompareOptions& c) {
+    CLI::App* compare = app.add_subcommand(
+        "compare",
+        "Compare two images (any format hikari reads): PSNR, largest difference, differing "
+        "pixels, and a false-colour difference image.");
+    compare->add_option("a", c.a, "First image")->required();
+    compare->add_option("b", c.b, "Second image")->required();
+    compare->add_option("-o,--output", c.output,
+                        "Write where they differ as a false-colour image (black: equal)");
+    compare
+        ->add_option("--tolerance", c.tolerance,
+                     "Pixels differ where a channel's linear values differ by more than this")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
+    compare->add_flag("--psnr", c.psnr_only, "Print the PSNR alone (for scripts)");
+    return compare;
+}
+
 /// `hikari gallery` and its options.
 CLI::App* add_gallery_command(CLI::App& app, GalleryOptions& g) {
     CLI::App* gallery = app.add_subcommand(
@@ -697,12 +766,13 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, cons
 /// Runs the parsed subcommand; an error becomes one line on stderr and an exit status.
 int run_command(const CLI::App& render, const RenderOptions& o, const CLI::App& bench,
                 const BenchOptions& b, const CLI::App& gallery, const GalleryOptions& g,
-                const std::string& program) {
+                const CLI::App& compare, const CompareOptions& c, const std::string& program) {
     try {
         // The method name was checked by the parser.
         if (render.parsed()) exit_after_render(run_render(o, *find_method(o.method)));
         if (bench.parsed()) return run_bench_command(b);
         if (gallery.parsed()) return run_gallery(g, program);
+        if (compare.parsed()) return run_compare(c);
     } catch (const Interrupted&) {
         fmt::print(stderr, "\nhikari: interrupted; no image written\n");
         return k_exit_interrupted;
@@ -734,9 +804,11 @@ int main(int argc, char** argv) {
     const CLI::App* bench = add_bench_command(app, b);
     GalleryOptions g;
     const CLI::App* gallery = add_gallery_command(app, g);
+    CompareOptions c;
+    const CLI::App* compare = add_compare_command(app, c);
     if (const std::optional<int> status =
             parse_command_line(app, argc, argv, *render, o, *bench, b))
         return *status;
     install_signal_handlers();
-    return run_command(*render, o, *bench, b, *gallery, g, own_program(argv[0]));
+    return run_command(*render, o, *bench, b, *gallery, g, *compare, c, own_program(argv[0]));
 }

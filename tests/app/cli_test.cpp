@@ -545,5 +545,23 @@ TEST_F(Cli, BenchB5RendersTheCornellBoxAsJson) {
     EXPECT_EQ(run("bench B5 --mesh " + path("lamp.json")).status, 1);
 }
 
+TEST_F(Cli, CompareReportsPsnrAndWritesADifferenceImage) {
+    ASSERT_EQ(run("render --width 48 -o " + path("ray.png")).status, 0);
+    ASSERT_EQ(run("render -m zbuffer --width 48 -o " + path("z.png")).status, 0);
+    const Result r =
+        run("compare " + path("ray.png") + " " + path("z.png") + " -o " + path("diff.png"));
+    EXPECT_EQ(r.status, 0) << r.output;
+    for (const char* key : {"PSNR ", " dB", "max difference ", "differing pixels "})
+        EXPECT_NE(r.output.find(key), std::string::npos) << key << " in " << r.output;
+    EXPECT_TRUE(fs::exists(path("diff.png")));
+    const Result same = run("compare --psnr " + path("ray.png") + " " + path("ray.png"));
+    EXPECT_EQ(same.output, "inf\n");
+    // Different sizes, a missing file: input errors.
+    ASSERT_EQ(run("render --width 32 -o " + path("small.png")).status, 0);
+    EXPECT_EQ(run("compare " + path("ray.png") + " " + path("small.png")).status, 1);
+    EXPECT_EQ(run("compare " + path("ray.png") + " " + path("none.png")).status, 1);
+    EXPECT_EQ(run("compare " + path("ray.png")).status, 2);
+}
+
 }  // namespace
 }  // namespace hikari

@@ -17,8 +17,9 @@ inline Vec2 subpixel_sample(int s, int n) {
     strata(n, cols, rows);
     Pcg32 stream(static_cast<uint64_t>(s), 0x68696b617269ULL);
     const float jitter_x = stream.next_float(), jitter_y = stream.next_float();
-    return {(static_cast<float>(s % cols) + jitter_x) / static_cast<float>(cols),
-            (static_cast<float>(s / cols) + jitter_y) / static_cast<float>(rows)};
+    const int column = s % cols, row = s / cols;
+    return {(static_cast<float>(column) + jitter_x) / static_cast<float>(cols),
+            (static_cast<float>(row) + jitter_y) / static_cast<float>(rows)};
 }
 
 }  // namespace hikari
