@@ -158,11 +158,14 @@ double default_memory_limit() {
     return pages > 0 && page > 0 ? 0.5 * static_cast<double>(pages) * page : 4.0 * (1 << 30);
 }
 
+/// `<scene>.png` for the default method, `<scene>-<method>.png` for the others (so rendering a
+/// scene by several methods keeps every picture), `-<aov>` added for a buffer other than colour.
 std::string default_output(const RenderOptions& o) {
     const std::string stem =
         o.scene_file.empty() ? "assignment" : std::filesystem::path(o.scene_file).stem().string();
+    const std::string method = o.method == methods().front().name ? "" : "-" + o.method;
     const std::string_view aov = choice_name<Aov>(k_aov_choices, o.aov);
-    return stem + (o.aov == Aov::color ? "" : "-" + std::string(aov)) + ".png";
+    return stem + method + (o.aov == Aov::color ? "" : "-" + std::string(aov)) + ".png";
 }
 
 /// Refuses, before any work is done, an output the render could not be written to, or that is
@@ -570,8 +573,8 @@ void add_render_inputs(CLI::App& render, RenderOptions& o) {
     render.add_option("-o,--output", o.output,
                       "Output image: .png (8-bit sRGB), .ppm, .pfm or .exr (linear float), "
                       ".xlsx (a spreadsheet whose cells are the pixels), or .svg (the segments "
-                      "of wireframe and hiddenline); default: <scene name>.png in the current "
-                      "directory");
+                      "of wireframe and hiddenline); default: <scene name>.png (raytrace) or "
+                      "<scene name>-<method>.png in the current directory");
     std::vector<std::string> names;
     for (const Method& m : methods()) names.emplace_back(m.name);
     render.add_option("-m,--method", o.method, "Rendering method")

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -561,6 +562,18 @@ TEST_F(Cli, CompareReportsPsnrAndWritesADifferenceImage) {
     EXPECT_EQ(run("compare " + path("ray.png") + " " + path("small.png")).status, 1);
     EXPECT_EQ(run("compare " + path("ray.png") + " " + path("none.png")).status, 1);
     EXPECT_EQ(run("compare " + path("ray.png")).status, 2);
+}
+
+TEST_F(Cli, DefaultOutputNamesKeepEveryMethodsPicture) {
+    // Run in the test's directory, without -o: each method writes its own file.
+    for (const char* method : {"raytrace", "zbuffer", "path"}) {
+        const std::string command = "cd " + m_dir.string() + " && " + HIKARI_CLI_PATH +
+                                    " render -q --width 16 --spp 1 -m " + method;
+        EXPECT_EQ(std::system(command.c_str()), 0) << command;
+    }
+    EXPECT_TRUE(fs::exists(path("assignment.png")));
+    EXPECT_TRUE(fs::exists(path("assignment-zbuffer.png")));
+    EXPECT_TRUE(fs::exists(path("assignment-path.png")));
 }
 
 }  // namespace
