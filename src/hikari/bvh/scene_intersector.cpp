@@ -132,4 +132,13 @@ bool SceneIntersector::occluded_by_spheres_and_planes(const Ray& ray, Interval r
     return false;
 }
 
+void report_bvh_stats(const SceneIntersector& intersector, RenderStats* stats) {
+    if (!stats) return;
+    const WideBvh& bvh = intersector.bvh();
+    stats->bvh_triangles = bvh.triangle_count();
+    stats->bvh_nodes = bvh.nodes.size();
+    stats->bvh_bytes = bvh.memory_bytes();
+    stats->bvh_build_us = static_cast<uint64_t>(intersector.build_ms() * 1000.0);
+}
+
 }  // namespace hikari

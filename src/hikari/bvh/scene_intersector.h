@@ -7,6 +7,7 @@
 #include "hikari/bvh/wide_bvh.h"
 #include "hikari/bvh/wide_bvh_packet.h"
 #include "hikari/core/ray.h"
+#include "hikari/frame/render_settings.h"
 #include "hikari/geometry/surface_uv.h"
 #include "hikari/scene/scene.h"
 
@@ -71,5 +72,8 @@ class SceneIntersector {
     bool m_all_cast = true;  ///< every triangle casts: shadow rays use m_bvh
     double m_build_ms = 0;
 };
+
+/// The BVH's figures of `intersector` for `--stats` (nothing when `stats` is null).
+void report_bvh_stats(const SceneIntersector& intersector, RenderStats* stats);
 
 }  // namespace hikari

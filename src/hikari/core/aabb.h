@@ -29,6 +29,10 @@ struct Aabb {
     constexpr bool empty() const { return max.x < min.x || max.y < min.y || max.z < min.z; }
     /// max - min; negative components for an empty box.
     constexpr Vec3 extent() const { return max - min; }
+    /// The distance from `p` to the nearest point of the box (0 inside).
+    float distance_to(Vec3 p) const {
+        return length(hikari::max(hikari::max(min - p, p - max), Vec3(0.0f)));
+    }
     /// The centre point; meaningless for an empty box.
     constexpr Vec3 center() const { return (min + max) * 0.5f; }
     /// Half the surface area (the SAH only needs ratios of areas); 0 for an empty box.

@@ -198,8 +198,8 @@ float nearest_object(const Scene& scene) {
         const float size = std::max({length(b - a), length(c - a), length(c - b)});
         if (std::abs(dot(n, eye - a)) <= 1e-6f * length(n) * size) continue;
         // The distance to its bounds: no farther than to the triangle itself.
-        const Vec3 lo = min(min(a, b), c), hi = max(max(a, b), c);
-        nearest = std::min(nearest, length(max(max(lo - eye, eye - hi), Vec3(0.0f))));
+        const Aabb box{min(min(a, b), c), max(max(a, b), c)};
+        nearest = std::min(nearest, box.distance_to(eye));
     }
     return nearest;
 }

@@ -7,6 +7,7 @@
 // an area light (what a shadow map sees); area and environment lights are integrated over many
 // samples by shading/light_integral.h.
 
+#include <algorithm>
 #include <limits>
 #include <optional>
 #include <span>
@@ -66,6 +67,12 @@ inline std::optional<Vec3> light_face_seen(std::span<const Light> lights, Vec3 o
     const std::optional<LightFaceHit> hit = nearest_light_face(lights, origin, direction, t_max);
     if (!hit) return std::nullopt;
     return std::get<AreaLight>(lights[hit->light]).radiance;
+}
+
+/// Whether some light among `lights` is an area light (whose face rays can meet).
+inline bool has_area_light(std::span<const Light> lights) {
+    return std::any_of(lights.begin(), lights.end(),
+                       [](const Light& l) { return std::holds_alternative<AreaLight>(l); });
 }
 
 /// The scene's environment light among `lights`, or null (a scene has at most one).

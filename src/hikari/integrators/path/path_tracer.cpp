@@ -52,9 +52,7 @@ class PathIntegrator {
           m_intersector(scene),
           m_emitters(scene),
           m_environment(find_environment(scene.lights)),
-          m_has_area_lights(
-              std::any_of(scene.lights.begin(), scene.lights.end(),
-                          [](const Light& l) { return std::holds_alternative<AreaLight>(l); })) {
+          m_has_area_lights(has_area_light(scene.lights)) {
         m_scale.reserve(scene.materials.size());
         for (const Material& m : scene.materials) m_scale.push_back(energy_scale(m));
     }
@@ -302,14 +300,7 @@ Framebuffer render_path(const Scene& scene, Film film, const RenderSettings& set
     const Camera& cam = scene.camera;
     Framebuffer fb(std::move(film), cam.width, cam.height, settings.aov_buffers);
     PathRender render(scene, settings, path);
-    if (settings.stats) {
-        const WideBvh& bvh = render.intersector().bvh();
-        settings.stats->bvh_triangles = bvh.triangle_count();
-        settings.stats->bvh_nodes = bvh.nodes.size();
-        settings.stats->bvh_bytes = bvh.memory_bytes();
-        settings.stats->bvh_build_us =
-            static_cast<uint64_t>(render.intersector().build_ms() * 1000.0);
-    }
+    report_bvh_stats(render.intersector(), settings.stats);
     if (settings.aov_buffers) render.store_aovs(fb);
 
     const int target = std::max(1, path.samples_per_pixel);

@@ -31,8 +31,7 @@ struct Emitters {
 
     explicit Emitters(const Scene& scene)
         : lights(scene.lights),
-          areas(std::any_of(scene.lights.begin(), scene.lights.end(),
-                            [](const Light& l) { return std::holds_alternative<AreaLight>(l); })),
+          areas(has_area_light(scene.lights)),
           environment(find_environment(scene.lights)) {}
     bool any() const { return areas || environment; }
 };
@@ -533,16 +532,6 @@ bool has_texture(const Scene& scene) {
                        [](const Material& m) { return m.texture.has_value(); });
 }
 
-/// The BVH's figures for `--stats`.
-void report_bvh(const SceneIntersector& intersector, RenderStats* stats) {
-    if (!stats) return;
-    const WideBvh& bvh = intersector.bvh();
-    stats->bvh_triangles = bvh.triangle_count();
-    stats->bvh_nodes = bvh.nodes.size();
-    stats->bvh_bytes = bvh.memory_bytes();
-    stats->bvh_build_us = static_cast<uint64_t>(intersector.build_ms() * 1000.0);
-}
-
 }  // namespace
 
 Framebuffer render_whitted(const Scene& scene, Film film, const RenderSettings& settings,
@@ -563,7 +552,7 @@ Framebuffer render_whitted(const Scene& scene, Film film, const RenderSettings& 
     // first touched by the tiles, in parallel.
     Framebuffer fb(std::move(film), cam.width, cam.height, settings.aov_buffers);
     const WhittedRender render(scene, settings, whitted, fb);
-    report_bvh(render.intersector, settings.stats);
+    report_bvh_stats(render.intersector, settings.stats);
     static_assert(k_tile_size <= k_primary_block);
 
     for_each_tile(cam.width, cam.height, settings.control, [&](const Tile& tile) {
