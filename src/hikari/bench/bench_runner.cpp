@@ -49,13 +49,6 @@ void parallel_chunks(int threads, size_t n, size_t chunk, const Work& work) {
     for (auto& t : pool) t.join();
 }
 
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 /// Builds the wide BVH on `threads` threads: one warm-up build, then `reps` timed ones.
 WideBvh timed_builds(const BenchMesh& mesh, int threads, int reps, std::vector<double>& ms) {
     // TBB's default pool has one thread per core: more threads than cores must be allowed

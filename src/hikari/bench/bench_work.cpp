@@ -115,4 +115,11 @@ BenchRays make_b2_rays(const BenchMesh& mesh, const BenchRays& b1, const std::ve
     return out;
 }
 
+double median(std::vector<double> values) {
+    if (values.empty()) return 0;
+    std::sort(values.begin(), values.end());
+    const size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
 }  // namespace hikari

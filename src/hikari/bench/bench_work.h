@@ -1,7 +1,8 @@
 #pragma once
 // The work of the peer benchmarks B1 and B2 (../bench/SPEC.md §1-4), exactly: the mesh as the
 // peers load it, the B1 camera rays and the B2 occlusion rays. Pure functions, no timing, so
-// tests can check them against brute force; `bench_runner.h` times them.
+// tests can check them against brute force; `bench_runner.h` times them. Also the median every
+// benchmark (B5 too) reports.
 
 #include <array>
 #include <cstdint>
@@ -43,5 +44,9 @@ BenchRays make_b1_rays(const BenchMesh& mesh, int width, int height);
 /// the B1 distance of pixel i (+inf for a miss), `hit_triangle[i]` the triangle hit.
 BenchRays make_b2_rays(const BenchMesh& mesh, const BenchRays& b1, const std::vector<float>& hit_t,
                        const std::vector<uint32_t>& hit_triangle);
+
+/// The median of `values` (the mean of the middle two for an even count; 0 for none): the
+/// figure every benchmark reports.
+double median(std::vector<double> values);
 
 }  // namespace hikari

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "hikari/bench/bench_work.h"
 #include "hikari/methods/registry.h"
 
 namespace hikari {
@@ -25,12 +26,6 @@ Framebuffer render_once(const Scene& scene, int spp, int depth, double& ms) {
     ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return fb;
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const size_t n = values.size();
-    return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 }  // namespace
