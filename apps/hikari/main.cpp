@@ -29,6 +29,7 @@
 #include "hikari/bench/bench_runner.h"
 #include "hikari/bench/path_bench.h"
 #include "hikari/core/error.h"
+#include "hikari/frame/aov_picture.h"
 #include "hikari/frame/image_compare.h"
 #include "hikari/io/atomic_file.h"
 #include "hikari/io/image_format.h"
@@ -38,6 +39,7 @@
 #include "hikari/io/svg_write.h"
 #include "hikari/io/xlsx_write.h"
 #include "hikari/methods/registry.h"
+#include "hikari/shading/shading_terms.h"
 #include "hikari/version.h"
 
 namespace {
@@ -52,24 +54,36 @@ constexpr int k_exit_interrupted = 130;
 
 /// `--aov`'s words.
 constexpr Choice<Aov> k_aov_choices[] = {
-    {"color", Aov::color}, {"depth", Aov::depth}, {"id", Aov::id}, {"normal", Aov::normal}};
+    {"color", Aov::color},      {"depth", Aov::depth},     {"id", Aov::id},
+    {"normal", Aov::normal},    {"ambient", Aov::ambient}, {"diffuse", Aov::diffuse},
+    {"specular", Aov::specular}};
+
+/// The shading term an --aov word names, if it names one.
+std::optional<ShadingTerm> shading_term_of(Aov aov) {
+    if (aov == Aov::ambient) return ShadingTerm::ambient;
+    if (aov == Aov::diffuse) return ShadingTerm::diffuse;
+    if (aov == Aov::specular) return ShadingTerm::specular;
+    return std::nullopt;
+}
 
 struct RenderOptions {
     std::string scene_file;  // empty: the built-in assignment scene
     std::string output;
-    std::string method = "raytrace";
+    std::vector<std::string> methods{"raytrace"};  // -m a,b,c: each in turn, one scene load
     Aov aov = Aov::color;
     int width = 0, height = 0;
     int threads = 0;
     double max_memory_gib = 0;
     bool quiet = false;
     bool stats = false;
-    std::vector<float> depth_cue;  // --depth-cue NEAR,FAR; empty: the scene's own, if any
-    MethodSettings own;            // every method option; the chosen method reads its part
+    std::vector<float> depth_cue;          // --depth-cue NEAR,FAR; empty: the scene's own, if any
+    std::vector<float> depth_range;        // --depth-range NEAR,FAR; empty: the visible range
+    std::vector<SceneOverride> overrides;  // --set PATH=VALUE, in order
+    MethodSettings own;                    // every method option; the chosen method reads its part
+    std::vector<std::string> notes;        // warnings found while checking the command line
 };
 
 RenderControl g_control;
-RenderStats g_stats;
 // Lock-free atomics are safe to touch from a signal handler.
 std::atomic<int> g_signal_count{0};
 std::atomic<bool> g_writing{false};
@@ -157,14 +171,25 @@ double default_memory_limit() {
     return pages > 0 && page > 0 ? 0.5 * static_cast<double>(pages) * page : 4.0 * (1 << 30);
 }
 
-/// `<scene>.png` for the default method, `<scene>-<method>.png` for the others (so rendering a
-/// scene by several methods keeps every picture), `-<aov>` added for a buffer other than colour.
-std::string default_output(const RenderOptions& o) {
+/// The output of `method`: `-o` as given for one method; for several, `-o NAME.EXT` becomes
+/// NAME-<method>.EXT. Without -o, `<scene>.png` for the default method alone, else
+/// `<scene>-<method>.png` (so rendering a scene by several methods keeps every picture), with
+/// `-<aov>` added for a buffer other than colour.
+std::string output_for(const RenderOptions& o, std::string_view method) {
+    const bool several = o.methods.size() > 1;
+    if (!o.output.empty()) {
+        if (!several) return o.output;
+        const std::filesystem::path out(o.output);
+        return (out.parent_path() /
+                (out.stem().string() + "-" + std::string(method) + out.extension().string()))
+            .string();
+    }
     const std::string stem =
         o.scene_file.empty() ? "assignment" : std::filesystem::path(o.scene_file).stem().string();
-    const std::string method = o.method == methods().front().name ? "" : "-" + o.method;
+    const std::string suffix =
+        !several && method == methods().front().name ? "" : "-" + std::string(method);
     const std::string_view aov = choice_name<Aov>(k_aov_choices, o.aov);
-    return stem + method + (o.aov == Aov::color ? "" : "-" + std::string(aov)) + ".png";
+    return stem + suffix + (o.aov == Aov::color ? "" : "-" + std::string(aov)) + ".png";
 }
 
 /// Refuses, before any work is done, an output the render could not be written to, or that is
@@ -207,7 +232,7 @@ struct PhaseTimes {
 };
 
 /// `--stats`: phase times, rays per second and the BVH's figures, on stderr.
-void print_stats(const PhaseTimes& times) {
+void print_stats(const PhaseTimes& times, const RenderStats& g_stats) {
     const uint64_t rays = g_stats.rays_traced.load();
     fmt::print(stderr, "hikari: stats: load {:.1f} ms, render {:.1f} ms, write {:.1f} ms",
                1e3 * times.load, 1e3 * times.render, 1e3 * times.write);
@@ -230,10 +255,12 @@ void print_stats(const PhaseTimes& times) {
 /// The scene the options name, at the image size they ask for, within the memory limit.
 Scene load_render_scene(const RenderOptions& o) {
     std::vector<std::string> warnings;
-    Scene scene =
-        o.scene_file.empty() ? load_default_scene() : load_scene_file(o.scene_file, warnings);
+    Scene scene = o.scene_file.empty() ? load_default_scene(o.overrides)
+                                       : load_scene_file(o.scene_file, warnings, o.overrides);
     for (const std::string& w : warnings) fmt::print(stderr, "hikari: warning: {}\n", w);
     resize_camera(scene.camera, o.width, o.height);
+    if (const std::optional<ShadingTerm> term = shading_term_of(o.aov))
+        scene = isolate_shading_term(std::move(scene), *term);
     if (!o.depth_cue.empty()) {
         // --depth-cue overrides the scene's distances and keeps its colour and blur.
         DepthCue cue = scene.depth_cue.value_or(DepthCue{});
@@ -251,17 +278,24 @@ Scene load_render_scene(const RenderOptions& o) {
 Film output_film(const Camera& camera, const std::string& output, Aov aov) {
     const std::optional<ImageFormat> format = image_format_from_extension(output);
     const bool srgb8 =
-        aov == Aov::color &&
+        is_colour_aov(aov) &&
         (format == ImageFormat::Png || format == ImageFormat::Ppm || format == ImageFormat::Xlsx);
     return Film(camera, srgb8 ? FilmFormat::srgb8 : FilmFormat::linear);
 }
 
-/// Writes the buffer `aov` of a finished render to `output` (unless the render was interrupted).
-void write_output(const std::string& output, Framebuffer&& fb, Aov aov) {
+/// Writes the buffer `aov` of a finished render to `output` (unless the render was interrupted):
+/// an AOV buffer as a picture (frame/aov_picture.h) where the file holds 8-bit values, else as
+/// its values.
+void write_output(const std::string& output, Framebuffer&& fb, Aov aov,
+                  std::optional<DepthRange> depth_range) {
     g_writing = true;
     if (g_control.cancel.load()) throw Interrupted();
+    const std::optional<ImageFormat> format = image_format_from_extension(output);
+    const bool eight_bit = format != ImageFormat::Pfm && format != ImageFormat::Exr;
     if (fb.film.format() == FilmFormat::srgb8)
         write_image(output, fb.film.srgb8());
+    else if (!is_colour_aov(aov) && eight_bit)
+        write_image(output, aov_picture(fb, aov, depth_range));
     else
         write_image(output, aov_image(std::move(fb), aov));
     g_writing = false;
@@ -291,6 +325,16 @@ void check_svg_output(const std::string& output, const Method& method, Aov aov) 
                         output, choice_name<Aov>(k_aov_choices, aov)));
 }
 
+/// Refuses, before any work is done, a shading term of a method whose colour is not the
+/// lecture's sum of terms (path tracing, the line drawings).
+void check_aov_method(const Method& method, Aov aov) {
+    if (!shading_term_of(aov) || method.shading_terms) return;
+    throw CLI::ValidationError(
+        fmt::format("--aov {}: method {} does not shade by ambient + diffuse + specular (Fig "
+                    "4.29), so it has no such term (methods that do: {})",
+                    choice_name<Aov>(k_aov_choices, aov), method.name, shading_term_methods()));
+}
+
 /// The line method's drawing written as SVG (`-o drawing.svg`).
 int run_drawing(const RenderOptions& o, const Method& method, const std::string& output) {
     const Scene scene = load_render_scene(o);
@@ -311,14 +355,10 @@ int run_drawing(const RenderOptions& o, const Method& method, const std::string&
     return 0;
 }
 
-int run_render(const RenderOptions& o, const Method& method) {
-    const std::string output = o.output.empty() ? default_output(o) : o.output;
-    const auto load_start = Clock::now();
-    check_output_path(output, o.scene_file);
-    check_svg_output(output, method, o.aov);
-    if (is_svg_path(output)) return run_drawing(o, method, output);
-    const Scene scene = load_render_scene(o);
-    check_spreadsheet_size(output, scene.camera);
+/// One method's render of the loaded scene into `output`. `load_seconds`: the time spent loading,
+/// for --stats.
+void render_with(const RenderOptions& o, const Scene& scene, const Method& method,
+                 const std::string& output, double load_seconds) {
     if (method.warnings)
         for (const std::string& w : method.warnings(scene))
             fmt::print(stderr, "hikari: warning: {}\n", w);
@@ -328,9 +368,12 @@ int run_render(const RenderOptions& o, const Method& method) {
             write_progressive_snapshot(output, mean);
         };
     RenderSettings settings;
+    RenderStats stats;
+    g_control.work_done = 0;
+    g_control.work_total = 0;
     settings.control = &g_control;
-    settings.stats = &g_stats;
-    settings.aov_buffers = o.aov != Aov::color;
+    settings.stats = &stats;
+    settings.aov_buffers = !is_colour_aov(o.aov);
 
     std::optional<tbb::global_control> thread_limit;
     if (o.threads > 0)
@@ -338,7 +381,7 @@ int run_render(const RenderOptions& o, const Method& method) {
                              static_cast<size_t>(o.threads));
     const auto start = Clock::now();
     PhaseTimes times;
-    times.load = std::chrono::duration<double>(start - load_start).count();
+    times.load = load_seconds;
     Framebuffer fb;
     {
         ProgressReporter progress(!o.quiet);
@@ -347,17 +390,43 @@ int run_render(const RenderOptions& o, const Method& method) {
     const auto rendered = Clock::now();
     times.render = std::chrono::duration<double>(rendered - start).count();
     const int width = fb.width(), height = fb.height();
-    write_output(output, std::move(fb), o.aov);
+    write_output(output, std::move(fb), o.aov,
+                 o.depth_range.empty()
+                     ? std::nullopt
+                     : std::optional(DepthRange{o.depth_range[0], o.depth_range[1]}));
     times.write = std::chrono::duration<double>(Clock::now() - rendered).count();
     if (!o.quiet)
         fmt::print(stderr, "hikari: wrote {} ({}x{}, {}, {:.3f} s)\n", output, width, height,
                    method.name, times.render);
-    if (const uint64_t bad = g_stats.bad_samples.load(); bad > 0)
+    if (const uint64_t bad = stats.bad_samples.load(); bad > 0)
         fmt::print(stderr,
                    "hikari: warning: {} samples were NaN or infinite and were left out of the "
                    "image (their pixels average the other samples as if these were black)\n",
                    bad);
-    if (o.stats) print_stats(times);
+    if (o.stats) print_stats(times, stats);
+}
+
+/// `hikari render`: every method asked for, in turn, on one load of the scene. Every output is
+/// checked before any work is done.
+int run_render(const RenderOptions& o) {
+    const auto load_start = Clock::now();
+    std::vector<std::pair<const Method*, std::string>> runs;
+    for (const std::string& name : o.methods) {
+        const Method& method = *find_method(name);  // checked by the parser
+        const std::string output = output_for(o, name);
+        check_output_path(output, o.scene_file);
+        check_svg_output(output, method, o.aov);
+        runs.emplace_back(&method, output);
+    }
+    if (is_svg_path(runs.front().second)) {
+        for (const auto& [method, output] : runs) run_drawing(o, *method, output);
+        return 0;
+    }
+    for (const std::string& note : o.notes) fmt::print(stderr, "hikari: warning: {}\n", note);
+    const Scene scene = load_render_scene(o);
+    for (const auto& [method, output] : runs) check_spreadsheet_size(output, scene.camera);
+    const double load_seconds = std::chrono::duration<double>(Clock::now() - load_start).count();
+    for (const auto& [method, output] : runs) render_with(o, scene, *method, output, load_seconds);
     return 0;
 }
 
@@ -542,8 +611,21 @@ std::string method_list() {
     return text;
 }
 
+/// A usage error (CLI::ValidationError) when an option's value is one `method` cannot take (a
+/// shadow mode it cannot do, no camera ray).
+void check_method_values(const Method& method, const MethodSettings& own) {
+    if (method.name == "raytrace" && own.max_depth == 0)
+        throw CLI::ValidationError(
+            "--max-depth 0: raytrace needs at least 1 ray segment (the camera ray)");
+    if (own.shadows && takes_option(method, "--shadows") && !does_shadows(method, *own.shadows))
+        throw CLI::ValidationError(
+            fmt::format("--shadows {}: method {} cannot draw shadows that way (it can: {})",
+                        choice_name<std::optional<ShadowMode>>(k_shadow_choices, own.shadows),
+                        method.name, shadow_mode_list(method)));
+}
+
 /// A usage error (CLI::ValidationError) when the command line gives an option that `method`
-/// does not understand, or a shadow mode it cannot do.
+/// does not understand, or a value it cannot take.
 void check_method_options(const CLI::App& render, const Method& method, const MethodSettings& own) {
     for (const MethodOption* option : method_options()) {
         if (render.count(std::string(option->flag)) == 0 || takes_option(method, option->flag))
@@ -552,14 +634,37 @@ void check_method_options(const CLI::App& render, const Method& method, const Me
             "{} is not an option of method {} ({})", option->flag, method.name,
             method.options.empty() ? "it takes none" : "it understands: " + option_list(method)));
     }
-    if (method.name == "raytrace" && own.max_depth == 0)
-        throw CLI::ValidationError(
-            "--max-depth 0: raytrace needs at least 1 ray segment (the camera ray)");
-    if (own.shadows && !does_shadows(method, *own.shadows))
-        throw CLI::ValidationError(
-            fmt::format("--shadows {}: method {} cannot draw shadows that way (it can: {})",
-                        choice_name<std::optional<ShadowMode>>(k_shadow_choices, own.shadows),
-                        method.name, shadow_mode_list(method)));
+    check_method_values(method, own);
+}
+
+/// Usage errors of the methods asked for: an option or --aov that the one method cannot take;
+/// with several methods, an option none of them takes (the others are told it is not theirs)
+/// and the same method twice.
+void check_render_methods(const CLI::App& render, RenderOptions& o) {
+    for (const std::string& name : o.methods) {
+        if (std::count(o.methods.begin(), o.methods.end(), name) > 1)
+            throw CLI::ValidationError(fmt::format("-m: method {} is named twice", name));
+        check_aov_method(*find_method(name), o.aov);
+    }
+    if (o.methods.size() == 1) {
+        check_method_options(render, *find_method(o.methods.front()), o.own);
+        return;
+    }
+    for (const MethodOption* option : method_options()) {
+        if (render.count(std::string(option->flag)) == 0) continue;
+        std::vector<std::string_view> ignoring;
+        for (const std::string& name : o.methods)
+            if (!takes_option(*find_method(name), option->flag)) ignoring.push_back(name);
+        if (ignoring.size() == o.methods.size())
+            throw CLI::ValidationError(
+                fmt::format("{} is not an option of any method asked for "
+                            "(it is for: {})",
+                            option->flag, methods_taking(option->flag)));
+        if (!ignoring.empty())
+            o.notes.push_back(fmt::format("{} is not an option of {}, which render without it",
+                                          option->flag, fmt::join(ignoring, ", ")));
+    }
+    for (const std::string& name : o.methods) check_method_values(*find_method(name), o.own);
 }
 
 /// Scene, output and method: the first of the render options.
@@ -574,13 +679,20 @@ void add_render_inputs(CLI::App& render, RenderOptions& o) {
                       "<scene name>-<method>.png in the current directory");
     std::vector<std::string> names;
     for (const Method& m : methods()) names.emplace_back(m.name);
-    render.add_option("-m,--method", o.method, "Rendering method")
+    render
+        .add_option("-m,--method", o.methods,
+                    "Rendering method, or several separated by commas (-m zbuffer,scanline,"
+                    "raytrace: one scene load, one image per method, <scene>-<method>.png)")
+        ->delimiter(',')
         ->check(CLI::IsMember(names))
-        ->capture_default_str();
-    add_choice_option<Aov>(render, "--aov",
-                           "Buffer to write: color, depth (eye distance), id (1 + primitive "
-                           "index, 0 = background), normal",
-                           k_aov_choices, o.aov);
+        ->default_str("raytrace");
+    add_choice_option<Aov>(
+        render, "--aov",
+        "Buffer to write: color; depth (eye distance), id (1 + primitive index, 0 = background), "
+        "normal -- raw values in .pfm/.exr, pictures in 8-bit files (depth near white to far "
+        "black, ids in false colour, normals as 0.5 + 0.5n); ambient, diffuse, specular: one "
+        "term of the shading model alone (Fig 4.29; the three sum to color)",
+        k_aov_choices, o.aov);
 }
 
 /// `hikari render` and the options every method takes; the methods' own come after them.
@@ -607,6 +719,33 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
         ->expected(2)
         ->type_name("NEAR,FAR")
         ->check(CLI::NonNegativeNumber);
+    render
+        ->add_option("--depth-range", o.depth_range,
+                     "--aov depth in an 8-bit file: eye distance NEAR is white, FAR black "
+                     "(default: the nearest and farthest visible points), so that several "
+                     "images share one scale")
+        ->delimiter(',')
+        ->expected(2)
+        ->type_name("NEAR,FAR")
+        ->check(CLI::NonNegativeNumber);
+    render
+        ->add_option_function<std::vector<std::string>>(
+            "--set",
+            [&o](const std::vector<std::string>& args) {
+                for (const std::string& a : args) {
+                    try {
+                        o.overrides.push_back(parse_scene_override(a));
+                    } catch (const InputError& e) {
+                        throw CLI::ValidationError(e.what());
+                    }
+                }
+            },
+            "Override a scene value by its JSON path, as scene errors name it "
+            "(--set materials.clay.shininess=5, --set camera.fov_y=30, --set "
+            "objects[0].center=[0,1,0]); VALUE is JSON or a bare word (a string); repeatable")
+        ->type_name("PATH=VALUE")
+        ->expected(1)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     render->add_flag("-q,--quiet", o.quiet, "No progress or summary on stderr");
     render->add_flag(
         "--stats", o.stats,
@@ -738,15 +877,19 @@ std::string own_program(const char* argv0) {
 /// Parses the command line (and checks the render's method options); returns the exit status
 /// when the program ends there: after --help or --version, or on a usage error.
 std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, const CLI::App& render,
-                                      const RenderOptions& o, const CLI::App& bench,
+                                      RenderOptions& o, const CLI::App& bench,
                                       const BenchOptions& b) {
     try {
         app.parse(argc, argv);
-        if (render.parsed()) check_method_options(render, *find_method(o.method), o.own);
+        if (render.parsed()) check_render_methods(render, o);
         if (bench.parsed() && b.bench != "B5" && b.mesh.empty())
             throw CLI::ValidationError(fmt::format("{} needs --mesh FILE (an OBJ mesh)", b.bench));
         if (!o.depth_cue.empty() && !(o.depth_cue[1] > o.depth_cue[0]))
             throw CLI::ValidationError("--depth-cue: FAR must be greater than NEAR");
+        if (!o.depth_range.empty() && !(o.depth_range[1] > o.depth_range[0]))
+            throw CLI::ValidationError("--depth-range: FAR must be greater than NEAR");
+        if (!o.depth_range.empty() && o.aov != Aov::depth)
+            throw CLI::ValidationError("--depth-range is for --aov depth");
         return std::nullopt;
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
@@ -766,7 +909,7 @@ int run_command(const CLI::App& render, const RenderOptions& o, const CLI::App& 
                 const CLI::App& compare, const CompareOptions& c, const std::string& program) {
     try {
         // The method name was checked by the parser.
-        if (render.parsed()) exit_after_render(run_render(o, *find_method(o.method)));
+        if (render.parsed()) exit_after_render(run_render(o));
         if (bench.parsed()) return run_bench_command(b);
         if (gallery.parsed()) return run_gallery(g, program);
         if (compare.parsed()) return run_compare(c);

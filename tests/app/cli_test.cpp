@@ -578,3 +578,112 @@ TEST_F(Cli, DefaultOutputNamesKeepEveryMethodsPicture) {
 
 }  // namespace
 }  // namespace hikari
+
+namespace {
+
+using hikari::Image;
+using hikari::read_image;
+
+const std::string k_two_spheres = R"({
+  "camera": {"eye": [0, 0, 6], "fov_y": 40, "width": 40, "height": 30},
+  "ambient": 0.2,
+  "materials": {"clay": {"ka": [0.3, 0.2, 0.1], "kd": [0.8, 0.5, 0.3], "ks": 0.4, "shininess": 20}},
+  "lights": [{"type": "point", "position": [4, 4, 6], "intensity": 60}],
+  "objects": [{"type": "sphere", "center": [-0.8, 0, 0], "radius": 0.7, "material": "clay"},
+              {"type": "sphere", "center": [0.9, 0, -1], "radius": 0.7, "material": "clay"}]
+})";
+
+TEST_F(Cli, SetGivesTheImageOfTheEditedScene) {
+    write("scene.json", k_two_spheres);
+    std::string edited = k_two_spheres;
+    edited.replace(edited.find("\"shininess\": 20"), 15, "\"shininess\": 5");
+    edited.replace(edited.find("\"fov_y\": 40"), 11, "\"fov_y\": 30");
+    write("edited.json", edited);
+    ASSERT_EQ(run("render " + path("scene.json") +
+                  " --set materials.clay.shininess=5 --set camera.fov_y=30 -o " + path("set.pfm"))
+                  .status,
+              0);
+    ASSERT_EQ(run("render " + path("edited.json") + " -o " + path("edited.pfm")).status, 0);
+    EXPECT_EQ(read_image(path("set.pfm")).pixels, read_image(path("edited.pfm")).pixels);
+}
+
+TEST_F(Cli, SetErrorsNameThePath) {
+    write("scene.json", k_two_spheres);
+    const Result bad = run("render " + path("scene.json") +
+                           " --set materials.clay.shininess=-5 -o " + path("out.png"));
+    EXPECT_EQ(bad.status, 1) << bad.output;
+    EXPECT_NE(bad.output.find("materials.clay.shininess"), std::string::npos) << bad.output;
+    const Result range =
+        run("render " + path("scene.json") + " --set objects[7].radius=1 -o " + path("out.png"));
+    EXPECT_EQ(range.status, 1) << range.output;
+    EXPECT_NE(range.output.find("objects: has 2 elements"), std::string::npos) << range.output;
+    expect_usage_error("--set camera.fov_y", "--set camera.fov_y: expected PATH=VALUE");
+    EXPECT_FALSE(fs::exists(path("out.png")));
+}
+
+TEST_F(Cli, ShadingTermsSumToColour) {
+    write("scene.json", k_two_spheres);
+    for (const char* aov : {"color", "ambient", "diffuse", "specular"})
+        ASSERT_EQ(run("render " + path("scene.json") + " -m zbuffer --aov " + aov + " -o " +
+                      path(std::string(aov) + ".pfm"))
+                      .status,
+                  0)
+            << aov;
+    const Image c = read_image(path("color.pfm")), a = read_image(path("ambient.pfm")),
+                d = read_image(path("diffuse.pfm")), s = read_image(path("specular.pfm"));
+    for (size_t i = 0; i < c.pixels.size(); ++i)
+        for (int k = 0; k < 3; ++k)
+            EXPECT_NEAR(a.pixels[i][k] + d.pixels[i][k] + s.pixels[i][k], c.pixels[i][k], 1e-5f);
+    expect_usage_error(path("scene.json") + " -m path --aov diffuse",
+                       "--aov diffuse: method path does not shade by");
+}
+
+TEST_F(Cli, DepthPngSpansTheGreyRange) {
+    write("scene.json", k_two_spheres);
+    ASSERT_EQ(run("render " + path("scene.json") + " --aov depth -o " + path("d.png")).status, 0);
+    const Image d = read_image(path("d.png"));
+    float lo = 1.0f, hi = 0.0f;
+    for (const hikari::Vec3& p : d.pixels) lo = std::min(lo, p.x), hi = std::max(hi, p.x);
+    EXPECT_EQ(lo, 0.0f);
+    EXPECT_EQ(hi, 1.0f);
+    expect_usage_error(path("scene.json") + " --depth-range 1,5",
+                       "--depth-range is for --aov depth");
+    expect_usage_error(path("scene.json") + " --aov depth --depth-range 5,1",
+                       "--depth-range: FAR must be greater than NEAR");
+}
+
+TEST_F(Cli, SeveralMethodsInOneRun) {
+    write("scene.json", k_two_spheres);
+    const Result r =
+        run("render " + path("scene.json") + " -m zbuffer,scanline,raytrace -o " + path("o.png"));
+    ASSERT_EQ(r.status, 0) << r.output;
+    for (const char* method : {"zbuffer", "scanline", "raytrace"})
+        EXPECT_TRUE(fs::exists(path(std::string("o-") + method + ".png"))) << method;
+    EXPECT_FALSE(fs::exists(path("o.png")));
+    // An option one of them ignores is a warning; one that none takes, an error.
+    const Result spp =
+        run("render " + path("scene.json") + " -m zbuffer,path --spp 2 -o " + path("w.png"));
+    EXPECT_EQ(spp.status, 0) << spp.output;
+    const Result shadows = run("render " + path("scene.json") +
+                               " -m zbuffer,raytrace --interp flat -o " + path("w.png"));
+    EXPECT_EQ(shadows.status, 0) << shadows.output;
+    EXPECT_NE(shadows.output.find("hikari: warning: --interp is not an option of raytrace"),
+              std::string::npos)
+        << shadows.output;
+    expect_usage_error(path("scene.json") + " -m zbuffer,scanline --filter gaussian",
+                       "--filter is not an option of any method asked for");
+    expect_usage_error(path("scene.json") + " -m zbuffer,zbuffer",
+                       "-m: method zbuffer is named twice");
+}
+
+TEST_F(Cli, SeveralMethodsWithoutOutputNameEachImage) {
+    write("scene.json", k_two_spheres);
+    const std::string cd = "cd " + m_dir.string() + " && ";
+    const std::string command =
+        cd + std::string(HIKARI_CLI_PATH) + " render scene.json -m raytrace,zbuffer -q 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    EXPECT_TRUE(fs::exists(path("scene-raytrace.png")));
+    EXPECT_TRUE(fs::exists(path("scene-zbuffer.png")));
+}
+
+}  // namespace

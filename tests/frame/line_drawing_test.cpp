@@ -26,7 +26,7 @@ TEST(LineDrawing, WorldPointIsPerspectiveCorrect) {
 TEST(LineDrawing, DepthCueSplitsSegmentsAndBlendsEachPiece) {
     LineDrawing d;
     d.width = d.height = 100;
-    d.eye = Vec3(0.0f);
+    d.camera.eye = Vec3(0.0f);
     d.background = Vec3(0.0f, 0.0f, 1.0f);
     LineSegment s;
     s.a = {0, 50};

@@ -13,7 +13,7 @@ LineDrawing drawing(int w, int h, float width) {
     d.width = w;
     d.height = h;
     d.line_width = width;
-    d.eye = Vec3(0, 0, 0);
+    d.camera.eye = Vec3(0, 0, 0);
     return d;
 }
 

@@ -22,7 +22,7 @@ Framebuffer::Framebuffer(Film target, int width, int height, bool aov_buffers)
 }
 
 Image aov_image(Framebuffer&& fb, Aov aov) {
-    if (aov == Aov::color) {
+    if (is_colour_aov(aov)) {
         if (fb.film.format() != FilmFormat::linear)
             throw std::invalid_argument("aov_image: 8-bit colour only");
         return std::move(fb.film.linear());
@@ -43,7 +43,7 @@ Image aov_image(Framebuffer&& fb, Aov aov) {
             case Aov::normal:
                 out.pixels[i] = fb.normal[i];
                 break;
-            case Aov::color:
+            default:  // the colour renders, returned above
                 break;
         }
     }

@@ -44,12 +44,19 @@ struct Framebuffer {
     void set_color(size_t i, Vec3 c) { film.set_pixel(i, c); }
 };
 
-/// Which buffer an image file receives.
-enum class Aov { color, depth, id, normal };
+/// Which buffer an image file receives: the colour, an AOV buffer, or the colour of one term of
+/// the shading model alone (ambient, diffuse, specular: a colour render of the scene that
+/// shading/shading_terms.h changed).
+enum class Aov { color, depth, id, normal, ambient, diffuse, specular };
+
+/// Whether `aov` is a colour render (the full colour or one shading term), not an AOV buffer.
+constexpr bool is_colour_aov(Aov aov) {
+    return aov == Aov::color || aov == Aov::ambient || aov == Aov::diffuse || aov == Aov::specular;
+}
 
 /// The chosen buffer as an RGB image (depth and id repeated in every channel, exactly). The
-/// framebuffer must hold that buffer (for colour: a linear film). Moves the colour out rather
-/// than copying it.
+/// framebuffer must hold that buffer (for a colour render: a linear film). Moves the colour out
+/// rather than copying it.
 Image aov_image(Framebuffer&& fb, Aov aov);
 
 }  // namespace hikari

@@ -61,7 +61,7 @@ LineDrawing depth_cued(const LineDrawing& drawing, const DepthCue& cue) {
         // is a convex function of the world parameter t: halving finds where it bends.
         auto weight = [&](float t) {
             const Vec3 p = seg.world_a + (seg.world_b - seg.world_a) * t;
-            return depth_cue_weight(cue, length(p - drawing.eye));
+            return depth_cue_weight(cue, camera_distance(drawing.camera, p));
         };
         cuts.assign(1, 0.0f);
         split_by_weight(seg, 0.0f, 1.0f, weight(0.0f), weight(1.0f), weight, k_max_weight_step,

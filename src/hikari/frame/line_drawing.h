@@ -24,7 +24,7 @@ struct LineSegment {
 struct LineDrawing {
     int width = 0, height = 0;  ///< image size in pixels
     float line_width = 1;       ///< stroke width in pixels
-    Vec3 eye;                   ///< the camera's eye, world space
+    CameraFrame camera;         ///< the camera (depth is camera_distance)
     Vec3 background{0.0f};      ///< linear RGB behind the lines
     std::vector<LineSegment> segments;
 };

@@ -214,7 +214,7 @@ constexpr auto k_raster = &rasterize<render>;
 constexpr std::array k_methods = {
     Method{"raytrace",
            "Whitted ray tracing (Alg 4.3): nearest hit, shadow rays, reflection, refraction",
-           k_whitted, k_ray_tracing_options, nullptr, k_ray_shadow_modes},
+           k_whitted, k_ray_tracing_options, nullptr, k_ray_shadow_modes, nullptr, true},
     Method{"path",
            "path tracing (Kajiya 1986): global illumination, light sampling and BSDF sampling "
            "combined by MIS",
@@ -224,16 +224,20 @@ constexpr std::array k_methods = {
            {},
            &path_scene_warnings},
     Method{"zbuffer", "Z-buffer (Alg 4.2): rasterize every triangle, keep the nearest per pixel",
-           k_raster<&render_zbuffer>, k_raster_options, nullptr, k_raster_shadow_modes},
+           k_raster<&render_zbuffer>, k_raster_options, nullptr, k_raster_shadow_modes, nullptr,
+           true},
     Method{"scanline",
            "scanline (Alg 4.1): edge table, active edges, nearest segment per sample span",
-           k_raster<&render_scanline>, k_raster_options, nullptr, k_raster_shadow_modes},
+           k_raster<&render_scanline>, k_raster_options, nullptr, k_raster_shadow_modes, nullptr,
+           true},
     Method{"depthsort",
            "depth sort (Newell et al. 1972): sort, overlap tests, reorder, split cycles",
-           k_raster<&render_depth_sort>, k_raster_options, nullptr, k_raster_shadow_modes},
+           k_raster<&render_depth_sort>, k_raster_options, nullptr, k_raster_shadow_modes, nullptr,
+           true},
     Method{"depthsort-naive",
            "painter's algorithm by centroid depth (Fig 4.7): fails on overlap cycles",
-           k_raster<&render_depth_sort_naive>, k_raster_options, nullptr, k_raster_shadow_modes},
+           k_raster<&render_depth_sort_naive>, k_raster_options, nullptr, k_raster_shadow_modes,
+           nullptr, true},
     Method{"wireframe", "wireframe (Fig 4.1a): every edge of every face, anti-aliased lines",
            &with_line_settings<&render_wireframe>, k_line_options,
            &drawing_with_line_settings<&draw_wireframe>},
@@ -269,6 +273,13 @@ LineDrawing draw_scene(const Method& method, const Scene& scene, const MethodSet
     LineDrawing drawing = method.draw(scene, own);
     if (scene.depth_cue) return depth_cued(drawing, *scene.depth_cue);
     return drawing;
+}
+
+std::string shading_term_methods() {
+    std::string list;
+    for (const Method& m : k_methods)
+        if (m.shading_terms) list += fmt::format("{}{}", list.empty() ? "" : ", ", m.name);
+    return list;
 }
 
 bool does_shadows(const Method& method, ShadowMode mode) {

@@ -38,6 +38,10 @@ struct Method {
     std::span<const ShadowMode> shadow_modes = {};
     /// Its warnings about a scene (e.g. materials it must change), or null for none.
     SceneWarnings warnings = nullptr;
+    /// Whether its colour is the lecture's ambient + diffuse + specular (Fig 4.29, summed over
+    /// the lights and the mirror and refracted rays), so that `--aov ambient|diffuse|specular`
+    /// shows one term (shading/shading_terms.h).
+    bool shading_terms = false;
 };
 
 /// Every registered method, the default (raytrace) first.
@@ -57,6 +61,9 @@ Framebuffer render_scene(const Method& method, const Scene& scene, Film film,
 /// The segments `method` draws for `scene` (method.draw must be set), depth-cued as the scene
 /// asks (frame/line_drawing.h, depth_cued): what its image shows, as vectors.
 LineDrawing draw_scene(const Method& method, const Scene& scene, const MethodSettings& own);
+
+/// The methods whose colour is a sum of shading terms, e.g. "raytrace, zbuffer".
+std::string shading_term_methods();
 
 /// Whether `method` can draw shadows by `mode`.
 bool does_shadows(const Method& method, ShadowMode mode);

@@ -205,9 +205,12 @@ void visible_pieces(const Context& ctx, const Line& line, std::vector<LineSegmen
     if (run_start > 0.0f) out.push_back(sub_segment(line.seg, run_start, 1.0f));
 }
 
-/// `segment` as a Line lying on `faces`, with its depth keys.
-Line make_line(const LineSegment& segment, float near_plane, uint32_t face0, uint32_t face1) {
-    return {segment, -near_plane * segment.inv_w_a, -near_plane * segment.inv_w_b, {face0, face1}};
+/// `segment` as a Line lying on `faces`, with the depth keys the triangles have there.
+Line make_line(const LineSegment& segment, const RasterView& view, uint32_t face0, uint32_t face1) {
+    return {segment,
+            view.depth_key(segment.world_a, segment.inv_w_a),
+            view.depth_key(segment.world_b, segment.inv_w_b),
+            {face0, face1}};
 }
 
 /// The edges a hidden-line drawing tests: model edges and silhouettes with a face left after
@@ -225,7 +228,7 @@ std::vector<Line> edge_lines(const Scene& scene, const LineScene& ls, const Line
         if (!seg) return;
         seg->color = line_color(scene, tris.material[e.faces[0]], lines);
         seg->id = tris.id[e.faces[0]];
-        found[k] = make_line(*seg, ls.projected.view.near_plane, e.faces[0], e.faces[1]);
+        found[k] = make_line(*seg, ls.projected.view, e.faces[0], e.faces[1]);
     });
     std::vector<Line> out;
     for (std::optional<Line>& l : found)
@@ -281,7 +284,7 @@ std::vector<Line> intersection_lines(const Scene& scene, const LineScene& ls, co
             if (!seg) continue;
             seg->color = line_color(scene, tris.material[f], lines);
             seg->id = tris.id[f];
-            found[i].push_back(make_line(*seg, ls.projected.view.near_plane, f, g));
+            found[i].push_back(make_line(*seg, ls.projected.view, f, g));
         }
     });
     std::vector<Line> out;

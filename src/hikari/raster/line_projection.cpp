@@ -16,8 +16,9 @@ LineScene prepare_line_scene(const Scene& scene, const LineSettings& lines) {
     ls.back_facing.resize(tris.size());
     hikari::parallel_for(size_t{0}, tris.size(), [&](size_t f) {
         const auto& idx = tris.indices[f];
-        ls.back_facing[f] = is_back_face(tris.positions[idx[0]], tris.positions[idx[1]],
-                                         tris.positions[idx[2]], scene.camera.eye);
+        ls.back_facing[f] = is_back_face_along(
+            tris.positions[idx[0]], tris.positions[idx[1]], tris.positions[idx[2]],
+            ls.projected.view.view_vector(tris.positions[idx[0]]));
     });
     ls.edges = model_edges(tris);
     return ls;
@@ -40,7 +41,7 @@ LineDrawing empty_drawing(const Scene& scene, const LineSettings& lines) {
     d.width = scene.camera.width;
     d.height = scene.camera.height;
     d.line_width = lines.width;
-    d.eye = scene.camera.eye;
+    d.camera = make_camera_frame(scene.camera);
     d.background = scene.background;
     return d;
 }

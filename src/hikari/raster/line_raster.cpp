@@ -102,7 +102,7 @@ void draw_segment(const LineDrawing& d, const LineSegment& seg, int row0, int ro
             if (c > acc.best_coverage[i]) {
                 const float s = std::clamp(along / f.length, 0.0f, 1.0f);
                 acc.best_coverage[i] = c;
-                acc.best_depth[i] = length(segment_world_point(seg, s) - d.eye);
+                acc.best_depth[i] = camera_distance(d.camera, segment_world_point(seg, s));
                 acc.best_id[i] = seg.id + 1;
             }
         }

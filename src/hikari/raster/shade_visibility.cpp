@@ -207,16 +207,15 @@ PixelSurface surface_at(const ShadeContext& ctx, uint32_t src, int x, int y) {
 Vec3 shade_surface(const ShadeContext& ctx, const PixelSurface& s, size_t pixel) {
     const uint32_t m = ctx.tris.material[s.src];
     const ShadowQuery shadow{s.point, s.ng_front, pixel};
-    const Vec3 eye = ctx.scene.camera.eye;
     switch (ctx.interp) {
         case Interpolation::flat: {  // one colour per polygon, at its centroid
             const Vec3 c = (s.p[0] + s.p[1] + s.p[2]) / 3.0f;
-            return shade_point(ctx, m, c, s.ng_front, normalize(eye - c), s.tex, shadow);
+            return shade_point(ctx, m, c, s.ng_front, toward_viewer(ctx.frame, c), s.tex, shadow);
         }
         case Interpolation::gouraud: {  // shade the vertices, blend the colours
             Vec3 colour(0.0f);
             for (int k = 0; k < 3; ++k) {
-                const Vec3 to_eye = normalize(eye - s.p[k]);
+                const Vec3 to_eye = toward_viewer(ctx.frame, s.p[k]);
                 const Vec3 nk = facing(s.n[k], s.entering, s.ng_front, -to_eye);
                 colour += s.b[k] * shade_point(ctx, m, s.p[k], nk, to_eye, s.tex, shadow);
             }
@@ -257,11 +256,11 @@ void shade_tile(const ShadeContext& ctx, const VisibilityBuffer& vis, const Tile
                 continue;
             }
             const PixelSurface s = surface_at(ctx, ctx.ps.triangles[t].source, x, y);
-            const float eye_distance = length(s.point - ctx.scene.camera.eye);
+            const float eye_distance = camera_distance(ctx.frame, s.point);
             const std::optional<Vec3> light =
                 ctx.has_area_lights ? light_face_at(ctx, x, y, eye_distance) : std::nullopt;
             fb.set_color(pixel, light ? *light : shade_surface(ctx, s, pixel));
-            fb.depth[pixel] = length(s.point - ctx.scene.camera.eye);
+            fb.depth[pixel] = eye_distance;
             fb.id[pixel] = ctx.tris.id[s.src] + 1;
             const float nl = length(s.n_interp);
             const Vec3 sn = nl > 0.0f ? s.n_interp / nl : s.ng;
@@ -279,7 +278,7 @@ std::vector<float> visible_depth(const ShadeContext& ctx, const VisibilityBuffer
                 const uint32_t t = vis.triangle[pixel];
                 if (t == k_no_triangle) continue;
                 const PixelSurface s = surface_at(ctx, ctx.ps.triangles[t].source, x, y);
-                depth[pixel] = length(s.point - ctx.scene.camera.eye);
+                depth[pixel] = camera_distance(ctx.frame, s.point);
             }
     });
     return depth;
@@ -383,10 +382,10 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
         environment_sh.push_back(env ? std::optional(project_environment(*env)) : std::nullopt);
     }
     ctx.environment_sh = &environment_sh;
-    ctx.environment = find_environment(scene.lights);
-    ctx.has_area_lights = std::any_of(scene.lights.begin(), scene.lights.end(), [](const Light& l) {
-        return std::holds_alternative<AreaLight>(l);
-    });
+    if (scene.show_background) {
+        ctx.environment = find_environment(scene.lights);
+        ctx.has_area_lights = has_area_light(scene.lights);
+    }
     // The shadow pass, shared by every visibility method: maps from the lights, or a stencil
     // per light counted against the depth of each pixel's visible point.
     ShadowMaps maps;

@@ -290,18 +290,19 @@ std::vector<uint8_t> stencil_shadow_mask(std::span<const VolumePolygon> polygons
         bin_triangles(setup, std::vector<uint8_t>(pieces.size(), 1), width, height);
 
     std::vector<uint8_t> mask(static_cast<size_t>(width) * height, 0);
-    const double ex = frame.eye.x, ey = frame.eye.y, ez = frame.eye.z;
     for_each_tile(width, height, nullptr, [&](const Tile& tile) {
         constexpr int k_pixels = k_tile_size * k_tile_size;
         std::array<int32_t, k_pixels> stencil{};
         // The tile's camera rays and visible depths (+infinity: nothing seen, nothing counts).
-        std::array<Vec3, k_pixels> ray;
+        std::array<Vec3, k_pixels> ray, origin;
         std::array<float, k_pixels> seen;
         seen.fill(k_infinity);
         for (int y = tile.y0; y < tile.y1; ++y)
             for (int x = tile.x0; x < tile.x1; ++x) {
                 const int i = (y - tile.y0) * k_tile_size + (x - tile.x0);
-                ray[i] = camera_ray(frame, x + 0.5f, y + 0.5f).direction;
+                const Ray r = camera_ray(frame, x + 0.5f, y + 0.5f);
+                ray[i] = r.direction;
+                origin[i] = r.origin;  // the eye, or a point of an orthographic image plane
                 seen[i] = depth[static_cast<size_t>(y) * width + x];
             }
         const size_t bin = bins.tile_at(tile.x0, tile.y0);
@@ -318,12 +319,13 @@ std::vector<uint8_t> stencil_shadow_mask(std::span<const VolumePolygon> polygons
                                        });
                 continue;
             }
-            const double at_eye = pl[0] * ex + pl[1] * ey + pl[2] * ez + pl[3];
             for_each_covered_pixel(piece.setup, tile.x0, tile.y0, tile.x1, tile.y1,
                                    [&](int x, int y, float, float, float) {
                                        const int i = (y - tile.y0) * k_tile_size + (x - tile.x0);
                                        if (!(seen[i] < k_infinity)) return;
-                                       const Vec3 d = ray[i];
+                                       const Vec3 d = ray[i], o = origin[i];
+                                       const double at_eye =
+                                           pl[0] * o.x + pl[1] * o.y + pl[2] * o.z + pl[3];
                                        const double along = pl[0] * d.x + pl[1] * d.y + pl[2] * d.z;
                                        double t = -at_eye / along;
                                        // Behind the eye or undefined only through rounding at

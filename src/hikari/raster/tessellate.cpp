@@ -87,6 +87,8 @@ void map_sphere_uvs(const Sphere& s, size_t first_vertex, size_t first_triangle,
 
 /// Projected radius in pixels of `s` seen by `camera`; infinity when the eye is (nearly) inside.
 float projected_radius(const Sphere& s, const Camera& camera) {
+    if (camera.projection == Projection::orthographic)
+        return s.radius / camera.view_height * static_cast<float>(camera.height);
     const float dist = length(s.center - camera.eye);
     if (dist <= 1.05f * s.radius) return std::numeric_limits<float>::infinity();
     const float tan_angular = s.radius / std::sqrt(dist * dist - s.radius * s.radius);
@@ -111,7 +113,7 @@ uint32_t sphere_segments(float radius_px) {
 }
 
 void tessellate_sphere(const Sphere& s, uint32_t lon, TriangleSet& out) {
-    const uint32_t lat = std::max(8u, lon / 2);
+    const uint32_t lat = std::max(2u, lon / 2);  // automatic counts start at 16: 8 bands
     const size_t first_vertex = out.positions.size(), first_triangle = out.indices.size();
     auto vertex = [&](float theta, float phi) {
         const Vec3 n{std::sin(theta) * std::cos(phi), std::cos(theta),
@@ -234,7 +236,9 @@ RasterScene tessellate_scene(const Scene& scene) {
             tessellate_plane(scene.planes[item.index], scene.camera.eye, half_extent, out);
         else {
             const Sphere& s = scene.spheres[item.index];
-            tessellate_sphere(s, sphere_segments(projected_radius(s, scene.camera)), out);
+            tessellate_sphere(
+                s, s.segments > 0 ? s.segments : sphere_segments(projected_radius(s, scene.camera)),
+                out);
         }
     };
     size_t next = 0;

@@ -41,7 +41,9 @@ bool finite(Vec4 p) {
 int project_one(const ProjectedScene& ps, uint32_t t, bool cull, ScreenTriangle* out) {
     const auto& idx = ps.scene.triangles.indices[t];
     const auto& pos = ps.scene.triangles.positions;
-    if (cull && is_back_face(pos[idx[0]], pos[idx[1]], pos[idx[2]], ps.view.eye)) return 0;
+    if (cull &&
+        is_back_face_along(pos[idx[0]], pos[idx[1]], pos[idx[2]], ps.view.view_vector(pos[idx[0]])))
+        return 0;
     const Vec4 a = ps.clip_positions[idx[0]], b = ps.clip_positions[idx[1]],
                c = ps.clip_positions[idx[2]];
     if (!finite(a) || !finite(b) || !finite(c)) return 0;
@@ -82,8 +84,23 @@ RasterView make_raster_view(const Camera& camera, const RasterScene& scene, Vec2
             far_dist = std::max(far_dist, length(p - camera.eye));
         }
     v.far_plane = 1.01f * far_dist;
-    // A point at distance d inside the frustum has view depth at least d cos(half diagonal).
+    v.view_from_world = view_matrix(camera);
+    // Sampling at centre + offset is the image moved by −offset under fixed pixel centres.
+    v.screen_from_clip = translate(Vec3(-sample_offset.x, -sample_offset.y, 0.0f)) *
+                         viewport(camera.width, camera.height);
     const float aspect = static_cast<float>(camera.width) / static_cast<float>(camera.height);
+    if (camera.projection == Projection::orthographic) {
+        // Parallel rays from the plane through the eye (scene/camera.h): everything in front of
+        // that plane is seen, up to the far plane. The depth key is 1.5 − 0.5 z_ndc (RasterView).
+        const float half_h = 0.5f * camera.view_height, half_w = half_h * aspect;
+        v.orthographic = true;
+        v.forward = normalize(camera.look_at - camera.eye);
+        v.near_plane = 1.0f;  // the depth key's scale, as for the shadow maps' parallel views
+        v.clip_from_view = orthographic(-half_w, half_w, -half_h, half_h, 0.0f, v.far_plane);
+        v.clip_from_world = v.clip_from_view * v.view_from_world;
+        return v;
+    }
+    // A point at distance d inside the frustum has view depth at least d cos(half diagonal).
     const float tan_half_y = std::tan(camera.fov_y_degrees * std::numbers::pi_v<float> / 360.0f);
     const float cos_half_diag =
         1.0f / std::sqrt(1.0f + tan_half_y * tan_half_y * (1 + aspect * aspect));
@@ -97,11 +114,7 @@ RasterView make_raster_view(const Camera& camera, const RasterScene& scene, Vec2
         nearest = std::min(nearest, nearest_visible_depth(plane, frame));
     // Nothing in front, or the eye on a surface: a sliver of the far distance.
     v.near_plane = std::isfinite(nearest) && nearest > 0.0f ? 0.9f * nearest : 1e-6f * v.far_plane;
-    v.view_from_world = view_matrix(camera);
     v.clip_from_view = perspective(camera.fov_y_degrees, aspect, v.near_plane, v.far_plane);
-    // Sampling at centre + offset is the image moved by −offset under fixed pixel centres.
-    v.screen_from_clip = translate(Vec3(-sample_offset.x, -sample_offset.y, 0.0f)) *
-                         viewport(camera.width, camera.height);
     v.clip_from_world = v.clip_from_view * v.view_from_world;
     return v;
 }

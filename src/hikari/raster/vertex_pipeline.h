@@ -16,6 +16,7 @@ namespace hikari {
 /// The camera as a chain of matrices, with near and far planes fitted to the scene.
 struct RasterView {
     Vec3 eye;
+    Vec3 forward;          ///< the unit view direction of an orthographic camera (culling's V)
     float near_plane = 0;  ///< view-space distance of the near clipping plane, > 0
     float far_plane = 0;   ///< beyond every vertex: nothing is clipped at the far plane
     int width = 0, height = 0;
@@ -28,6 +29,17 @@ struct RasterView {
     /// 1 / w, which is affine across a triangle as 1 / w is under perspective and larger for
     /// nearer points, so every depth test works unchanged.
     bool orthographic = false;
+
+    /// The lecture's view vector V toward world point `p` (Fig 4.5, D = V·N): from the eye, or
+    /// the view direction itself under a parallel projection.
+    Vec3 view_vector(Vec3 p) const { return orthographic ? forward : p - eye; }
+
+    /// The depth key ScreenVertex::position.z of world point `p`, whose 1 / w is `inv_w`:
+    /// −near / w, or under a parallel projection −near (1.5 − 0.5 z_ndc).
+    float depth_key(Vec3 p, float inv_w) const {
+        if (!orthographic) return -near_plane * inv_w;
+        return -near_plane * (1.5f - 0.5f * (clip_from_world * Vec4(p, 1.0f)).z);
+    }
 };
 
 /// Fits the view to `scene`'s bounds: far just beyond the farthest vertex; near at 0.9 times the

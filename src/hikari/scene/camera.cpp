@@ -11,8 +11,11 @@ CameraFrame make_camera_frame(const Camera& camera) {
     f.forward = normalize(camera.look_at - camera.eye);
     f.right = normalize(cross(f.forward, camera.up));
     f.up = cross(f.right, f.forward);
+    f.orthographic = camera.projection == Projection::orthographic;
     f.tan_half_fov_y =
-        static_cast<float>(std::tan(camera.fov_y_degrees * std::numbers::pi / 360.0));
+        f.orthographic
+            ? 0.5f * camera.view_height
+            : static_cast<float>(std::tan(camera.fov_y_degrees * std::numbers::pi / 360.0));
     f.aspect = static_cast<float>(camera.width) / static_cast<float>(camera.height);
     f.width = camera.width;
     f.height = camera.height;

@@ -16,6 +16,9 @@ namespace hikari {
 /// is one primitive, a mesh contributes its triangles one after another in file order.
 using PrimitiveId = uint32_t;
 
+/// The range of Sphere::segments.
+inline constexpr int k_min_sphere_segments = 3, k_max_sphere_segments = 4096;
+
 /// A sphere (ray–sphere: the lecture's A t² + B t + C = 0).
 struct Sphere {
     Vec3 center;
@@ -23,6 +26,10 @@ struct Sphere {
     uint32_t material = 0;  ///< index into Scene::materials
     PrimitiveId id = 0;
     bool casts_shadow = true;  ///< false: shadow rays pass through it
+    /// Polygons around the equator when a raster method tessellates the sphere (half as many
+    /// bands from pole to pole); 0: enough for the sphere's size in the image (raster/
+    /// tessellate.h). The ray tracer meets the exact sphere either way.
+    uint32_t segments = 0;
 };
 
 /// An infinite, two-sided plane through `point` with unit `normal`.
@@ -98,9 +105,12 @@ struct DepthCue {
 /// A whole scene: camera, lights, materials and geometry.
 struct Scene {
     Camera camera;
-    Vec3 background{0.0f};              ///< colour of rays that hit nothing
-    Vec3 ambient{0.0f};                 ///< ambient light intensity Ia
-    Sky sky;                            ///< colour of escaping rays in ray tracing
+    Vec3 background{0.0f};  ///< colour of rays that hit nothing
+    Vec3 ambient{0.0f};     ///< ambient light intensity Ia
+    Sky sky;                ///< colour of escaping rays in ray tracing
+    /// false: rays and pixels that meet no surface see black instead of the background, sky,
+    /// environment or an area light's face (shading/shading_terms.h: one term alone).
+    bool show_background = true;
     std::optional<DepthCue> depth_cue;  ///< every method's colour blended by distance, when set
     std::vector<Material> materials;
     std::vector<Light> lights;

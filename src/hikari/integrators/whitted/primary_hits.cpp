@@ -126,6 +126,22 @@ PrimaryHitTracer::PrimaryHitTracer(const SceneIntersector& intersector, const Sc
 }
 
 void PrimaryHitTracer::trace(int x0, int y0, int width, int height, PrimaryBlock& block) const {
+    if (m_frame.orthographic) {
+        // Parallel rays from many origins: the lanes' origins are the rays' own, one ray at a
+        // time through the BVH (the 4x4 packets below share the eye as their origin). Rows stay
+        // k_primary_block rays long, the block's layout; the columns past the image hold no ray.
+        Ray rays[k_primary_block_rays];
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < k_primary_block; ++x)
+                rays[y * k_primary_block + x] = camera_ray(
+                    m_frame, static_cast<float>(x0 + x) + 0.5f, static_cast<float>(y0 + y) + 0.5f);
+        trace_rays(rays, height * k_primary_block, block);
+        if (width < k_primary_block)
+            for (int y = 0; y < height; ++y)
+                std::fill(block.lanes.chunks[y].object + width,
+                          block.lanes.chunks[y].object + k_lane_chunk, 0);
+        return;
+    }
     detail::PrimaryCamera cam{};
     for (int a = 0; a < 3; ++a) {
         cam.eye[a] = m_frame.eye[a];

@@ -39,17 +39,24 @@ inline float pixel_spread_angle(const Camera& camera) {
 /// (pixel_spread_angle), which a ray at angle θ off the view axis sees shrunk by cos θ (the
 /// pixel is seen obliquely and from farther away), so that the width at view depth z is
 /// spread_on_axis·z everywhere, the size of a pixel on a plane facing the camera at that depth.
+/// An orthographic camera's rays are cylinders: one pixel wide (view_height / height) at any
+/// distance, spread 0.
 struct CameraCones {
     Vec3 forward;          ///< unit view direction
-    float spread_on_axis;  ///< radians
+    float spread_on_axis;  ///< radians; 0 for an orthographic camera
+    float pixel_width;     ///< the width of an orthographic camera's rays; 0 for a pinhole
 
     explicit CameraCones(const Camera& camera)
         : forward(normalize(camera.look_at - camera.eye)),
-          spread_on_axis(pixel_spread_angle(camera)) {}
+          spread_on_axis(
+              camera.projection == Projection::orthographic ? 0.0f : pixel_spread_angle(camera)),
+          pixel_width(camera.projection == Projection::orthographic
+                          ? camera.view_height / static_cast<float>(camera.height)
+                          : 0.0f) {}
 
     /// The cone of the camera ray along unit `direction`.
     RayCone operator()(Vec3 direction) const {
-        return {0.0f, spread_on_axis * std::max(dot(direction, forward), 0.0f)};
+        return {pixel_width, spread_on_axis * std::max(dot(direction, forward), 0.0f)};
     }
 };
 

@@ -31,8 +31,8 @@ struct Emitters {
 
     explicit Emitters(const Scene& scene)
         : lights(scene.lights),
-          areas(has_area_light(scene.lights)),
-          environment(find_environment(scene.lights)) {}
+          areas(scene.show_background && has_area_light(scene.lights)),
+          environment(scene.show_background ? find_environment(scene.lights) : nullptr) {}
     bool any() const { return areas || environment; }
 };
 

@@ -1,0 +1,86 @@
+#include "hikari/frame/aov_picture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "hikari/core/color.h"
+#include "hikari/core/ray.h"
+
+namespace hikari {
+
+namespace {
+
+/// The linear value whose sRGB encoding is the display value `v` in [0, 1]: what the 8-bit
+/// writers turn back into v (so a grey step of the picture is a step of the file's bytes).
+Vec3 display(Vec3 v) { return {srgb_to_linear(v.x), srgb_to_linear(v.y), srgb_to_linear(v.z)}; }
+
+/// A saturated colour of hue `h` in [0, 1) (HSV with s = 0.7, v = 0.95).
+Vec3 hue_colour(float h) {
+    constexpr float s = 0.7f, v = 0.95f;
+    const float sector = h * 6.0f;
+    const int i = static_cast<int>(sector) % 6;
+    const float f = sector - std::floor(sector);
+    const float p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
+    switch (i) {
+        case 0:
+            return {v, t, p};
+        case 1:
+            return {q, v, p};
+        case 2:
+            return {p, v, t};
+        case 3:
+            return {p, q, v};
+        case 4:
+            return {t, p, v};
+        default:
+            return {v, p, q};
+    }
+}
+
+}  // namespace
+
+std::optional<DepthRange> visible_depth_range(const Framebuffer& fb) {
+    float lo = k_infinity, hi = -k_infinity;
+    for (const float d : fb.depth)
+        if (std::isfinite(d)) lo = std::min(lo, d), hi = std::max(hi, d);
+    if (!(lo <= hi)) return std::nullopt;
+    return DepthRange{lo, hi};
+}
+
+Image aov_picture(const Framebuffer& fb, Aov aov, std::optional<DepthRange> range) {
+    const size_t pixels = static_cast<size_t>(fb.width()) * static_cast<size_t>(fb.height());
+    if (fb.depth.size() != pixels)
+        throw std::invalid_argument("aov_picture: the render kept colour only");
+    if (!range) range = visible_depth_range(fb);
+    Image out(fb.width(), fb.height());
+    for (size_t i = 0; i < pixels; ++i) {
+        Vec3 v(0.0f);
+        switch (aov) {
+            case Aov::depth:
+                if (std::isfinite(fb.depth[i]) && range) {
+                    const float span = range->far - range->near;
+                    // A single depth (a flat view of one plane) is all "near": white.
+                    const float t = span > 0.0f ? (fb.depth[i] - range->near) / span : 0.0f;
+                    v = Vec3(1.0f - std::clamp(t, 0.0f, 1.0f));
+                }
+                break;
+            case Aov::id:
+                if (fb.id[i] != k_background_id) {
+                    // The golden ratio's fractional part spreads consecutive ids over the hues.
+                    const double h = std::fmod(0.618033988749895 * (fb.id[i] - 1), 1.0);
+                    v = hue_colour(static_cast<float>(h));
+                }
+                break;
+            case Aov::normal:
+                if (fb.normal[i] != Vec3(0.0f)) v = Vec3(0.5f) + 0.5f * fb.normal[i];
+                break;
+            default:
+                throw std::invalid_argument("aov_picture: not a buffer");
+        }
+        out.pixels[i] = display(v);
+    }
+    return out;
+}
+
+}  // namespace hikari

@@ -1,0 +1,116 @@
+// The orthographic camera (parallel projection) in every method: a sphere is a circle of its
+// exact radius in pixels wherever it stands, and depth is measured from the image plane.
+
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "../io/scene_test_util.h"
+#include "hikari/methods/registry.h"
+
+namespace hikari {
+namespace {
+
+constexpr int k_size = 64;
+constexpr float k_view_height = 4.0f;
+
+/// A sphere of radius `r` at `centre` under an orthographic camera looking down −z from z = 10.
+Scene ortho_scene(Vec3 centre, float r) {
+    return testing::parse(fmt::format(
+        R"({{"camera": {{"eye": [0, 0, 10], "look_at": [0, 0, 0], "projection": "orthographic",
+             "view_height": {}, "width": {}, "height": {}}},
+            "lights": [{{"type": "directional", "direction": [0, 0, -1], "intensity": 1}}],
+            "objects": [{{"type": "sphere", "center": [{}, {}, {}], "radius": {}}}]}})",
+        k_view_height, k_size, k_size, centre.x, centre.y, centre.z, r));
+}
+
+Framebuffer render_aovs(const std::string& method, const Scene& scene) {
+    RenderSettings settings;
+    settings.aov_buffers = true;
+    MethodSettings own;
+    own.raster.shadow_map_size = 256;
+    return render_scene(*find_method(method), scene, Film(scene.camera, FilmFormat::linear),
+                        settings, own);
+}
+
+/// Pixels whose coverage differs from the exact disc of radius r (world units) about the
+/// image point of `centre`, ignoring pixel centres within `band` pixels of the circle.
+int disc_mismatches(const Framebuffer& fb, Vec3 centre, float r, float band) {
+    const float px_per_unit = k_size / k_view_height;
+    const float cx = k_size / 2.0f + centre.x * px_per_unit;
+    const float cy = k_size / 2.0f - centre.y * px_per_unit;
+    const float radius = r * px_per_unit;
+    int wrong = 0;
+    for (int y = 0; y < k_size; ++y)
+        for (int x = 0; x < k_size; ++x) {
+            const float d = std::hypot(x + 0.5f - cx, y + 0.5f - cy);
+            if (std::abs(d - radius) < band) continue;
+            const bool inside = d < radius;
+            const bool seen = fb.id[static_cast<size_t>(y) * k_size + x] != k_background_id;
+            wrong += inside != seen;
+        }
+    return wrong;
+}
+
+TEST(OrthographicCamera, SphereIsACircleOfItsExactRadiusInEveryMethod) {
+    // Radius 1.3 world units = 20.8 pixels, off centre; the raster methods' polygons lie within
+    // 0.05 px of the circle (raster/tessellate.h), the ray tracer meets it exactly.
+    const Vec3 centre(0.3f, -0.2f, 0.0f);
+    const Scene scene = ortho_scene(centre, 1.3f);
+    for (const char* method : {"raytrace", "path", "zbuffer", "scanline", "depthsort"}) {
+        const float band =
+            std::string(method) == "raytrace" || std::string(method) == "path" ? 1e-3f : 0.06f;
+        EXPECT_EQ(disc_mismatches(render_aovs(method, scene), centre, 1.3f, band), 0) << method;
+    }
+}
+
+TEST(OrthographicCamera, SizeDoesNotDependOnDistance) {
+    // Parallel projection: the same sphere moved away from the camera covers the same pixels.
+    const Framebuffer near = render_aovs("raytrace", ortho_scene(Vec3(0, 0, 5), 1.0f));
+    const Framebuffer far = render_aovs("raytrace", ortho_scene(Vec3(0, 0, -20), 1.0f));
+    EXPECT_EQ(near.id, far.id);
+}
+
+TEST(OrthographicCamera, DepthIsTheDistanceFromTheImagePlane) {
+    // The sphere's nearest point (0, 0, 1) is 9 units in front of the plane z = 10, and the
+    // pixels beside the centre see points at the same distance whatever their lateral offset.
+    for (const char* method : {"raytrace", "zbuffer"}) {
+        const Framebuffer fb = render_aovs(method, ortho_scene(Vec3(0.0f), 1.0f));
+        const size_t centre = static_cast<size_t>(k_size / 2) * k_size + k_size / 2;
+        const float pixel = k_view_height / k_size;
+        const float expected = 10.0f - std::sqrt(1.0f - 0.5f * pixel * pixel);
+        // The raster sphere is polygons within 0.05 px (0.003 units here) inside the sphere.
+        EXPECT_NEAR(fb.depth[centre], expected, 5e-3f) << method;
+    }
+}
+
+TEST(OrthographicCamera, LineMethodsDrawTheSphere) {
+    const Scene scene = ortho_scene(Vec3(0.0f), 1.0f);
+    for (const char* method : {"wireframe", "hiddenline"}) {
+        const LineDrawing d = draw_scene(*find_method(method), scene, MethodSettings{});
+        EXPECT_GT(d.segments.size(), 10u) << method;
+        for (const LineSegment& s : d.segments) {
+            // Every end lies within the sphere's disc in the image.
+            for (const Vec2 p : {s.a, s.b})
+                EXPECT_LT(std::hypot(p.x - k_size / 2.0f, p.y - k_size / 2.0f), 16.5f) << method;
+        }
+    }
+}
+
+TEST(OrthographicCamera, SceneFileErrors) {
+    EXPECT_NE(testing::error_of(R"({"camera": {"projection": "orthographic", "fov_y": 30},
+                                    "objects": []})")
+                  .find("camera.fov_y: an orthographic camera has no field of view"),
+              std::string::npos);
+    EXPECT_NE(testing::error_of(R"({"camera": {"view_height": 3}, "objects": []})")
+                  .find("camera.view_height: view_height is for"),
+              std::string::npos);
+    EXPECT_NE(testing::error_of(R"({"camera": {"projection": "fisheye"}, "objects": []})")
+                  .find("camera.projection"),
+              std::string::npos);
+}
+
+}  // namespace
+}  // namespace hikari
