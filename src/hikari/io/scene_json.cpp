@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <map>
 #include <memory>
 #include <string_view>
@@ -76,17 +77,6 @@ Camera parse_camera(const JsonNode& node) {
     Camera c;
     if (node.has("projection"))
         c.projection = parse_choice(node.at("projection"), "projection", k_projections);
-    const bool orthographic = c.projection == Projection::orthographic;
-    if (node.has("fov_y") && orthographic)
-        node.at("fov_y").fail("an orthographic camera has no field of view (give view_height)");
-    if (node.has("view_height")) {
-        if (!orthographic)
-            node.at("view_height")
-                .fail(
-                    "view_height is for \"projection\": \"orthographic\" (a perspective "
-                    "camera takes fov_y)");
-        c.view_height = node.at("view_height").as_positive();
-    }
     if (node.has("eye")) c.eye = node.at("eye").as_vec3();
     if (node.has("look_at")) c.look_at = node.at("look_at").as_vec3();
     if (node.has("up")) c.up = node.at("up").as_direction();
@@ -99,6 +89,16 @@ Camera parse_camera(const JsonNode& node) {
     if (node.has("height")) c.height = node.at("height").as_int(1, k_max_image_side);
     const Vec3 view = c.look_at - c.eye;
     if (dot(view, view) == 0.0f) node.fail("eye and look_at are the same point");
+    // Each projection reads its own key, so that switching one (--set camera.projection=...)
+    // needs no other change. Without view_height, the parallel view shows what the pinhole
+    // shows at the look_at point: 2 |look_at − eye| tan(fov_y / 2).
+    if (node.has("view_height"))
+        c.view_height = node.at("view_height").as_positive();
+    else
+        c.view_height = static_cast<float>(2.0 * length(view) *
+                                           std::tan(c.fov_y_degrees * std::numbers::pi / 360.0));
+    if (!std::isfinite(c.view_height) || !(c.view_height > 0.0f))
+        node.fail("the view height (from fov_y and the distance to look_at) is out of range");
     const Vec3 side = cross(normalize(view), normalize(c.up));
     if (dot(side, side) < 1e-10f) node.at("up").fail("up is parallel to the view direction");
     return c;
