@@ -1,5 +1,5 @@
 // The hikari command line: `hikari render [SCENE] [options]`, `hikari bench B1|B2 --mesh FILE`,
-// `hikari bench B5`, `hikari gallery`, `hikari compare A B`.
+// `hikari bench B5`, `hikari gallery`, `hikari compare A B`, `hikari explain SCENE -m METHOD`.
 
 #include <unistd.h>
 
@@ -29,6 +29,7 @@
 #include "hikari/bench/bench_runner.h"
 #include "hikari/bench/path_bench.h"
 #include "hikari/core/error.h"
+#include "hikari/explain/explain.h"
 #include "hikari/frame/aov_picture.h"
 #include "hikari/frame/image_compare.h"
 #include "hikari/io/atomic_file.h"
@@ -76,6 +77,7 @@ struct RenderOptions {
     double max_memory_gib = 0;
     bool quiet = false;
     bool stats = false;
+    bool print_matrices = false;
     std::vector<float> depth_cue;          // --depth-cue NEAR,FAR; empty: the scene's own, if any
     std::vector<float> depth_range;        // --depth-range NEAR,FAR; empty: the visible range
     std::vector<SceneOverride> overrides;  // --set PATH=VALUE, in order
@@ -425,6 +427,7 @@ int run_render(const RenderOptions& o) {
     for (const std::string& note : o.notes) fmt::print(stderr, "hikari: warning: {}\n", note);
     const Scene scene = load_render_scene(o);
     for (const auto& [method, output] : runs) check_spreadsheet_size(output, scene.camera);
+    if (o.print_matrices) fmt::print("{}", explain_matrices(scene, o.own.raster));
     const double load_seconds = std::chrono::duration<double>(Clock::now() - load_start).count();
     for (const auto& [method, output] : runs) render_with(o, scene, *method, output, load_seconds);
     return 0;
@@ -695,6 +698,27 @@ void add_render_inputs(CLI::App& render, RenderOptions& o) {
         k_aov_choices, o.aov);
 }
 
+/// `--set PATH=VALUE` (repeatable) into `o.overrides`.
+void add_set_option(CLI::App& app, RenderOptions& o) {
+    app.add_option_function<std::vector<std::string>>(
+           "--set",
+           [&o](const std::vector<std::string>& args) {
+               for (const std::string& a : args) {
+                   try {
+                       o.overrides.push_back(parse_scene_override(a));
+                   } catch (const InputError& e) {
+                       throw CLI::ValidationError(e.what());
+                   }
+               }
+           },
+           "Override a scene value by its JSON path, as scene errors name it "
+           "(--set materials.clay.shininess=5, --set camera.fov_y=30, --set "
+           "objects[0].center=[0,1,0]); VALUE is JSON or a bare word (a string); repeatable")
+        ->type_name("PATH=VALUE")
+        ->expected(1)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
+
 /// `hikari render` and the options every method takes; the methods' own come after them.
 CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
     CLI::App* render = app.add_subcommand("render", "Render a scene file to an image.");
@@ -728,24 +752,10 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
         ->expected(2)
         ->type_name("NEAR,FAR")
         ->check(CLI::NonNegativeNumber);
-    render
-        ->add_option_function<std::vector<std::string>>(
-            "--set",
-            [&o](const std::vector<std::string>& args) {
-                for (const std::string& a : args) {
-                    try {
-                        o.overrides.push_back(parse_scene_override(a));
-                    } catch (const InputError& e) {
-                        throw CLI::ValidationError(e.what());
-                    }
-                }
-            },
-            "Override a scene value by its JSON path, as scene errors name it "
-            "(--set materials.clay.shininess=5, --set camera.fov_y=30, --set "
-            "objects[0].center=[0,1,0]); VALUE is JSON or a bare word (a string); repeatable")
-        ->type_name("PATH=VALUE")
-        ->expected(1)
-        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    add_set_option(*render, o);
+    render->add_flag("--print-matrices", o.print_matrices,
+                     "Print M, P and V of p_s = V P M p_w for the scene's camera, and one vertex "
+                     "of each object carried through them (stdout), then render");
     render->add_flag("-q,--quiet", o.quiet, "No progress or summary on stderr");
     render->add_flag(
         "--stats", o.stats,
@@ -849,6 +859,55 @@ CLI::App* add_compare_command(CLI::App& app, CompareOptions& c) {
     return compare;
 }
 
+/// `hikari explain` and its options.
+struct ExplainOptions {
+    RenderOptions scene;  // the scene file, --set, --width, --height
+    std::string method;
+    std::optional<int> row;
+    std::vector<int> pixel;  // X,Y
+};
+
+/// `hikari explain SCENE -m METHOD --row Y | --pixel X,Y`: one step of the algorithm, printed.
+int run_explain(const ExplainOptions& e) {
+    const Scene scene = load_render_scene(e.scene);
+    const RasterSettings raster = e.scene.own.raster;
+    if (e.method == "zbuffer") {
+        if (e.pixel.empty()) throw InputError("explain -m zbuffer needs --pixel X,Y");
+        fmt::print("{}", explain_zbuffer_pixel(scene, raster, e.pixel[0], e.pixel[1]));
+    } else {
+        if (!e.row) throw InputError("explain -m scanline needs --row Y");
+        fmt::print("{}", explain_scanline_row(scene, raster, *e.row));
+    }
+    return 0;
+}
+
+/// `hikari explain` and its options.
+CLI::App* add_explain_command(CLI::App& app, ExplainOptions& e) {
+    CLI::App* explain = app.add_subcommand(
+        "explain",
+        "Print one step of a hidden-surface algorithm as it runs on a scene: the Z-buffer's "
+        "fragments at a pixel (Alg 4.2), or the scanline method's edge table, active edge list "
+        "and sample spans at a row (Alg 4.1).");
+    explain->add_option("scene", e.scene.scene_file,
+                        "Scene file (default: the lecture's assignment)");
+    explain->add_option("-m,--method", e.method, "zbuffer (with --pixel) or scanline (with --row)")
+        ->required()
+        ->check(CLI::IsMember({"zbuffer", "scanline"}));
+    explain->add_option("--row", e.row, "scanline: the row (0 at the top)")
+        ->check(CLI::NonNegativeNumber);
+    explain->add_option("--pixel", e.pixel, "zbuffer: the pixel X,Y (0,0 at the top left)")
+        ->delimiter(',')
+        ->expected(2)
+        ->type_name("X,Y")
+        ->check(CLI::NonNegativeNumber);
+    explain->add_option("--width", e.scene.width, "Image width in pixels (overrides the scene)")
+        ->check(CLI::Range(1, 65536));
+    explain->add_option("--height", e.scene.height, "Image height in pixels (overrides the scene)")
+        ->check(CLI::Range(1, 65536));
+    add_set_option(*explain, e.scene);
+    return explain;
+}
+
 /// `hikari gallery` and its options.
 CLI::App* add_gallery_command(CLI::App& app, GalleryOptions& g) {
     CLI::App* gallery = app.add_subcommand(
@@ -906,13 +965,15 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, cons
 /// Runs the parsed subcommand; an error becomes one line on stderr and an exit status.
 int run_command(const CLI::App& render, const RenderOptions& o, const CLI::App& bench,
                 const BenchOptions& b, const CLI::App& gallery, const GalleryOptions& g,
-                const CLI::App& compare, const CompareOptions& c, const std::string& program) {
+                const CLI::App& compare, const CompareOptions& c, const CLI::App& explain,
+                const ExplainOptions& e, const std::string& program) {
     try {
         // The method name was checked by the parser.
         if (render.parsed()) exit_after_render(run_render(o));
         if (bench.parsed()) return run_bench_command(b);
         if (gallery.parsed()) return run_gallery(g, program);
         if (compare.parsed()) return run_compare(c);
+        if (explain.parsed()) return run_explain(e);
     } catch (const Interrupted&) {
         fmt::print(stderr, "\nhikari: interrupted; no image written\n");
         return k_exit_interrupted;
@@ -946,9 +1007,12 @@ int main(int argc, char** argv) {
     const CLI::App* gallery = add_gallery_command(app, g);
     CompareOptions c;
     const CLI::App* compare = add_compare_command(app, c);
+    ExplainOptions e;
+    const CLI::App* explain = add_explain_command(app, e);
     if (const std::optional<int> status =
             parse_command_line(app, argc, argv, *render, o, *bench, b))
         return *status;
     install_signal_handlers();
-    return run_command(*render, o, *bench, b, *gallery, g, *compare, c, own_program(argv[0]));
+    return run_command(*render, o, *bench, b, *gallery, g, *compare, c, *explain, e,
+                       own_program(argv[0]));
 }

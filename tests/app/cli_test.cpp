@@ -687,3 +687,36 @@ TEST_F(Cli, SeveralMethodsWithoutOutputNameEachImage) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(Cli, ExplainPrintsOneStepOfTheAlgorithm) {
+    write("scene.json", k_two_spheres);
+    const Result z = run("explain " + path("scene.json") + " -m zbuffer --pixel 12,15");
+    EXPECT_EQ(z.status, 0) << z.output;
+    EXPECT_NE(z.output.find("Z-buffer (Alg 4.2) at pixel (12, 15)"), std::string::npos) << z.output;
+    EXPECT_NE(z.output.find("sphere (primitive 0)"), std::string::npos) << z.output;
+    const Result s = run("explain " + path("scene.json") + " -m scanline --row 15");
+    EXPECT_EQ(s.status, 0) << s.output;
+    EXPECT_NE(s.output.find("Active edge list at y = 15.5"), std::string::npos) << s.output;
+    const Result missing = run("explain " + path("scene.json") + " -m scanline");
+    EXPECT_EQ(missing.status, 1);
+    EXPECT_NE(missing.output.find("needs --row Y"), std::string::npos) << missing.output;
+    const Result outside = run("explain " + path("scene.json") + " -m zbuffer --pixel 99,1");
+    EXPECT_EQ(outside.status, 1);
+    EXPECT_NE(outside.output.find("outside the 40x30 image"), std::string::npos) << outside.output;
+    EXPECT_EQ(run("explain " + path("scene.json") + " -m path --row 1").status, 2);
+}
+
+TEST_F(Cli, PrintMatricesShowsTheTransformsAndRenders) {
+    write("scene.json", k_two_spheres);
+    const Result r =
+        run("render " + path("scene.json") + " --print-matrices -q -o " + path("m.png"));
+    EXPECT_EQ(r.status, 0) << r.output;
+    for (const char* text : {"p_s = V P M p_w", "M (model-view", "P (perspective projection",
+                             "V (viewport", "P M p_w", "pixels"})
+        EXPECT_NE(r.output.find(text), std::string::npos) << text << "\n" << r.output;
+    EXPECT_TRUE(fs::exists(path("m.png")));
+}
+
+}  // namespace

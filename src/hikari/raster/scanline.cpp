@@ -71,6 +71,39 @@ struct Scratch {
     std::vector<uint32_t> open_pos;  ///< per segment: its index in `open`
 };
 
+/// The render's observer: told nothing, costs nothing.
+struct NoRowObserver {
+    static constexpr bool k_active = false;
+    void row(int, const EdgeTable&, const Scratch&) const {}
+    void span(int, double, double, int, int, uint32_t) const {}
+};
+
+/// Records one scan line's iteration (explain).
+struct RowRecorder {
+    static constexpr bool k_active = true;
+    int row_index;
+    ScanlineRowTrace& trace;
+
+    void row(int j, const EdgeTable& table, const Scratch& s) const {
+        if (j != row_index) return;
+        for (uint32_t k = table.bucket_begin[j]; k < table.bucket_begin[j + 1]; ++k) {
+            const EdgeRecord& e = table.edges[table.order[k]];
+            trace.starting.push_back(
+                {e.triangle, e.x_top, e.y_top, e.z_top, e.dx_dy, e.dz_dy, e.first_row, e.last_row});
+        }
+        for (const ActiveEdge& a : s.active)
+            trace.active.push_back({table.edges[a.edge].triangle, a.x, a.z});
+        std::stable_sort(trace.active.begin(), trace.active.end(),
+                         [](const auto& a, const auto& b) { return a.x < b.x; });
+        for (const Segment& g : s.segments)
+            trace.segments.push_back({g.triangle, g.x_left, g.x_right, g.z_left, g.dz_dx});
+    }
+    void span(int j, double x_begin, double x_end, int first, int end, uint32_t triangle) const {
+        if (j == row_index && first < end)
+            trace.spans.push_back({x_begin, x_end, first, end, triangle});
+    }
+};
+
 PolygonVertex to_vertex(const ScreenVertex& v) {
     return {v.position.x, v.position.y, v.position.z};
 }
@@ -154,7 +187,10 @@ bool nearer(const Segment& a, const Segment& b, double x) {
 
 /// Alg 4.1: in one sample span (pixel columns `cols`), the visible segment; where another open
 /// segment comes nearer inside the span (interpenetration), the span is split at the crossing.
-void fill_span(const Scratch& s, PixelRange cols, uint32_t* row) {
+/// The observer hears of each piece: row j, the piece's x interval, its pixels and triangle.
+template <class Observer>
+void fill_span(const Scratch& s, PixelRange cols, uint32_t* row, int j, double x_begin,
+               double x_end, const Observer& observer) {
     double x = cols.begin + 0.5;
     const double x_last = cols.end - 0.5;
     uint32_t best = s.open[0];
@@ -180,16 +216,20 @@ void fill_span(const Scratch& s, PixelRange cols, uint32_t* row) {
         }
         if (next == k_no_edge) break;
         const int split = std::min(first_centre_at_or_after(cross_x, cols.end), cols.end);
+        if constexpr (Observer::k_active) observer.span(j, x_begin, cross_x, i, split, b.triangle);
+        x_begin = cross_x;
         for (; i < split; ++i) row[i] = b.triangle;
         x = cross_x;
         best = next;
     }
     const uint32_t id = s.segments[best].triangle;
+    if constexpr (Observer::k_active) observer.span(j, x_begin, x_end, i, cols.end, id);
     for (; i < cols.end; ++i) row[i] = id;
 }
 
 /// Alg 4.1: sort the end points by x, sweep the sample spans between them, fill each.
-void resolve_row(int width, Scratch& s, uint32_t* row) {
+template <class Observer>
+void resolve_row(int width, Scratch& s, uint32_t* row, int j, const Observer& observer) {
     s.end_points.clear();
     for (uint32_t k = 0; k < s.segments.size(); ++k) {
         s.end_points.push_back({s.segments[k].x_left, k, true});
@@ -212,14 +252,15 @@ void resolve_row(int width, Scratch& s, uint32_t* row) {
         }
         if (s.open.empty() || k + 1 == s.end_points.size()) continue;
         const PixelRange cols = centre_range(e.x, s.end_points[k + 1].x, width);
-        if (!cols.empty()) fill_span(s, cols, row);
+        if (!cols.empty()) fill_span(s, cols, row, j, e.x, s.end_points[k + 1].x, observer);
     }
 }
 
 /// Alg 4.1 over rows [row_begin, row_end): the AEL is seeded with the edges crossing the first row,
 /// then updated incrementally from one scanline to the next.
+template <class Observer>
 void scan_band(const EdgeTable& table, int width, int row_begin, int row_end, Scratch& s,
-               uint32_t* pixels) {
+               uint32_t* pixels, const Observer& observer) {
     s.active.clear();
     for (uint32_t e = 0; e < table.edges.size(); ++e)
         if (table.edges[e].first_row < row_begin && table.edges[e].last_row >= row_begin)
@@ -229,7 +270,8 @@ void scan_band(const EdgeTable& table, int width, int row_begin, int row_end, Sc
         for (uint32_t k = table.bucket_begin[j]; k < table.bucket_begin[j + 1]; ++k)
             s.active.push_back(activate(table, table.order[k], j));
         form_segments(table, width, s);
-        resolve_row(width, s, pixels + static_cast<size_t>(j) * width);
+        if constexpr (Observer::k_active) observer.row(j, table, s);
+        resolve_row(width, s, pixels + static_cast<size_t>(j) * width, j, observer);
         // update the AEL: drop the edges ending here, step the rest to the next scanline
         size_t kept = 0;
         for (const ActiveEdge& a : s.active) {
@@ -241,10 +283,9 @@ void scan_band(const EdgeTable& table, int width, int row_begin, int row_end, Sc
     }
 }
 
-}  // namespace
-
-VisibilityBuffer scanline_visibility(std::span<const ScreenTriangle> triangles, int width,
-                                     int height) {
+template <class Observer>
+VisibilityBuffer scanline_pass(std::span<const ScreenTriangle> triangles, int width, int height,
+                               const Observer& observer) {
     VisibilityBuffer out;
     out.width = std::max(width, 0);
     out.height = std::max(height, 0);
@@ -258,14 +299,28 @@ VisibilityBuffer scanline_visibility(std::span<const ScreenTriangle> triangles, 
         return s;
     });
     const int bands = (out.height + k_band_rows - 1) / k_band_rows;
-    hikari::parallel_for(
-        tbb::blocked_range<int>(0, bands, 1), [&](const tbb::blocked_range<int>& r) {
-            Scratch& s = scratch.local();
-            for (int b = r.begin(); b != r.end(); ++b)
-                scan_band(table, out.width, b * k_band_rows,
-                          std::min(out.height, (b + 1) * k_band_rows), s, out.triangle.data());
-        });
+    hikari::parallel_for(tbb::blocked_range<int>(0, bands, 1),
+                         [&](const tbb::blocked_range<int>& r) {
+                             Scratch& s = scratch.local();
+                             for (int b = r.begin(); b != r.end(); ++b)
+                                 scan_band(table, out.width, b * k_band_rows,
+                                           std::min(out.height, (b + 1) * k_band_rows), s,
+                                           out.triangle.data(), observer);
+                         });
     return out;
+}
+
+}  // namespace
+
+VisibilityBuffer scanline_visibility(std::span<const ScreenTriangle> triangles, int width,
+                                     int height) {
+    return scanline_pass(triangles, width, height, NoRowObserver{});
+}
+
+VisibilityBuffer scanline_visibility_at(std::span<const ScreenTriangle> triangles, int width,
+                                        int height, int row, ScanlineRowTrace& trace) {
+    trace = {};
+    return scanline_pass(triangles, width, height, RowRecorder{row, trace});
 }
 
 Framebuffer render_scanline(const Scene& scene, Film film, const RenderSettings& settings,

@@ -12,8 +12,27 @@
 
 namespace hikari {
 
-VisibilityBuffer zbuffer_visibility(std::span<const ScreenTriangle> triangles, int width,
-                                    int height, RenderControl* control) {
+namespace {
+
+/// The render's observer: told nothing, costs nothing.
+struct NoFragmentObserver {
+    static constexpr bool k_active = false;
+    void fragment(int, int, uint32_t, float, float, bool) const {}
+};
+
+/// Records the fragments of one pixel (explain).
+struct PixelFragments {
+    static constexpr bool k_active = true;
+    int x, y;
+    std::vector<ZBufferFragment>& out;
+    void fragment(int px, int py, uint32_t t, float z, float stored, bool won) const {
+        if (px == x && py == y) out.push_back({t, z, stored, won});
+    }
+};
+
+template <class Observer>
+VisibilityBuffer zbuffer_pass(std::span<const ScreenTriangle> triangles, int width, int height,
+                              RenderControl* control, const Observer& observer) {
     VisibilityBuffer vis{width, height,
                          std::vector<uint32_t>(static_cast<size_t>(width) * height, k_no_triangle)};
     std::vector<HalfSpaceTriangle> setup(triangles.size());
@@ -40,6 +59,8 @@ VisibilityBuffer zbuffer_visibility(std::span<const ScreenTriangle> triangles, i
                                            b0 * h.inv_w[0] + b1 * h.inv_w[1] + b2 * h.inv_w[2];
                                        const float z = 1.0f / inv_w;
                                        const int i = (y - tile.y0) * k_tile_size + (x - tile.x0);
+                                       if constexpr (Observer::k_active)
+                                           observer.fragment(x, y, t, z, depth[i], z < depth[i]);
                                        // Alg 4.2: the depth test; nearer fragments replace.
                                        if (z < depth[i]) {
                                            depth[i] = z;
@@ -53,6 +74,19 @@ VisibilityBuffer zbuffer_visibility(std::span<const ScreenTriangle> triangles, i
                     nearest[(y - tile.y0) * k_tile_size + (x - tile.x0)];
     });
     return vis;
+}
+
+}  // namespace
+
+VisibilityBuffer zbuffer_visibility(std::span<const ScreenTriangle> triangles, int width,
+                                    int height, RenderControl* control) {
+    return zbuffer_pass(triangles, width, height, control, NoFragmentObserver{});
+}
+
+VisibilityBuffer zbuffer_visibility_at(std::span<const ScreenTriangle> triangles, int width,
+                                       int height, int x, int y,
+                                       std::vector<ZBufferFragment>& fragments) {
+    return zbuffer_pass(triangles, width, height, nullptr, PixelFragments{x, y, fragments});
 }
 
 Framebuffer render_zbuffer(const Scene& scene, Film film, const RenderSettings& settings,

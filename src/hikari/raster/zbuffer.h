@@ -3,6 +3,7 @@
 // nearest surface drawn so far, and a fragment is written only when it is nearer still.
 
 #include <span>
+#include <vector>
 
 #include "hikari/frame/film.h"
 #include "hikari/frame/framebuffer.h"
@@ -20,6 +21,22 @@ namespace hikari {
 /// order: the result does not depend on the thread count. `control` may be null.
 VisibilityBuffer zbuffer_visibility(std::span<const ScreenTriangle> triangles, int width,
                                     int height, RenderControl* control = nullptr);
+
+/// One pass of Alg 4.2's inner loop at one pixel: a triangle's fragment, its depth, what the
+/// Z-buffer held when it was tested, and whether the test let it replace that.
+struct ZBufferFragment {
+    uint32_t triangle = 0;  ///< index into the ScreenTriangle list
+    float depth = 0;        ///< z = 1 / inv_w at the pixel centre
+    float stored = 0;       ///< Z(i, j) before the test (infinity: nothing drawn yet)
+    bool won = false;       ///< z < Z(i, j): written
+};
+
+/// zbuffer_visibility, also recording into `fragments` every fragment tested at pixel (x, y), in
+/// the order the algorithm tested them (`hikari explain -m zbuffer --pixel X,Y`). The same code
+/// runs: the render's loop reports each fragment to an observer that does nothing by default.
+VisibilityBuffer zbuffer_visibility_at(std::span<const ScreenTriangle> triangles, int width,
+                                       int height, int x, int y,
+                                       std::vector<ZBufferFragment>& fragments);
 
 /// The `zbuffer` method: vertex stage (raster/vertex_pipeline.h), zbuffer_visibility, then the
 /// shared deferred shading pass (raster/shade_visibility.h).

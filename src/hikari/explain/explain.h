@@ -1,0 +1,30 @@
+#pragma once
+// `hikari explain`: one step of a hidden-surface algorithm printed as the algorithm saw it, for a
+// student to follow with the lecture beside. Each explanation runs the method's own code with an
+// observer attached (raster/zbuffer.h zbuffer_visibility_at, raster/scanline.h
+// scanline_visibility_at), so what is printed is what the render does.
+
+#include <string>
+
+#include "hikari/raster/raster_settings.h"
+#include "hikari/scene/scene.h"
+
+namespace hikari {
+
+/// Alg 4.2 at pixel (x, y): every fragment tested there in drawing order, its depth, the
+/// Z-buffer's value before the test and the outcome, then the winner. Throws InputError when
+/// the pixel is outside the image.
+std::string explain_zbuffer_pixel(const Scene& scene, const RasterSettings& raster, int x, int y);
+
+/// Alg 4.1 at scan line `row`: the edge-table entries that start there, the active edge list
+/// with x and depth at y = row + 0.5, the scan segments, and each sample span with its visible
+/// segment. Throws InputError when the row is outside the image.
+std::string explain_scanline_row(const Scene& scene, const RasterSettings& raster, int row);
+
+/// The lecture's p_s = V P M p_w for the scene's camera (`--print-matrices`): M the model-view
+/// matrix (world to camera coordinates; scene objects are given in world coordinates, so M is the
+/// camera's), P the projection, V the viewport, then one vertex of each object (up to a few)
+/// carried through them, the division by w between P and V included.
+std::string explain_matrices(const Scene& scene, const RasterSettings& raster);
+
+}  // namespace hikari
