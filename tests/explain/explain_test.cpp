@@ -45,8 +45,7 @@ TEST(ExplainZBuffer, FragmentsAreTheTrianglesCoveringThePixelInDrawingOrder) {
     const ProjectedScene ps = project_scene(scene, RasterSettings{});
     for (const auto& [x, y] : {std::pair{20, 15}, std::pair{24, 12}, std::pair{5, 25}}) {
         std::vector<ZBufferFragment> fragments;
-        const VisibilityBuffer vis =
-            zbuffer_visibility_at(ps.triangles, 40, 30, x, y, fragments);
+        const VisibilityBuffer vis = zbuffer_visibility_at(ps.triangles, 40, 30, x, y, fragments);
         EXPECT_EQ(vis.triangle, zbuffer_visibility(ps.triangles, 40, 30).triangle);
         std::vector<uint32_t> expected;
         for (uint32_t t = 0; t < ps.triangles.size(); ++t)

@@ -22,12 +22,12 @@ std::string matrix_text(std::string_view name, std::string_view meaning, const M
 std::string vertex_text(const RasterView& view, std::string_view what, Vec3 p) {
     const Vec4 camera = view.view_from_world * Vec4(p, 1.0f);
     const Vec4 clip = view.clip_from_view * camera;
-    std::string out = fmt::format("{}:\n  p_w        = ({:.4f}, {:.4f}, {:.4f}, 1)\n", what, p.x,
-                                  p.y, p.z);
+    std::string out =
+        fmt::format("{}:\n  p_w        = ({:.4f}, {:.4f}, {:.4f}, 1)\n", what, p.x, p.y, p.z);
     out += fmt::format("  M p_w      = ({:.4f}, {:.4f}, {:.4f}, {:.4f})  camera coordinates\n",
                        camera.x, camera.y, camera.z, camera.w);
-    out += fmt::format("  P M p_w    = ({:.4f}, {:.4f}, {:.4f}, {:.4f})  clip coordinates\n", clip.x,
-                       clip.y, clip.z, clip.w);
+    out += fmt::format("  P M p_w    = ({:.4f}, {:.4f}, {:.4f}, {:.4f})  clip coordinates\n",
+                       clip.x, clip.y, clip.z, clip.w);
     if (!(clip.w > 0.0f) || clip.z < -clip.w) {
         out += "  behind the near plane: clipped before the division by w\n";
         return out;
@@ -83,8 +83,7 @@ std::string explain_matrices(const Scene& scene, const RasterSettings& raster) {
         }
         previous = t.id[i];
         ++shown;
-        out += vertex_text(view,
-                           fmt::format("triangle (primitive {}), its first corner", t.id[i]),
+        out += vertex_text(view, fmt::format("triangle (primitive {}), its first corner", t.id[i]),
                            t.positions[t.indices[i][0]]);
     }
     return out;

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numbers>
 #include <map>
 #include <memory>
+#include <numbers>
 #include <string_view>
 
 #include <fmt/format.h>
