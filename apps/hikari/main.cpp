@@ -874,6 +874,8 @@ int run_explain(const ExplainOptions& e) {
     if (e.method == "zbuffer") {
         if (e.pixel.empty()) throw InputError("explain -m zbuffer needs --pixel X,Y");
         fmt::print("{}", explain_zbuffer_pixel(scene, raster, e.pixel[0], e.pixel[1]));
+    } else if (e.method == "depthsort") {
+        fmt::print("{}", explain_depth_sort(scene, raster));
     } else {
         if (!e.row) throw InputError("explain -m scanline needs --row Y");
         fmt::print("{}", explain_scanline_row(scene, raster, *e.row));
@@ -885,14 +887,17 @@ int run_explain(const ExplainOptions& e) {
 CLI::App* add_explain_command(CLI::App& app, ExplainOptions& e) {
     CLI::App* explain = app.add_subcommand(
         "explain",
-        "Print one step of a hidden-surface algorithm as it runs on a scene: the Z-buffer's "
-        "fragments at a pixel (Alg 4.2), or the scanline method's edge table, active edge list "
-        "and sample spans at a row (Alg 4.1).");
+        "Print a hidden-surface algorithm's work as it runs on a scene: the Z-buffer's "
+        "fragments at a pixel (Alg 4.2), the scanline method's edge table, active edge list "
+        "and sample spans at a row (Alg 4.1), or the depth sort's comparisons, reorderings, "
+        "splits and painting order (Fig 4.6-4.9).");
     explain->add_option("scene", e.scene.scene_file,
                         "Scene file (default: the lecture's assignment)");
-    explain->add_option("-m,--method", e.method, "zbuffer (with --pixel) or scanline (with --row)")
+    explain
+        ->add_option("-m,--method", e.method,
+                     "zbuffer (with --pixel), scanline (with --row) or depthsort (the whole sort)")
         ->required()
-        ->check(CLI::IsMember({"zbuffer", "scanline"}));
+        ->check(CLI::IsMember({"zbuffer", "scanline", "depthsort"}));
     explain->add_option("--row", e.row, "scanline: the row (0 at the top)")
         ->check(CLI::NonNegativeNumber);
     explain->add_option("--pixel", e.pixel, "zbuffer: the pixel X,Y (0,0 at the top left)")

@@ -21,6 +21,12 @@ std::string explain_zbuffer_pixel(const Scene& scene, const RasterSettings& rast
 /// segment. Throws InputError when the row is outside the image.
 std::string explain_scanline_row(const Scene& scene, const RasterSettings& raster, int row);
 
+/// The depth sort (Newell, Newell & Sancha 1972; Fig 4.6-4.9) on the whole scene: the list by
+/// farthest depth, each comparison and which of Newell's tests settled it, the reorderings, the
+/// splits and the painting order. Long runs are cut after `max_steps` steps (said so).
+std::string explain_depth_sort(const Scene& scene, const RasterSettings& raster,
+                               size_t max_steps = 2000);
+
 /// The lecture's p_s = V P M p_w for the scene's camera (`--print-matrices`): M the model-view
 /// matrix (world to camera coordinates; scene objects are given in world coordinates, so M is the
 /// camera's), P the projection, V the viewport, then one vertex of each object (up to a few)

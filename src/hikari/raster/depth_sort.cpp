@@ -35,7 +35,9 @@ enum class Step { paint, move_q, split_q_by_p, split_p_by_q, bisect_p };
 /// Newell, Newell & Sancha 1972, over convex polygons kept in a flat vertex pool.
 class DepthSorter {
   public:
-    explicit DepthSorter(std::span<const ScreenTriangle> triangles);
+    /// `trace`, when not null, hears of every step.
+    explicit DepthSorter(std::span<const ScreenTriangle> triangles,
+                         DepthSortTrace* trace = nullptr);
     /// The polygons in painting order, back to front.
     void sort();
     void paint(VisibilityBuffer& out) const;
@@ -49,8 +51,10 @@ class DepthSorter {
     bool separated_by_edges_of(const Polygon& p, const Polygon& q) const;
     Step examine(uint32_t p, uint32_t& q_out) const;
     void add_polygon(uint32_t first, uint32_t source, double a, double b, double c);
+    /// Cuts polygon `id` where `offset` changes sign: along the plane or an edge line of
+    /// polygon `by`, or halved (`cut`, for the trace).
     template <class OffsetFn>
-    void split(uint32_t id, OffsetFn&& offset);
+    void split(uint32_t id, OffsetFn&& offset, uint32_t by, DepthSortTrace::Cut cut);
     void retire(uint32_t id);
     bool find_cycle_cut(uint32_t q, uint32_t& cut, uint32_t& by) const;
     /// Cuts polygon `id` along the line of the first edge of `by` whose line crosses it;
@@ -70,13 +74,22 @@ class DepthSorter {
     size_t m_head = 0;                           ///< m_list before m_head is all retired
     size_t m_alive = 0;                          ///< polygons neither painted nor split
     int64_t m_split_budget = 0;
+    DepthSortTrace* m_trace = nullptr;
+
+    void note(DepthSortTrace::Step step) const {
+        if (m_trace) m_trace->steps.push_back(step);
+    }
+    void note_compare(uint32_t p, uint32_t q, DepthSortTrace::Settled how) const {
+        if (m_trace) note({DepthSortTrace::Kind::compare, p, q, how});
+    }
 };
 
 bool list_before(const Polygon& p, uint32_t p_id, const Polygon& q, uint32_t q_id) {
     return p.z_max != q.z_max ? p.z_max > q.z_max : p_id < q_id;
 }
 
-DepthSorter::DepthSorter(std::span<const ScreenTriangle> triangles) {
+DepthSorter::DepthSorter(std::span<const ScreenTriangle> triangles, DepthSortTrace* trace)
+    : m_trace(trace) {
     for (size_t t = 0; t < triangles.size(); ++t) {
         const auto& v = triangles[t].v;
         const PolygonVertex p0{v[0].position.x, v[0].position.y, v[0].position.z};
@@ -97,6 +110,7 @@ DepthSorter::DepthSorter(std::span<const ScreenTriangle> triangles) {
     std::sort(m_list.begin(), m_list.end(), [&](uint32_t p, uint32_t q) {
         return list_before(m_polygons[p], p, m_polygons[q], q);
     });
+    if (m_trace) m_trace->sorted = m_list;
     // every interpenetrating pair needs a cut and pieces can be cut again; past this budget the
     // order is accepted as it is, so the sort always ends
     const auto n = static_cast<int64_t>(m_polygons.size());
@@ -120,6 +134,7 @@ void DepthSorter::add_polygon(uint32_t first, uint32_t source, double a, double 
         p.z_min = std::min(p.z_min, v.z), p.z_max = std::max(p.z_max, v.z);
     }
     m_polygons.push_back(p);
+    if (m_trace) m_trace->source.push_back(source);
     ++m_alive;
     m_retired.push_back(0);
     m_marked.push_back(0);
@@ -181,18 +196,35 @@ Step DepthSorter::examine(uint32_t p_id, uint32_t& q_out) const {
         // the list is sorted by z_max: from here on every Q lies entirely in front of P
         if (q.z_max <= p.z_min) break;
         if (q_id == p_id || m_retired[q_id]) continue;
+        using Settled = DepthSortTrace::Settled;
         // test 1, 2: the x or the y extents do not overlap
-        if (p.x_max <= q.x_min || q.x_max <= p.x_min) continue;
-        if (p.y_max <= q.y_min || q.y_max <= p.y_min) continue;
+        if (p.x_max <= q.x_min || q.x_max <= p.x_min) {
+            note_compare(p_id, q_id, Settled::x_extents);
+            continue;
+        }
+        if (p.y_max <= q.y_min || q.y_max <= p.y_min) {
+            note_compare(p_id, q_id, Settled::y_extents);
+            continue;
+        }
         // test 3: P entirely behind Q's plane (on the far side from the viewer)
         const int p_wrt_q = sides(q, p);
-        if (!(p_wrt_q & k_in_front)) continue;
+        if (!(p_wrt_q & k_in_front)) {
+            note_compare(p_id, q_id, Settled::p_behind_q);
+            continue;
+        }
         // test 4: Q entirely in front of P's plane
         const int q_wrt_p = sides(p, q);
-        if (!(q_wrt_p & k_behind)) continue;
+        if (!(q_wrt_p & k_behind)) {
+            note_compare(p_id, q_id, Settled::q_in_front);
+            continue;
+        }
         // test 5: the projections do not overlap
-        if (!projections_overlap(p, q)) continue;
+        if (!projections_overlap(p, q)) {
+            note_compare(p_id, q_id, Settled::no_overlap);
+            continue;
+        }
         // Q may hide part of P. Can Q go first (tests 3, 4 with P and Q swapped)?
+        note_compare(p_id, q_id, Settled::q_may_hide);
         q_out = q_id;
         const bool q_first = !(q_wrt_p & k_in_front) || !(p_wrt_q & k_behind);
         if (!q_first) return Step::split_q_by_p;  // interpenetration (Fig 4.9b): they straddle
@@ -243,7 +275,7 @@ bool DepthSorter::split_by_edge_line(uint32_t id, uint32_t by) {
             above |= d > tolerance;
         }
         if (below && above) {
-            split(id, offset);
+            split(id, offset, by, DepthSortTrace::Cut::by_edge_line);
             return true;
         }
     }
@@ -261,8 +293,9 @@ void DepthSorter::retire(uint32_t id) {
 /// retires it and inserts the pieces into the list. Cut vertices are computed once and shared,
 /// so the pieces meet without cracks.
 template <class OffsetFn>
-void DepthSorter::split(uint32_t id, OffsetFn&& offset) {
+void DepthSorter::split(uint32_t id, OffsetFn&& offset, uint32_t by, DepthSortTrace::Cut cut) {
     --m_split_budget;
+    const size_t before = m_polygons.size();
     const Polygon parent = m_polygons[id];
     m_front.clear();
     m_back.clear();
@@ -304,15 +337,20 @@ void DepthSorter::split(uint32_t id, OffsetFn&& offset) {
                                          });
         m_list.insert(at, new_id);
     }
+    note({DepthSortTrace::Kind::split, id, by, DepthSortTrace::Settled::q_may_hide, cut,
+          static_cast<uint32_t>(m_polygons.size() - before)});
 }
 
 void DepthSorter::cut_cycle(uint32_t p, uint32_t q) {
     // Cut the cycle where another of its members straddles the plane of one it overlaps.
     uint32_t cut = 0, by = 0;
     if (find_cycle_cut(q, cut, by)) {
-        split(cut, [&](const PolygonVertex& v, double& tol) {
-            return plane_offset(m_polygons[by], v, tol);
-        });
+        split(
+            cut,
+            [&](const PolygonVertex& v, double& tol) {
+                return plane_offset(m_polygons[by], v, tol);
+            },
+            by, DepthSortTrace::Cut::by_plane);
         return;
     }
     // No plane cuts it: cut P (or Q) along the screen-space line of an edge of the other. The
@@ -324,10 +362,13 @@ void DepthSorter::cut_cycle(uint32_t p, uint32_t q) {
     const Polygon& pp = m_polygons[p];
     const bool along_x = pp.x_max - pp.x_min >= pp.y_max - pp.y_min;
     const double mid = along_x ? 0.5 * (pp.x_min + pp.x_max) : 0.5 * (pp.y_min + pp.y_max);
-    split(p, [&](const PolygonVertex& v, double& tol) {
-        tol = 0;
-        return (along_x ? v.x : v.y) - mid;
-    });
+    split(
+        p,
+        [&](const PolygonVertex& v, double& tol) {
+            tol = 0;
+            return (along_x ? v.x : v.y) - mid;
+        },
+        q, DepthSortTrace::Cut::halved);
 }
 
 void DepthSorter::sort() {
@@ -349,22 +390,30 @@ void DepthSorter::sort() {
         if (step != Step::paint && step != Step::move_q && m_split_budget <= 0) step = Step::paint;
         switch (step) {
             case Step::paint:
+                note({DepthSortTrace::Kind::paint, p, p});
                 m_order.push_back(p);
                 retire(p);
                 break;
             case Step::move_q:  // reorder: Q is painted before P
+                note({DepthSortTrace::Kind::reorder, p, q});
                 m_chain.push_back(q);
                 m_marked[q] = 1;
                 break;
             case Step::split_q_by_p:
-                split(q, [&](const PolygonVertex& v, double& tol) {
-                    return plane_offset(m_polygons[p], v, tol);
-                });
+                split(
+                    q,
+                    [&](const PolygonVertex& v, double& tol) {
+                        return plane_offset(m_polygons[p], v, tol);
+                    },
+                    p, DepthSortTrace::Cut::by_plane);
                 break;
             case Step::split_p_by_q:
-                split(p, [&](const PolygonVertex& v, double& tol) {
-                    return plane_offset(m_polygons[q], v, tol);
-                });
+                split(
+                    p,
+                    [&](const PolygonVertex& v, double& tol) {
+                        return plane_offset(m_polygons[q], v, tol);
+                    },
+                    q, DepthSortTrace::Cut::by_plane);
                 break;
             case Step::bisect_p:
                 cut_cycle(p, q);
@@ -374,11 +423,18 @@ void DepthSorter::sort() {
 }
 
 void DepthSorter::paint(VisibilityBuffer& out) const {
+    if (m_trace) {
+        m_trace->painted = m_order;
+        m_trace->visible_paint.assign(out.triangle.size(), UINT32_MAX);
+        m_trace->paint_count.assign(out.triangle.size(), 0);
+    }
     // painter's algorithm: later (nearer) polygons overwrite
-    for (const uint32_t id : m_order) {
-        const Polygon& p = m_polygons[id];
+    for (uint32_t k = 0; k < m_order.size(); ++k) {
+        const Polygon& p = m_polygons[m_order[k]];
         fill_convex_polygon(vertices(p), out.width, out.height, [&](int i, int j) {
-            out.triangle[static_cast<size_t>(j) * out.width + i] = p.source;
+            const size_t pixel = static_cast<size_t>(j) * out.width + i;
+            out.triangle[pixel] = p.source;
+            if (m_trace) m_trace->visible_paint[pixel] = k, ++m_trace->paint_count[pixel];
         });
     }
 }
@@ -398,6 +454,17 @@ VisibilityBuffer depth_sort_visibility(std::span<const ScreenTriangle> triangles
     VisibilityBuffer out = empty_buffer(width, height);
     if (out.triangle.empty()) return out;
     DepthSorter sorter(triangles);
+    sorter.sort();
+    sorter.paint(out);
+    return out;
+}
+
+VisibilityBuffer depth_sort_visibility_traced(std::span<const ScreenTriangle> triangles,
+                                              int width, int height, DepthSortTrace& trace) {
+    trace = {};
+    VisibilityBuffer out = empty_buffer(width, height);
+    if (out.triangle.empty()) return out;
+    DepthSorter sorter(triangles, &trace);
     sorter.sort();
     sorter.paint(out);
     return out;
