@@ -29,6 +29,7 @@
 #include "hikari/bench/bench_runner.h"
 #include "hikari/bench/path_bench.h"
 #include "hikari/core/error.h"
+#include "hikari/explain/algorithm_aovs.h"
 #include "hikari/explain/explain.h"
 #include "hikari/frame/aov_picture.h"
 #include "hikari/frame/image_compare.h"
@@ -55,9 +56,10 @@ constexpr int k_exit_interrupted = 130;
 
 /// `--aov`'s words.
 constexpr Choice<Aov> k_aov_choices[] = {
-    {"color", Aov::color},      {"depth", Aov::depth},     {"id", Aov::id},
-    {"normal", Aov::normal},    {"ambient", Aov::ambient}, {"diffuse", Aov::diffuse},
-    {"specular", Aov::specular}};
+    {"color", Aov::color},       {"depth", Aov::depth},       {"id", Aov::id},
+    {"normal", Aov::normal},     {"ambient", Aov::ambient},   {"diffuse", Aov::diffuse},
+    {"specular", Aov::specular}, {"overdraw", Aov::overdraw}, {"paint-order", Aov::paint_order},
+    {"spans", Aov::spans},       {"culled", Aov::culled}};
 
 /// The shading term an --aov word names, if it names one.
 std::optional<ShadingTerm> shading_term_of(Aov aov) {
@@ -330,6 +332,10 @@ void check_svg_output(const std::string& output, const Method& method, Aov aov) 
 /// Refuses, before any work is done, a shading term of a method whose colour is not the
 /// lecture's sum of terms (path tracing, the line drawings).
 void check_aov_method(const Method& method, Aov aov) {
+    if (is_algorithm_aov(aov) && !has_algorithm_aov(method.name, aov))
+        throw CLI::ValidationError(fmt::format("--aov {} shows the work of {}, not of method {}",
+                                               choice_name<Aov>(k_aov_choices, aov),
+                                               methods_with_algorithm_aov(aov), method.name));
     if (!shading_term_of(aov) || method.shading_terms) return;
     throw CLI::ValidationError(
         fmt::format("--aov {}: method {} does not shade by ambient + diffuse + specular (Fig "
@@ -361,6 +367,21 @@ int run_drawing(const RenderOptions& o, const Method& method, const std::string&
 /// for --stats.
 void render_with(const RenderOptions& o, const Scene& scene, const Method& method,
                  const std::string& output, double load_seconds) {
+    if (is_algorithm_aov(o.aov)) {
+        const std::optional<ImageFormat> format = image_format_from_extension(output);
+        const bool raw = format == ImageFormat::Pfm || format == ImageFormat::Exr;
+        const auto start = Clock::now();
+        const AlgorithmAov a = algorithm_aov(scene, method, o.aov, o.own, raw);
+        g_writing = true;
+        if (g_control.cancel.load()) throw Interrupted();
+        write_image(output, a.image);
+        g_writing = false;
+        if (!o.quiet)
+            fmt::print(stderr, "hikari: wrote {} ({}x{}, {}, {:.3f} s)\nhikari: {}\n", output,
+                       a.image.width, a.image.height, method.name,
+                       std::chrono::duration<double>(Clock::now() - start).count(), a.summary);
+        return;
+    }
     if (method.warnings)
         for (const std::string& w : method.warnings(scene))
             fmt::print(stderr, "hikari: warning: {}\n", w);
@@ -694,7 +715,9 @@ void add_render_inputs(CLI::App& render, RenderOptions& o) {
         "Buffer to write: color; depth (eye distance), id (1 + primitive index, 0 = background), "
         "normal -- raw values in .pfm/.exr, pictures in 8-bit files (depth near white to far "
         "black, ids in false colour, normals as 0.5 + 0.5n); ambient, diffuse, specular: one "
-        "term of the shading model alone (Fig 4.29; the three sum to color)",
+        "term of the shading model alone (Fig 4.29; the three sum to color); overdraw "
+        "(zbuffer, depthsort), paint-order (depthsort), spans (scanline), culled (raster "
+        "methods): the algorithm at work",
         k_aov_choices, o.aov);
 }
 

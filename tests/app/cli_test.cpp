@@ -720,3 +720,20 @@ TEST_F(Cli, PrintMatricesShowsTheTransformsAndRenders) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(Cli, AlgorithmAovsForTheirMethodsOnly) {
+    write("scene.json", k_two_spheres);
+    const Result r = run("render " + path("scene.json") + " -m depthsort --aov paint-order -o " +
+                         path("order.png"));
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("hikari: paint-order:"), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::exists(path("order.png")));
+    expect_usage_error(path("scene.json") + " -m zbuffer --aov paint-order",
+                       "--aov paint-order shows the work of depthsort, not of method zbuffer");
+    expect_usage_error(path("scene.json") + " -m raytrace --aov overdraw",
+                       "--aov overdraw shows the work of zbuffer, depthsort");
+}
+
+}  // namespace

@@ -13,29 +13,37 @@ using Kind = DepthSortTrace::Kind;
 
 std::string_view settled_text(Settled s) {
     switch (s) {
-        case Settled::x_extents: return "test 1: x extents apart -> P may go first";
-        case Settled::y_extents: return "test 2: y extents apart -> P may go first";
-        case Settled::p_behind_q: return "test 3: P wholly behind Q's plane -> P may go first";
-        case Settled::q_in_front: return "test 4: Q wholly in front of P's plane -> P may go first";
-        case Settled::no_overlap: return "test 5: projections do not overlap -> P may go first";
-        case Settled::q_may_hide: return "all five fail: Q may hide part of P";
+        case Settled::x_extents:
+            return "test 1: x extents apart -> P may go first";
+        case Settled::y_extents:
+            return "test 2: y extents apart -> P may go first";
+        case Settled::p_behind_q:
+            return "test 3: P wholly behind Q's plane -> P may go first";
+        case Settled::q_in_front:
+            return "test 4: Q wholly in front of P's plane -> P may go first";
+        case Settled::no_overlap:
+            return "test 5: projections do not overlap -> P may go first";
+        case Settled::q_may_hide:
+            return "all five fail: Q may hide part of P";
     }
     return "";
 }
 
 std::string_view cut_text(DepthSortTrace::Cut c) {
     switch (c) {
-        case DepthSortTrace::Cut::by_plane: return "by the plane of";
-        case DepthSortTrace::Cut::by_edge_line: return "along an edge line of";
-        case DepthSortTrace::Cut::halved: return "in half (a cycle no plane cuts) beside";
+        case DepthSortTrace::Cut::by_plane:
+            return "by the plane of";
+        case DepthSortTrace::Cut::by_edge_line:
+            return "along an edge line of";
+        case DepthSortTrace::Cut::halved:
+            return "in half (a cycle no plane cuts) beside";
     }
     return "";
 }
 
 }  // namespace
 
-std::string explain_depth_sort(const Scene& scene, const RasterSettings& raster,
-                               size_t max_steps) {
+std::string explain_depth_sort(const Scene& scene, const RasterSettings& raster, size_t max_steps) {
     const ProjectedScene ps = project_scene(scene, raster);
     DepthSortTrace t;
     depth_sort_visibility_traced(ps.triangles, scene.camera.width, scene.camera.height, t);
@@ -51,10 +59,11 @@ std::string explain_depth_sort(const Scene& scene, const RasterSettings& raster,
         "1. The list by farthest depth (Fig 4.6), farthest first:\n",
         scene.camera.width, scene.camera.height, t.sorted.empty() ? 0 : t.sorted.size() - 1);
     for (const uint32_t id : t.sorted) out += fmt::format("  {}\n", polygon(id));
-    out += "\n2. For the polygon P at the far end, each Q whose depth range overlaps P's is "
-           "compared (Newell's tests 1-5);\n   if Q may hide P, Q moves ahead (reorder) unless it "
-           "already waits ahead (a cycle, Fig 4.9a) or they interpenetrate (Fig 4.9b): then a "
-           "split.\n";
+    out +=
+        "\n2. For the polygon P at the far end, each Q whose depth range overlaps P's is "
+        "compared (Newell's tests 1-5);\n   if Q may hide P, Q moves ahead (reorder) unless it "
+        "already waits ahead (a cycle, Fig 4.9a) or they interpenetrate (Fig 4.9b): then a "
+        "split.\n";
     size_t shown = 0, splits = 0, reorders = 0;
     for (const DepthSortTrace::Step& s : t.steps) {
         splits += s.kind == Kind::split;
@@ -66,8 +75,8 @@ std::string explain_depth_sort(const Scene& scene, const RasterSettings& raster,
                                    settled_text(s.settled));
                 break;
             case Kind::reorder:
-                out += fmt::format("  reorder: P{} goes ahead of P{} (painted before it)\n", s.q,
-                                   s.p);
+                out +=
+                    fmt::format("  reorder: P{} goes ahead of P{} (painted before it)\n", s.q, s.p);
                 break;
             case Kind::split:
                 out += fmt::format("  split {} {} P{} -> {} piece(s)\n", polygon(s.p),
@@ -78,11 +87,11 @@ std::string explain_depth_sort(const Scene& scene, const RasterSettings& raster,
                 break;
         }
     }
-    if (shown > max_steps)
-        out += fmt::format("  ... {} more steps not shown\n", shown - max_steps);
-    out += fmt::format("\n3. Painting order, back to front ({} polygons, {} reorderings, {} "
-                       "splits):\n",
-                       t.painted.size(), reorders, splits);
+    if (shown > max_steps) out += fmt::format("  ... {} more steps not shown\n", shown - max_steps);
+    out += fmt::format(
+        "\n3. Painting order, back to front ({} polygons, {} reorderings, {} "
+        "splits):\n",
+        t.painted.size(), reorders, splits);
     for (size_t k = 0; k < t.painted.size(); ++k)
         out += fmt::format("  {:>4}. {}\n", k + 1, polygon(t.painted[k]));
     return out;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 
 #include "hikari/core/color.h"
@@ -10,10 +11,6 @@
 namespace hikari {
 
 namespace {
-
-/// The linear value whose sRGB encoding is the display value `v` in [0, 1]: what the 8-bit
-/// writers turn back into v (so a grey step of the picture is a step of the file's bytes).
-Vec3 display(Vec3 v) { return {srgb_to_linear(v.x), srgb_to_linear(v.y), srgb_to_linear(v.z)}; }
 
 /// A saturated colour of hue `h` in [0, 1) (HSV with s = 0.7, v = 0.95).
 Vec3 hue_colour(float h) {
@@ -39,6 +36,25 @@ Vec3 hue_colour(float h) {
 }
 
 }  // namespace
+
+Vec3 display_value(Vec3 v) {
+    return {srgb_to_linear(v.x), srgb_to_linear(v.y), srgb_to_linear(v.z)};
+}
+
+Vec3 ramp_colour(float t) {
+    constexpr Vec3 k_stops[] = {{0.05f, 0.05f, 0.35f}, {0.1f, 0.5f, 0.9f},  {0.2f, 0.8f, 0.3f},
+                                {0.95f, 0.85f, 0.2f},  {0.9f, 0.25f, 0.1f}, {1.0f, 1.0f, 1.0f}};
+    constexpr int k_last = static_cast<int>(std::size(k_stops)) - 1;
+    const float x = std::clamp(t, 0.0f, 1.0f) * k_last;
+    const int i = std::min(static_cast<int>(x), k_last - 1);
+    const float f = x - static_cast<float>(i);
+    return k_stops[i] * (1.0f - f) + k_stops[i + 1] * f;
+}
+
+Vec3 index_colour(uint32_t i) {
+    // The golden ratio's fractional part spreads consecutive indices over the hues.
+    return hue_colour(static_cast<float>(std::fmod(0.618033988749895 * i, 1.0)));
+}
 
 std::optional<DepthRange> visible_depth_range(const Framebuffer& fb) {
     float lo = k_infinity, hi = -k_infinity;
@@ -66,11 +82,7 @@ Image aov_picture(const Framebuffer& fb, Aov aov, std::optional<DepthRange> rang
                 }
                 break;
             case Aov::id:
-                if (fb.id[i] != k_background_id) {
-                    // The golden ratio's fractional part spreads consecutive ids over the hues.
-                    const double h = std::fmod(0.618033988749895 * (fb.id[i] - 1), 1.0);
-                    v = hue_colour(static_cast<float>(h));
-                }
+                if (fb.id[i] != k_background_id) v = index_colour(fb.id[i] - 1);
                 break;
             case Aov::normal:
                 if (fb.normal[i] != Vec3(0.0f)) v = Vec3(0.5f) + 0.5f * fb.normal[i];
@@ -78,7 +90,7 @@ Image aov_picture(const Framebuffer& fb, Aov aov, std::optional<DepthRange> rang
             default:
                 throw std::invalid_argument("aov_picture: not a buffer");
         }
-        out.pixels[i] = display(v);
+        out.pixels[i] = display_value(v);
     }
     return out;
 }

@@ -3,6 +3,7 @@
 // units) or a buffer of primitive ids written as they are would be a white or black rectangle.
 // The float formats (.pfm, .exr) keep the raw values (frame/framebuffer.h, aov_image).
 
+#include <cstdint>
 #include <optional>
 
 #include "hikari/core/image.h"
@@ -19,6 +20,18 @@ struct DepthRange {
 /// The depth range of the points `fb` sees: its nearest and farthest finite depths (nullopt
 /// when it sees none).
 std::optional<DepthRange> visible_depth_range(const Framebuffer& fb);
+
+/// The linear value whose sRGB encoding is the display value `v` (each channel in [0, 1]): what
+/// the 8-bit writers turn back into v, so a picture's steps are steps of the file's bytes.
+Vec3 display_value(Vec3 v);
+
+/// A colour ramp for counts and orders, t in [0, 1]: dark blue, through green and yellow, to
+/// white (display values).
+Vec3 ramp_colour(float t);
+
+/// A saturated false colour for index `i` (hues a golden-ratio step apart, so neighbours differ;
+/// display values).
+Vec3 index_colour(uint32_t i);
 
 /// The buffer `aov` (depth, id or normal) of `fb` as a picture whose 8-bit sRGB encoding holds
 /// the display values:

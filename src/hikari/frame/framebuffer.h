@@ -47,7 +47,27 @@ struct Framebuffer {
 /// Which buffer an image file receives: the colour, an AOV buffer, or the colour of one term of
 /// the shading model alone (ambient, diffuse, specular: a colour render of the scene that
 /// shading/shading_terms.h changed).
-enum class Aov { color, depth, id, normal, ambient, diffuse, specular };
+/// The last four show an algorithm at work rather than a buffer every method fills (see
+/// explain/algorithm_aovs.h).
+enum class Aov {
+    color,
+    depth,
+    id,
+    normal,
+    ambient,
+    diffuse,
+    specular,
+    overdraw,
+    paint_order,
+    spans,
+    culled
+};
+
+/// Whether `aov` shows an algorithm's work (overdraw, paint-order, spans, culled).
+constexpr bool is_algorithm_aov(Aov aov) {
+    return aov == Aov::overdraw || aov == Aov::paint_order || aov == Aov::spans ||
+           aov == Aov::culled;
+}
 
 /// Whether `aov` is a colour render (the full colour or one shading term), not an AOV buffer.
 constexpr bool is_colour_aov(Aov aov) {

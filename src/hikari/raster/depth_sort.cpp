@@ -459,8 +459,8 @@ VisibilityBuffer depth_sort_visibility(std::span<const ScreenTriangle> triangles
     return out;
 }
 
-VisibilityBuffer depth_sort_visibility_traced(std::span<const ScreenTriangle> triangles,
-                                              int width, int height, DepthSortTrace& trace) {
+VisibilityBuffer depth_sort_visibility_traced(std::span<const ScreenTriangle> triangles, int width,
+                                              int height, DepthSortTrace& trace) {
     trace = {};
     VisibilityBuffer out = empty_buffer(width, height);
     if (out.triangle.empty()) return out;

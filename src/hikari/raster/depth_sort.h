@@ -30,18 +30,18 @@ VisibilityBuffer depth_sort_visibility(std::span<const ScreenTriangle> triangles
 struct DepthSortTrace {
     /// Newell's tests that can settle a pair (P, Q) as "P may be painted before Q".
     enum class Settled : uint8_t {
-        x_extents = 1,    ///< test 1: the x extents do not overlap
-        y_extents = 2,    ///< test 2: the y extents do not overlap
-        p_behind_q = 3,   ///< test 3: P lies wholly behind Q's plane
-        q_in_front = 4,   ///< test 4: Q lies wholly in front of P's plane
-        no_overlap = 5,   ///< test 5: the projections do not overlap
-        q_may_hide = 0,   ///< none: Q may hide part of P
+        x_extents = 1,   ///< test 1: the x extents do not overlap
+        y_extents = 2,   ///< test 2: the y extents do not overlap
+        p_behind_q = 3,  ///< test 3: P lies wholly behind Q's plane
+        q_in_front = 4,  ///< test 4: Q lies wholly in front of P's plane
+        no_overlap = 5,  ///< test 5: the projections do not overlap
+        q_may_hide = 0,  ///< none: Q may hide part of P
     };
     enum class Kind : uint8_t {
-        compare,    ///< P was compared with Q; `settled` says how
-        reorder,    ///< Q moved ahead of P (painted before it)
-        split,      ///< polygon `p` was cut by the plane of `q` (or its edge line, or halved)
-        paint,      ///< polygon `p` painted
+        compare,  ///< P was compared with Q; `settled` says how
+        reorder,  ///< Q moved ahead of P (painted before it)
+        split,    ///< polygon `p` was cut by the plane of `q` (or its edge line, or halved)
+        paint,    ///< polygon `p` painted
     };
     enum class Cut : uint8_t { by_plane, by_edge_line, halved };
     struct Step {
@@ -51,10 +51,10 @@ struct DepthSortTrace {
         Cut cut = Cut::by_plane;
         uint32_t pieces = 0;  ///< split: how many pieces kept (0 to 2)
     };
-    std::vector<uint32_t> source;  ///< per polygon: the ScreenTriangle it is (a piece of)
-    std::vector<uint32_t> sorted;  ///< the first list, by farthest depth (Fig 4.6)
-    std::vector<Step> steps;       ///< every step, in order
-    std::vector<uint32_t> painted; ///< polygons in painting order, back to front
+    std::vector<uint32_t> source;   ///< per polygon: the ScreenTriangle it is (a piece of)
+    std::vector<uint32_t> sorted;   ///< the first list, by farthest depth (Fig 4.6)
+    std::vector<Step> steps;        ///< every step, in order
+    std::vector<uint32_t> painted;  ///< polygons in painting order, back to front
     /// Per pixel: the position in `painted` of the polygon that painted it last (the visible
     /// one), or UINT32_MAX where none did; and how many polygons painted it.
     std::vector<uint32_t> visible_paint;
@@ -62,8 +62,8 @@ struct DepthSortTrace {
 };
 
 /// depth_sort_visibility, recording every step into `trace`.
-VisibilityBuffer depth_sort_visibility_traced(std::span<const ScreenTriangle> triangles,
-                                              int width, int height, DepthSortTrace& trace);
+VisibilityBuffer depth_sort_visibility_traced(std::span<const ScreenTriangle> triangles, int width,
+                                              int height, DepthSortTrace& trace);
 
 /// The naive depth sort of Fig 4.7: order whole triangles by the depth of their centroids and paint
 /// back to front, with no overlap tests and no splitting. Wrong wherever that order is (Fig 4.7,

@@ -104,6 +104,17 @@ struct RowRecorder {
     }
 };
 
+/// Marks where each span piece starts, on every row (a row belongs to one thread).
+struct SpanMarker {
+    static constexpr bool k_active = true;
+    int width;
+    uint8_t* mark;
+    void row(int, const EdgeTable&, const Scratch&) const {}
+    void span(int j, double, double, int first, int end, uint32_t) const {
+        if (first < end) mark[static_cast<size_t>(j) * width + first] = 1;
+    }
+};
+
 PolygonVertex to_vertex(const ScreenVertex& v) {
     return {v.position.x, v.position.y, v.position.z};
 }
@@ -315,6 +326,12 @@ VisibilityBuffer scanline_pass(std::span<const ScreenTriangle> triangles, int wi
 VisibilityBuffer scanline_visibility(std::span<const ScreenTriangle> triangles, int width,
                                      int height) {
     return scanline_pass(triangles, width, height, NoRowObserver{});
+}
+
+VisibilityBuffer scanline_visibility_spans(std::span<const ScreenTriangle> triangles, int width,
+                                           int height, std::vector<uint8_t>& span_starts) {
+    span_starts.assign(static_cast<size_t>(std::max(width, 0)) * std::max(height, 0), 0);
+    return scanline_pass(triangles, width, height, SpanMarker{width, span_starts.data()});
 }
 
 VisibilityBuffer scanline_visibility_at(std::span<const ScreenTriangle> triangles, int width,

@@ -62,6 +62,11 @@ struct ScanlineRowTrace {
 VisibilityBuffer scanline_visibility_at(std::span<const ScreenTriangle> triangles, int width,
                                         int height, int row, ScanlineRowTrace& trace);
 
+/// scanline_visibility, also marking in `span_starts` (row-major, 1 = marked) the first pixel of
+/// every sample span and of every piece a depth crossing splits one into (`--aov spans`).
+VisibilityBuffer scanline_visibility_spans(std::span<const ScreenTriangle> triangles, int width,
+                                           int height, std::vector<uint8_t>& span_starts);
+
 /// The `scanline` method: vertex stage (raster/vertex_pipeline.h), scanline_visibility, then the
 /// shared deferred shading pass (raster/shade_visibility.h).
 Framebuffer render_scanline(const Scene& scene, Film film, const RenderSettings& settings = {},

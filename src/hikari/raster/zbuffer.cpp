@@ -30,6 +30,16 @@ struct PixelFragments {
     }
 };
 
+/// Counts every pixel's fragments (each pixel belongs to one tile: no two threads share a count).
+struct FragmentCounts {
+    static constexpr bool k_active = true;
+    int width;
+    uint32_t* count;
+    void fragment(int x, int y, uint32_t, float, float, bool) const {
+        ++count[static_cast<size_t>(y) * width + x];
+    }
+};
+
 template <class Observer>
 VisibilityBuffer zbuffer_pass(std::span<const ScreenTriangle> triangles, int width, int height,
                               RenderControl* control, const Observer& observer) {
@@ -81,6 +91,14 @@ VisibilityBuffer zbuffer_pass(std::span<const ScreenTriangle> triangles, int wid
 VisibilityBuffer zbuffer_visibility(std::span<const ScreenTriangle> triangles, int width,
                                     int height, RenderControl* control) {
     return zbuffer_pass(triangles, width, height, control, NoFragmentObserver{});
+}
+
+VisibilityBuffer zbuffer_visibility_counted(std::span<const ScreenTriangle> triangles, int width,
+                                            int height,
+                                            std::vector<uint32_t>& fragments_per_pixel) {
+    fragments_per_pixel.assign(static_cast<size_t>(width) * height, 0);
+    return zbuffer_pass(triangles, width, height, nullptr,
+                        FragmentCounts{width, fragments_per_pixel.data()});
 }
 
 VisibilityBuffer zbuffer_visibility_at(std::span<const ScreenTriangle> triangles, int width,

@@ -31,6 +31,11 @@ struct ZBufferFragment {
     bool won = false;       ///< z < Z(i, j): written
 };
 
+/// zbuffer_visibility, also counting the fragments depth-tested at every pixel into
+/// `fragments_per_pixel` (row-major): the overdraw (`--aov overdraw`, `--stats`).
+VisibilityBuffer zbuffer_visibility_counted(std::span<const ScreenTriangle> triangles, int width,
+                                            int height, std::vector<uint32_t>& fragments_per_pixel);
+
 /// zbuffer_visibility, also recording into `fragments` every fragment tested at pixel (x, y), in
 /// the order the algorithm tested them (`hikari explain -m zbuffer --pixel X,Y`). The same code
 /// runs: the render's loop reports each fragment to an observer that does nothing by default.
