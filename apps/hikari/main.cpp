@@ -236,7 +236,12 @@ struct PhaseTimes {
 };
 
 /// `--stats`: phase times, rays per second and the BVH's figures, on stderr.
-void print_stats(const PhaseTimes& times, const RenderStats& g_stats) {
+void print_stats(const PhaseTimes& times, const RenderStats& g_stats, std::string_view method) {
+    // What raster_fragments counts for each method.
+    const std::string_view work_name = method == "zbuffer"     ? "fragments depth-tested"
+                                       : method == "scanline"  ? "sample spans"
+                                       : method == "depthsort" ? "pixel paints"
+                                                               : "pixel paints (naive)";
     const uint64_t rays = g_stats.rays_traced.load();
     fmt::print(stderr, "hikari: stats: load {:.1f} ms, render {:.1f} ms, write {:.1f} ms",
                1e3 * times.load, 1e3 * times.render, 1e3 * times.write);
@@ -246,6 +251,23 @@ void print_stats(const PhaseTimes& times, const RenderStats& g_stats) {
         fmt::print(stderr, "; {} paths, {:.2f} Mpaths/s, {} NaN/Inf samples", paths,
                    1e-6 * double(paths) / times.render, g_stats.bad_samples.load());
     fmt::print(stderr, "\n");
+    if (const uint64_t in = g_stats.raster_triangles.load(); in > 0) {
+        const uint64_t covered = g_stats.raster_covered_pixels.load();
+        const uint64_t work = g_stats.raster_fragments.load();
+        fmt::print(stderr,
+                   "hikari: stats: vertex stage: {} triangles in, {} culled (back faces), {} "
+                   "clipped away, {} cut by clipping; {} screen triangles\n",
+                   in, g_stats.raster_culled.load(), g_stats.raster_clipped_away.load(),
+                   g_stats.raster_cut.load(), g_stats.raster_screen_triangles.load());
+        fmt::print(stderr, "hikari: stats: hidden surfaces: {} pixels covered", covered);
+        if (work > 0)
+            fmt::print(stderr, "; {} {} ({:.2f} per covered pixel)", work, work_name,
+                       covered ? double(work) / double(covered) : 0.0);
+        if (const uint64_t splits = g_stats.depth_sort_splits.load();
+            splits > 0 || work_name == "pixel paints")
+            fmt::print(stderr, "; {} depth-sort splits", splits);
+        fmt::print(stderr, "\n");
+    }
     const uint64_t triangles = g_stats.bvh_triangles.load();
     if (triangles > 0)
         fmt::print(stderr,
@@ -426,7 +448,7 @@ void render_with(const RenderOptions& o, const Scene& scene, const Method& metho
                    "hikari: warning: {} samples were NaN or infinite and were left out of the "
                    "image (their pixels average the other samples as if these were black)\n",
                    bad);
-    if (o.stats) print_stats(times, stats);
+    if (o.stats) print_stats(times, stats, method.name);
 }
 
 /// `hikari render`: every method asked for, in turn, on one load of the scene. Every output is

@@ -737,3 +737,21 @@ TEST_F(Cli, AlgorithmAovsForTheirMethodsOnly) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(Cli, RasterStatsCountTheStages) {
+    write("scene.json", k_two_spheres);
+    const Result z = run("render " + path("scene.json") + " -m zbuffer --cull back --stats -q -o " +
+                         path("z.png"));
+    EXPECT_EQ(z.status, 0) << z.output;
+    EXPECT_NE(z.output.find("triangles in"), std::string::npos) << z.output;
+    EXPECT_NE(z.output.find("fragments depth-tested"), std::string::npos) << z.output;
+    EXPECT_EQ(z.output.find(" 0 culled"), std::string::npos) << "spheres have back faces\n"
+                                                             << z.output;
+    const Result d =
+        run("render " + path("scene.json") + " -m depthsort --stats -q -o " + path("d.png"));
+    EXPECT_NE(d.output.find("depth-sort splits"), std::string::npos) << d.output;
+}
+
+}  // namespace

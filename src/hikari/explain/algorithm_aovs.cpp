@@ -22,8 +22,8 @@ struct Offer {
 };
 
 constexpr Offer k_offers[] = {
-    {Aov::overdraw, "zbuffer"},    {Aov::overdraw, "depthsort"}, {Aov::paint_order, "depthsort"},
-    {Aov::spans, "scanline"},      {Aov::culled, "zbuffer"},     {Aov::culled, "scanline"},
+    {Aov::overdraw, "zbuffer"}, {Aov::overdraw, "depthsort"}, {Aov::paint_order, "depthsort"},
+    {Aov::spans, "scanline"},   {Aov::culled, "zbuffer"},     {Aov::culled, "scanline"},
     {Aov::culled, "depthsort"},
 };
 
@@ -48,9 +48,10 @@ std::string overdraw_summary(const std::vector<uint32_t>& count, std::string_vie
     uint64_t total = 0, covered = 0;
     uint32_t most = 0;
     for (const uint32_t c : count) total += c, covered += c > 0, most = std::max(most, c);
-    return fmt::format("overdraw: {} {} in all, {:.2f} per covered pixel, at most {} at one "
-                       "pixel (ramp: dark blue 1 to white {})",
-                       total, what, covered ? double(total) / double(covered) : 0.0, most, most);
+    return fmt::format(
+        "overdraw: {} {} in all, {:.2f} per covered pixel, at most {} at one "
+        "pixel (ramp: dark blue 1 to white {})",
+        total, what, covered ? double(total) / double(covered) : 0.0, most, most);
 }
 
 AlgorithmAov overdraw(const ProjectedScene& ps, const Method& method, int width, int height,
@@ -119,8 +120,8 @@ AlgorithmAov spans(const ProjectedScene& ps, int width, int height) {
 AlgorithmAov culled(const Scene& scene, const Method& method, const MethodSettings& own) {
     RenderSettings settings;
     settings.aov_buffers = false;
-    Framebuffer fb = render_scene(method, scene, Film(scene.camera, FilmFormat::linear), settings,
-                                  own);
+    Framebuffer fb =
+        render_scene(method, scene, Film(scene.camera, FilmFormat::linear), settings, own);
     Image out = aov_image(std::move(fb), Aov::color);
     // Every triangle, culled or not, through the Z-buffer: where a back face (D = V·N > 0) is
     // the nearest, culling changes the picture (an open mesh's inside, a face wound the wrong

@@ -25,6 +25,16 @@ struct RenderStats {
     std::atomic<uint64_t> bvh_nodes{0};      ///< wide BVH nodes
     std::atomic<uint64_t> bvh_bytes{0};      ///< BVH nodes + triangle data + ids
     std::atomic<uint64_t> bvh_build_us{0};   ///< BVH build wall time, microseconds
+    // Raster methods (raster/vertex_pipeline.h VertexStageCounts and the visibility passes).
+    std::atomic<uint64_t> raster_triangles{0};     ///< tessellated triangles into the vertex stage
+    std::atomic<uint64_t> raster_culled{0};        ///< back faces dropped
+    std::atomic<uint64_t> raster_clipped_away{0};  ///< wholly outside the clip volume
+    std::atomic<uint64_t> raster_cut{0};           ///< cut by a clip plane, kept in pieces
+    std::atomic<uint64_t> raster_screen_triangles{0};  ///< after clipping
+    /// Z-buffer: fragments depth-tested; depth sort: pixels painted; scanline: sample spans.
+    std::atomic<uint64_t> raster_fragments{0};
+    std::atomic<uint64_t> raster_covered_pixels{0};  ///< pixels that show a triangle
+    std::atomic<uint64_t> depth_sort_splits{0};      ///< polygons cut by the depth sort
 };
 
 /// How a method decides whether a light reaches a point (`--shadows`, the lecture's Fig 4.24).

@@ -76,6 +76,10 @@ class DepthSorter {
     int64_t m_split_budget = 0;
     DepthSortTrace* m_trace = nullptr;
 
+  public:
+    mutable DepthSortCounts counts;
+
+  private:
     void note(DepthSortTrace::Step step) const {
         if (m_trace) m_trace->steps.push_back(step);
     }
@@ -295,6 +299,7 @@ void DepthSorter::retire(uint32_t id) {
 template <class OffsetFn>
 void DepthSorter::split(uint32_t id, OffsetFn&& offset, uint32_t by, DepthSortTrace::Cut cut) {
     --m_split_budget;
+    ++counts.splits;
     const size_t before = m_polygons.size();
     const Polygon parent = m_polygons[id];
     m_front.clear();
@@ -434,6 +439,7 @@ void DepthSorter::paint(VisibilityBuffer& out) const {
         fill_convex_polygon(vertices(p), out.width, out.height, [&](int i, int j) {
             const size_t pixel = static_cast<size_t>(j) * out.width + i;
             out.triangle[pixel] = p.source;
+            ++counts.paints;
             if (m_trace) m_trace->visible_paint[pixel] = k, ++m_trace->paint_count[pixel];
         });
     }
@@ -456,6 +462,17 @@ VisibilityBuffer depth_sort_visibility(std::span<const ScreenTriangle> triangles
     DepthSorter sorter(triangles);
     sorter.sort();
     sorter.paint(out);
+    return out;
+}
+
+VisibilityBuffer depth_sort_visibility_counted(std::span<const ScreenTriangle> triangles, int width,
+                                               int height, DepthSortCounts& counts) {
+    VisibilityBuffer out = empty_buffer(width, height);
+    if (out.triangle.empty()) return out;
+    DepthSorter sorter(triangles);
+    sorter.sort();
+    sorter.paint(out);
+    counts = sorter.counts;
     return out;
 }
 
@@ -503,7 +520,16 @@ VisibilityBuffer depth_sort_naive_visibility(std::span<const ScreenTriangle> tri
 
 Framebuffer render_depth_sort(const Scene& scene, Film film, const RenderSettings& settings,
                               const RasterSettings& raster) {
-    return render_raster(scene, std::move(film), settings, raster, depth_sort_visibility);
+    return render_raster(
+        scene, std::move(film), settings, raster, [&](auto triangles, int width, int height) {
+            DepthSortCounts counts;
+            VisibilityBuffer vis = depth_sort_visibility_counted(triangles, width, height, counts);
+            if (settings.stats) {
+                settings.stats->raster_fragments += counts.paints;
+                settings.stats->depth_sort_splits += counts.splits;
+            }
+            return vis;
+        });
 }
 
 Framebuffer render_depth_sort_naive(const Scene& scene, Film film, const RenderSettings& settings,

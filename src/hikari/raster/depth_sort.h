@@ -24,6 +24,16 @@ namespace hikari {
 VisibilityBuffer depth_sort_visibility(std::span<const ScreenTriangle> triangles, int width,
                                        int height);
 
+/// What a depth sort cost (`--stats`).
+struct DepthSortCounts {
+    uint64_t splits = 0;  ///< polygons cut
+    uint64_t paints = 0;  ///< pixels painted, every overwrite counted
+};
+
+/// depth_sort_visibility, also counting into `counts`.
+VisibilityBuffer depth_sort_visibility_counted(std::span<const ScreenTriangle> triangles, int width,
+                                               int height, DepthSortCounts& counts);
+
 /// What the depth sort did, step by step (`hikari explain -m depthsort`, `--aov paint-order`).
 /// Polygons are numbered in creation order: the scene's triangles first (those that cover any
 /// area), then each split's pieces.

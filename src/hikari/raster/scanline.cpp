@@ -342,7 +342,16 @@ VisibilityBuffer scanline_visibility_at(std::span<const ScreenTriangle> triangle
 
 Framebuffer render_scanline(const Scene& scene, Film film, const RenderSettings& settings,
                             const RasterSettings& raster) {
-    return render_raster(scene, std::move(film), settings, raster, scanline_visibility);
+    return render_raster(
+        scene, std::move(film), settings, raster, [&](auto triangles, int width, int height) {
+            if (!settings.stats) return scanline_visibility(triangles, width, height);
+            std::vector<uint8_t> starts;
+            VisibilityBuffer vis = scanline_visibility_spans(triangles, width, height, starts);
+            uint64_t spans = 0;
+            for (const uint8_t s : starts) spans += s;
+            settings.stats->raster_fragments += spans;
+            return vis;
+        });
 }
 
 }  // namespace hikari

@@ -268,6 +268,21 @@ void shade_tile(const ShadeContext& ctx, const VisibilityBuffer& vis, const Tile
         }
 }
 
+}  // namespace
+
+void report_raster_stats(const ProjectedScene& ps, const VisibilityBuffer& vis,
+                         RenderStats& stats) {
+    stats.raster_triangles += ps.counts.triangles_in;
+    stats.raster_culled += ps.counts.culled;
+    stats.raster_clipped_away += ps.counts.clipped_away;
+    stats.raster_cut += ps.counts.cut;
+    stats.raster_screen_triangles += ps.triangles.size();
+    stats.raster_covered_pixels += static_cast<uint64_t>(std::count_if(
+        vis.triangle.begin(), vis.triangle.end(), [](uint32_t t) { return t != k_no_triangle; }));
+}
+
+namespace {
+
 /// The eye distance of every pixel's visible point, infinity where nothing is seen.
 std::vector<float> visible_depth(const ShadeContext& ctx, const VisibilityBuffer& vis) {
     std::vector<float> depth(vis.triangle.size(), k_infinity);

@@ -56,6 +56,9 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& projected
                              const VisibilityBuffer& visibility, Film film,
                              const RenderSettings& settings, const RasterSettings& raster);
 
+/// Adds the vertex stage's counts and the pixels `vis` covers to `stats`.
+void report_raster_stats(const ProjectedScene& ps, const VisibilityBuffer& vis, RenderStats& stats);
+
 /// One raster method end to end (Fig 4.2): the shared vertex stage, the method's own hidden-surface
 /// removal `visible(screen_triangles, width, height) -> VisibilityBuffer`, the shared shading pass.
 template <class VisibilityFn>
@@ -64,6 +67,7 @@ Framebuffer render_raster(const Scene& scene, Film film, const RenderSettings& s
     const ProjectedScene ps = project_scene(scene, raster);
     const VisibilityBuffer vis = visible(std::span<const ScreenTriangle>(ps.triangles),
                                          scene.camera.width, scene.camera.height);
+    if (settings.stats) report_raster_stats(ps, vis, *settings.stats);
     return shade_visibility(scene, ps, vis, std::move(film), settings, raster);
 }
 

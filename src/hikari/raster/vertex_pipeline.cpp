@@ -36,19 +36,27 @@ bool finite(Vec4 p) {
     return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
 }
 
+/// What the vertex stage did with a triangle (for --stats).
+enum Fate : uint8_t { k_kept, k_cut, k_clipped_away, k_culled, k_not_finite };
+
 /// Clips triangle t and writes its screen-space pieces to `out` (when not null); returns how
-/// many pieces there are.
-int project_one(const ProjectedScene& ps, uint32_t t, bool cull, ScreenTriangle* out) {
+/// many pieces there are, and in `fate` what happened to it.
+int project_one(const ProjectedScene& ps, uint32_t t, bool cull, ScreenTriangle* out,
+                uint8_t& fate) {
     const auto& idx = ps.scene.triangles.indices[t];
     const auto& pos = ps.scene.triangles.positions;
+    fate = k_culled;
     if (cull &&
         is_back_face_along(pos[idx[0]], pos[idx[1]], pos[idx[2]], ps.view.view_vector(pos[idx[0]])))
         return 0;
     const Vec4 a = ps.clip_positions[idx[0]], b = ps.clip_positions[idx[1]],
                c = ps.clip_positions[idx[2]];
+    fate = k_not_finite;
     if (!finite(a) || !finite(b) || !finite(c)) return 0;
     const ClipPolygon poly = clip_triangle(a, b, c);
+    fate = k_clipped_away;
     if (poly.count < 3) return 0;
+    fate = inside_clip_volume(a) && inside_clip_volume(b) && inside_clip_volume(c) ? k_kept : k_cut;
     if (out) {
         // The perspective divide, then the viewport (pixel centres at +0.5, y down).
         std::array<ScreenVertex, k_max_clip_vertices> sv;
@@ -133,16 +141,25 @@ ProjectedScene project_triangles(RasterScene scene, const RasterView& view, bool
     // output is in scene order whatever the thread count.
     const size_t n = ps.scene.triangles.size();
     std::vector<uint32_t> offset(n + 1, 0);
+    std::vector<uint8_t> fate(n);
     hikari::parallel_for(size_t{0}, n, [&](size_t t) {
         offset[t + 1] = static_cast<uint32_t>(
-            project_one(ps, static_cast<uint32_t>(t), cull_back_faces, nullptr));
+            project_one(ps, static_cast<uint32_t>(t), cull_back_faces, nullptr, fate[t]));
     });
     for (size_t t = 0; t < n; ++t) offset[t + 1] += offset[t];
     ps.triangles.resize(offset[n]);
     hikari::parallel_for(size_t{0}, n, [&](size_t t) {
+        uint8_t again = 0;
         if (offset[t + 1] > offset[t])
-            project_one(ps, static_cast<uint32_t>(t), cull_back_faces, &ps.triangles[offset[t]]);
+            project_one(ps, static_cast<uint32_t>(t), cull_back_faces, &ps.triangles[offset[t]],
+                        again);
     });
+    ps.counts.triangles_in = n;
+    for (const uint8_t f : fate) {
+        ps.counts.culled += f == k_culled;
+        ps.counts.clipped_away += f == k_clipped_away || f == k_not_finite;
+        ps.counts.cut += f == k_cut;
+    }
     return ps;
 }
 

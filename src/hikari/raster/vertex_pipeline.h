@@ -49,6 +49,14 @@ struct RasterView {
 RasterView make_raster_view(const Camera& camera, const RasterScene& scene,
                             Vec2 sample_offset = {0.0f, 0.0f});
 
+/// What the vertex stage did with the scene's triangles (`--stats`).
+struct VertexStageCounts {
+    size_t triangles_in = 0;  ///< tessellated scene triangles
+    size_t culled = 0;        ///< dropped as back faces (D = V·N > 0)
+    size_t clipped_away = 0;  ///< wholly outside the near plane or guard band (or not finite)
+    size_t cut = 0;           ///< crossing a clip plane: kept in pieces
+};
+
 /// A scene after the vertex stage.
 struct ProjectedScene {
     RasterScene scene;                      ///< the world-space triangles (attributes for shading)
@@ -56,6 +64,7 @@ struct ProjectedScene {
     std::vector<Vec4> clip_positions;       ///< clip_from_world · p for every vertex of `scene`
     std::vector<ScreenTriangle> triangles;  ///< in scene order; a clipped source triangle's
                                             ///< pieces follow one another
+    VertexStageCounts counts;
 };
 
 /// Projects every triangle of `scene` through `view`: culls back faces when `cull_back_faces`

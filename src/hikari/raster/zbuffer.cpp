@@ -109,10 +109,17 @@ VisibilityBuffer zbuffer_visibility_at(std::span<const ScreenTriangle> triangles
 
 Framebuffer render_zbuffer(const Scene& scene, Film film, const RenderSettings& settings,
                            const RasterSettings& raster) {
-    return render_raster(scene, std::move(film), settings, raster,
-                         [&](auto triangles, int width, int height) {
-                             return zbuffer_visibility(triangles, width, height, settings.control);
-                         });
+    return render_raster(
+        scene, std::move(film), settings, raster, [&](auto triangles, int width, int height) {
+            if (!settings.stats)
+                return zbuffer_visibility(triangles, width, height, settings.control);
+            std::vector<uint32_t> fragments;
+            VisibilityBuffer vis = zbuffer_visibility_counted(triangles, width, height, fragments);
+            uint64_t total = 0;
+            for (const uint32_t f : fragments) total += f;
+            settings.stats->raster_fragments += total;
+            return vis;
+        });
 }
 
 }  // namespace hikari
