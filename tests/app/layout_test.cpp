@@ -18,6 +18,7 @@ const std::map<std::string, int>& floors() {
     static const std::map<std::string, int> table = {
         {"core", 0}, {"scene", 1},  {"shading", 2},     {"geometry", 2}, {"bvh", 2},   {"frame", 2},
         {"io", 2},   {"raster", 3}, {"integrators", 3}, {"methods", 4},  {"bench", 4},
+        {"explain", 4},
     };
     return table;
 }
