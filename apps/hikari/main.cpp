@@ -41,6 +41,7 @@
 #include "hikari/io/svg_write.h"
 #include "hikari/io/xlsx_write.h"
 #include "hikari/methods/registry.h"
+#include "hikari/raster/wireframe.h"
 #include "hikari/shading/shading_terms.h"
 #include "hikari/version.h"
 
@@ -53,6 +54,9 @@ using Clock = std::chrono::steady_clock;
 constexpr int k_exit_input_error = 1;
 constexpr int k_exit_usage_error = 2;
 constexpr int k_exit_interrupted = 130;
+
+/// `--wireframe-overlay`'s line colour: near black, a figure's ink.
+constexpr Vec3 k_overlay_colour{0.02f, 0.02f, 0.02f};
 
 /// `--aov`'s words.
 constexpr Choice<Aov> k_aov_choices[] = {
@@ -80,8 +84,10 @@ struct RenderOptions {
     bool quiet = false;
     bool stats = false;
     bool print_matrices = false;
-    std::vector<float> depth_cue;          // --depth-cue NEAR,FAR; empty: the scene's own, if any
-    std::vector<float> depth_range;        // --depth-range NEAR,FAR; empty: the visible range
+    bool wireframe_overlay = false;
+    int tessellation = 0;            // --tessellation N: every sphere's segments; 0: the scene's
+    std::vector<float> depth_cue;    // --depth-cue NEAR,FAR; empty: the scene's own, if any
+    std::vector<float> depth_range;  // --depth-range NEAR,FAR; empty: the visible range
     std::vector<SceneOverride> overrides;  // --set PATH=VALUE, in order
     MethodSettings own;                    // every method option; the chosen method reads its part
     std::vector<std::string> notes;        // warnings found while checking the command line
@@ -285,6 +291,8 @@ Scene load_render_scene(const RenderOptions& o) {
                                        : load_scene_file(o.scene_file, warnings, o.overrides);
     for (const std::string& w : warnings) fmt::print(stderr, "hikari: warning: {}\n", w);
     resize_camera(scene.camera, o.width, o.height);
+    if (o.tessellation > 0)
+        for (Sphere& s : scene.spheres) s.segments = static_cast<uint32_t>(o.tessellation);
     if (const std::optional<ShadingTerm> term = shading_term_of(o.aov))
         scene = isolate_shading_term(std::move(scene), *term);
     if (!o.depth_cue.empty()) {
@@ -418,7 +426,7 @@ void render_with(const RenderOptions& o, const Scene& scene, const Method& metho
     g_control.work_total = 0;
     settings.control = &g_control;
     settings.stats = &stats;
-    settings.aov_buffers = !is_colour_aov(o.aov);
+    settings.aov_buffers = !is_colour_aov(o.aov) || o.wireframe_overlay;
 
     std::optional<tbb::global_control> thread_limit;
     if (o.threads > 0)
@@ -430,7 +438,16 @@ void render_with(const RenderOptions& o, const Scene& scene, const Method& metho
     Framebuffer fb;
     {
         ProgressReporter progress(!o.quiet);
-        fb = render_scene(method, scene, output_film(scene.camera, output, o.aov), settings, own);
+        fb = render_scene(method, scene,
+                          o.wireframe_overlay ? Film(scene.camera, FilmFormat::linear)
+                                              : output_film(scene.camera, output, o.aov),
+                          settings, own);
+    }
+    if (o.wireframe_overlay && !g_control.cancel.load()) {
+        LineSettings lines;
+        lines.triangle_edges = true;
+        lines.cull_back_faces = own.raster.cull_back_faces;
+        overlay_wireframe(scene, lines, k_overlay_colour, fb.depth, fb.film.linear());
     }
     const auto rendered = Clock::now();
     times.render = std::chrono::duration<double>(rendered - start).count();
@@ -691,6 +708,9 @@ void check_render_methods(const CLI::App& render, RenderOptions& o) {
         if (std::count(o.methods.begin(), o.methods.end(), name) > 1)
             throw CLI::ValidationError(fmt::format("-m: method {} is named twice", name));
         check_aov_method(*find_method(name), o.aov);
+        if (o.wireframe_overlay && find_method(name)->draw)
+            throw CLI::ValidationError(fmt::format(
+                "--wireframe-overlay draws over a shaded image; {} draws lines already", name));
     }
     if (o.methods.size() == 1) {
         check_method_options(render, *find_method(o.methods.front()), o.own);
@@ -801,6 +821,15 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
     render->add_flag("--print-matrices", o.print_matrices,
                      "Print M, P and V of p_s = V P M p_w for the scene's camera, and one vertex "
                      "of each object carried through them (stdout), then render");
+    render
+        ->add_option("--tessellation", o.tessellation,
+                     "Polygons around every sphere's equator when a raster method tessellates "
+                     "it (overrides the scene's \"segments\"; default: fine enough for its size "
+                     "on screen)")
+        ->check(CLI::Range(k_min_sphere_segments, k_max_sphere_segments));
+    render->add_flag("--wireframe-overlay", o.wireframe_overlay,
+                     "Draw every triangle's edges over the image: the triangles the raster "
+                     "methods fill (spheres and planes tessellated as they tessellate them)");
     render->add_flag("-q,--quiet", o.quiet, "No progress or summary on stderr");
     render->add_flag(
         "--stats", o.stats,
@@ -997,6 +1026,9 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, cons
             throw CLI::ValidationError("--depth-cue: FAR must be greater than NEAR");
         if (!o.depth_range.empty() && !(o.depth_range[1] > o.depth_range[0]))
             throw CLI::ValidationError("--depth-range: FAR must be greater than NEAR");
+        if (o.wireframe_overlay && o.aov != Aov::color)
+            throw CLI::ValidationError(
+                "--wireframe-overlay draws over the colour image (--aov color)");
         if (!o.depth_range.empty() && o.aov != Aov::depth)
             throw CLI::ValidationError("--depth-range is for --aov depth");
         return std::nullopt;

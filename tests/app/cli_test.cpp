@@ -755,3 +755,39 @@ TEST_F(Cli, RasterStatsCountTheStages) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(Cli, MethodsSayWhatTheyLeaveOut) {
+    std::string mirror = k_two_spheres;
+    mirror.replace(mirror.find("\"shininess\": 20"), 15,
+                   "\"shininess\": 20, \"reflectivity\": 0.5");
+    write("mirror.json", mirror);
+    const Result z = run("render " + path("mirror.json") + " -m zbuffer -q -o " + path("z.png"));
+    EXPECT_EQ(z.status, 0) << z.output;
+    EXPECT_NE(z.output.find("hikari: warning: material 'clay': reflectivity and transparency"),
+              std::string::npos)
+        << z.output;
+    const Result r = run("render " + path("mirror.json") + " -q -o " + path("r.png"));
+    EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
+}
+
+TEST_F(Cli, WireframeOverlayDrawsOverTheImage) {
+    write("scene.json", k_two_spheres);
+    ASSERT_EQ(run("render " + path("scene.json") + " -m zbuffer --tessellation 8 -q -o " +
+                  path("plain.pfm"))
+                  .status,
+              0);
+    const Result r = run("render " + path("scene.json") +
+                         " -m zbuffer --tessellation 8 --wireframe-overlay -q -o " + path("w.pfm"));
+    ASSERT_EQ(r.status, 0) << r.output;
+    const Image plain = read_image(path("plain.pfm")), lined = read_image(path("w.pfm"));
+    int darker = 0;
+    for (size_t i = 0; i < plain.pixels.size(); ++i)
+        darker += lined.pixels[i].x < plain.pixels[i].x - 0.05f;
+    EXPECT_GT(darker, 20);
+    expect_usage_error(path("scene.json") + " -m wireframe --wireframe-overlay",
+                       "--wireframe-overlay draws over a shaded image");
+}
+
+}  // namespace

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "hikari/core/color.h"
 #include "hikari/frame/aov_picture.h"
 #include "hikari/raster/cull.h"
 #include "hikari/raster/depth_sort.h"
@@ -38,7 +39,7 @@ Image count_image(const std::vector<uint32_t>& count, int width, int height, boo
             out.pixels[i] = Vec3(static_cast<float>(count[i]));
         } else if (count[i] > 0) {
             const float t = most > 1 ? static_cast<float>(count[i] - 1) / (most - 1) : 0.0f;
-            out.pixels[i] = display_value(ramp_colour(t));
+            out.pixels[i] = decode_srgb(ramp_colour(t));
         }
     }
     return out;
@@ -87,7 +88,7 @@ AlgorithmAov paint_order(const ProjectedScene& ps, int width, int height, bool r
         const int x = static_cast<int>(i % width), y = static_cast<int>(i / width);
         if (piece && (x + y) % 6 < 2) c *= 0.45f;
         pieces_seen += piece;
-        out.pixels[i] = display_value(c);
+        out.pixels[i] = decode_srgb(c);
     }
     size_t splits = 0;
     for (const DepthSortTrace::Step& s : trace.steps)
@@ -109,7 +110,7 @@ AlgorithmAov spans(const ProjectedScene& ps, int width, int height) {
         if (starts[i])
             out.pixels[i] = Vec3(1.0f);
         else if (vis.triangle[i] != k_no_triangle)
-            out.pixels[i] = display_value(0.4f * index_colour(vis.triangle[i]));
+            out.pixels[i] = decode_srgb(0.4f * index_colour(vis.triangle[i]));
     }
     return {std::move(out),
             fmt::format("spans: {} sample spans (white: each span's first pixel; colours: the "

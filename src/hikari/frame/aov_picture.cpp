@@ -37,10 +37,6 @@ Vec3 hue_colour(float h) {
 
 }  // namespace
 
-Vec3 display_value(Vec3 v) {
-    return {srgb_to_linear(v.x), srgb_to_linear(v.y), srgb_to_linear(v.z)};
-}
-
 Vec3 ramp_colour(float t) {
     constexpr Vec3 k_stops[] = {{0.05f, 0.05f, 0.35f}, {0.1f, 0.5f, 0.9f},  {0.2f, 0.8f, 0.3f},
                                 {0.95f, 0.85f, 0.2f},  {0.9f, 0.25f, 0.1f}, {1.0f, 1.0f, 1.0f}};
@@ -90,7 +86,7 @@ Image aov_picture(const Framebuffer& fb, Aov aov, std::optional<DepthRange> rang
             default:
                 throw std::invalid_argument("aov_picture: not a buffer");
         }
-        out.pixels[i] = display_value(v);
+        out.pixels[i] = decode_srgb(v);
     }
     return out;
 }

@@ -21,10 +21,6 @@ struct DepthRange {
 /// when it sees none).
 std::optional<DepthRange> visible_depth_range(const Framebuffer& fb);
 
-/// The linear value whose sRGB encoding is the display value `v` (each channel in [0, 1]): what
-/// the 8-bit writers turn back into v, so a picture's steps are steps of the file's bytes.
-Vec3 display_value(Vec3 v);
-
 /// A colour ramp for counts and orders, t in [0, 1]: dark blue, through green and yellow, to
 /// white (display values).
 Vec3 ramp_colour(float t);

@@ -207,6 +207,59 @@ LineDrawing drawing_with_line_settings(const Scene& scene, const MethodSettings&
     return draw(scene, line_settings(own));
 }
 
+/// Whether each material of `scene` is on some primitive (an unused one changes no image).
+std::vector<bool> used_materials(const Scene& scene) {
+    std::vector<bool> used(scene.materials.size(), false);
+    for (const Sphere& s : scene.spheres) used[s.material] = true;
+    for (const Plane& p : scene.planes) used[p.material] = true;
+    for (const uint32_t m : scene.triangles.material) used[m] = true;
+    return used;
+}
+
+/// "material 'glass'" or "materials 'glass', 'mirror'": the used materials for which `has`
+/// holds; empty for none.
+template <class Predicate>
+std::string materials_where(const Scene& scene, Predicate&& has) {
+    const std::vector<bool> used = used_materials(scene);
+    std::string names;
+    int count = 0;
+    for (size_t m = 0; m < scene.materials.size(); ++m)
+        if (used[m] && has(scene.materials[m]))
+            names += fmt::format("{}'{}'", count++ == 0 ? "" : ", ", scene.materials[m].name);
+    if (count == 0) return "";
+    return (count == 1 ? "material " : "materials ") + names;
+}
+
+/// What the Whitted ray tracer leaves out of a scene: emission (light transport only).
+std::vector<std::string> whitted_scene_warnings(const Scene& scene) {
+    std::vector<std::string> warnings;
+    const std::string emitting =
+        materials_where(scene, [](const Material& m) { return m.emission != Vec3(0.0f); });
+    if (!emitting.empty())
+        warnings.push_back(fmt::format(
+            "{}: emission is light only --method path sees; raytrace shades by the other "
+            "coefficients",
+            emitting));
+    return warnings;
+}
+
+/// What the raster methods leave out: mirror reflection and refraction (secondary rays), and
+/// emission.
+std::vector<std::string> raster_scene_warnings(const Scene& scene) {
+    std::vector<std::string> warnings = whitted_scene_warnings(scene);
+    if (!warnings.empty())
+        warnings.back().replace(warnings.back().find("raytrace"), 8, "this method");
+    const std::string secondary = materials_where(
+        scene, [](const Material& m) { return m.reflectivity > 0.0f || m.transparency > 0.0f; });
+    if (!secondary.empty())
+        warnings.push_back(fmt::format(
+            "{}: reflectivity and transparency need secondary rays; a raster method draws each "
+            "pixel's own surface only, without mirror images or what lies behind glass (raytrace "
+            "and path trace them)",
+            secondary));
+    return warnings;
+}
+
 constexpr auto k_whitted = &ray_trace;
 template <auto render>
 constexpr auto k_raster = &rasterize<render>;
@@ -214,7 +267,8 @@ constexpr auto k_raster = &rasterize<render>;
 constexpr std::array k_methods = {
     Method{"raytrace",
            "Whitted ray tracing (Alg 4.3): nearest hit, shadow rays, reflection, refraction",
-           k_whitted, k_ray_tracing_options, nullptr, k_ray_shadow_modes, nullptr, true},
+           k_whitted, k_ray_tracing_options, nullptr, k_ray_shadow_modes, &whitted_scene_warnings,
+           true},
     Method{"path",
            "path tracing (Kajiya 1986): global illumination, light sampling and BSDF sampling "
            "combined by MIS",
@@ -224,20 +278,20 @@ constexpr std::array k_methods = {
            {},
            &path_scene_warnings},
     Method{"zbuffer", "Z-buffer (Alg 4.2): rasterize every triangle, keep the nearest per pixel",
-           k_raster<&render_zbuffer>, k_raster_options, nullptr, k_raster_shadow_modes, nullptr,
-           true},
+           k_raster<&render_zbuffer>, k_raster_options, nullptr, k_raster_shadow_modes,
+           &raster_scene_warnings, true},
     Method{"scanline",
            "scanline (Alg 4.1): edge table, active edges, nearest segment per sample span",
-           k_raster<&render_scanline>, k_raster_options, nullptr, k_raster_shadow_modes, nullptr,
-           true},
+           k_raster<&render_scanline>, k_raster_options, nullptr, k_raster_shadow_modes,
+           &raster_scene_warnings, true},
     Method{"depthsort",
            "depth sort (Newell et al. 1972): sort, overlap tests, reorder, split cycles",
-           k_raster<&render_depth_sort>, k_raster_options, nullptr, k_raster_shadow_modes, nullptr,
-           true},
+           k_raster<&render_depth_sort>, k_raster_options, nullptr, k_raster_shadow_modes,
+           &raster_scene_warnings, true},
     Method{"depthsort-naive",
            "painter's algorithm by centroid depth (Fig 4.7): fails on overlap cycles",
            k_raster<&render_depth_sort_naive>, k_raster_options, nullptr, k_raster_shadow_modes,
-           nullptr, true},
+           &raster_scene_warnings, true},
     Method{"wireframe", "wireframe (Fig 4.1a): every edge of every face, anti-aliased lines",
            &with_line_settings<&render_wireframe>, k_line_options,
            &drawing_with_line_settings<&draw_wireframe>},

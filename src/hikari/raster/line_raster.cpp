@@ -60,10 +60,6 @@ bool slab_range(float kx, float ky, float yc, float lo, float hi, float& x0, flo
     return x0 <= x1;
 }
 
-/// `c` with each channel sRGB-encoded (or decoded).
-Vec3 encode_srgb(Vec3 c) { return {linear_to_srgb(c.x), linear_to_srgb(c.y), linear_to_srgb(c.z)}; }
-Vec3 decode_srgb(Vec3 c) { return {srgb_to_linear(c.x), srgb_to_linear(c.y), srgb_to_linear(c.z)}; }
-
 /// One band of rows being drawn: the colour so far, and the segment covering most of each pixel.
 struct BandAccumulator {
     std::vector<Vec3> color;  ///< sRGB-encoded; starts as the background
