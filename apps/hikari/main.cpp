@@ -948,6 +948,11 @@ int run_explain(const ExplainOptions& e) {
     if (e.method == "zbuffer") {
         if (e.pixel.empty()) throw InputError("explain -m zbuffer needs --pixel X,Y");
         fmt::print("{}", explain_zbuffer_pixel(scene, raster, e.pixel[0], e.pixel[1]));
+    } else if (e.method == "raytrace") {
+        if (e.pixel.empty()) throw InputError("explain -m raytrace needs --pixel X,Y");
+        WhittedSettings whitted = e.scene.own.whitted;
+        if (e.scene.own.max_depth) whitted.max_depth = *e.scene.own.max_depth;
+        fmt::print("{}", explain_raytrace_pixel(scene, whitted, e.pixel[0], e.pixel[1]));
     } else if (e.method == "depthsort") {
         fmt::print("{}", explain_depth_sort(scene, raster));
     } else {
@@ -964,17 +969,20 @@ CLI::App* add_explain_command(CLI::App& app, ExplainOptions& e) {
         "Print a hidden-surface algorithm's work as it runs on a scene: the Z-buffer's "
         "fragments at a pixel (Alg 4.2), the scanline method's edge table, active edge list "
         "and sample spans at a row (Alg 4.1), or the depth sort's comparisons, reorderings, "
-        "splits and painting order (Fig 4.6-4.9).");
+        "splits and painting order (Fig 4.6-4.9), or the ray tracer's ray tree at a pixel "
+        "(Alg 4.3).");
     explain->add_option("scene", e.scene.scene_file,
                         "Scene file (default: the lecture's assignment)");
     explain
         ->add_option("-m,--method", e.method,
-                     "zbuffer (with --pixel), scanline (with --row) or depthsort (the whole sort)")
+                     "zbuffer or raytrace (with --pixel), scanline (with --row), or depthsort "
+                     "(the whole sort)")
         ->required()
-        ->check(CLI::IsMember({"zbuffer", "scanline", "depthsort"}));
+        ->check(CLI::IsMember({"zbuffer", "scanline", "depthsort", "raytrace"}));
     explain->add_option("--row", e.row, "scanline: the row (0 at the top)")
         ->check(CLI::NonNegativeNumber);
-    explain->add_option("--pixel", e.pixel, "zbuffer: the pixel X,Y (0,0 at the top left)")
+    explain
+        ->add_option("--pixel", e.pixel, "zbuffer, raytrace: the pixel X,Y (0,0 at the top left)")
         ->delimiter(',')
         ->expected(2)
         ->type_name("X,Y")
@@ -983,6 +991,11 @@ CLI::App* add_explain_command(CLI::App& app, ExplainOptions& e) {
         ->check(CLI::Range(1, 65536));
     explain->add_option("--height", e.scene.height, "Image height in pixels (overrides the scene)")
         ->check(CLI::Range(1, 65536));
+    explain
+        ->add_option_function<int>(
+            "--max-depth", [&e](int d) { e.scene.own.max_depth = d; },
+            "raytrace: ray segments per path, the camera ray included (default 5)")
+        ->check(CLI::Range(1, 64));
     add_set_option(*explain, e.scene);
     return explain;
 }

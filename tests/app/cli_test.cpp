@@ -791,3 +791,19 @@ TEST_F(Cli, WireframeOverlayDrawsOverTheImage) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(Cli, ExplainRaytraceAndDepthSort) {
+    write("scene.json", k_two_spheres);
+    const Result r = run("explain " + path("scene.json") + " -m raytrace --pixel 12,15");
+    EXPECT_EQ(r.status, 0) << r.output;
+    for (const char* text :
+         {"#0 camera ray", "hits sphere (primitive 0)", "shadow ray to light 0", "Pixel colour"})
+        EXPECT_NE(r.output.find(text), std::string::npos) << text << "\n" << r.output;
+    const Result d = run("explain " + path("scene.json") + " -m depthsort --width 16");
+    EXPECT_EQ(d.status, 0) << d.output;
+    EXPECT_NE(d.output.find("Painting order"), std::string::npos) << d.output;
+}
+
+}  // namespace

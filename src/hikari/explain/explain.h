@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "hikari/integrators/whitted/whitted.h"
 #include "hikari/raster/raster_settings.h"
 #include "hikari/scene/scene.h"
 
@@ -26,6 +27,12 @@ std::string explain_scanline_row(const Scene& scene, const RasterSettings& raste
 /// splits and the painting order. Long runs are cut after `max_steps` steps (said so).
 std::string explain_depth_sort(const Scene& scene, const RasterSettings& raster,
                                size_t max_steps = 2000);
+
+/// Alg 4.3 at pixel (x, y): the ray tree of its centre ray (Whitted): each ray, what it hits,
+/// the shadow rays toward the lights and whether they are blocked, the mirror and refracted rays
+/// it spawns with their weights, and the colour each ray returns, summed up to the pixel's.
+std::string explain_raytrace_pixel(const Scene& scene, const WhittedSettings& whitted, int x,
+                                   int y);
 
 /// The lecture's p_s = V P M p_w for the scene's camera (`--print-matrices`): M the model-view
 /// matrix (world to camera coordinates; scene objects are given in world coordinates, so M is the

@@ -11,6 +11,10 @@ PrimitiveNames::PrimitiveNames(const Scene& scene) : m_kind(scene.primitive_coun
         if (p.id < m_kind.size()) m_kind[p.id] = "plane";
 }
 
+std::string PrimitiveNames::primitive(PrimitiveId id) const {
+    return fmt::format("{} (primitive {})", id < m_kind.size() ? m_kind[id] : "triangle", id);
+}
+
 std::string PrimitiveNames::screen_triangle(const ProjectedScene& ps, uint32_t t) const {
     const uint32_t source = ps.triangles[t].source;
     const PrimitiveId id = ps.scene.triangles.id[source];

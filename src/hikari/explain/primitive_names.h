@@ -14,6 +14,8 @@ namespace hikari {
 class PrimitiveNames {
   public:
     explicit PrimitiveNames(const Scene& scene);
+    /// "sphere (primitive 0)".
+    std::string primitive(PrimitiveId id) const;
     /// Projected triangle `t` of `ps`: "triangle 12 of sphere (primitive 0)".
     std::string screen_triangle(const ProjectedScene& ps, uint32_t t) const;
 

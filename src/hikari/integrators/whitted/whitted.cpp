@@ -102,6 +102,18 @@ struct PathLevel {
     Vec3 colour_at(size_t i) const { return {colour[0][i], colour[1][i], colour[2][i]}; }
 };
 
+/// What a WaveTracer records of the rays it traces, level by level (whitted_ray_tree).
+struct WaveRecord {
+    struct Traced {
+        Ray ray;
+        bool hit = false;
+        SurfaceHit surface;
+    };
+    std::vector<std::vector<Traced>> rays;  ///< per level, in the level's order
+    std::vector<PathLevel> own;             ///< per level, the nodes before fold()
+    std::vector<PathLevel> folded;          ///< per level, after fold(): the totals
+};
+
 /// What one thread keeps between tiles (the blocks are too big for a worker's stack).
 struct WaveScratch {
     PrimaryBlock block;
@@ -124,8 +136,8 @@ struct WaveScratch {
 class WaveTracer {
   public:
     WaveTracer(TraceContext& ctx, const PrimaryHitTracer& hits, const LaneShader& shader,
-               WaveScratch& scratch)
-        : m_ctx(ctx), m_hits(hits), m_shader(shader), m_s(scratch) {}
+               WaveScratch& scratch, WaveRecord* record = nullptr)
+        : m_ctx(ctx), m_hits(hits), m_shader(shader), m_s(scratch), m_record(record) {}
 
     /// Traces the camera rays through the pixel centres of `tile` (at most one block); AOVs via
     /// `first_hits(block)` right after their hits are known. Returns the level of the camera
@@ -171,6 +183,7 @@ class WaveTracer {
     /// folded up into the first level's.
     const PathLevel& finish_paths(PathLevel& first) {
         join_refracted(first);
+        if (m_record) m_record->own.push_back(first);
         int depth = 1;
         while (!m_s.next_rays.empty()) {
             std::swap(m_s.rays, m_s.next_rays);
@@ -182,8 +195,11 @@ class WaveTracer {
             ++depth;
             trace_level(m_s.rays.data(), m_s.rays.size(), m_s.cones.data(), depth, nodes);
             join_refracted(nodes);
+            if (m_record) m_record->own.push_back(nodes);
         }
         fold(depth);
+        if (m_record)
+            for (int d = 0; d < depth; ++d) m_record->folded.push_back(level(d));
         return level(0);
     }
 
@@ -195,6 +211,14 @@ class WaveTracer {
         for (size_t first = 0; first < count; first += k_primary_block_rays) {
             const int n = static_cast<int>(std::min<size_t>(k_primary_block_rays, count - first));
             m_hits.trace_rays(rays + first, n, block);
+            if (m_record) {
+                if (m_record->rays.size() < static_cast<size_t>(segment))
+                    m_record->rays.resize(static_cast<size_t>(segment));
+                for (int k = 0; k < n; ++k)
+                    m_record->rays[segment - 1].push_back(
+                        {rays[first + k], block.found(k),
+                         block.found(k) ? block.hit(k) : SurfaceHit{}});
+            }
             shade_block(block, k_lane_chunk, n, segment, nodes, first, cones);
         }
     }
@@ -435,6 +459,7 @@ class WaveTracer {
     const PrimaryHitTracer& m_hits;
     const LaneShader& m_shader;
     WaveScratch& m_s;
+    WaveRecord* m_record;
 };
 
 /// Everything a render's tiles share.
@@ -533,6 +558,81 @@ bool has_texture(const Scene& scene) {
 }
 
 }  // namespace
+
+std::vector<RayTreeNode> whitted_ray_tree(const Scene& scene, const WhittedSettings& whitted, int x,
+                                          int y) {
+    // The render's objects, one pixel's centre ray through the render's tracer.
+    Framebuffer fb(Film(1, 1, FilmFormat::linear), 1, 1, false);
+    Scene one = scene;
+    if (!whitted.shadow_rays) {
+        for (Sphere& s : one.spheres) s.casts_shadow = false;
+        for (Plane& p : one.planes) p.casts_shadow = false;
+        one.triangles.casts_shadow.assign(one.triangles.size(), 0);
+    }
+    const RenderSettings settings;
+    const WhittedRender render(one, settings, whitted, fb);
+    TraceContext ctx{render.intersector,      render.shading,   one,
+                     CameraCones(one.camera), has_texture(one), whitted.max_depth,
+                     render.emitters};
+    WaveScratch scratch;
+    WaveRecord record;
+    WaveTracer wave(ctx, render.primary, render.shader, scratch, &record);
+    const Ray centre =
+        camera_ray(render.frame, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+    wave.trace_camera_rays(&centre, 1);
+
+    // Breadth first: level d's entries become nodes; each node tells its children (entries of
+    // level d + 1, by index) who their parent is.
+    struct Link {
+        int parent = -1;
+        RayTreeNode::Kind kind = RayTreeNode::Kind::camera;
+        float weight = 1.0f;
+    };
+    std::vector<RayTreeNode> tree;
+    std::vector<std::vector<Link>> links(record.rays.size());
+    for (size_t d = 0; d < record.rays.size(); ++d) links[d].resize(record.rays[d].size());
+    for (size_t d = 0; d < record.rays.size(); ++d)
+        for (size_t i = 0; i < record.rays[d].size(); ++i) {
+            const WaveRecord::Traced& traced = record.rays[d][i];
+            const int self = static_cast<int>(tree.size());
+            RayTreeNode& node = tree.emplace_back();
+            node.depth = static_cast<int>(d);
+            node.parent = links[d][i].parent;
+            node.kind = links[d][i].kind;
+            node.weight = links[d][i].weight;
+            node.ray = traced.ray;
+            node.hit = traced.hit;
+            node.surface = traced.surface;
+            node.local = record.own[d].colour_at(i);
+            node.total = record.folded[d].colour_at(i);
+            const PathLevel& own = record.own[d];
+            if (d + 1 < links.size()) {
+                if (own.mirror[i] >= 0)
+                    links[d + 1][static_cast<size_t>(own.mirror[i])] = {
+                        self, RayTreeNode::Kind::mirror, own.mirror_weight[i]};
+                if (own.refract[i] >= 0)
+                    links[d + 1][static_cast<size_t>(own.refract[i])] = {
+                        self, RayTreeNode::Kind::refracted, own.refract_weight[i]};
+            }
+            if (!node.hit) continue;
+            // The shadow rays toward the point and directional lights, cast as the tracer casts
+            // them: from the hit turned to face the ray (face_the_ray), by ShadowRays.
+            const WhittedHit<float> h{node.ray.direction, node.surface.position,
+                                      node.surface.geometric_normal, node.surface.shading_normal,
+                                      static_cast<int32_t>(node.surface.material)};
+            MaskOf<float> entering{};
+            const SurfacePoint<float> point = face_the_ray<float>(h, entering);
+            const ShadowRays shadows{render.intersector, false, 0};
+            for (uint32_t l = 0; l < one.lights.size(); ++l) {
+                if (!is_delta_light(one.lights[l])) continue;
+                const LightSample light = sample_light<float>(one.lights[l], point.position);
+                ShadowRayRecord r{l, dot(point.normal, light.to_light) > 0.0f, false};
+                if (r.facing) r.blocked = !shadows(l, light, point, true);
+                node.shadow_rays.push_back(r);
+            }
+        }
+    return tree;
+}
 
 Framebuffer render_whitted(const Scene& scene, Film film, const RenderSettings& settings,
                            const WhittedSettings& whitted) {
