@@ -56,6 +56,13 @@ TEST(SceneOverrides, MissingKeysAreAddedAndBareWordsAreStrings) {
     EXPECT_EQ(s.depth_cue->far, 9.0f);
 }
 
+TEST(SceneOverrides, AMisspeltMaterialIsAnErrorNotANewMaterial) {
+    EXPECT_NE(error_with({"materials.red.shininess=5"})
+                  .find("materials: the scene has no material \"red\" (it has: \"clay\")"),
+              std::string::npos)
+        << error_with({"materials.red.shininess=5"});
+}
+
 TEST(SceneOverrides, LaterOverridesWin) {
     EXPECT_EQ(parse_with({"camera.fov_y=30", "camera.fov_y=40"}).camera.fov_y_degrees, 40.0f);
 }

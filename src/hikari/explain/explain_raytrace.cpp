@@ -23,9 +23,12 @@ std::string_view light_kind(const Light& light) {
 
 std::string_view kind_text(RayTreeNode::Kind k) {
     switch (k) {
-        case RayTreeNode::Kind::camera: return "camera ray";
-        case RayTreeNode::Kind::mirror: return "mirror ray";
-        case RayTreeNode::Kind::refracted: return "refracted ray";
+        case RayTreeNode::Kind::camera:
+            return "camera ray";
+        case RayTreeNode::Kind::mirror:
+            return "mirror ray";
+        case RayTreeNode::Kind::refracted:
+            return "refracted ray";
     }
     return "";
 }
@@ -64,17 +67,17 @@ std::string explain_raytrace_pixel(const Scene& scene, const WhittedSettings& wh
                                names.primitive(node.surface.id), node.surface.t,
                                vec_text(node.surface.position), m.name);
             for (const ShadowRayRecord& r : node.shadow_rays)
-                out += fmt::format(
-                    "{}   shadow ray to light {} ({}): {}\n", indent, r.light,
-                    light_kind(scene.lights[r.light]),
-                    !r.facing ? "not cast, the surface faces away"
-                              : (r.blocked ? "blocked: in shadow" : "reaches it: lit"));
+                out +=
+                    fmt::format("{}   shadow ray to light {} ({}): {}\n", indent, r.light,
+                                light_kind(scene.lights[r.light]),
+                                !r.facing ? "not cast, the surface faces away"
+                                          : (r.blocked ? "blocked: in shadow" : "reaches it: lit"));
             for (uint32_t l = 0; l < scene.lights.size(); ++l)
                 if (!is_delta_light(scene.lights[l]))
-                    out += fmt::format("{}   light {} ({}): sampled by --light-samples {} shadow "
-                                       "rays\n",
-                                       indent, l, light_kind(scene.lights[l]),
-                                       whitted.light_samples);
+                    out += fmt::format(
+                        "{}   light {} ({}): sampled by --light-samples {} shadow "
+                        "rays\n",
+                        indent, l, light_kind(scene.lights[l]), whitted.light_samples);
             out += fmt::format("{}   local colour {}\n", indent, vec_text(node.local));
         }
         for (const int c : children[static_cast<size_t>(n)]) print(c);

@@ -98,6 +98,16 @@ void apply_one(nlohmann::json& doc, const SceneOverride& o) {
             if (!node->is_object())
                 fail(o, where.empty() ? "(top level)" : where,
                      fmt::format("is {}, so it has no key \"{}\"", kind(*node), *key));
+            // A missing key is added, but not a new material: a misspelt material name would
+            // otherwise define an unused one and change nothing.
+            if (where == "materials" && !node->contains(*key)) {
+                std::string names;
+                for (const auto& [name, value] : node->items())
+                    names += fmt::format("{}\"{}\"", names.empty() ? "" : ", ", name);
+                fail(o, where,
+                     fmt::format("the scene has no material \"{}\" (it has: {})", *key,
+                                 names.empty() ? "none" : names));
+            }
             node = &(*node)[*key];  // added (null) when missing
         } else {
             const size_t index = std::get<size_t>(step);

@@ -33,8 +33,8 @@ TEST(RayTree, TheTreeSumsToTheRenderedPixel) {
     RenderSettings settings;
     settings.aov_buffers = false;
     const Framebuffer fb = render_whitted(scene, Film(scene.camera, FilmFormat::linear), settings);
-    for (const auto& [x, y] : {std::pair{14, 15}, std::pair{26, 14}, std::pair{5, 25},
-                               std::pair{20, 2}}) {
+    for (const auto& [x, y] :
+         {std::pair{14, 15}, std::pair{26, 14}, std::pair{5, 25}, std::pair{20, 2}}) {
         const std::vector<RayTreeNode> tree = whitted_ray_tree(scene, WhittedSettings{}, x, y);
         ASSERT_FALSE(tree.empty());
         EXPECT_EQ(tree.front().total, fb.film.linear().at(x, y)) << x << "," << y;
