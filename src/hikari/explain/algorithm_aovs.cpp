@@ -135,9 +135,7 @@ AlgorithmAov culled(const Scene& scene, const Method& method, const MethodSettin
     std::vector<uint8_t> is_back(tris.size(), 0);
     size_t back_faces = 0;
     for (size_t t = 0; t < tris.size(); ++t) {
-        const Vec3 p0 = tris.positions[tris.indices[t][0]];
-        is_back[t] = is_back_face_along(p0, tris.positions[tris.indices[t][1]],
-                                        tris.positions[tris.indices[t][2]], view.view_vector(p0));
+        is_back[t] = is_back_facing(view, tris, t);
         back_faces += is_back[t];
     }
     const VisibilityBuffer vis = zbuffer_visibility(all.triangles, out.width, out.height);

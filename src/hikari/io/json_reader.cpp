@@ -11,9 +11,7 @@
 
 namespace hikari {
 
-namespace {
-
-std::string_view type_name(const nlohmann::json& v) {
+std::string_view json_type_name(const nlohmann::json& v) {
     if (v.is_number()) return "a number";
     if (v.is_string()) return "a string";
     if (v.is_boolean()) return "a boolean";
@@ -21,6 +19,8 @@ std::string_view type_name(const nlohmann::json& v) {
     if (v.is_array()) return "an array";
     return "an object";
 }
+
+namespace {
 
 size_t edit_distance(std::string_view a, std::string_view b) {
     std::vector<size_t> row(b.size() + 1);
@@ -49,7 +49,8 @@ bool JsonNode::has(std::string_view key) const {
 }
 
 JsonNode JsonNode::at(std::string_view key) const {
-    if (!m_value.is_object()) fail(fmt::format("expected an object, got {}", type_name(m_value)));
+    if (!m_value.is_object())
+        fail(fmt::format("expected an object, got {}", json_type_name(m_value)));
     const std::string child = m_path.empty() ? std::string(key) : fmt::format("{}.{}", m_path, key);
     if (!has(key)) JsonNode(m_value, m_file, child).fail("missing (this key is required)");
     return JsonNode(m_value.find(key).value(), m_file, child);
@@ -60,7 +61,8 @@ JsonNode JsonNode::at(size_t i) const {
 }
 
 void JsonNode::expect_object(std::initializer_list<std::string_view> allowed) const {
-    if (!m_value.is_object()) fail(fmt::format("expected an object, got {}", type_name(m_value)));
+    if (!m_value.is_object())
+        fail(fmt::format("expected an object, got {}", json_type_name(m_value)));
     for (const auto& [key, value] : m_value.items()) {
         if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
         std::string_view closest;
@@ -77,18 +79,21 @@ void JsonNode::expect_object(std::initializer_list<std::string_view> allowed) co
 }
 
 void JsonNode::expect_array(size_t size) const {
-    if (!m_value.is_array()) fail(fmt::format("expected an array, got {}", type_name(m_value)));
+    if (!m_value.is_array())
+        fail(fmt::format("expected an array, got {}", json_type_name(m_value)));
     if (size != 0 && m_value.size() != size)
         fail(fmt::format("expected an array of {} elements, got {}", size, m_value.size()));
 }
 
 std::string JsonNode::as_string() const {
-    if (!m_value.is_string()) fail(fmt::format("expected a string, got {}", type_name(m_value)));
+    if (!m_value.is_string())
+        fail(fmt::format("expected a string, got {}", json_type_name(m_value)));
     return m_value.get<std::string>();
 }
 
 float JsonNode::as_number() const {
-    if (!m_value.is_number()) fail(fmt::format("expected a number, got {}", type_name(m_value)));
+    if (!m_value.is_number())
+        fail(fmt::format("expected a number, got {}", json_type_name(m_value)));
     const double v = m_value.get<double>();
     if (!std::isfinite(v) || std::abs(v) > std::numeric_limits<float>::max())
         fail("expected a finite number");
@@ -122,7 +127,7 @@ int JsonNode::as_int(int lo, int hi) const {
 
 Vec3 JsonNode::as_vec3() const {
     if (!m_value.is_array() || m_value.size() != 3)
-        fail(fmt::format("expected an array of 3 numbers, got {}", type_name(m_value)));
+        fail(fmt::format("expected an array of 3 numbers, got {}", json_type_name(m_value)));
     return {at(size_t{0}).as_number(), at(1).as_number(), at(2).as_number()};
 }
 

@@ -61,6 +61,9 @@ class JsonNode {
     std::string m_path;
 };
 
+/// What kind of value `v` is, for messages: "a number", "an array", "null", ...
+std::string_view json_type_name(const nlohmann::json& v);
+
 /// Parses JSON text; a syntax error becomes InputError "<file>:<line>:<column>: <reason>".
 nlohmann::json parse_json(std::string_view text, const std::string& file);
 

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "hikari/core/error.h"
+#include "hikari/io/json_reader.h"
 
 namespace hikari {
 
@@ -79,15 +80,6 @@ std::string step_text(const std::string& path_so_far, const PathStep& step) {
     return fmt::format("{}[{}]", path_so_far, std::get<size_t>(step));
 }
 
-std::string_view kind(const nlohmann::json& v) {
-    if (v.is_object()) return "an object";
-    if (v.is_array()) return "an array";
-    if (v.is_string()) return "a string";
-    if (v.is_number()) return "a number";
-    if (v.is_boolean()) return "a boolean";
-    return "null";
-}
-
 void apply_one(nlohmann::json& doc, const SceneOverride& o) {
     const std::vector<PathStep> steps = split_path(o);
     nlohmann::json* node = &doc;
@@ -97,7 +89,7 @@ void apply_one(nlohmann::json& doc, const SceneOverride& o) {
             if (node->is_null()) *node = nlohmann::json::object();
             if (!node->is_object())
                 fail(o, where.empty() ? "(top level)" : where,
-                     fmt::format("is {}, so it has no key \"{}\"", kind(*node), *key));
+                     fmt::format("is {}, so it has no key \"{}\"", json_type_name(*node), *key));
             // A missing key is added, but not a new material: a misspelt material name would
             // otherwise define an unused one and change nothing.
             if (where == "materials" && !node->contains(*key)) {
@@ -113,7 +105,8 @@ void apply_one(nlohmann::json& doc, const SceneOverride& o) {
             const size_t index = std::get<size_t>(step);
             if (!node->is_array())
                 fail(o, where.empty() ? "(top level)" : where,
-                     fmt::format("is {}, not an array, so [{}] names nothing", kind(*node), index));
+                     fmt::format("is {}, not an array, so [{}] names nothing",
+                                 json_type_name(*node), index));
             if (index >= node->size())
                 fail(o, where,
                      fmt::format("has {} element{}, so [{}] names nothing", node->size(),

@@ -15,10 +15,7 @@ LineScene prepare_line_scene(const Scene& scene, const LineSettings& lines) {
     const TriangleSet& tris = ls.projected.scene.triangles;
     ls.back_facing.resize(tris.size());
     hikari::parallel_for(size_t{0}, tris.size(), [&](size_t f) {
-        const auto& idx = tris.indices[f];
-        ls.back_facing[f] = is_back_face_along(
-            tris.positions[idx[0]], tris.positions[idx[1]], tris.positions[idx[2]],
-            ls.projected.view.view_vector(tris.positions[idx[0]]));
+        ls.back_facing[f] = is_back_facing(ls.projected.view, tris, f);
     });
     ls.edges = model_edges(tris);
     return ls;

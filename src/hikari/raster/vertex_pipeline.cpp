@@ -44,11 +44,8 @@ enum Fate : uint8_t { k_kept, k_cut, k_clipped_away, k_culled, k_not_finite };
 int project_one(const ProjectedScene& ps, uint32_t t, bool cull, ScreenTriangle* out,
                 uint8_t& fate) {
     const auto& idx = ps.scene.triangles.indices[t];
-    const auto& pos = ps.scene.triangles.positions;
     fate = k_culled;
-    if (cull &&
-        is_back_face_along(pos[idx[0]], pos[idx[1]], pos[idx[2]], ps.view.view_vector(pos[idx[0]])))
-        return 0;
+    if (cull && is_back_facing(ps.view, ps.scene.triangles, t)) return 0;
     const Vec4 a = ps.clip_positions[idx[0]], b = ps.clip_positions[idx[1]],
                c = ps.clip_positions[idx[2]];
     fate = k_not_finite;

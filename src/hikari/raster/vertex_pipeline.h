@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "hikari/core/mat4.h"
+#include "hikari/raster/cull.h"
 #include "hikari/raster/raster_scene.h"
 #include "hikari/raster/raster_settings.h"
 #include "hikari/raster/screen_triangle.h"
@@ -41,6 +42,15 @@ struct RasterView {
         return -near_plane * (1.5f - 0.5f * (clip_from_world * Vec4(p, 1.0f)).z);
     }
 };
+
+/// Whether `view` sees the back of triangle t of `tris` (raster/cull.h, D = V·N > 0 with the
+/// view's V).
+inline bool is_back_facing(const RasterView& view, const TriangleSet& tris, size_t t) {
+    const auto& idx = tris.indices[t];
+    const Vec3 p1 = tris.positions[idx[0]];
+    return is_back_face_along(p1, tris.positions[idx[1]], tris.positions[idx[2]],
+                              view.view_vector(p1));
+}
 
 /// Fits the view to `scene`'s bounds: far just beyond the farthest vertex; near at 0.9 times the
 /// smallest view depth the bounding box can have inside the frustum, but at least 10⁻⁶ far. Depth

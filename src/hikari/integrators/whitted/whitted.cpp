@@ -551,6 +551,15 @@ struct WhittedRender {
     }
 };
 
+/// `scene` with no primitive casting a shadow: shadow rays pass through every primitive that
+/// does not cast, so every light reaches every point (`--shadows none`).
+Scene without_shadow_casters(Scene scene) {
+    for (Sphere& s : scene.spheres) s.casts_shadow = false;
+    for (Plane& p : scene.planes) p.casts_shadow = false;
+    scene.triangles.casts_shadow.assign(scene.triangles.size(), 0);
+    return scene;
+}
+
 /// Whether a material of `scene` has a texture (whose footprint the rays' cones give).
 bool has_texture(const Scene& scene) {
     return std::any_of(scene.materials.begin(), scene.materials.end(),
@@ -563,12 +572,7 @@ std::vector<RayTreeNode> whitted_ray_tree(const Scene& scene, const WhittedSetti
                                           int y) {
     // The render's objects, one pixel's centre ray through the render's tracer.
     Framebuffer fb(Film(1, 1, FilmFormat::linear), 1, 1, false);
-    Scene one = scene;
-    if (!whitted.shadow_rays) {
-        for (Sphere& s : one.spheres) s.casts_shadow = false;
-        for (Plane& p : one.planes) p.casts_shadow = false;
-        one.triangles.casts_shadow.assign(one.triangles.size(), 0);
-    }
+    const Scene one = whitted.shadow_rays ? scene : without_shadow_casters(scene);
     const RenderSettings settings;
     const WhittedRender render(one, settings, whitted, fb);
     TraceContext ctx{render.intersector,      render.shading,   one,
@@ -637,15 +641,10 @@ std::vector<RayTreeNode> whitted_ray_tree(const Scene& scene, const WhittedSetti
 Framebuffer render_whitted(const Scene& scene, Film film, const RenderSettings& settings,
                            const WhittedSettings& whitted) {
     if (!whitted.shadow_rays) {
-        // No shadows: the same render of a scene where nothing casts one (shadow rays pass
-        // through every primitive that does not cast, so every light reaches every point).
-        Scene unshadowed = scene;
-        for (Sphere& s : unshadowed.spheres) s.casts_shadow = false;
-        for (Plane& p : unshadowed.planes) p.casts_shadow = false;
-        unshadowed.triangles.casts_shadow.assign(unshadowed.triangles.size(), 0);
+        // No shadows: the same render of a scene where nothing casts one.
         WhittedSettings with_rays = whitted;
         with_rays.shadow_rays = true;
-        return render_whitted(unshadowed, std::move(film), settings, with_rays);
+        return render_whitted(without_shadow_casters(scene), std::move(film), settings, with_rays);
     }
     const Camera& cam = scene.camera;
     // Every pixel is set below (by its tile), so 8-bit colour may start unwritten: its pages are
