@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "hikari/raster/vertex_pipeline.h"
@@ -20,7 +21,7 @@ class PrimitiveNames {
     std::string screen_triangle(const ProjectedScene& ps, uint32_t t) const;
 
   private:
-    std::vector<std::string> m_kind;  ///< by primitive id
+    std::vector<std::string_view> m_kind;  ///< by primitive id; string literals, so views never dangle
 };
 
 /// The view depth a depth key z = −near / w stands for (w, the distance along the view axis), or
