@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -17,8 +18,10 @@
 #include <vector>
 
 #include "hikari/core/error.h"
+#include "hikari/io/gltf_loader.h"
 #include "hikari/io/image_read.h"
 #include "hikari/io/obj_loader.h"
+#include "hikari/io/ply_loader.h"
 #include "hikari/io/scene_json.h"
 
 namespace hikari::fuzz {
@@ -65,6 +68,36 @@ inline void obj_input(const uint8_t* data, size_t size) {
     }
 }
 
+/// PLY bytes -> PolygonMesh (read_ply) -> MeshData (build_mesh, as load_ply does), each of which
+/// must be internally consistent. The bytes are read in memory: load_ply adds only the file read.
+inline void ply_input(const uint8_t* data, size_t size) {
+    try {
+        const std::string_view bytes(reinterpret_cast<const char*>(data), size);
+        PolygonMesh polygons = read_ply("input.ply", bytes);
+        const size_t vertices = polygons.positions.size();
+        for (size_t attribute :
+             {polygons.normals.size(), polygons.uvs.size(), polygons.colors.size()})
+            if (attribute != 0 && attribute != vertices) std::abort();
+        if (polygons.face_start.empty() || polygons.face_start.front() != 0 ||
+            polygons.face_start.back() != polygons.corners.size() ||
+            !std::is_sorted(polygons.face_start.begin(), polygons.face_start.end()) ||
+            (!polygons.face_line.empty() && polygons.face_line.size() != polygons.face_count()))
+            std::abort();
+        for (size_t f = 0; f < polygons.face_count(); ++f)
+            if (polygons.face_start[f + 1] - polygons.face_start[f] < 3) std::abort();
+        for (uint32_t corner : polygons.corners)
+            if (corner >= vertices) std::abort();
+        const MeshData mesh = build_mesh("input.ply", std::move(polygons));
+        if (mesh.normals.size() != mesh.positions.size() ||
+            mesh.material.size() != mesh.indices.size())
+            std::abort();
+        for (const auto& triangle : mesh.indices)
+            for (uint32_t i : triangle)
+                if (i >= mesh.positions.size()) std::abort();
+    } catch (const InputError&) {
+    }
+}
+
 /// The first byte picks a reader (PNG, JPEG, PPM, PFM, EXR); the rest is the file.
 inline void image_input(const uint8_t* data, size_t size) {
     if (size == 0) return;
@@ -75,6 +108,42 @@ inline void image_input(const uint8_t* data, size_t size) {
         if (image.pixels.size() != static_cast<size_t>(image.width) * image.height) std::abort();
     } catch (const InputError&) {
     }
+}
+
+/// glTF JSON or GLB bytes -> MeshData, which must be internally consistent. Input that is not a
+/// GLB is read twice: as a .gltf, and as the JSON chunk of a GLB built around it, so mutations of
+/// the JSON reach the binary path too.
+inline void gltf_input(const uint8_t* data, size_t size) {
+    const auto load = [](const std::filesystem::path& path) {
+        try {
+            const MeshData mesh = load_gltf(path);
+            if (mesh.normals.size() != mesh.positions.size() ||
+                mesh.material.size() != mesh.indices.size() ||
+                (!mesh.uvs.empty() && mesh.uvs.size() != mesh.positions.size()))
+                std::abort();
+            for (const auto& triangle : mesh.indices)
+                for (uint32_t i : triangle)
+                    if (i >= mesh.positions.size()) std::abort();
+            for (int32_t m : mesh.material)
+                if (m < -1 || m >= static_cast<int32_t>(mesh.materials.size())) std::abort();
+        } catch (const InputError&) {
+        }
+    };
+    const std::string_view bytes(reinterpret_cast<const char*>(data), size);
+    if (bytes.starts_with("glTF")) {
+        load(write_input(data, size, "input.glb"));
+        return;
+    }
+    load(write_input(data, size, "input.gltf"));
+    std::string json(bytes);
+    json.resize((json.size() + 3) / 4 * 4, ' ');
+    const auto u32 = [](uint32_t v) {
+        return std::string{char(v & 0xff), char(v >> 8 & 0xff), char(v >> 16 & 0xff),
+                           char(v >> 24)};
+    };
+    const std::string glb = "glTF" + u32(2) + u32(static_cast<uint32_t>(20 + json.size())) +
+                            u32(static_cast<uint32_t>(json.size())) + "JSON" + json;
+    load(write_input(reinterpret_cast<const uint8_t*>(glb.data()), glb.size(), "wrapped.glb"));
 }
 
 }  // namespace hikari::fuzz

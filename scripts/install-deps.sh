@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
     cmake ninja-build g++ pkg-config
     nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libfmt-dev libtbb-dev
-    libstb-dev libtinyexr-dev zlib1g-dev libgtest-dev libxlsxwriter-dev
+    libstb-dev libtinyexr-dev libtinygltf-dev zlib1g-dev libgtest-dev libxlsxwriter-dev
 )
 # CI also checks formatting, runs clang-tidy and builds with sanitizers.
 if [ "${1:-}" = "--ci" ]; then

@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -33,10 +34,13 @@
 #include "hikari/explain/explain.h"
 #include "hikari/frame/aov_picture.h"
 #include "hikari/frame/image_compare.h"
+#include "hikari/frame/tone_map.h"
 #include "hikari/io/atomic_file.h"
 #include "hikari/io/image_format.h"
 #include "hikari/io/image_read.h"
 #include "hikari/io/image_write.h"
+#include "hikari/io/model_file.h"
+#include "hikari/io/model_scene.h"
 #include "hikari/io/scene_json.h"
 #include "hikari/io/svg_write.h"
 #include "hikari/io/xlsx_write.h"
@@ -44,6 +48,7 @@
 #include "hikari/raster/wireframe.h"
 #include "hikari/shading/shading_terms.h"
 #include "hikari/version.h"
+#include "info.h"
 
 namespace {
 
@@ -57,6 +62,10 @@ constexpr int k_exit_interrupted = 130;
 
 /// `--wireframe-overlay`'s line colour: near black, a figure's ink.
 constexpr Vec3 k_overlay_colour{0.02f, 0.02f, 0.02f};
+
+/// `--tonemap`'s words.
+constexpr Choice<ToneMap> k_tone_map_choices[] = {
+    {"clamp", ToneMap::clamp}, {"reinhard", ToneMap::reinhard}, {"aces", ToneMap::aces}};
 
 /// `--aov`'s words.
 constexpr Choice<Aov> k_aov_choices[] = {
@@ -89,8 +98,15 @@ struct RenderOptions {
     std::vector<float> depth_cue;    // --depth-cue NEAR,FAR; empty: the scene's own, if any
     std::vector<float> depth_range;  // --depth-range NEAR,FAR; empty: the visible range
     std::vector<SceneOverride> overrides;  // --set PATH=VALUE, in order
+    bool ground = false;                   // --ground: a plane under a model file
+    std::vector<float> camera_from;        // --camera-from X,Y,Z; empty: the scene's or framing
+    std::vector<float> look_at;            // --look-at X,Y,Z
+    float crease_angle = -1;               // --crease-angle DEG; negative: each mesh's own
     MethodSettings own;                    // every method option; the chosen method reads its part
     std::vector<std::string> notes;        // warnings found while checking the command line
+    float exposure = 0.0f;                 // --exposure EV: colour × 2^EV in every format
+    ToneMap tone_map = ToneMap::clamp;     // --tonemap: for the formats of display values
+    int bit_depth = 8;                     // --bit-depth: 16 for .png and .ppm
 };
 
 RenderControl g_control;
@@ -210,9 +226,8 @@ void check_output_path(const std::filesystem::path& output, const std::string& s
         throw InputError(fmt::format("{}: refusing to overwrite the scene file with the render",
                                      output.string()));
     if (!is_supported_image_extension(output) && !is_svg_path(output))
-        throw InputError(fmt::format(
-            "{}: unsupported output format (use .png, .ppm, .pfm, .exr, .xlsx, or .svg for lines)",
-            output.string()));
+        throw InputError(fmt::format("{}: unsupported output format (use {}, or .svg for lines)",
+                                     output.string(), k_writable_image_extensions));
     const std::filesystem::path dir = output.has_parent_path() ? output.parent_path() : ".";
     std::error_code ec;
     if (!std::filesystem::is_directory(dir, ec))
@@ -287,9 +302,19 @@ void print_stats(const PhaseTimes& times, const RenderStats& g_stats, std::strin
 /// The scene the options name, at the image size they ask for, within the memory limit.
 Scene load_render_scene(const RenderOptions& o) {
     std::vector<std::string> warnings;
-    Scene scene = o.scene_file.empty() ? load_default_scene(o.overrides)
-                                       : load_scene_file(o.scene_file, warnings, o.overrides);
+    SceneLoadOptions load(o.overrides);
+    if (o.crease_angle >= 0.0f) load.crease_angle = o.crease_angle;
+    const bool model = is_model_file(o.scene_file);
+    Scene scene =
+        o.scene_file.empty() ? load_default_scene(load)
+        : model ? load_model_scene(o.scene_file, {.ground = o.ground, .mesh = {}}, warnings, load)
+                : load_scene_file(o.scene_file, warnings, load);
+    if (o.ground && !model)
+        warnings.push_back("--ground adds a plane under a model file; the scene has its own");
     for (const std::string& w : warnings) fmt::print(stderr, "hikari: warning: {}\n", w);
+    if (!o.camera_from.empty())
+        scene.camera.eye = {o.camera_from[0], o.camera_from[1], o.camera_from[2]};
+    if (!o.look_at.empty()) scene.camera.look_at = {o.look_at[0], o.look_at[1], o.look_at[2]};
     resize_camera(scene.camera, o.width, o.height);
     if (o.tessellation > 0)
         for (Sphere& s : scene.spheres) s.segments = static_cast<uint32_t>(o.tessellation);
@@ -307,40 +332,53 @@ Scene load_render_scene(const RenderOptions& o) {
     return scene;
 }
 
-/// The film for `output`: 8-bit sRGB where the file keeps only that (the colour in a PNG or PPM
-/// file), else linear floats.
-Film output_film(const Camera& camera, const std::string& output, Aov aov) {
+/// Whether `output` holds display values (PNG, JPEG, PPM, a spreadsheet), not linear floats.
+bool is_picture_file(const std::string& output) {
     const std::optional<ImageFormat> format = image_format_from_extension(output);
-    const bool srgb8 =
-        is_colour_aov(aov) &&
-        (format == ImageFormat::Png || format == ImageFormat::Ppm || format == ImageFormat::Xlsx);
+    return format && is_low_dynamic_range(*format);
+}
+
+/// The film for `output`: 8-bit sRGB where the file keeps only that (the colour, neither exposed
+/// nor tone mapped, in an 8-bit PNG, JPEG, PPM or spreadsheet), else linear floats.
+Film output_film(const Camera& camera, const std::string& output, const RenderOptions& o) {
+    const bool srgb8 = is_colour_aov(o.aov) && is_picture_file(output) && o.bit_depth == 8 &&
+                       o.exposure == 0.0f && o.tone_map == ToneMap::clamp;
     return Film(camera, srgb8 ? FilmFormat::srgb8 : FilmFormat::linear);
 }
 
+/// Writes a colour render to `output` developed as --exposure and --tonemap ask (the tone map
+/// only where the file holds display values; float files keep radiance), at --bit-depth.
+void write_colour(const std::string& output, Image colour, const RenderOptions& o) {
+    expose_and_tone_map(colour, o.exposure, is_picture_file(output) ? o.tone_map : ToneMap::clamp);
+    write_image(output, colour, ImageWriteSettings{o.bit_depth});
+}
+
 /// Writes the buffer `aov` of a finished render to `output` (unless the render was interrupted):
-/// an AOV buffer as a picture (frame/aov_picture.h) where the file holds 8-bit values, else as
-/// its values.
+/// an AOV buffer as a picture (frame/aov_picture.h) where the file holds display values, else as
+/// its values; a colour render developed by write_colour.
 void write_output(const std::string& output, Framebuffer&& fb, Aov aov,
-                  std::optional<DepthRange> depth_range) {
+                  std::optional<DepthRange> depth_range, const RenderOptions& o) {
     g_writing = true;
     if (g_control.cancel.load()) throw Interrupted();
-    const std::optional<ImageFormat> format = image_format_from_extension(output);
-    const bool eight_bit = format != ImageFormat::Pfm && format != ImageFormat::Exr;
+    const ImageWriteSettings settings{o.bit_depth};
     if (fb.film.format() == FilmFormat::srgb8)
         write_image(output, fb.film.srgb8());
-    else if (!is_colour_aov(aov) && eight_bit)
-        write_image(output, aov_picture(fb, aov, depth_range));
+    else if (is_colour_aov(aov))
+        write_colour(output, aov_image(std::move(fb), aov), o);
+    else if (is_picture_file(output))
+        write_image(output, aov_picture(fb, aov, depth_range), settings);
     else
-        write_image(output, aov_image(std::move(fb), aov));
+        write_image(output, aov_image(std::move(fb), aov), settings);
     g_writing = false;
 }
 
 /// `--progressive`: the image so far written over `output` (atomically, as every image is: a
 /// viewer watching the file sees the old image or the new one, never half of one).
-void write_progressive_snapshot(const std::string& output, const Image& mean) {
+void write_progressive_snapshot(const std::string& output, const Image& mean,
+                                const RenderOptions& o) {
     if (g_control.cancel.load()) return;
     g_writing = true;
-    write_image(output, mean);
+    write_colour(output, mean, o);
     g_writing = false;
 }
 
@@ -398,13 +436,12 @@ int run_drawing(const RenderOptions& o, const Method& method, const std::string&
 void render_with(const RenderOptions& o, const Scene& scene, const Method& method,
                  const std::string& output, double load_seconds) {
     if (is_algorithm_aov(o.aov)) {
-        const std::optional<ImageFormat> format = image_format_from_extension(output);
-        const bool raw = format == ImageFormat::Pfm || format == ImageFormat::Exr;
+        const bool raw = !is_picture_file(output);
         const auto start = Clock::now();
         const AlgorithmAov a = algorithm_aov(scene, method, o.aov, o.own, raw);
         g_writing = true;
         if (g_control.cancel.load()) throw Interrupted();
-        write_image(output, a.image);
+        write_image(output, a.image, ImageWriteSettings{o.bit_depth});
         g_writing = false;
         if (!o.quiet)
             fmt::print(stderr, "hikari: wrote {} ({}x{}, {}, {:.3f} s)\nhikari: {}\n", output,
@@ -417,8 +454,8 @@ void render_with(const RenderOptions& o, const Scene& scene, const Method& metho
             fmt::print(stderr, "hikari: warning: {}\n", w);
     MethodSettings own = o.own;
     if (own.path.progressive_seconds > 0.0f && o.aov == Aov::color)
-        own.path.snapshot = [&output](const Image& mean, int) {
-            write_progressive_snapshot(output, mean);
+        own.path.snapshot = [&output, &o](const Image& mean, int) {
+            write_progressive_snapshot(output, mean, o);
         };
     RenderSettings settings;
     RenderStats stats;
@@ -440,7 +477,7 @@ void render_with(const RenderOptions& o, const Scene& scene, const Method& metho
         ProgressReporter progress(!o.quiet);
         fb = render_scene(method, scene,
                           o.wireframe_overlay ? Film(scene.camera, FilmFormat::linear)
-                                              : output_film(scene.camera, output, o.aov),
+                                              : output_film(scene.camera, output, o),
                           settings, own);
     }
     if (o.wireframe_overlay && !g_control.cancel.load()) {
@@ -455,7 +492,8 @@ void render_with(const RenderOptions& o, const Scene& scene, const Method& metho
     write_output(output, std::move(fb), o.aov,
                  o.depth_range.empty()
                      ? std::nullopt
-                     : std::optional(DepthRange{o.depth_range[0], o.depth_range[1]}));
+                     : std::optional(DepthRange{o.depth_range[0], o.depth_range[1]}),
+                 o);
     times.write = std::chrono::duration<double>(Clock::now() - rendered).count();
     if (!o.quiet)
         fmt::print(stderr, "hikari: wrote {} ({}x{}, {}, {:.3f} s)\n", output, width, height,
@@ -736,12 +774,14 @@ void check_render_methods(const CLI::App& render, RenderOptions& o) {
 /// Scene, output and method: the first of the render options.
 void add_render_inputs(CLI::App& render, RenderOptions& o) {
     render.add_option("scene", o.scene_file,
-                      "Scene file (JSON, see docs/scene-format.md); default: the lecture's "
-                      "assignment, a Phong-shaded sphere");
+                      "Scene file (JSON, see docs/scene-format.md), or a model file (.obj, "
+                      ".ply, .gltf, .glb) rendered with a camera framed on it and default "
+                      "lights; default: the lecture's assignment, a Phong-shaded sphere");
     render.add_option("-o,--output", o.output,
-                      "Output image: .png (8-bit sRGB), .ppm, .pfm or .exr (linear float), "
-                      ".xlsx (a spreadsheet whose cells are the pixels), or .svg (the segments "
-                      "of wireframe and hiddenline); default: <scene name>.png (raytrace) or "
+                      "Output image: .png or .ppm (sRGB, 8 or 16 bits, see --bit-depth), .jpg "
+                      "(8-bit sRGB, quality 95), .pfm, .exr or .hdr (linear, unclamped), .xlsx (a "
+                      "spreadsheet whose cells are the pixels), or .svg (the segments of "
+                      "wireframe and hiddenline); default: <scene name>.png (raytrace) or "
                       "<scene name>-<method>.png in the current directory");
     std::vector<std::string> names;
     for (const Method& m : methods()) names.emplace_back(m.name);
@@ -755,9 +795,9 @@ void add_render_inputs(CLI::App& render, RenderOptions& o) {
     add_choice_option<Aov>(
         render, "--aov",
         "Buffer to write: color; depth (eye distance), id (1 + primitive index, 0 = background), "
-        "normal -- raw values in .pfm/.exr, pictures in 8-bit files (depth near white to far "
-        "black, ids in false colour, normals as 0.5 + 0.5n); ambient, diffuse, specular: one "
-        "term of the shading model alone (Fig 4.29; the three sum to color); overdraw "
+        "normal -- raw values in .pfm/.exr/.hdr, pictures in .png/.jpg/.ppm (depth near white "
+        "to far black, ids in false colour, normals as 0.5 + 0.5n); ambient, diffuse, specular: "
+        "one term of the shading model alone (Fig 4.29; the three sum to color); overdraw "
         "(zbuffer, depthsort), paint-order (depthsort), spans (scanline), culled (raster "
         "methods): the algorithm at work",
         k_aov_choices, o.aov);
@@ -782,6 +822,55 @@ void add_set_option(CLI::App& app, RenderOptions& o) {
         ->type_name("PATH=VALUE")
         ->expected(1)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
+
+/// The options for rendering a model file (.obj, .ply, .gltf, .glb) as a scene of its own, and
+/// for placing the camera of any scene.
+void add_model_options(CLI::App& render, RenderOptions& o) {
+    render.add_flag("--ground", o.ground,
+                    "With a model file: a checkered ground plane just under the model");
+    render
+        .add_option("--camera-from", o.camera_from,
+                    "Put the camera's eye at X,Y,Z (overrides the scene's camera or a model's "
+                    "framing)")
+        ->delimiter(',')
+        ->expected(3)
+        ->type_name("X,Y,Z");
+    render
+        .add_option("--look-at", o.look_at,
+                    "Point the camera at X,Y,Z (overrides the scene's camera or a model's "
+                    "framing)")
+        ->delimiter(',')
+        ->expected(3)
+        ->type_name("X,Y,Z");
+    render
+        .add_option("--crease-angle", o.crease_angle,
+                    "Meshes without normals: smooth across edges whose faces meet at less than "
+                    "this many degrees, split the normals elsewhere (0: flat faces, Fig 4.5; "
+                    "180: smooth everywhere; default: each mesh's \"crease_angle\", else 45)")
+        ->check(CLI::Range(0.0f, 180.0f));
+}
+
+/// `--exposure`, `--tonemap` and `--bit-depth`: how the colour is developed into the file.
+void add_output_development_options(CLI::App& render, RenderOptions& o) {
+    render
+        .add_option("--exposure", o.exposure,
+                    "Multiply the linear colour by 2^EV before writing it, in every format "
+                    "(floats included; the render itself is unchanged; not the --aov buffers)")
+        ->type_name("EV")
+        ->check(CLI::Range(-100.0f, 100.0f))
+        ->capture_default_str();
+    add_choice_option<ToneMap>(
+        render, "--tonemap",
+        "How colour above 1 reaches a PNG, JPEG, PPM or spreadsheet (after --exposure; float "
+        "files keep radiance): clamp (clip to white, per channel), reinhard (c/(1+c), Reinhard et "
+        "al. 2002), aces (Narkowicz's 2015 fit of the ACES filmic curve)",
+        k_tone_map_choices, o.tone_map);
+    render
+        .add_option("--bit-depth", o.bit_depth,
+                    "Bits per sample of the sRGB files: 8, or 16 for .png and .ppm")
+        ->check(CLI::IsMember({8, 16}))
+        ->capture_default_str();
 }
 
 /// `hikari render` and the options every method takes; the methods' own come after them.
@@ -810,14 +899,16 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
         ->check(CLI::NonNegativeNumber);
     render
         ->add_option("--depth-range", o.depth_range,
-                     "--aov depth in an 8-bit file: eye distance NEAR is white, FAR black "
+                     "--aov depth in a picture file: eye distance NEAR is white, FAR black "
                      "(default: the nearest and farthest visible points), so that several "
                      "images share one scale")
         ->delimiter(',')
         ->expected(2)
         ->type_name("NEAR,FAR")
         ->check(CLI::NonNegativeNumber);
+    add_output_development_options(*render, o);
     add_set_option(*render, o);
+    add_model_options(*render, o);
     render->add_flag("--print-matrices", o.print_matrices,
                      "Print M, P and V of p_s = V P M p_w for the scene's camera, and one vertex "
                      "of each object carried through them (stdout), then render");
@@ -1018,11 +1109,44 @@ CLI::App* add_gallery_command(CLI::App& app, GalleryOptions& g) {
     return gallery;
 }
 
+/// `hikari info FILE`.
+CLI::App* add_info_command(CLI::App& app, std::string& file) {
+    CLI::App* info = app.add_subcommand(
+        "info",
+        "Print what a model or scene file holds: triangles, vertices, bounds, materials, "
+        "textures, lights, cameras, and the load time.");
+    info->add_option("file", file, "Model (.obj, .ply, .gltf, .glb) or scene (.json) file")
+        ->required();
+    return info;
+}
+
 /// This program's own path, to run `hikari render` for each figure.
 std::string own_program(const char* argv0) {
     std::error_code ec;
     const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
     return ec ? std::string(argv0) : self.string();
+}
+
+/// Usage errors of --bit-depth, --exposure and --tonemap against the outputs; notes where they
+/// do nothing.
+void check_output_development(const CLI::App& render, RenderOptions& o) {
+    if (std::isnan(o.exposure)) throw CLI::ValidationError("--exposure: EV must be a number");
+    const bool developed = render.count("--exposure") > 0 || render.count("--tonemap") > 0;
+    if (developed && !is_colour_aov(o.aov))
+        o.notes.push_back(fmt::format(
+            "--exposure and --tonemap develop colour renders; --aov {} is written as is",
+            choice_name<Aov>(k_aov_choices, o.aov)));
+    for (const std::string& name : o.methods) {
+        const std::string output = output_for(o, name);
+        if (!supports_bit_depth(output, o.bit_depth))
+            throw CLI::ValidationError(
+                fmt::format("--bit-depth {}: {} cannot hold it (16 bits are for .png and .ppm)",
+                            o.bit_depth, output));
+        if (render.count("--tonemap") > 0 && !is_picture_file(output) && !is_svg_path(output))
+            o.notes.push_back(fmt::format(
+                "--tonemap is for pictures (.png, .jpg, .ppm, .xlsx); {} keeps linear radiance",
+                output));
+    }
 }
 
 /// Parses the command line (and checks the render's method options); returns the exit status
@@ -1044,6 +1168,7 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, cons
                 "--wireframe-overlay draws over the colour image (--aov color)");
         if (!o.depth_range.empty() && o.aov != Aov::depth)
             throw CLI::ValidationError("--depth-range is for --aov depth");
+        if (render.parsed()) check_output_development(render, o);
         return std::nullopt;
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
@@ -1061,7 +1186,8 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, cons
 int run_command(const CLI::App& render, const RenderOptions& o, const CLI::App& bench,
                 const BenchOptions& b, const CLI::App& gallery, const GalleryOptions& g,
                 const CLI::App& compare, const CompareOptions& c, const CLI::App& explain,
-                const ExplainOptions& e, const std::string& program) {
+                const ExplainOptions& e, const CLI::App& info, const std::string& info_file,
+                const std::string& program) {
     try {
         // The method name was checked by the parser.
         if (render.parsed()) exit_after_render(run_render(o));
@@ -1069,6 +1195,10 @@ int run_command(const CLI::App& render, const RenderOptions& o, const CLI::App& 
         if (gallery.parsed()) return run_gallery(g, program);
         if (compare.parsed()) return run_compare(c);
         if (explain.parsed()) return run_explain(e);
+        if (info.parsed()) {
+            fmt::print("{}", info_report(info_file));
+            return 0;
+        }
     } catch (const Interrupted&) {
         fmt::print(stderr, "\nhikari: interrupted; no image written\n");
         return k_exit_interrupted;
@@ -1104,10 +1234,12 @@ int main(int argc, char** argv) {
     const CLI::App* compare = add_compare_command(app, c);
     ExplainOptions e;
     const CLI::App* explain = add_explain_command(app, e);
+    std::string info_file;
+    const CLI::App* info = add_info_command(app, info_file);
     if (const std::optional<int> status =
             parse_command_line(app, argc, argv, *render, o, *bench, b))
         return *status;
     install_signal_handlers();
-    return run_command(*render, o, *bench, b, *gallery, g, *compare, c, *explain, e,
-                       own_program(argv[0]));
+    return run_command(*render, o, *bench, b, *gallery, g, *compare, c, *explain, e, *info,
+                       info_file, own_program(argv[0]));
 }

@@ -459,6 +459,72 @@ TEST_F(Cli, RendersIntoASpreadsheet) {
     EXPECT_EQ(file_count(), 1u);
 }
 
+TEST_F(Cli, RendersJpegAndRadianceHdr) {
+    const Result jpg = run("render --width 32 --height 24 -q -o " + path("x.jpg"));
+    ASSERT_EQ(jpg.status, 0) << jpg.output;
+    EXPECT_EQ(hikari::testing::read_text(path("x.jpg")).substr(0, 3), "\xFF\xD8\xFF");
+    EXPECT_EQ(hikari::read_image(path("x.jpg")).width, 32);
+    ASSERT_EQ(run("render --width 32 --height 24 -q -o " + path("x.pfm")).status, 0);
+    const Result hdr = run("render --width 32 --height 24 -q -o " + path("x.hdr"));
+    ASSERT_EQ(hdr.status, 0) << hdr.output;
+    const hikari::Image linear = hikari::read_image(path("x.pfm")),
+                        rgbe = hikari::read_image(path("x.hdr"));
+    ASSERT_EQ(rgbe.pixels.size(), linear.pixels.size());
+    for (size_t i = 0; i < linear.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c) ASSERT_NEAR(rgbe.pixels[i][c], linear.pixels[i][c], 0.01f) << i;
+}
+
+TEST_F(Cli, BitDepthSixteenIsForPngAndPpm) {
+    const Result r = run("render --width 16 --height 12 -q --bit-depth 16 -o " + path("x.png"));
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(static_cast<uint8_t>(hikari::testing::read_text(path("x.png"))[24]), 16);
+    ASSERT_EQ(run("render --width 16 --height 12 -q -o " + path("y.png")).status, 0);
+    const hikari::Image deep = hikari::read_image(path("x.png")),
+                        shallow = hikari::read_image(path("y.png"));
+    for (size_t i = 0; i < deep.pixels.size(); ++i)
+        ASSERT_NEAR(deep.pixels[i].x, shallow.pixels[i].x, 0.01f) << i;
+    const Result exr = run("render --bit-depth 16 -o " + path("x.exr"));
+    EXPECT_EQ(exr.status, 2) << exr.output;
+    EXPECT_NE(exr.output.find("hikari: error: --bit-depth 16: " + path("x.exr")), std::string::npos)
+        << exr.output;
+    EXPECT_EQ(run("render --bit-depth 16 -o " + path("x.jpg")).status, 2);
+    expect_usage_error("--bit-depth 12", "--bit-depth");
+    EXPECT_EQ(file_count(), 2u);  // x.png and y.png
+}
+
+TEST_F(Cli, ExposureAndToneMapDevelopTheColour) {
+    const std::string size = "--width 16 --height 12 -q ";
+    ASSERT_EQ(run("render " + size + "-o " + path("plain.pfm")).status, 0);
+    ASSERT_EQ(run("render " + size + "--exposure 1 -o " + path("bright.pfm")).status, 0);
+    const Result floats =
+        run("render " + size + "--exposure 1 --tonemap aces -o " + path("aces.pfm"));
+    ASSERT_EQ(floats.status, 0) << floats.output;
+    EXPECT_NE(floats.output.find("--tonemap is for pictures"), std::string::npos) << floats.output;
+    const hikari::Image plain = hikari::read_image(path("plain.pfm")),
+                        bright = hikari::read_image(path("bright.pfm")),
+                        aces = hikari::read_image(path("aces.pfm"));
+    for (size_t i = 0; i < plain.pixels.size(); ++i) {
+        ASSERT_EQ(bright.pixels[i], 2.0f * plain.pixels[i]) << i;
+        ASSERT_EQ(aces.pixels[i], bright.pixels[i]) << i << ": float files are never tone mapped";
+    }
+    // clamp is the default, byte for byte; reinhard changes the picture.
+    ASSERT_EQ(run("render " + size + "-o " + path("a.png")).status, 0);
+    ASSERT_EQ(run("render " + size + "--tonemap clamp --exposure 0 -o " + path("b.png")).status, 0);
+    ASSERT_EQ(run("render " + size + "--tonemap reinhard -o " + path("c.png")).status, 0);
+    EXPECT_EQ(hikari::testing::read_text(path("a.png")), hikari::testing::read_text(path("b.png")));
+    EXPECT_NE(hikari::testing::read_text(path("a.png")), hikari::testing::read_text(path("c.png")));
+    // AOV buffers are written as they are.
+    ASSERT_EQ(run("render " + size + "--aov depth -o " + path("d.pfm")).status, 0);
+    const Result depth = run("render " + size + "--aov depth --exposure 2 -o " + path("e.pfm"));
+    ASSERT_EQ(depth.status, 0) << depth.output;
+    EXPECT_NE(depth.output.find("--aov depth is written as is"), std::string::npos) << depth.output;
+    EXPECT_EQ(hikari::testing::read_text(path("d.pfm")), hikari::testing::read_text(path("e.pfm")));
+    expect_usage_error("--tonemap bogus", "--tonemap");
+    expect_usage_error("--exposure lots", "--exposure");
+    expect_usage_error("--exposure nan", "--exposure");
+    EXPECT_FALSE(fs::exists(path("out.png")));
+}
+
 TEST_F(Cli, GalleryRendersTheLecturesFiguresOnAnyModel) {
     // A model of our own (a square pyramid), not the repository's teapot.
     write("pyramid.obj",

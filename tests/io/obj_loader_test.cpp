@@ -22,14 +22,18 @@ void expect_near(Vec3 a, Vec3 b, float tol = 1e-6f) {
 }
 
 /// The message of the InputError that `load(path)` throws, or "" when it throws none.
-template <class Load = MeshData (*)(const std::filesystem::path&)>
-std::string load_error(const std::filesystem::path& path, Load load = load_obj) {
+template <class Load>
+std::string load_error(const std::filesystem::path& path, Load load) {
     try {
         load(path);
     } catch (const InputError& e) {
         return e.what();
     }
     return "";
+}
+
+std::string load_error(const std::filesystem::path& path) {
+    return load_error(path, [](const std::filesystem::path& p) { return load_obj(p); });
 }
 
 /// A unit quad in the z = 0 plane, counter-clockwise seen from +z.
@@ -109,12 +113,12 @@ TEST(ObjLoader, ClockwiseWindingFacesTheOtherWay) {
 
 TEST(ObjLoader, SmoothNormalsAverageAroundSharedPosition) {
     TempDir dir;
-    // Two faces folded 90 degrees along the edge v1-v2, equal areas, face normals +z and +x:
-    // the normal on the shared edge bisects them.
+    // Two faces folded 90 degrees along the edge v1-v2, face normals +z and +x, each with a
+    // right angle at v1: smoothed everywhere (crease angle 180), the normal there bisects them.
     write_text(dir / "fold.obj",
                "v 0 0 0\nv 0 1 0\nv 1 0 0\nv 0 0 1\n"
                "f 1 3 2\nf 1 2 4\n");
-    const MeshData mesh = load_obj(dir / "fold.obj");
+    const MeshData mesh = load_obj(dir / "fold.obj", {.crease_angle_degrees = 180});
     ASSERT_EQ(mesh.indices.size(), 2u);
     const Vec3 n_shared = mesh.normals[mesh.indices[0][0]];
     expect_near(n_shared, normalize(Vec3(1, 0, 1)), 1e-6f);
@@ -128,7 +132,7 @@ TEST(ObjLoader, SeamCornersShareSmoothNormal) {
                "v 0 0 0\nv 0 1 0\nv 1 0 0\nv 0 0 1\n"
                "vt 0 0\nvt 1 0\nvt 0 1\n"
                "f 1/1 3/2 2/3\nf 1/2 2/3 4/1\n");
-    const MeshData mesh = load_obj(dir / "seam.obj");
+    const MeshData mesh = load_obj(dir / "seam.obj", {.crease_angle_degrees = 180});
     ASSERT_EQ(mesh.uvs.size(), mesh.positions.size());
     const uint32_t a = mesh.indices[0][0];
     const uint32_t b = mesh.indices[1][0];
@@ -144,13 +148,13 @@ TEST(ObjLoader, CornersMergeOnlyWithEqualIndicesNumberedByFirstUse) {
     // Bare corners of one position share a vertex; a corner of the same position with a vt is
     // another vertex. Vertices are numbered in the order corners first name them.
     write_text(dir / "mix.obj",
-               std::string(k_quad) + "vt 0.5 0.5\nf 1 2 3\nf 2/1 4 3\nf 3 4 2/1\n");
+               std::string(k_quad) + "vt 0.5 0.5\nf 1 2 3\nf 2/1 3 4\nf 4 1 2/1\n");
     const MeshData mesh = load_obj(dir / "mix.obj");
     ASSERT_EQ(mesh.indices.size(), 3u);
     ASSERT_EQ(mesh.positions.size(), 5u);
     EXPECT_EQ(mesh.indices[0], (std::array<uint32_t, 3>{0, 1, 2}));
-    EXPECT_EQ(mesh.indices[1], (std::array<uint32_t, 3>{3, 4, 2}));
-    EXPECT_EQ(mesh.indices[2], (std::array<uint32_t, 3>{2, 4, 3}));
+    EXPECT_EQ(mesh.indices[1], (std::array<uint32_t, 3>{3, 2, 4}));
+    EXPECT_EQ(mesh.indices[2], (std::array<uint32_t, 3>{4, 0, 3}));
     EXPECT_EQ(mesh.positions[3], mesh.positions[1]);
     ASSERT_EQ(mesh.uvs.size(), 5u);
     EXPECT_FLOAT_EQ(mesh.uvs[3].x, 0.5f);
@@ -196,6 +200,27 @@ TEST(ObjLoader, UsemtlMapsToMaterials) {
     EXPECT_FLOAT_EQ(blue.transparency, 0.75f);
     EXPECT_EQ(blue.reflectivity, 0.0f);
     EXPECT_TRUE(mesh.warnings.empty());
+}
+
+TEST(ObjLoader, MtlIllumTrAndKeMapOntoTheMaterial) {
+    TempDir dir;
+    write_text(dir / "m.mtl",
+               "newmtl mirror\nKd 0.1 0.1 0.1\nKs 0.9 0.6 0.3\nillum 3\n"
+               "newmtl glass\nKd 0 0 0\nNi 1.45\nTr 0.9\nillum 7\nKs 0 0 0\n"
+               "newmtl lamp\nKd 0 0 0\nKe 4 3 2\nillum 2\nKs 1 1 1\n");
+    write_text(dir / "m.obj", std::string("mtllib m.mtl\n") + k_quad +
+                                  "usemtl mirror\nf 1 2 3\nusemtl glass\nf 1 3 4\n"
+                                  "usemtl lamp\nf 2 3 4\n");
+    const MeshData mesh = load_obj(dir / "m.obj");
+    ASSERT_EQ(mesh.materials.size(), 3u);
+    const Material& mirror = mesh.materials[mesh.material[0]];
+    const Material& glass = mesh.materials[mesh.material[1]];
+    const Material& lamp = mesh.materials[mesh.material[2]];
+    EXPECT_FLOAT_EQ(mirror.reflectivity, 0.6f);  // illum 3: the mean of Ks
+    EXPECT_FLOAT_EQ(glass.ior, 1.45f);
+    EXPECT_NEAR(glass.transparency, 0.9f, 1e-6f);  // Tr = 1 - d
+    EXPECT_EQ(lamp.reflectivity, 0.0f);            // illum 2: no ray-traced reflection
+    expect_near(lamp.emission, {4, 3, 2});
 }
 
 TEST(ObjLoader, MtlInSubdirectoryIsRelativeToObj) {

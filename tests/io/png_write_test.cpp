@@ -103,6 +103,36 @@ TEST(PngWrite, AdlerHoldsOverLongRowsOfLargeBytes) {
     }
 }
 
+TEST(PngWrite, SixteenBitSamplesAreTheRoundedCurveBigEndian) {
+    Image image(2, 1);
+    image.at(0, 0) = {0.0f, 1.0f, 0.5f};
+    image.at(1, 0) = {0.2f, NAN, -3.0f};
+    const Srgb16Image srgb16 = encode_srgb16(image);
+    const std::vector<uint8_t> want = {0x00, 0x00, 0xFF, 0xFF, 0xBC, 0x40,   // 48192
+                                       0x7C, 0x0A, 0x00, 0x00, 0x00, 0x00};  // 31754
+    EXPECT_EQ(srgb16.bytes, want);
+}
+
+TEST(PngWrite, SixteenBitStreamsAreValidAndRoundTrip) {
+    // Rows of 6 bytes per pixel, over several bands; the filters pair bytes a pixel apart.
+    for (const int width : {1, 2, 57}) {
+        const Image card = test_card(width, 75);
+        const Srgb16Image srgb16 = encode_srgb16(card);
+        const std::vector<uint8_t> png = encode_png(srgb16);
+        expect_valid_chunks_and_stream(png, 75 * (1 + static_cast<size_t>(width) * 6));
+        EXPECT_EQ(png[24], 16) << "IHDR bit depth";
+        TempDir dir;
+        write_image(dir / "a.png", card, ImageWriteSettings{16});
+        const Image back = read_image(dir / "a.png");
+        ASSERT_EQ(back.width, width);
+        for (size_t i = 0; i < card.pixels.size(); ++i)
+            for (int c = 0; c < 3; ++c)
+                ASSERT_EQ(std::lround(linear_to_srgb(back.pixels[i][c]) * 65535.0f),
+                          std::lround(linear_to_srgb(card.pixels[i][c]) * 65535.0f))
+                    << "width " << width << " pixel " << i << " channel " << c;
+    }
+}
+
 TEST(PngWrite, EverySimdLevelWritesTheSameBytes) {
     // Rows shorter than one 16-byte step, rows that end mid-step, and rows long enough for the
     // checksum's reductions; smooth ramps, flat runs and noise (test_card), then pure noise.

@@ -25,7 +25,7 @@ Scene parse_with(const std::vector<std::string>& args) {
     std::vector<SceneOverride> overrides;
     for (const std::string& a : args) overrides.push_back(parse_scene_override(a));
     std::vector<std::string> warnings;
-    return parse_scene(k_scene, "s.json", ".", warnings, overrides);
+    return parse_scene(k_scene, "s.json", ".", warnings, SceneLoadOptions(overrides));
 }
 
 std::string error_with(const std::vector<std::string>& args) {

@@ -21,7 +21,8 @@ class PrimitiveNames {
     std::string screen_triangle(const ProjectedScene& ps, uint32_t t) const;
 
   private:
-    std::vector<std::string_view> m_kind;  ///< by primitive id; string literals, so views never dangle
+    std::vector<std::string_view>
+        m_kind;  ///< by primitive id; string literals, so views never dangle
 };
 
 /// The view depth a depth key z = −near / w stands for (w, the distance along the view axis), or

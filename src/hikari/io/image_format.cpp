@@ -18,4 +18,9 @@ std::optional<ImageFormat> image_format_from_extension(const std::filesystem::pa
     return std::nullopt;
 }
 
+bool is_low_dynamic_range(ImageFormat format) {
+    return format == ImageFormat::Png || format == ImageFormat::Jpeg ||
+           format == ImageFormat::Ppm || format == ImageFormat::Xlsx;
+}
+
 }  // namespace hikari

@@ -431,6 +431,11 @@ Image read_exr(const std::filesystem::path& path, const std::string& bytes) {
 
 }  // namespace
 
+Image decode_png_or_jpeg(const std::filesystem::path& name, const std::string& bytes) {
+    if (bytes.empty()) fail(name, "the image is empty");
+    return read_stb(name, bytes);
+}
+
 Image read_image(const std::filesystem::path& path) {
     const auto format = image_format_from_extension(path);
     if (!format) {

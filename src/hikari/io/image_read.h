@@ -2,6 +2,7 @@
 // Reading images into linear RGB: reference images for tests, and later textures.
 
 #include <filesystem>
+#include <string>
 
 #include "hikari/core/image.h"
 
@@ -22,5 +23,9 @@ inline constexpr size_t k_max_image_pixels = size_t{1} << 28;
 /// Throws InputError naming the file and the reason for a missing, unreadable, truncated or
 /// malformed file, an unknown extension, or a size beyond the limits above.
 Image read_image(const std::filesystem::path& path);
+
+/// Decodes a PNG or JPEG image held in memory (an image embedded in a glTF file), as read_image()
+/// decodes such a file; `name` stands for the image in error messages ("NAME: reason").
+Image decode_png_or_jpeg(const std::filesystem::path& name, const std::string& bytes);
 
 }  // namespace hikari

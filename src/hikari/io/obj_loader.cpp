@@ -18,6 +18,7 @@
 
 #include "hikari/core/error.h"
 #include "hikari/core/huge_page_allocator.h"
+#include "hikari/io/mesh_builder.h"
 #include "hikari/io/read_file.h"
 #include "hikari/io/texture_files.h"
 
@@ -348,7 +349,11 @@ Material to_material(const std::filesystem::path& file, const tinyobj::material_
     out.shininess = static_cast<float>(m.shininess);
     out.ior = static_cast<float>(m.ior);
     out.transparency = std::clamp(1.0f - static_cast<float>(m.dissolve), 0.0f, 1.0f);
-    out.reflectivity = 0;
+    // illum 3, 5, 6 and 7 ask for ray-traced reflection weighted by Ks (the MTL specification);
+    // hikari's mirror weight is one number, so it takes Ks's mean.
+    const bool mirror = m.illum == 3 || m.illum == 5 || m.illum == 6 || m.illum == 7;
+    out.reflectivity =
+        mirror ? std::clamp((out.ks.x + out.ks.y + out.ks.z) / 3.0f, 0.0f, 1.0f) : 0.0f;
     out.emission = to_vec3(m.emission);
     if (!is_finite(out.ka) || !is_finite(out.kd) || !is_finite(out.ks) ||
         !is_finite(out.emission) || !std::isfinite(out.shininess) || !std::isfinite(out.ior) ||
@@ -381,19 +386,6 @@ struct CornerHash {
     }
 };
 
-/// A triangle kept for output, before corners are merged into vertices.
-struct PendingTriangle {
-    Corner c[3];
-    int32_t material;
-    uint8_t edge_flags;  ///< MeshData::edge_flags
-};
-
-/// Which edges of fan triangle (0, k, k + 1) of an n-corner polygon lie on its outline: 0 → k
-/// only for the first, k → k + 1 always, k + 1 → 0 only for the last (the rest are diagonals).
-uint8_t fan_edge_flags(size_t k, size_t n) {
-    return static_cast<uint8_t>((k == 1 ? 1 : 0) | 2 | (k + 2 == n ? 4 : 0));
-}
-
 /// Checks a corner's indices against the attribute counts; `line` is 0 when unknown.
 void check_corner(const std::filesystem::path& file, size_t line, const tinyobj::index_t& idx,
                   const tinyobj::attrib_t& attrib) {
@@ -422,133 +414,86 @@ int usable_normal(const tinyobj::attrib_t& attrib, int vn) {
     return std::isfinite(len) && len > 0.0f ? vn : -1;
 }
 
-/// Fans every face into triangles in file order, checking indices and dropping degenerate ones.
-std::vector<PendingTriangle> triangulate(const std::filesystem::path& file, const ParsedObj& parsed,
-                                         const LineTable& lines, MeshData& mesh) {
-    // A fan of n corners makes n - 2 triangles: counted first, the list is one allocation, with
-    // no copying as it grows.
-    size_t face_count = 0, fan_triangles = 0;
+/// The faces as polygons over vertices made of unique (v, vn, vt) corners, numbered in order of
+/// first use; indices checked, with the face's line. Triangulation and missing normals are left to
+/// build_mesh, as for every format.
+PolygonMesh to_polygons(const std::filesystem::path& file, const ParsedObj& parsed,
+                        const LineTable& lines) {
+    const tinyobj::attrib_t& attrib = parsed.attrib;
+    size_t face_count = 0, corner_count = 0;
+    bool has_normals = false, has_uvs = false;
     for (const auto& shape : parsed.shapes) {
         face_count += shape.mesh.num_face_vertices.size();
-        for (const unsigned char n : shape.mesh.num_face_vertices)
-            fan_triangles += n >= 3 ? n - 2 : 0;
+        corner_count += shape.mesh.indices.size();
+        for (const tinyobj::index_t& idx : shape.mesh.indices) {
+            has_normals |= idx.normal_index >= 0;
+            has_uvs |= idx.texcoord_index >= 0;
+        }
     }
     const bool know_lines = face_count == lines.f.size();
-    std::vector<PendingTriangle> triangles;
-    triangles.reserve(fan_triangles);
-    populate_pages(triangles.data(), fan_triangles * sizeof(PendingTriangle));
+    PolygonMesh mesh;
+    mesh.face_start.reserve(face_count + 1);
+    mesh.corners.reserve(corner_count);
+    mesh.face_material.reserve(face_count);
+    mesh.smoothing_group.reserve(face_count);
+    if (know_lines) mesh.face_line.assign(lines.f.begin(), lines.f.end());
+    // A corner with neither vn nor vt is its position alone: a flat table finds its vertex
+    // (the common case, and a hash map's node per vertex costs a million allocations on a big
+    // mesh). Corners with either go through the map.
+    constexpr uint32_t k_none = UINT32_MAX;
+    std::vector<uint32_t> vertex_of_position(attrib.vertices.size() / 3, k_none);
+    std::unordered_map<Corner, uint32_t, CornerHash> vertex_of;
+    auto vertex = [&](const Corner& c) {
+        const auto next = static_cast<uint32_t>(mesh.positions.size());
+        bool inserted = false;
+        uint32_t found = 0;
+        if (c.vn < 0 && c.vt < 0) {
+            uint32_t& v = vertex_of_position[static_cast<size_t>(c.v)];
+            inserted = v == k_none;
+            if (inserted) v = next;
+            found = v;
+        } else {
+            const auto it = vertex_of.try_emplace(c, next);
+            inserted = it.second;
+            found = it.first->second;
+        }
+        if (inserted) {
+            mesh.positions.push_back(vec3_at(attrib.vertices, c.v));
+            if (has_normals)
+                mesh.normals.push_back(c.vn >= 0 ? vec3_at(attrib.normals, c.vn) : Vec3(0.0f));
+            if (has_uvs)
+                mesh.uvs.push_back(c.vt >= 0
+                                       ? Vec2{static_cast<float>(attrib.texcoords[2 * c.vt]),
+                                              static_cast<float>(attrib.texcoords[2 * c.vt + 1])}
+                                       : Vec2{});
+        }
+        return found;
+    };
     size_t face = 0;
-    // Outside the loop: Corner's initializers would otherwise fill all 255 for every face (3 KB
-    // of stores per face, a third of a million-triangle mesh's triangulation).
-    std::array<Corner, 255> corners;
     for (const auto& shape : parsed.shapes) {
+        const bool has_groups =
+            shape.mesh.smoothing_group_ids.size() == shape.mesh.num_face_vertices.size();
         size_t offset = 0;
         for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++face) {
             const size_t n = shape.mesh.num_face_vertices[f];
             const size_t line = know_lines ? lines.f[face] : 0;
             for (size_t k = 0; k < n; ++k) {
                 const tinyobj::index_t& idx = shape.mesh.indices[offset + k];
-                check_corner(file, line, idx, parsed.attrib);
-                corners[k] = {idx.vertex_index, usable_normal(parsed.attrib, idx.normal_index),
-                              idx.texcoord_index};
+                check_corner(file, line, idx, attrib);
+                mesh.corners.push_back(
+                    vertex({idx.vertex_index, usable_normal(attrib, idx.normal_index),
+                            idx.texcoord_index}));
             }
             offset += n;
+            mesh.face_start.push_back(static_cast<uint32_t>(mesh.corners.size()));
             int32_t material = shape.mesh.material_ids[f];
-            if (material < -1 || material >= static_cast<int32_t>(parsed.materials.size())) {
+            if (material < -1 || material >= static_cast<int32_t>(parsed.materials.size()))
                 material = -1;
-            }
-            for (size_t k = 1; k + 1 < n; ++k) {
-                const PendingTriangle t{
-                    {corners[0], corners[k], corners[k + 1]}, material, fan_edge_flags(k, n)};
-                const Vec3 p1 = vec3_at(parsed.attrib.vertices, t.c[0].v);
-                const Vec3 p2 = vec3_at(parsed.attrib.vertices, t.c[1].v);
-                const Vec3 p3 = vec3_at(parsed.attrib.vertices, t.c[2].v);
-                const float area2 = length(cross(p2 - p1, p3 - p2));
-                if (!(area2 > 0.0f) || !std::isfinite(area2)) {
-                    ++mesh.degenerate_skipped;
-                    continue;
-                }
-                triangles.push_back(t);
-            }
+            mesh.face_material.push_back(material);
+            mesh.smoothing_group.push_back(has_groups ? shape.mesh.smoothing_group_ids[f] : 0);
         }
     }
-    return triangles;
-}
-
-/// Area-weighted vertex normals per position: the sum of the unnormalized face normals
-/// N = (P2 - P1) x (P3 - P2) (lecture, Fig 4.3), whose length is twice the triangle's area.
-/// Seam corners that differ only in vt share a position and so share the normal.
-std::vector<Vec3> smooth_normals(const tinyobj::attrib_t& attrib,
-                                 const std::vector<PendingTriangle>& triangles) {
-    std::vector<Vec3> sum(attrib.vertices.size() / 3, Vec3(0.0f));
-    std::vector<Vec3> fallback(sum.size(), Vec3(0.0f));
-    for (const PendingTriangle& t : triangles) {
-        const Vec3 p1 = vec3_at(attrib.vertices, t.c[0].v);
-        const Vec3 p2 = vec3_at(attrib.vertices, t.c[1].v);
-        const Vec3 p3 = vec3_at(attrib.vertices, t.c[2].v);
-        const Vec3 n = cross(p2 - p1, p3 - p2);
-        for (const Corner& c : t.c) {
-            sum[c.v] += n;
-            if (fallback[c.v] == Vec3(0.0f)) fallback[c.v] = normalize(n);
-        }
-    }
-    for (size_t i = 0; i < sum.size(); ++i) {
-        // Opposite faces can cancel (a two-sided sheet): fall back to the first face's normal.
-        const float len = length(sum[i]);
-        sum[i] = len > 0.0f && std::isfinite(len) ? sum[i] / len : fallback[i];
-    }
-    return sum;
-}
-
-/// Merges corners with equal (v, vn, vt) into output vertices and fills the mesh arrays.
-void flatten(const tinyobj::attrib_t& attrib, const std::vector<PendingTriangle>& triangles,
-             MeshData& mesh) {
-    const std::vector<Vec3> smooth = smooth_normals(attrib, triangles);
-    bool has_uvs = false;
-    for (const PendingTriangle& t : triangles) {
-        for (const Corner& c : t.c) has_uvs |= c.vt >= 0;
-    }
-    // A corner with neither vn nor vt is its position alone: a flat table finds its vertex
-    // (the common case, and a hash map's node per vertex costs a million allocations on a big
-    // mesh). Corners with either go through the map. Vertices are numbered in order of first use
-    // either way.
-    constexpr uint32_t k_none = UINT32_MAX;
-    std::vector<uint32_t> vertex_of_position(attrib.vertices.size() / 3, k_none);
-    std::unordered_map<Corner, uint32_t, CornerHash> vertex_of;
-    mesh.indices.reserve(triangles.size());
-    mesh.material.reserve(triangles.size());
-    mesh.edge_flags.reserve(triangles.size());
-    mesh.positions.reserve(vertex_of_position.size());
-    mesh.normals.reserve(vertex_of_position.size());
-    for (const PendingTriangle& t : triangles) {
-        std::array<uint32_t, 3> tri{};
-        for (int k = 0; k < 3; ++k) {
-            const Corner& c = t.c[k];
-            const auto next = static_cast<uint32_t>(mesh.positions.size());
-            bool inserted = false;
-            if (c.vn < 0 && c.vt < 0) {
-                uint32_t& vertex = vertex_of_position[static_cast<size_t>(c.v)];
-                inserted = vertex == k_none;
-                if (inserted) vertex = next;
-                tri[k] = vertex;
-            } else {
-                const auto found = vertex_of.try_emplace(c, next);
-                inserted = found.second;
-                tri[k] = found.first->second;
-            }
-            if (!inserted) continue;
-            mesh.positions.push_back(vec3_at(attrib.vertices, c.v));
-            mesh.normals.push_back(c.vn >= 0 ? normalize(vec3_at(attrib.normals, c.vn))
-                                             : smooth[c.v]);
-            if (!has_uvs) continue;
-            mesh.uvs.push_back(c.vt >= 0 ? Vec2{static_cast<float>(attrib.texcoords[2 * c.vt]),
-                                                static_cast<float>(attrib.texcoords[2 * c.vt + 1])}
-                                         : Vec2{});
-        }
-        mesh.indices.push_back(tri);
-        mesh.material.push_back(t.material);
-        mesh.edge_flags.push_back(t.edge_flags);
-    }
+    return mesh;
 }
 
 /// The triangles tinyobjloader made of the faces, in file order, as position indices. It passes
@@ -579,27 +524,18 @@ std::vector<std::array<uint32_t, 3>> triangle_positions(const std::filesystem::p
 
 }  // namespace
 
-MeshData load_obj(const std::filesystem::path& file) {
+MeshData load_obj(const std::filesystem::path& file, const MeshOptions& options) {
     const std::string text = read_file_bytes(file);
     const LineTable lines = scan_obj_text(file, text);
     const ParsedObj parsed = parse_with_tinyobj(file, text);
 
-    MeshData mesh;
+    PolygonMesh mesh = to_polygons(file, parsed, lines);
     mesh.warnings = parsed.warnings;
     TextureFiles textures;
     for (size_t k = 0; k < parsed.materials.size(); ++k)
         mesh.materials.push_back(
             to_material(file, parsed.materials[k], parsed.material_library[k], textures));
-    const std::vector<PendingTriangle> triangles = triangulate(file, parsed, lines, mesh);
-    if (triangles.empty()) {
-        fail(file, 0,
-             mesh.degenerate_skipped > 0 ? fmt::format("no usable triangles: all {} are degenerate",
-                                                       mesh.degenerate_skipped)
-                                         : "no faces: the file defines no triangles or polygons");
-    }
-    if (triangles.size() * 3 > UINT32_MAX) fail(file, 0, "too many triangles");
-    flatten(parsed.attrib, triangles, mesh);
-    return mesh;
+    return build_mesh(file, std::move(mesh), options);
 }
 
 ObjTriangles load_obj_triangles(const std::filesystem::path& file) {

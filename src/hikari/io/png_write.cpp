@@ -8,12 +8,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <span>
 #include <string_view>
 
+#include "hikari/core/color.h"
 #include "hikari/core/huge_page_allocator.h"
 #include "hikari/core/parallel.h"
 #include "hikari/core/simd_level.h"
@@ -88,12 +90,14 @@ inline uint32_t filter_cost(uint8_t residual) {
     return static_cast<uint32_t>(std::abs(static_cast<int8_t>(residual)));
 }
 
-/// Bytes [begin, end) of the three filterings, begin ≥ 3 (a pixel to the left exists).
+/// Bytes [begin, end) of the three filterings, begin ≥ Bpp (a pixel to the left exists). Bpp:
+/// bytes per pixel, 3 for 8-bit RGB, 6 for 16-bit (filters pair bytes a pixel apart, §9.2).
+template <size_t Bpp = 3>
 [[gnu::always_inline]] inline void filter_bytes(const uint8_t* row, const uint8_t* prev,
                                                 size_t begin, size_t end, RowFilters& f) {
     uint32_t cost_sub = 0, cost_up = 0, cost_paeth = 0;
     for (size_t i = begin; i < end; ++i) {
-        const int x = row[i], a = row[i - 3], b = prev[i], c = prev[i - 3];
+        const int x = row[i], a = row[i - Bpp], b = prev[i], c = prev[i - Bpp];
         const auto s = static_cast<uint8_t>(x - a), u = static_cast<uint8_t>(x - b),
                    p = static_cast<uint8_t>(x - paeth(a, b, c));
         f.sub[i] = s, f.up[i] = u, f.paeth[i] = p;
@@ -103,10 +107,11 @@ inline uint32_t filter_cost(uint8_t residual) {
 }
 
 /// The first pixel's bytes, which have no left neighbour (a = c = 0).
+template <size_t Bpp = 3>
 inline RowFilters filter_first_pixel(const uint8_t* row, const uint8_t* prev, size_t n,
                                      uint8_t* scratch) {
     RowFilters f{scratch, scratch + n, scratch + 2 * n};
-    for (size_t i = 0; i < std::min<size_t>(3, n); ++i) {
+    for (size_t i = 0; i < std::min<size_t>(Bpp, n); ++i) {
         f.sub[i] = row[i];
         f.up[i] = static_cast<uint8_t>(row[i] - prev[i]);
         f.paeth[i] = static_cast<uint8_t>(row[i] - paeth(0, prev[i], 0));
@@ -135,6 +140,15 @@ void filter_row_portable(const uint8_t* row, const uint8_t* prev, size_t n, uint
                          uint8_t* out) {
     RowFilters f = filter_first_pixel(row, prev, n, scratch);
     filter_bytes(row, prev, std::min<size_t>(3, n), n, f);
+    write_cheapest(f, n, out);
+}
+
+/// filter_row_portable for 16-bit RGB rows (6 bytes per pixel). 16-bit output is rare and
+/// slow anyway (a pow() per sample), so it has no SIMD kernels.
+void filter_row_16bit(const uint8_t* row, const uint8_t* prev, size_t n, uint8_t* scratch,
+                      uint8_t* out) {
+    RowFilters f = filter_first_pixel<6>(row, prev, n, scratch);
+    filter_bytes<6>(row, prev, std::min<size_t>(6, n), n, f);
     write_cheapest(f, n, out);
 }
 
@@ -306,8 +320,19 @@ struct Band {
     size_t filtered_size = 0;
 };
 
-Band encode_band(const Srgb8Image& image, int y0, int y1, bool last, SimdLevel level) {
-    const size_t n = static_cast<size_t>(image.width) * 3;
+/// The samples of an image as the PNG encoder reads them: rows of RGB samples, 8 or 16 bits.
+struct RawRows {
+    const uint8_t* data;
+    int width, height;
+    int bit_depth;  ///< 8 or 16 (samples big-endian)
+
+    size_t pixel_bytes() const { return bit_depth == 16 ? 6 : 3; }
+    size_t row_bytes() const { return static_cast<size_t>(width) * pixel_bytes(); }
+    const uint8_t* row(int y) const { return data + static_cast<size_t>(y) * row_bytes(); }
+};
+
+Band encode_band(const RawRows& image, int y0, int y1, bool last, SimdLevel level) {
+    const size_t n = image.row_bytes();
     const std::vector<uint8_t> zeros(y0 == 0 ? n : 0, 0);  // the row above row 0
     Band band;
     band.filtered_size = (n + 1) * static_cast<size_t>(y1 - y0);
@@ -317,17 +342,19 @@ Band encode_band(const Srgb8Image& image, int y0, int y1, bool last, SimdLevel l
     for (int y = y0; y < y1; ++y) {
         // Up and Paeth predict from the row above, also across the band's top edge.
         const uint8_t* above = y > 0 ? image.row(y - 1) : zeros.data();
-        filter_row(level, image.row(y), above, n, scratch,
-                   filtered + (n + 1) * static_cast<size_t>(y - y0));
+        uint8_t* const out = filtered + (n + 1) * static_cast<size_t>(y - y0);
+        if (image.bit_depth == 16)
+            filter_row_16bit(image.row(y), above, n, scratch, out);
+        else
+            filter_row(level, image.row(y), above, n, scratch, out);
     }
     band.adler = adler32_update(level, 1, filtered, band.filtered_size);
     deflate_runs({filtered, band.filtered_size}, last, band.deflated);
     return band;
 }
 
-}  // namespace
-
-Bytes encode_png(const Srgb8Image& image, SimdLevel level) {
+/// The PNG file of `image`'s samples.
+Bytes encode_png(const RawRows& image, SimdLevel level) {
     const int band_count = (image.height + k_band_rows - 1) / k_band_rows;
     std::vector<Band> bands(static_cast<size_t>(band_count));
     hikari::parallel_for(0, band_count, [&](int b) {
@@ -343,12 +370,12 @@ Bytes encode_png(const Srgb8Image& image, SimdLevel level) {
     png.reserve(size);
     populate_pages(png.data(), size);
     png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-    // IHDR (§11.2.2): size, bit depth 8, colour type 2 (RGB), deflate, adaptive filters, no
-    // interlace.
+    // IHDR (§11.2.2): size, bit depth 8 or 16, colour type 2 (RGB), deflate, adaptive filters,
+    // no interlace.
     std::array<uint8_t, 13> header{};
     put_u32_be(header.data(), static_cast<uint32_t>(image.width));
     put_u32_be(header.data() + 4, static_cast<uint32_t>(image.height));
-    header[8] = 8;
+    header[8] = static_cast<uint8_t>(image.bit_depth);
     header[9] = 2;
     append_chunk(png, "IHDR", header);
     // The zlib stream (RFC 1950) across IDAT chunks: header 78 01 (deflate, 32 KiB window,
@@ -366,6 +393,33 @@ Bytes encode_png(const Srgb8Image& image, SimdLevel level) {
     append_chunk(png, "IDAT", trailer);
     append_chunk(png, "IEND", {});
     return png;
+}
+
+}  // namespace
+
+Bytes encode_png(const Srgb8Image& image, SimdLevel level) {
+    return encode_png(RawRows{image.bytes.data(), image.width, image.height, 8}, level);
+}
+
+Bytes encode_png(const Srgb16Image& image, SimdLevel level) {
+    return encode_png(RawRows{image.bytes.data(), image.width, image.height, 16}, level);
+}
+
+Srgb16Image encode_srgb16(const Image& image) {
+    Srgb16Image out{image.width, image.height, {}};
+    out.bytes.resize(image.pixels.size() * 6);
+    hikari::parallel_for(0, image.height, [&](int y) {
+        const size_t first = static_cast<size_t>(y) * static_cast<size_t>(image.width);
+        for (size_t i = first; i < first + static_cast<size_t>(image.width); ++i)
+            for (int c = 0; c < 3; ++c) {
+                // Rounded from the curve itself, not widened from the 8-bit code.
+                const auto code = static_cast<uint16_t>(
+                    std::lround(linear_to_srgb(image.pixels[i][c]) * 65535.0f));
+                out.bytes[6 * i + 2 * c] = static_cast<uint8_t>(code >> 8);
+                out.bytes[6 * i + 2 * c + 1] = static_cast<uint8_t>(code);
+            }
+    });
+    return out;
 }
 
 }  // namespace hikari

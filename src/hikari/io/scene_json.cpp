@@ -15,7 +15,7 @@
 #include "hikari/io/default_scene.h"
 #include "hikari/io/image_read.h"
 #include "hikari/io/json_reader.h"
-#include "hikari/io/obj_loader.h"
+#include "hikari/io/model_file.h"
 #include "hikari/io/read_file.h"
 #include "hikari/io/texture_files.h"
 
@@ -34,6 +34,9 @@ struct SceneBuilder {
     std::filesystem::path base_dir;
     std::vector<std::string>& warnings;
     TextureFiles textures;
+    const SceneLoadOptions& options;
+    /// The first camera a model file (glTF) holds, in world space.
+    std::optional<Camera> file_camera;
 };
 
 CheckerTexture parse_checker_texture(const JsonNode& node) {
@@ -404,16 +407,27 @@ void parse_triangle(SceneBuilder& b, const JsonNode& node) {
 }
 
 void parse_mesh(SceneBuilder& b, const JsonNode& node) {
-    node.expect_object({"type", "name", "file", "material", "transform", "casts_shadow"});
+    node.expect_object(
+        {"type", "name", "file", "material", "transform", "casts_shadow", "crease_angle"});
     const bool shadow = casts_shadow(node);
     const JsonNode file_node = node.at("file");
     const std::filesystem::path file = b.base_dir / file_node.as_string();
-    MeshData mesh;
+    MeshOptions mesh_options;
+    if (node.has("crease_angle")) {
+        const JsonNode crease = node.at("crease_angle");
+        mesh_options.crease_angle_degrees = crease.as_non_negative();
+        if (mesh_options.crease_angle_degrees > 180.0f)
+            crease.fail("expected an angle from 0 to 180 degrees");
+    }
+    if (b.options.crease_angle) mesh_options.crease_angle_degrees = *b.options.crease_angle;
+    MeshData loaded;
+    const bool preloaded = b.options.preloaded && file == b.options.preloaded_file;
     try {
-        mesh = load_obj(file);
+        if (!preloaded) loaded = load_model(file, mesh_options);
     } catch (const InputError& e) {
         file_node.fail(e.what());
     }
+    const MeshData& mesh = preloaded ? *b.options.preloaded : loaded;
     for (const std::string& w : mesh.warnings) b.warnings.push_back(w);
     if (mesh.degenerate_skipped > 0)
         b.warnings.push_back(fmt::format("{}: skipped {} degenerate triangle(s)", file.string(),
@@ -463,6 +477,22 @@ void parse_mesh(SceneBuilder& b, const JsonNode& node) {
         t.id.push_back(next_id(b));
         t.casts_shadow.push_back(shadow ? 1 : 0);
     }
+    // A glTF file's lights light the scene from where the transform puts them; its first camera
+    // is the scene's when the scene names none.
+    for (Light light : mesh.lights) {
+        if (auto* p = std::get_if<PointLight>(&light))
+            p->position = transform_point(world_from_model, p->position);
+        if (auto* d = std::get_if<DirectionalLight>(&light))
+            d->direction = normalize(transform_direction(world_from_model, d->direction));
+        b.scene.lights.push_back(light);
+    }
+    if (!mesh.cameras.empty() && !b.file_camera) {
+        Camera c = mesh.cameras.front().camera;
+        c.eye = transform_point(world_from_model, c.eye);
+        c.look_at = transform_point(world_from_model, c.look_at);
+        c.up = normalize(transform_direction(world_from_model, c.up));
+        b.file_camera = c;
+    }
 }
 
 void parse_object(SceneBuilder& b, const JsonNode& node) {
@@ -497,13 +527,13 @@ void parse_object(SceneBuilder& b, const JsonNode& node) {
 
 Scene parse_scene(std::string_view text, const std::string& file,
                   const std::filesystem::path& base_dir, std::vector<std::string>& warnings,
-                  std::span<const SceneOverride> overrides) {
+                  const SceneLoadOptions& options) {
     nlohmann::json doc = parse_json(text, file);
-    apply_scene_overrides(doc, overrides);
+    apply_scene_overrides(doc, options.overrides);
     const JsonNode root(doc, file, "");
     root.expect_object({"description", "camera", "background", "sky", "ambient", "depth_cue",
                         "materials", "lights", "objects"});
-    SceneBuilder b{Scene{}, {}, base_dir, warnings, {}};
+    SceneBuilder b{Scene{}, {}, base_dir, warnings, {}, options, std::nullopt};
     if (root.has("description")) root.at("description").as_string();
     if (root.has("camera")) b.scene.camera = parse_camera(root.at("camera"));
     if (root.has("background")) b.scene.background = root.at("background").as_colour();
@@ -533,24 +563,30 @@ Scene parse_scene(std::string_view text, const std::string& file,
     const JsonNode objects = root.at("objects");
     objects.expect_array();
     for (size_t i = 0; i < objects.value().size(); ++i) parse_object(b, objects.at(i));
+    if (!root.has("camera") && b.file_camera) {
+        const Camera& c = *b.file_camera;
+        b.scene.camera.eye = c.eye;
+        b.scene.camera.look_at = c.look_at;
+        b.scene.camera.up = c.up;
+        b.scene.camera.fov_y_degrees = c.fov_y_degrees;
+    }
     return std::move(b.scene);
 }
 
 Scene load_scene_file(const std::filesystem::path& path, std::vector<std::string>& warnings,
-                      std::span<const SceneOverride> overrides) {
+                      const SceneLoadOptions& options) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
         throw InputError(fmt::format("{}: is a directory, not a scene file", path.string()));
     // stdio, not iostreams: a render that loads no other file then never pays for iostreams'
     // locale set-up (some 15 page faults, 0.3 ms on a virtual machine).
-    return parse_scene(read_file_bytes(path), path.string(), path.parent_path(), warnings,
-                       overrides);
+    return parse_scene(read_file_bytes(path), path.string(), path.parent_path(), warnings, options);
 }
 
-Scene load_default_scene(std::span<const SceneOverride> overrides) {
+Scene load_default_scene(const SceneLoadOptions& options) {
     std::vector<std::string> warnings;
     return parse_scene(default_scene_json(), "scenes/assignment.json (built in)", ".", warnings,
-                       overrides);
+                       options);
 }
 
 }  // namespace hikari
