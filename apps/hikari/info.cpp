@@ -52,14 +52,14 @@ std::string lights_lines(std::span<const Light> lights) {
     std::string text = fmt::format("  lights      {}\n", lights.size());
     for (const Light& light : lights) {
         if (const auto* p = std::get_if<PointLight>(&light))
-            text += fmt::format("    point at {}, intensity {}\n", vec(p->position),
-                                vec(p->intensity));
+            text +=
+                fmt::format("    point at {}, intensity {}\n", vec(p->position), vec(p->intensity));
         else if (const auto* d = std::get_if<DirectionalLight>(&light))
             text += fmt::format("    directional toward {}, intensity {}\n", vec(d->direction),
                                 vec(d->intensity));
         else if (const auto* a = std::get_if<AreaLight>(&light))
-            text += fmt::format("    area at {}, radiance {}\n", vec(a->centre()),
-                                vec(a->radiance));
+            text +=
+                fmt::format("    area at {}, radiance {}\n", vec(a->centre()), vec(a->radiance));
         else
             text += "    environment\n";
     }
@@ -67,8 +67,8 @@ std::string lights_lines(std::span<const Light> lights) {
 }
 
 std::string camera_line(const Camera& c) {
-    return fmt::format("    eye {} looking at {}, fov_y {:g}°, {}x{}\n", vec(c.eye),
-                       vec(c.look_at), c.fov_y_degrees, c.width, c.height);
+    return fmt::format("    eye {} looking at {}, fov_y {:g}°, {}x{}\n", vec(c.eye), vec(c.look_at),
+                       c.fov_y_degrees, c.width, c.height);
 }
 
 }  // namespace

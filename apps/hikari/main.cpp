@@ -139,25 +139,34 @@ void install_signal_handlers() {
     sigaction(SIGALRM, &action, nullptr);
 }
 
-/// Prints a progress line on stderr while a render runs, once it has taken a second, when
-/// stderr is a terminal.
+/// Prints a progress line on stderr, once a stage has taken a second, when stderr is a terminal:
+/// for a render a bar with the percentage done, the rate in pixels per second and the time left
+/// (`pixels` > 0); for a load (`pixels` = 0, no measure of the work) the time so far.
 class ProgressReporter {
   public:
-    explicit ProgressReporter(bool enabled) {
+    ProgressReporter(bool enabled, std::string stage, double pixels) {
         if (!enabled || !isatty(STDERR_FILENO)) return;
-        m_thread = std::jthread([](const std::stop_token& stop) {
+        m_thread = std::jthread([stage = std::move(stage), pixels](const std::stop_token& stop) {
             const auto start = Clock::now();
             bool shown = false;
             while (!stop.stop_requested()) {
                 std::this_thread::sleep_for(std::chrono::milliseconds(100));
                 const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+                if (elapsed < 1.0) continue;
                 const uint64_t total = g_control.work_total.load();
-                if (elapsed < 1.0 || total == 0) continue;
-                const double done = static_cast<double>(g_control.work_done.load()) / total;
-                const double eta = done > 0 ? elapsed * (1.0 - done) / done : 0.0;
-                fmt::print(stderr,
-                           "\rhikari: rendering {:5.1f}%  {:.1f} s elapsed, ~{:.1f} s left ",
-                           100.0 * done, elapsed, eta);
+                if (pixels <= 0.0 || total == 0) {
+                    fmt::print(stderr, "\rhikari: {} ... {:.1f} s ", stage, elapsed);
+                } else {
+                    const double done = static_cast<double>(g_control.work_done.load()) / total;
+                    const double eta = done > 0 ? elapsed * (1.0 - done) / done : 0.0;
+                    constexpr int k_bar = 24;
+                    const int filled = std::clamp(static_cast<int>(done * k_bar), 0, k_bar);
+                    fmt::print(stderr,
+                               "\rhikari: {} [{}{}] {:5.1f}%  {:.2f} Mpixel/s  {:.1f} s elapsed, "
+                               "~{:.1f} s left ",
+                               stage, std::string(filled, '#'), std::string(k_bar - filled, '.'),
+                               100.0 * done, 1e-6 * done * pixels / elapsed, elapsed, eta);
+                }
                 shown = true;
             }
             if (shown) fmt::print(stderr, "\r\033[K");
@@ -305,10 +314,14 @@ Scene load_render_scene(const RenderOptions& o) {
     SceneLoadOptions load(o.overrides);
     if (o.crease_angle >= 0.0f) load.crease_angle = o.crease_angle;
     const bool model = is_model_file(o.scene_file);
-    Scene scene =
-        o.scene_file.empty() ? load_default_scene(load)
-        : model ? load_model_scene(o.scene_file, {.ground = o.ground, .mesh = {}}, warnings, load)
-                : load_scene_file(o.scene_file, warnings, load);
+    Scene scene;
+    {
+        ProgressReporter progress(!o.quiet, "loading " + o.scene_file, 0.0);
+        scene = o.scene_file.empty() ? load_default_scene(load)
+                : model ? load_model_scene(o.scene_file, {.ground = o.ground, .mesh = {}}, warnings,
+                                           load)
+                        : load_scene_file(o.scene_file, warnings, load);
+    }
     if (o.ground && !model)
         warnings.push_back("--ground adds a plane under a model file; the scene has its own");
     for (const std::string& w : warnings) fmt::print(stderr, "hikari: warning: {}\n", w);
@@ -431,6 +444,21 @@ int run_drawing(const RenderOptions& o, const Method& method, const std::string&
     return 0;
 }
 
+/// The line that ends a render: what was written, the scene's size and where the time went.
+void print_summary(const std::string& output, int width, int height, const Method& method,
+                   const Scene& scene, const PhaseTimes& times, const RenderStats& stats) {
+    std::string text =
+        fmt::format("hikari: wrote {} ({}x{}, {}; ", output, width, height, method.name);
+    const size_t triangles = scene.triangles.indices.size();
+    text += fmt::format("{} triangle{}", triangles, triangles == 1 ? "" : "s");
+    if (!scene.spheres.empty()) text += fmt::format(", {} spheres", scene.spheres.size());
+    text += fmt::format("; load {:.3f} s", times.load);
+    if (const uint64_t us = stats.bvh_build_us.load(); us > 0)
+        text += fmt::format(", BVH {:.1f} ms", 1e-3 * double(us));
+    text += fmt::format(", render {:.3f} s)", times.render);
+    fmt::print(stderr, "{}\n", text);
+}
+
 /// One method's render of the loaded scene into `output`. `load_seconds`: the time spent loading,
 /// for --stats.
 void render_with(const RenderOptions& o, const Scene& scene, const Method& method,
@@ -474,7 +502,8 @@ void render_with(const RenderOptions& o, const Scene& scene, const Method& metho
     times.load = load_seconds;
     Framebuffer fb;
     {
-        ProgressReporter progress(!o.quiet);
+        ProgressReporter progress(!o.quiet, "rendering",
+                                  double(scene.camera.width) * scene.camera.height);
         fb = render_scene(method, scene,
                           o.wireframe_overlay ? Film(scene.camera, FilmFormat::linear)
                                               : output_film(scene.camera, output, o),
@@ -495,9 +524,7 @@ void render_with(const RenderOptions& o, const Scene& scene, const Method& metho
                      : std::optional(DepthRange{o.depth_range[0], o.depth_range[1]}),
                  o);
     times.write = std::chrono::duration<double>(Clock::now() - rendered).count();
-    if (!o.quiet)
-        fmt::print(stderr, "hikari: wrote {} ({}x{}, {}, {:.3f} s)\n", output, width, height,
-                   method.name, times.render);
+    if (!o.quiet) print_summary(output, width, height, method, scene, times, stats);
     if (const uint64_t bad = stats.bad_samples.load(); bad > 0)
         fmt::print(stderr,
                    "hikari: warning: {} samples were NaN or infinite and were left out of the "

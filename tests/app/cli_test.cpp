@@ -872,4 +872,63 @@ TEST_F(Cli, ExplainRaytraceAndDepthSort) {
     EXPECT_NE(d.output.find("Painting order"), std::string::npos) << d.output;
 }
 
+TEST_F(Cli, ModelFilesRenderDirectly) {
+    const std::string models = std::string(HIKARI_SOURCE_DIR) + "/scenes/models/";
+    for (const char* model : {"BoxTextured.glb", "BoxTextured.gltf", "Wuson.ply", "teapot.obj"}) {
+        const Result r = run("render " + models + model + " --width 48 --ground -o " +
+                             path(std::string(model) + ".png"));
+        EXPECT_EQ(r.status, 0) << model << ": " << r.output;
+        EXPECT_TRUE(fs::exists(path(std::string(model) + ".png"))) << model;
+        EXPECT_NE(r.output.find("triangles"), std::string::npos) << r.output;  // the summary
+    }
+    // The camera options move the framing: a render from elsewhere differs.
+    const Result moved = run("render " + models + "teapot.obj --width 48 --camera-from 0,9,0.1 " +
+                             "--look-at 0,1,0 -m zbuffer -o " + path("top.pfm"));
+    EXPECT_EQ(moved.status, 0) << moved.output;
+    const Result framed =
+        run("render " + models + "teapot.obj --width 48 -m zbuffer -o " + path("framed.pfm"));
+    EXPECT_EQ(framed.status, 0) << framed.output;
+    EXPECT_NE(hikari::testing::read_text(path("top.pfm")),
+              hikari::testing::read_text(path("framed.pfm")));
+    expect_usage_error(models + "teapot.obj --crease-angle 200", "--crease-angle");
+}
+
+TEST_F(Cli, BrokenModelFilesAreOneErrorLineAndNoImage) {
+    write("short.ply",
+          "ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
+          "property float x\nproperty float y\nproperty float z\nelement face 1\n"
+          "property list uchar int vertex_indices\nend_header\n\x01\x02");
+    write("huge.ply",
+          "ply\nformat ascii 1.0\nelement vertex 1000000000000\n"
+          "property float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n");
+    write("nobin.gltf", R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "missing.bin",
+        "byteLength": 36}], "bufferViews": [{"buffer": 0, "byteLength": 36}], "accessors":
+        [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}], "meshes":
+        [{"primitives": [{"attributes": {"POSITION": 0}}]}], "nodes": [{"mesh": 0}]})");
+    write("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n");
+    for (const char* name : {"short.ply", "huge.ply", "nobin.gltf", "range.obj"}) {
+        const Result r = run("render " + path(name) + " -o " + path("out.png"));
+        EXPECT_EQ(r.status, 1) << name << ": " << r.output;
+        EXPECT_EQ(r.output.rfind("hikari: error: ", 0), 0u) << r.output;
+        EXPECT_NE(r.output.find(name), std::string::npos) << r.output;
+        EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+        EXPECT_FALSE(fs::exists(path("out.png"))) << name;
+    }
+    const Result info = run("info " + path("huge.ply"));
+    EXPECT_EQ(info.status, 1) << info.output;
+}
+
+TEST_F(Cli, InfoSaysWhatAFileHolds) {
+    const Result ply = run("info " + std::string(HIKARI_SOURCE_DIR) + "/scenes/models/Wuson.ply");
+    EXPECT_EQ(ply.status, 0) << ply.output;
+    EXPECT_NE(ply.output.find("triangles   3732"), std::string::npos) << ply.output;
+    EXPECT_NE(ply.output.find("loaded in"), std::string::npos) << ply.output;
+    const Result glb =
+        run("info " + std::string(HIKARI_SOURCE_DIR) + "/scenes/models/BoxTextured.glb");
+    EXPECT_NE(glb.output.find("textures    1"), std::string::npos) << glb.output;
+    const Result scene = run("info " + std::string(HIKARI_SOURCE_DIR) + "/scenes/whitted.json");
+    EXPECT_EQ(scene.status, 0) << scene.output;
+    EXPECT_NE(scene.output.find("spheres"), std::string::npos) << scene.output;
+}
+
 }  // namespace

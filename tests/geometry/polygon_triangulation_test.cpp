@@ -36,7 +36,8 @@ bool inside_l_shape(double x, double y) {
 
 // The lecture's Fig 4.9c case: a fan from the first corner of this L-shaped hexagon would cover
 // its notch.
-const std::vector<Vec3> k_l_shape = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
+const std::vector<Vec3> k_l_shape = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0},
+                                     {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
 
 TEST(PolygonTriangulation, TriangleIsItself) {
     std::vector<PolygonTriangle> out;

@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <bit>
+#include <cmath>
 #include <fstream>
 
 #include "hikari/core/error.h"
@@ -30,7 +30,8 @@ PolygonMesh cube() {
 /// The face normal of triangle t.
 Vec3 face_normal(const MeshData& m, size_t t) {
     const auto& i = m.indices[t];
-    return normalize(cross(m.positions[i[1]] - m.positions[i[0]], m.positions[i[2]] - m.positions[i[1]]));
+    return normalize(
+        cross(m.positions[i[1]] - m.positions[i[0]], m.positions[i[2]] - m.positions[i[1]]));
 }
 
 TEST(MeshBuilder, CubeWithoutNormalsHasFlatFacesAndSharpEdges) {
@@ -73,11 +74,13 @@ PolygonMesh bent_strip(int quads, float bend_degrees) {
 }
 
 TEST(MeshBuilder, EdgesBelowTheCreaseAngleStaySmooth) {
-    const MeshData smooth = build_mesh("strip.ply", bent_strip(6, 10), {.crease_angle_degrees = 45});
+    const MeshData smooth =
+        build_mesh("strip.ply", bent_strip(6, 10), {.crease_angle_degrees = 45});
     EXPECT_EQ(smooth.positions.size(), 14u);  // no vertex split
     const MeshData flat = build_mesh("strip.ply", bent_strip(6, 10), {.crease_angle_degrees = 5});
     EXPECT_EQ(flat.positions.size(), 24u);  // every shared edge split
-    const MeshData faceted = build_mesh("strip.ply", bent_strip(6, 10), {.crease_angle_degrees = 0});
+    const MeshData faceted =
+        build_mesh("strip.ply", bent_strip(6, 10), {.crease_angle_degrees = 0});
     for (size_t t = 0; t < faceted.indices.size(); ++t)
         for (uint32_t v : faceted.indices[t])
             EXPECT_NEAR(dot(faceted.normals[v], face_normal(faceted, t)), 1.0f, 1e-6f);

@@ -24,7 +24,9 @@ MeshData box(Vec3 lo, Vec3 hi) {
     return build_mesh("box.obj", std::move(m));
 }
 
-Vec3 vec3(const nlohmann::json& j) { return {j[0].get<float>(), j[1].get<float>(), j[2].get<float>()}; }
+Vec3 vec3(const nlohmann::json& j) {
+    return {j[0].get<float>(), j[1].get<float>(), j[2].get<float>()};
+}
 
 TEST(ModelScene, FramingKeepsEveryVertexInViewAndFillsIt) {
     const MeshData mesh = box({100, -3, 40}, {108, 1, 42});
@@ -52,7 +54,7 @@ TEST(ModelScene, FramingKeepsEveryVertexInViewAndFillsIt) {
         tallest = std::max(tallest, std::abs(y));
     }
     EXPECT_GT(std::max(widest, tallest), 0.5f);  // not a speck in the middle
-    EXPECT_EQ(doc["lights"].size(), 2u);          // the key and the fill
+    EXPECT_EQ(doc["lights"].size(), 2u);         // the key and the fill
 }
 
 TEST(ModelScene, GroundLiesJustUnderTheModel) {

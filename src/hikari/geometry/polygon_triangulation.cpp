@@ -57,7 +57,8 @@ bool is_convex(const PlanarPolygon& q) {
         const uint32_t a = (i + n - 1) % n, c = (i + 1) % n;
         const double t = q.turn(a, i, c);
         if (t < 0.0) return false;
-        const double dot = (q.x[i] - q.x[a]) * (q.x[c] - q.x[i]) + (q.y[i] - q.y[a]) * (q.y[c] - q.y[i]);
+        const double dot =
+            (q.x[i] - q.x[a]) * (q.x[c] - q.x[i]) + (q.y[i] - q.y[a]) * (q.y[c] - q.y[i]);
         total += std::atan2(t, dot);
     }
     return std::abs(total - 2.0 * M_PI) < 1e-3;
@@ -89,7 +90,8 @@ uint8_t outline_flags(uint32_t a, uint32_t b, uint32_t c, uint32_t n) {
 }
 
 void fan(uint32_t n, std::vector<PolygonTriangle>& out) {
-    for (uint32_t k = 1; k + 1 < n; ++k) out.push_back({{0, k, k + 1}, outline_flags(0, k, k + 1, n)});
+    for (uint32_t k = 1; k + 1 < n; ++k)
+        out.push_back({{0, k, k + 1}, outline_flags(0, k, k + 1, n)});
 }
 
 /// Ear clipping over a circular list of the remaining corners. Only reflex corners can lie

@@ -61,7 +61,8 @@ std::vector<PendingTriangle> triangulate_faces(const std::filesystem::path& file
             local.push_back({{0, 1, 2}, 7});
         } else {
             outline.clear();
-            for (uint32_t k = begin; k < end; ++k) outline.push_back(mesh.positions[mesh.corners[k]]);
+            for (uint32_t k = begin; k < end; ++k)
+                outline.push_back(mesh.positions[mesh.corners[k]]);
             if (triangulate_polygon(outline, local) == PolygonShape::SelfIntersecting) {
                 if (crossing_faces < 3)
                     out.warnings.push_back(
@@ -73,10 +74,11 @@ std::vector<PendingTriangle> triangulate_faces(const std::filesystem::path& file
             }
         }
         for (const PolygonTriangle& t : local) {
-            const PendingTriangle p{{mesh.corners[begin + t.corner[0]],
-                                     mesh.corners[begin + t.corner[1]],
-                                     mesh.corners[begin + t.corner[2]]},
-                                    static_cast<uint32_t>(f), t.edge_flags};
+            const PendingTriangle p{
+                {mesh.corners[begin + t.corner[0]], mesh.corners[begin + t.corner[1]],
+                 mesh.corners[begin + t.corner[2]]},
+                static_cast<uint32_t>(f),
+                t.edge_flags};
             const float area2 = doubled_area(mesh.positions[p.v[0]], mesh.positions[p.v[1]],
                                              mesh.positions[p.v[2]]);
             if (!(area2 > 0.0f) || !std::isfinite(area2)) {
@@ -87,8 +89,8 @@ std::vector<PendingTriangle> triangulate_faces(const std::filesystem::path& file
         }
     }
     if (crossing_faces > 3)
-        out.warnings.push_back(fmt::format("{}: {} more faces cross themselves", file.string(),
-                                           crossing_faces - 3));
+        out.warnings.push_back(
+            fmt::format("{}: {} more faces cross themselves", file.string(), crossing_faces - 3));
     return triangles;
 }
 
@@ -113,7 +115,8 @@ class CornerNormals {
             const Vec3 p[3] = {mesh.positions[v[0]], mesh.positions[v[1]], mesh.positions[v[2]]};
             m_unit_normal[t] = normalize(cross(p[1] - p[0], p[2] - p[1]));
             for (int k = 0; k < 3; ++k) {
-                const Vec3 a = normalize(p[(k + 1) % 3] - p[k]), b = normalize(p[(k + 2) % 3] - p[k]);
+                const Vec3 a = normalize(p[(k + 1) % 3] - p[k]),
+                           b = normalize(p[(k + 2) % 3] - p[k]);
                 m_corner_angle[t][k] = std::acos(std::clamp(dot(a, b), -1.0f, 1.0f));
             }
         }
@@ -151,8 +154,9 @@ class CornerNormals {
             std::memcpy(b.data(), &m_mesh.positions[i], sizeof(Vec3));
             return b;
         };
-        std::sort(order.begin(), order.end(),
-                  [&](uint32_t a, uint32_t b) { return std::pair(bits(a), a) < std::pair(bits(b), b); });
+        std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+            return std::pair(bits(a), a) < std::pair(bits(b), b);
+        });
         m_point.resize(n);
         uint32_t point = 0;
         for (size_t k = 0; k < n; ++k) {
@@ -244,8 +248,8 @@ MeshData build_mesh(const std::filesystem::path& file, PolygonMesh mesh,
         std::array<uint32_t, 3> index{};
         for (int slot = 0; slot < 3; ++slot) {
             const uint32_t v = tri.v[slot];
-            const Vec3 n = has_own_normal[v] ? normalize(mesh.normals[v])
-                                             : computed->normal(t, slot);
+            const Vec3 n =
+                has_own_normal[v] ? normalize(mesh.normals[v]) : computed->normal(t, slot);
             // Walk the chain; `last` is the variant whose link is followed (k_none: the head).
             uint32_t last = k_none, at = first_variant[v];
             while (at != k_none && !same_bits(out.normals[at], n)) {

@@ -33,8 +33,8 @@ MeshData load_model(const std::filesystem::path& path, const MeshOptions& option
     if (ext == ".obj") return load_obj(path, options);
     if (ext == ".ply") return load_ply(path, options);
     if (ext == ".gltf" || ext == ".glb") return load_gltf(path, options);
-    throw InputError(fmt::format("{}: not a model file: expected one of {}", path.string(),
-                                 k_model_extensions));
+    throw InputError(
+        fmt::format("{}: not a model file: expected one of {}", path.string(), k_model_extensions));
 }
 
 }  // namespace hikari

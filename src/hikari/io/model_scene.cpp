@@ -71,9 +71,9 @@ nlohmann::json model_scene_document(const std::filesystem::path& file, const Mes
     }
     json doc;
     doc["description"] = "The model " + file.filename().string() + ", framed automatically.";
-    doc["camera"] = {{"eye", to_json(camera.eye)},       {"look_at", to_json(camera.look_at)},
-                     {"up", to_json(camera.up)},         {"fov_y", camera.fov_y_degrees},
-                     {"width", camera.width},            {"height", camera.height}};
+    doc["camera"] = {{"eye", to_json(camera.eye)}, {"look_at", to_json(camera.look_at)},
+                     {"up", to_json(camera.up)},   {"fov_y", camera.fov_y_degrees},
+                     {"width", camera.width},      {"height", camera.height}};
     doc["background"] = {0.18, 0.2, 0.23};
     doc["ambient"] = {0.12, 0.12, 0.12};
     doc["lights"] = json::array();
@@ -84,8 +84,9 @@ nlohmann::json model_scene_document(const std::filesystem::path& file, const Mes
         const Vec3 back = -1.0f * frame.forward;
         const Vec3 key = normalize(-0.6f * frame.right + 0.9f * frame.up + 0.8f * back);
         const Vec3 fill = normalize(0.9f * frame.right + 0.1f * frame.up + 0.5f * back);
-        doc["lights"].push_back(
-            {{"type", "directional"}, {"direction", to_json(-1.0f * key)}, {"intensity", {0.9, 0.9, 0.9}}});
+        doc["lights"].push_back({{"type", "directional"},
+                                 {"direction", to_json(-1.0f * key)},
+                                 {"intensity", {0.9, 0.9, 0.9}}});
         doc["lights"].push_back({{"type", "directional"},
                                  {"direction", to_json(-1.0f * fill)},
                                  {"intensity", {0.3, 0.3, 0.32}}});
@@ -96,12 +97,13 @@ nlohmann::json model_scene_document(const std::filesystem::path& file, const Mes
     doc["objects"] = json::array({mesh_object});
     if (options.ground) {
         const float size = sphere.radius / 2.0f;
-        doc["materials"]["ground"] = {
-            {"ka", {0.6, 0.6, 0.6}},
-            {"kd", {0.6, 0.6, 0.6}},
-            {"texture",
-             {{"type", "checker"}, {"size", size}, {"color_a", {0.9, 0.9, 0.9}},
-              {"color_b", {0.55, 0.55, 0.55}}}}};
+        doc["materials"]["ground"] = {{"ka", {0.6, 0.6, 0.6}},
+                                      {"kd", {0.6, 0.6, 0.6}},
+                                      {"texture",
+                                       {{"type", "checker"},
+                                        {"size", size},
+                                        {"color_a", {0.9, 0.9, 0.9}},
+                                        {"color_b", {0.55, 0.55, 0.55}}}}};
         // Just below the lowest point, so the model stands on it without sharing its depth.
         const float y = lowest_y(mesh) - 1e-4f * sphere.radius;
         doc["objects"].push_back({{"type", "plane"},
