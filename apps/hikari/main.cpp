@@ -30,6 +30,7 @@
 #include "hikari/bench/bench_runner.h"
 #include "hikari/bench/path_bench.h"
 #include "hikari/core/error.h"
+#include "hikari/core/memory_budget.h"
 #include "hikari/explain/algorithm_aovs.h"
 #include "hikari/explain/explain.h"
 #include "hikari/frame/aov_picture.h"
@@ -189,21 +190,12 @@ void resize_camera(Camera& camera, int width, int height) {
     if (height > 0) camera.height = height;
 }
 
-/// Refuses renders whose buffers would not fit in `limit_bytes`, before allocating any.
-void check_memory(const Camera& camera, double limit_bytes) {
+/// Refuses renders whose buffers would not fit in the memory limit, before allocating any.
+void check_memory(const Camera& camera) {
     const double pixels = static_cast<double>(camera.width) * camera.height;
     // colour + depth + id + normal in the framebuffer, one more image for the output.
-    const double bytes = pixels * (sizeof(Vec3) * 3 + sizeof(float) + sizeof(uint32_t));
-    if (bytes > limit_bytes)
-        throw InputError(
-            fmt::format("a {}x{} image needs about {:.1f} GiB, more than the limit of {:.1f} GiB "
-                        "(raise it with --max-memory)",
-                        camera.width, camera.height, bytes / (1 << 30), limit_bytes / (1 << 30)));
-}
-
-double default_memory_limit() {
-    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-    return pages > 0 && page > 0 ? 0.5 * static_cast<double>(pages) * page : 4.0 * (1 << 30);
+    check_memory_need(pixels * (sizeof(Vec3) * 3 + sizeof(float) + sizeof(uint32_t)),
+                      fmt::format("a {}x{} image", camera.width, camera.height));
 }
 
 /// The output of `method`: `-o` as given for one method; for several, `-o NAME.EXT` becomes
@@ -311,6 +303,7 @@ void print_stats(const PhaseTimes& times, const RenderStats& g_stats, std::strin
 /// The scene the options name, at the image size they ask for, within the memory limit.
 Scene load_render_scene(const RenderOptions& o) {
     std::vector<std::string> warnings;
+    if (o.max_memory_gib > 0) set_memory_limit(o.max_memory_gib * (1 << 30));
     SceneLoadOptions load(o.overrides);
     if (o.crease_angle >= 0.0f) load.crease_angle = o.crease_angle;
     const bool model = is_model_file(o.scene_file);
@@ -340,8 +333,7 @@ Scene load_render_scene(const RenderOptions& o) {
         cue.far = o.depth_cue[1];
         scene.depth_cue = cue;
     }
-    check_memory(scene.camera,
-                 o.max_memory_gib > 0 ? o.max_memory_gib * (1 << 30) : default_memory_limit());
+    check_memory(scene.camera);
     return scene;
 }
 
@@ -451,7 +443,8 @@ void print_summary(const std::string& output, int width, int height, const Metho
         fmt::format("hikari: wrote {} ({}x{}, {}; ", output, width, height, method.name);
     const size_t triangles = scene.triangles.indices.size();
     text += fmt::format("{} triangle{}", triangles, triangles == 1 ? "" : "s");
-    if (!scene.spheres.empty()) text += fmt::format(", {} spheres", scene.spheres.size());
+    if (const size_t spheres = scene.spheres.size(); spheres > 0)
+        text += fmt::format(", {} sphere{}", spheres, spheres == 1 ? "" : "s");
     text += fmt::format("; load {:.3f} s", times.load);
     if (const uint64_t us = stats.bvh_build_us.load(); us > 0)
         text += fmt::format(", BVH {:.1f} ms", 1e-3 * double(us));

@@ -1,0 +1,23 @@
+#pragma once
+// The memory limit (`--max-memory`) that every large allocation is checked against before it is
+// made, so a hostile or mistaken input is refused with one line instead of exhausting the
+// machine.
+
+#include <cstdint>
+#include <string_view>
+
+namespace hikari {
+
+/// The limit in bytes; by default half the machine's physical memory (4 GiB when unknown).
+double memory_limit();
+
+/// Sets the limit (bytes > 0; the command line's --max-memory). Process-wide: set it once,
+/// before loading and rendering.
+void set_memory_limit(double bytes);
+
+/// Throws InputError "WHAT needs about N GiB, more than the limit of M GiB (raise it with
+/// --max-memory)" when `bytes` exceed the limit. Call it with the size an allocation is about to
+/// take, computed from the counts that decide it (in double, so it cannot overflow).
+void check_memory_need(double bytes, std::string_view what);
+
+}  // namespace hikari
