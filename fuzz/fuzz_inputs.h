@@ -20,6 +20,8 @@
 #include "hikari/core/error.h"
 #include "hikari/io/gltf_loader.h"
 #include "hikari/io/image_read.h"
+#include "hikari/io/material_rules.h"
+#include "hikari/io/mtl_scan.h"
 #include "hikari/io/obj_loader.h"
 #include "hikari/io/ply_loader.h"
 #include "hikari/io/scene_json.h"
@@ -64,6 +66,28 @@ inline void obj_input(const uint8_t* data, size_t size) {
         for (const auto& triangle : mesh.indices)
             for (uint32_t i : triangle)
                 if (i >= mesh.positions.size()) std::abort();
+    } catch (const InputError&) {
+    }
+}
+
+/// MTL text: our scan alone (in memory), then as the library of a one-triangle OBJ that uses its
+/// first material, through tinyobjloader and the material rule; every material that loads must
+/// pass that rule.
+inline void mtl_input(const uint8_t* data, size_t size) {
+    const std::string_view text(reinterpret_cast<const char*>(data), size);
+    try {
+        scan_mtl_text("input.mtl", text);
+    } catch (const InputError&) {
+    }
+    const auto mtl = write_input(data, size, "input.mtl");
+    const std::string obj = "mtllib input.mtl\nusemtl a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    try {
+        const MeshData mesh = load_obj(write_input(reinterpret_cast<const uint8_t*>(obj.data()),
+                                                   obj.size(), "input-with-mtl.obj"));
+        for (const Material& m : mesh.materials)
+            if (find_material_problem(m)) std::abort();
+        for (int32_t m : mesh.material)
+            if (m < -1 || m >= static_cast<int32_t>(mesh.materials.size())) std::abort();
     } catch (const InputError&) {
     }
 }

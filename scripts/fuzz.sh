@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(scene_json obj ply gltf image)
+[ ${#targets[@]} -eq 0 ] && targets=(scene_json obj mtl ply gltf image)
 
 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
     -DHIKARI_FUZZ=ON -DHIKARI_BUILD_TESTS=OFF >/dev/null

@@ -13,6 +13,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -29,6 +30,7 @@
 #include "gallery.h"
 #include "hikari/bench/bench_runner.h"
 #include "hikari/bench/path_bench.h"
+#include "hikari/core/cancel.h"
 #include "hikari/core/error.h"
 #include "hikari/core/memory_budget.h"
 #include "hikari/explain/algorithm_aovs.h"
@@ -40,8 +42,10 @@
 #include "hikari/io/image_format.h"
 #include "hikari/io/image_read.h"
 #include "hikari/io/image_write.h"
+#include "hikari/io/json_reader.h"
 #include "hikari/io/model_file.h"
 #include "hikari/io/model_scene.h"
+#include "hikari/io/read_file.h"
 #include "hikari/io/scene_json.h"
 #include "hikari/io/svg_write.h"
 #include "hikari/io/xlsx_write.h"
@@ -56,10 +60,17 @@ namespace {
 using namespace hikari;
 using Clock = std::chrono::steady_clock;
 
-/// Exit statuses: 1 for bad input or a failed render, 2 for command-line usage errors.
+/// Exit statuses: 1 for bad input or a failed render, 2 for command-line usage errors, 128 + the
+/// signal's number when SIGINT (130) or SIGTERM (143) stops the run.
 constexpr int k_exit_input_error = 1;
 constexpr int k_exit_usage_error = 2;
-constexpr int k_exit_interrupted = 130;
+
+/// A command-line mistake found after parsing (an output that cannot be written): printed as
+/// `hikari: error: <message>`, exit status 2.
+class UsageError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
 
 /// `--wireframe-overlay`'s line colour: near black, a figure's ink.
 constexpr Vec3 k_overlay_colour{0.02f, 0.02f, 0.02f};
@@ -91,6 +102,7 @@ struct RenderOptions {
     int width = 0, height = 0;
     int threads = 0;
     double max_memory_gib = 0;
+    double max_input_gib = 0;  ///< --max-input-size; 0 = each kind's default
     bool quiet = false;
     bool stats = false;
     bool print_matrices = false;
@@ -113,23 +125,45 @@ struct RenderOptions {
 RenderControl g_control;
 // Lock-free atomics are safe to touch from a signal handler.
 std::atomic<int> g_signal_count{0};
-std::atomic<bool> g_writing{false};
+std::atomic<int> g_first_signal{0};  // SIGINT or SIGTERM, the first one received; 0: none
+std::atomic<bool> g_interrupt_reported{false};
 
-// While rendering, the first signal asks the render to stop (it then exits writing nothing), and
-// arms a one-second alarm in case the running stage does not poll for cancellation. While the
-// output is being written, on a second signal, or when the alarm rings, leave at once, removing
-// any half-written temporary file.
-extern "C" void exit_now(int sig) {
+/// 128 + the signal that stopped the run (130 for SIGINT, 143 for SIGTERM), as a shell reports
+/// a process killed by it.
+int interrupted_status() noexcept {
+    const int sig = g_first_signal.load();
+    return 128 + (sig != 0 ? sig : SIGINT);
+}
+
+/// Prints `hikari: interrupted` on stderr, once whichever path gets there first (the render's
+/// unwinding or the handler's fallback). Async-signal-safe: write(2) on a constant.
+void report_interrupted() noexcept {
+    if (g_interrupt_reported.exchange(true)) return;
+    static constexpr char k_line[] = "hikari: interrupted\n";
+    [[maybe_unused]] const ssize_t n = ::write(STDERR_FILENO, k_line, sizeof k_line - 1);
+}
+
+// The first SIGINT or SIGTERM asks every stage to stop (the render, and through core/cancel.h
+// the loaders, the BVH build and the encoders, which then unwind writing nothing), and arms a
+// one-second alarm in case the running stage does not poll (a codec inside a library call). On
+// a second signal, or when the alarm rings, leave at once, removing any half-written temporary
+// file. Either way the status is 128 + the first signal and the one line is printed.
+extern "C" void exit_now(int) {
     remove_pending_temporary_files();
-    _exit(128 + (sig == SIGALRM ? SIGINT : sig));
+    report_interrupted();
+    _exit(interrupted_status());
 }
 
 extern "C" void on_interrupt(int sig) {
+    int none = 0;
+    g_first_signal.compare_exchange_strong(none, sig);
     g_control.cancel.store(true);
-    if (g_writing.load() || g_signal_count.fetch_add(1) > 0) exit_now(sig);
+    request_cancel();
+    if (g_signal_count.fetch_add(1) > 0) exit_now(sig);
     alarm(1);
 }
 
+/// Installed first thing, so that a signal at any stage (parsing included) ends the same way.
 void install_signal_handlers() {
     struct sigaction action {};
     action.sa_handler = on_interrupt;
@@ -219,26 +253,78 @@ std::string output_for(const RenderOptions& o, std::string_view method) {
     return stem + suffix + (o.aov == Aov::color ? "" : "-" + std::string(aov)) + ".png";
 }
 
-/// Refuses, before any work is done, an output the render could not be written to, or that is
-/// the scene file itself (a scene named `scene.png` rendered without -o).
-void check_output_path(const std::filesystem::path& output, const std::string& scene_file) {
-    std::error_code same_error;
-    if (!scene_file.empty() && std::filesystem::equivalent(output, scene_file, same_error))
-        throw InputError(fmt::format("{}: refusing to overwrite the scene file with the render",
-                                     output.string()));
-    if (!is_supported_image_extension(output) && !is_svg_path(output))
-        throw InputError(fmt::format("{}: unsupported output format (use {}, or .svg for lines)",
-                                     output.string(), k_writable_image_extensions));
-    const std::filesystem::path dir = output.has_parent_path() ? output.parent_path() : ".";
+/// A file the render reads, which its output must not replace, and what it is to the render.
+struct RenderInput {
+    std::filesystem::path file;
+    std::string role;  ///< "the scene file", "the model file", "a file the scene reads"
+};
+
+/// Every string member "file" of a scene's JSON (meshes, textures, environment maps), relative
+/// to `base_dir`; `depth` bounds the walk on hostile nesting.
+void collect_named_files(const nlohmann::json& v, const std::filesystem::path& base_dir,
+                         std::vector<RenderInput>& out, int depth = 0) {
+    if (depth > 64 || !v.is_structured()) return;
+    for (auto it = v.begin(); it != v.end(); ++it) {
+        if (v.is_object() && it.key() == "file" && it->is_string())
+            out.push_back({base_dir / it->get<std::string>(), "a file the scene reads"});
+        else
+            collect_named_files(*it, base_dir, out, depth + 1);
+    }
+}
+
+/// The files a render of `scene_file` reads: the scene (or model) file, and the files the
+/// scene names. A scene that cannot be read or parsed names none here: its loader reports it.
+std::vector<RenderInput> render_inputs(const std::string& scene_file) {
+    if (scene_file.empty()) return {};
+    const bool model = is_model_file(scene_file);
+    std::vector<RenderInput> inputs{{scene_file, model ? "the model file" : "the scene file"}};
+    if (model) return inputs;
+    try {
+        const nlohmann::json json = parse_json(read_file_bytes(scene_file), scene_file);
+        collect_named_files(json, std::filesystem::path(scene_file).parent_path(), inputs);
+    } catch (const std::exception&) {  // not readable or not JSON: the load says why
+    }
+    return inputs;
+}
+
+/// Refuses, before any work is done, an output the render could not be written to (usage
+/// errors, exit 2: a directory, an unknown extension, a missing or read-only directory, a name
+/// too long), or that is a file the render reads (a scene named `scene.png` rendered without
+/// -o, `render bunny.ply -o bunny.ply`, a scene's mesh or texture). Then removes the
+/// temporaries that a killed earlier run left beside it (io/atomic_file.h).
+void check_output_path(const std::filesystem::path& output, std::span<const RenderInput> inputs) {
     std::error_code ec;
-    if (!std::filesystem::is_directory(dir, ec))
-        throw InputError(fmt::format("{}: cannot write: the directory {} does not exist",
-                                     output.string(), dir.string()));
-    if (::access(dir.c_str(), W_OK) != 0)
-        throw InputError(fmt::format("{}: cannot write: the directory {} is not writable",
-                                     output.string(), dir.string()));
     if (std::filesystem::is_directory(output, ec))
-        throw InputError(fmt::format("{}: cannot write: it is a directory", output.string()));
+        throw UsageError(
+            fmt::format("{}: is a directory; name an image file to write", output.string()));
+    if (!is_supported_image_extension(output) && !is_svg_path(output))
+        throw UsageError(fmt::format(
+            "{}: unknown output format {} (supported: {}, and .svg for wireframe and hiddenline)",
+            output.string(),
+            output.has_extension() ? "'" + output.extension().string() + "'" : "(no extension)",
+            k_writable_image_extensions));
+    const std::filesystem::path dir = output.has_parent_path() ? output.parent_path() : ".";
+    if (!std::filesystem::is_directory(dir, ec))
+        throw UsageError(fmt::format(
+            "{}: cannot write: the directory {} {}", output.string(), dir.string(),
+            std::filesystem::exists(dir, ec) ? "is not a directory" : "does not exist"));
+    if (::access(dir.c_str(), W_OK) != 0)
+        throw UsageError(fmt::format("{}: cannot write: the directory {} is not writable",
+                                     output.string(), dir.string()));
+    const long name_max = ::pathconf(dir.c_str(), _PC_NAME_MAX);
+    if (const size_t length = output.filename().string().size();
+        name_max > 0 && length > static_cast<size_t>(name_max))
+        throw UsageError(
+            fmt::format("{}: cannot write: the file name is {} bytes long; the "
+                        "file system allows {}",
+                        output.string(), length, name_max));
+    for (const RenderInput& input : inputs) {
+        if (std::filesystem::equivalent(output, input.file, ec))
+            throw UsageError(fmt::format(
+                "{}: refusing to overwrite {}{} with the render", output.string(), input.role,
+                input.role.starts_with("the ") ? "" : " (" + input.file.string() + ")"));
+    }
+    remove_stale_temporary_files(output);
 }
 
 /// Refuses, before rendering, a spreadsheet output larger than a sheet holds.
@@ -298,13 +384,24 @@ void print_stats(const PhaseTimes& times, const RenderStats& g_stats, std::strin
                    triangles, g_stats.bvh_nodes.load(),
                    double(g_stats.bvh_bytes.load()) / double(triangles),
                    1e-3 * double(g_stats.bvh_build_us.load()), simd_level_name(best_simd_level()));
+    if (const uint64_t spheres = g_stats.bvh_spheres.load(); spheres > 0)
+        fmt::print(stderr,
+                   "hikari: stats: sphere BVH {} spheres, {} nodes (8-wide), {:.1f} bytes/sphere\n",
+                   spheres, g_stats.bvh_sphere_nodes.load(),
+                   double(g_stats.bvh_sphere_bytes.load()) / double(spheres));
 }
 
 /// The scene the options name, at the image size they ask for, within the memory limit.
 Scene load_render_scene(const RenderOptions& o) {
     std::vector<std::string> warnings;
     if (o.max_memory_gib > 0) set_memory_limit(o.max_memory_gib * (1 << 30));
-    SceneLoadOptions load(o.overrides);
+    if (o.max_input_gib > 0)
+        set_max_input_size(static_cast<std::uintmax_t>(o.max_input_gib * (1 << 30)));
+    // --camera-from and --look-at edit the document like --set, before a far scene is rebased.
+    std::vector<SceneOverride> overrides = o.overrides;
+    if (!o.camera_from.empty()) overrides.push_back({"--camera-from", "camera.eye", o.camera_from});
+    if (!o.look_at.empty()) overrides.push_back({"--look-at", "camera.look_at", o.look_at});
+    SceneLoadOptions load(overrides);
     if (o.crease_angle >= 0.0f) load.crease_angle = o.crease_angle;
     const bool model = is_model_file(o.scene_file);
     Scene scene;
@@ -318,9 +415,6 @@ Scene load_render_scene(const RenderOptions& o) {
     if (o.ground && !model)
         warnings.push_back("--ground adds a plane under a model file; the scene has its own");
     for (const std::string& w : warnings) fmt::print(stderr, "hikari: warning: {}\n", w);
-    if (!o.camera_from.empty())
-        scene.camera.eye = {o.camera_from[0], o.camera_from[1], o.camera_from[2]};
-    if (!o.look_at.empty()) scene.camera.look_at = {o.look_at[0], o.look_at[1], o.look_at[2]};
     resize_camera(scene.camera, o.width, o.height);
     if (o.tessellation > 0)
         for (Sphere& s : scene.spheres) s.segments = static_cast<uint32_t>(o.tessellation);
@@ -363,7 +457,6 @@ void write_colour(const std::string& output, Image colour, const RenderOptions& 
 /// its values; a colour render developed by write_colour.
 void write_output(const std::string& output, Framebuffer&& fb, Aov aov,
                   std::optional<DepthRange> depth_range, const RenderOptions& o) {
-    g_writing = true;
     if (g_control.cancel.load()) throw Interrupted();
     const ImageWriteSettings settings{o.bit_depth};
     if (fb.film.format() == FilmFormat::srgb8)
@@ -374,7 +467,6 @@ void write_output(const std::string& output, Framebuffer&& fb, Aov aov,
         write_image(output, aov_picture(fb, aov, depth_range), settings);
     else
         write_image(output, aov_image(std::move(fb), aov), settings);
-    g_writing = false;
 }
 
 /// `--progressive`: the image so far written over `output` (atomically, as every image is: a
@@ -382,9 +474,7 @@ void write_output(const std::string& output, Framebuffer&& fb, Aov aov,
 void write_progressive_snapshot(const std::string& output, const Image& mean,
                                 const RenderOptions& o) {
     if (g_control.cancel.load()) return;
-    g_writing = true;
     write_colour(output, mean, o);
-    g_writing = false;
 }
 
 /// Refuses, before any work is done, an SVG output that the method or --aov cannot give.
@@ -426,10 +516,8 @@ int run_drawing(const RenderOptions& o, const Method& method, const std::string&
     const auto start = Clock::now();
     const LineDrawing drawing = draw_scene(method, scene, o.own);
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    g_writing = true;
     if (g_control.cancel.load()) throw Interrupted();
     write_svg(output, drawing);
-    g_writing = false;
     if (!o.quiet)
         fmt::print(stderr, "hikari: wrote {} ({}x{}, {}, {} segments, {:.3f} s)\n", output,
                    drawing.width, drawing.height, method.name, drawing.segments.size(), seconds);
@@ -460,10 +548,8 @@ void render_with(const RenderOptions& o, const Scene& scene, const Method& metho
         const bool raw = !is_picture_file(output);
         const auto start = Clock::now();
         const AlgorithmAov a = algorithm_aov(scene, method, o.aov, o.own, raw);
-        g_writing = true;
         if (g_control.cancel.load()) throw Interrupted();
         write_image(output, a.image, ImageWriteSettings{o.bit_depth});
-        g_writing = false;
         if (!o.quiet)
             fmt::print(stderr, "hikari: wrote {} ({}x{}, {}, {:.3f} s)\nhikari: {}\n", output,
                        a.image.width, a.image.height, method.name,
@@ -531,10 +617,11 @@ void render_with(const RenderOptions& o, const Scene& scene, const Method& metho
 int run_render(const RenderOptions& o) {
     const auto load_start = Clock::now();
     std::vector<std::pair<const Method*, std::string>> runs;
+    const std::vector<RenderInput> inputs = render_inputs(o.scene_file);
     for (const std::string& name : o.methods) {
         const Method& method = *find_method(name);  // checked by the parser
         const std::string output = output_for(o, name);
-        check_output_path(output, o.scene_file);
+        check_output_path(output, inputs);
         check_svg_output(output, method, o.aov);
         runs.emplace_back(&method, output);
     }
@@ -629,6 +716,54 @@ void keep_freed_memory() {
 #endif
 }
 
+/// The largest value a real option takes: a float's, so that the value stays finite.
+constexpr double k_max_real = std::numeric_limits<float>::max();
+/// The smallest positive value, for options that must be above 0.
+constexpr double k_least_positive = std::numeric_limits<double>::denorm_min();
+
+/// What a real option in [min, max] expects, in words for its error message.
+std::string real_range_words(double min, double max) {
+    if (min <= -k_max_real && max >= k_max_real) return "a finite number";
+    if (max >= k_max_real) return fmt::format("a number of at least {:g}", min);
+    return fmt::format("a number from {:g} to {:g}", min, max);
+}
+
+/// The same for --help, after the value's type: `FLOAT:in [0, 180]`.
+std::string real_range_label(double min, double max) {
+    if (min <= -k_max_real && max >= k_max_real) return "finite";
+    if (min > 0 && min < 1e-30) return "> 0";
+    if (max >= k_max_real) return fmt::format(">= {:g}", min);
+    return fmt::format("in [{:g}, {:g}]", min, max);
+}
+
+/// A real option's check: a finite number in [min, max], else the short usage error
+/// "--flag: expected <words>" (CLI11's Range lets NaN through and prints its bounds with all
+/// 309 digits of a double's largest value).
+CLI::Validator real_in(double min, double max, std::string words = {}) {
+    if (words.empty()) words = real_range_words(min, max);
+    return CLI::Validator(
+        [=](std::string& text) -> std::string {
+            double value = 0;
+            if (CLI::detail::lexical_cast(text, value) && std::isfinite(value) && value >= min &&
+                value <= max)
+                return {};
+            return "expected " + words;
+        },
+        real_range_label(min, max));
+}
+
+/// An integer option's check: a whole number in [min, max], else "--flag: expected a whole
+/// number from MIN to MAX".
+CLI::Validator whole_in(int min, int max) {
+    return CLI::Validator(
+        [=](std::string& text) -> std::string {
+            int value = 0;
+            if (CLI::detail::lexical_cast(text, value) && value >= min && value <= max) return {};
+            return fmt::format("expected a whole number from {} to {}", min, max);
+        },
+        fmt::format("in [{}, {}]", min, max));
+}
+
 /// `flag`, taking one of the words of `choices` (the one table that both checks and converts
 /// them) into `target`, whose value now is shown as the default.
 template <class T>
@@ -651,7 +786,7 @@ CLI::Option* add_choice_option(CLI::App& app, std::string_view flag, std::string
 CLI::Option* add_method_option(CLI::App& app, const MethodOption& option,
                                const IntegerOption& integer, MethodSettings& own) {
     return app.add_option(std::string(option.flag), integer.field(own), std::string(option.help))
-        ->check(CLI::Range(integer.min, integer.max))
+        ->check(whole_in(integer.min, integer.max))
         ->capture_default_str();
 }
 
@@ -663,14 +798,14 @@ CLI::Option* add_method_option(CLI::App& app, const MethodOption& option,
         .add_option_function<int>(
             std::string(option.flag), [&target](int value) { target = value; },
             std::string(option.help))
-        ->check(CLI::Range(integer.min, integer.max));
+        ->check(whole_in(integer.min, integer.max));
 }
 
 /// A method option whose value is a real number in a range.
 CLI::Option* add_method_option(CLI::App& app, const MethodOption& option, const RealOption& real,
                                MethodSettings& own) {
     return app.add_option(std::string(option.flag), real.field(own), std::string(option.help))
-        ->check(CLI::Range(real.min, real.max))
+        ->check(real_in(real.min, real.max))
         ->capture_default_str();
 }
 
@@ -686,7 +821,7 @@ CLI::Option* add_method_option(CLI::App& app, const MethodOption& option, const 
         ->delimiter(',')
         ->expected(3)
         ->type_name("R,G,B")
-        ->check(CLI::NonNegativeNumber);
+        ->check(real_in(0, k_max_real, "a colour component of at least 0"));
 }
 
 /// A method option whose value is one of a few words.
@@ -855,20 +990,22 @@ void add_model_options(CLI::App& render, RenderOptions& o) {
                     "framing)")
         ->delimiter(',')
         ->expected(3)
-        ->type_name("X,Y,Z");
+        ->type_name("X,Y,Z")
+        ->check(real_in(-k_max_real, k_max_real));
     render
         .add_option("--look-at", o.look_at,
                     "Point the camera at X,Y,Z (overrides the scene's camera or a model's "
                     "framing)")
         ->delimiter(',')
         ->expected(3)
-        ->type_name("X,Y,Z");
+        ->type_name("X,Y,Z")
+        ->check(real_in(-k_max_real, k_max_real));
     render
         .add_option("--crease-angle", o.crease_angle,
                     "Meshes without normals: smooth across edges whose faces meet at less than "
                     "this many degrees, split the normals elsewhere (0: flat faces, Fig 4.5; "
                     "180: smooth everywhere; default: each mesh's \"crease_angle\", else 45)")
-        ->check(CLI::Range(0.0f, 180.0f));
+        ->check(real_in(0, 180));
 }
 
 /// `--exposure`, `--tonemap` and `--bit-depth`: how the colour is developed into the file.
@@ -878,7 +1015,7 @@ void add_output_development_options(CLI::App& render, RenderOptions& o) {
                     "Multiply the linear colour by 2^EV before writing it, in every format "
                     "(floats included; the render itself is unchanged; not the --aov buffers)")
         ->type_name("EV")
-        ->check(CLI::Range(-100.0f, 100.0f))
+        ->check(real_in(-100, 100))
         ->capture_default_str();
     add_choice_option<ToneMap>(
         render, "--tonemap",
@@ -898,16 +1035,21 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
     CLI::App* render = app.add_subcommand("render", "Render a scene file to an image.");
     add_render_inputs(*render, o);
     render->add_option("--width", o.width, "Image width in pixels (overrides the scene)")
-        ->check(CLI::Range(1, 65536));
+        ->check(whole_in(1, 65536));
     render->add_option("--height", o.height, "Image height in pixels (overrides the scene)")
-        ->check(CLI::Range(1, 65536));
+        ->check(whole_in(1, 65536));
     render->add_option("--threads", o.threads, "Worker threads (default: all cores)")
-        ->check(CLI::Range(1, 1024));
+        ->check(whole_in(1, 1024));
     render
         ->add_option("--max-memory", o.max_memory_gib,
                      "Refuse renders whose buffers need more than this many GiB "
                      "(default: half the machine's memory)")
-        ->check(CLI::PositiveNumber);
+        ->check(real_in(k_least_positive, k_max_real, "a positive number of GiB"));
+    render
+        ->add_option("--max-input-size", o.max_input_gib,
+                     "Refuse input files (scene, mesh, texture, environment map) larger than this "
+                     "many GiB (default: 0.25 for a scene, 4 for a mesh, 1 for an image)")
+        ->check(real_in(1.0 / (1 << 30), 1 << 20, "a positive number of GiB"));
     render
         ->add_option("--depth-cue", o.depth_cue,
                      "Depth cueing (Fig 4.1b) from eye distance NEAR to FAR: the colour blends "
@@ -916,7 +1058,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
         ->delimiter(',')
         ->expected(2)
         ->type_name("NEAR,FAR")
-        ->check(CLI::NonNegativeNumber);
+        ->check(real_in(0, k_max_real, "a distance of at least 0"));
     render
         ->add_option("--depth-range", o.depth_range,
                      "--aov depth in a picture file: eye distance NEAR is white, FAR black "
@@ -925,7 +1067,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
         ->delimiter(',')
         ->expected(2)
         ->type_name("NEAR,FAR")
-        ->check(CLI::NonNegativeNumber);
+        ->check(real_in(0, k_max_real, "a distance of at least 0"));
     add_output_development_options(*render, o);
     add_set_option(*render, o);
     add_model_options(*render, o);
@@ -937,7 +1079,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
                      "Polygons around every sphere's equator when a raster method tessellates "
                      "it (overrides the scene's \"segments\"; default: fine enough for its size "
                      "on screen)")
-        ->check(CLI::Range(k_min_sphere_segments, k_max_sphere_segments));
+        ->check(whole_in(k_min_sphere_segments, k_max_sphere_segments));
     render->add_flag("--wireframe-overlay", o.wireframe_overlay,
                      "Draw every triangle's edges over the image: the triangles the raster "
                      "methods fill (spheres and planes tessellated as they tessellate them)");
@@ -967,12 +1109,12 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& b) {
     bench->add_option("--scene", b.scene,
                       "B5: scene file (default: the repository's scenes/bench/cornell.json)");
     bench->add_option("--threads", b.threads, "Threads for build and trace")
-        ->check(CLI::Range(1, 1024))
+        ->check(whole_in(1, 1024))
         ->capture_default_str();
     bench
         ->add_option("--reps", b.repetitions,
                      "Timed repetitions after one warm-up (default: 5; B5: 3)")
-        ->check(CLI::Range(1, 1000));
+        ->check(whole_in(1, 1000));
     add_choice_option<std::optional<SimdLevel>>(
         *bench, "--simd", "Traversal kernel: auto (best), portable, avx2, avx512", k_simd_choices,
         b.simd);
@@ -998,7 +1140,9 @@ bool is_eight_bit_image(const std::filesystem::path& path) {
 /// `hikari compare A B`: PSNR, the largest difference and the differing pixels of two images,
 /// and a false-colour picture of where they differ.
 int run_compare(const CompareOptions& o) {
-    if (!o.output.empty()) check_output_path(o.output, "");
+    if (!o.output.empty())
+        check_output_path(o.output, std::vector<RenderInput>{{o.a, "the first image"},
+                                                             {o.b, "the second image"}});
     const Image a = read_image(o.a), b = read_image(o.b);
     if (a.width != b.width || a.height != b.height)
         throw InputError(fmt::format("{} is {}x{} but {} is {}x{}: only images of one size compare",
@@ -1038,7 +1182,7 @@ CLI::App* add_compare_command(CLI::App& app, CompareOptions& c) {
     compare
         ->add_option("--tolerance", c.tolerance,
                      "Pixels differ where a channel's linear values differ by more than this")
-        ->check(CLI::NonNegativeNumber)
+        ->check(real_in(0, k_max_real))
         ->capture_default_str();
     compare->add_flag("--psnr", c.psnr_only, "Print the PSNR alone (for scripts)");
     return compare;
@@ -1091,22 +1235,22 @@ CLI::App* add_explain_command(CLI::App& app, ExplainOptions& e) {
         ->required()
         ->check(CLI::IsMember({"zbuffer", "scanline", "depthsort", "raytrace"}));
     explain->add_option("--row", e.row, "scanline: the row (0 at the top)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(whole_in(0, 65535));
     explain
         ->add_option("--pixel", e.pixel, "zbuffer, raytrace: the pixel X,Y (0,0 at the top left)")
         ->delimiter(',')
         ->expected(2)
         ->type_name("X,Y")
-        ->check(CLI::NonNegativeNumber);
+        ->check(whole_in(0, 65535));
     explain->add_option("--width", e.scene.width, "Image width in pixels (overrides the scene)")
-        ->check(CLI::Range(1, 65536));
+        ->check(whole_in(1, 65536));
     explain->add_option("--height", e.scene.height, "Image height in pixels (overrides the scene)")
-        ->check(CLI::Range(1, 65536));
+        ->check(whole_in(1, 65536));
     explain
         ->add_option_function<int>(
             "--max-depth", [&e](int d) { e.scene.own.max_depth = d; },
             "raytrace: ray segments per path, the camera ray included (default 5)")
-        ->check(CLI::Range(1, 64));
+        ->check(whole_in(1, 64));
     add_set_option(*explain, e.scene);
     return explain;
 }
@@ -1122,10 +1266,10 @@ CLI::App* add_gallery_command(CLI::App& app, GalleryOptions& g) {
     gallery->add_option("--model", g.model,
                         "Mesh for Fig 4.1 and the others (OBJ; default: the repository's teapot)");
     gallery->add_option("--width", g.width, "Image width in pixels")
-        ->check(CLI::Range(16, 4096))
+        ->check(whole_in(16, 4096))
         ->capture_default_str();
     gallery->add_option("--threads", g.threads, "Render threads (default: all cores)")
-        ->check(CLI::Range(1, 1024));
+        ->check(whole_in(1, 1024));
     return gallery;
 }
 
@@ -1219,17 +1363,18 @@ int run_command(const CLI::App& render, const RenderOptions& o, const CLI::App& 
             fmt::print("{}", info_report(info_file));
             return 0;
         }
-    } catch (const Interrupted&) {
-        fmt::print(stderr, "\nhikari: interrupted; no image written\n");
-        return k_exit_interrupted;
-    } catch (const InputError& e) {
+    } catch (const UsageError& e) {
         fmt::print(stderr, "hikari: error: {}\n", e.what());
-        return k_exit_input_error;
-    } catch (const std::bad_alloc&) {
-        fmt::print(stderr, "hikari: error: out of memory\n");
-        return k_exit_input_error;
+        return k_exit_usage_error;
     } catch (const std::exception& e) {
-        fmt::print(stderr, "hikari: error: {}\n", e.what());
+        // After SIGINT / SIGTERM, whatever unwound the stage (Interrupted, or a read cut short
+        // by the signal) is the interruption, not an error of the input.
+        if (cancel_requested() || dynamic_cast<const Interrupted*>(&e)) {
+            report_interrupted();
+            return interrupted_status();
+        }
+        const bool out_of_memory = dynamic_cast<const std::bad_alloc*>(&e) != nullptr;
+        fmt::print(stderr, "hikari: error: {}\n", out_of_memory ? "out of memory" : e.what());
         return k_exit_input_error;
     }
     return 0;
@@ -1238,6 +1383,7 @@ int run_command(const CLI::App& render, const RenderOptions& o, const CLI::App& 
 }  // namespace
 
 int main(int argc, char** argv) {
+    install_signal_handlers();
     keep_freed_memory();
     CLI::App app{"hikari: every classic rendering method of the lecture, in one renderer.",
                  "hikari"};
@@ -1259,7 +1405,6 @@ int main(int argc, char** argv) {
     if (const std::optional<int> status =
             parse_command_line(app, argc, argv, *render, o, *bench, b))
         return *status;
-    install_signal_handlers();
     return run_command(*render, o, *bench, b, *gallery, g, *compare, c, *explain, e, *info,
                        info_file, own_program(argv[0]));
 }

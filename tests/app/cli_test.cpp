@@ -103,7 +103,7 @@ TEST_F(Cli, RefusesToOverwriteTheSceneFile) {
     const std::string scene = R"({"objects": [{"type": "sphere", "center": [0, 0, -3]}]})";
     write("scene.png", scene);
     const Result r = run("render " + path("scene.png") + " --width 8 -o " + path("scene.png"));
-    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_EQ(r.status, 2) << r.output;
     EXPECT_NE(r.output.find("refusing to overwrite the scene file"), std::string::npos) << r.output;
     EXPECT_EQ(hikari::testing::read_text(path("scene.png")), scene);
 }
@@ -117,7 +117,7 @@ TEST_F(Cli, MissingSceneFileExitsWithOne) {
 
 TEST_F(Cli, UnsupportedOutputFormatIsRefusedBeforeRendering) {
     const Result r = run("render -o " + path("out.gif"));
-    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.output.find("out.gif"), std::string::npos);
     EXPECT_EQ(file_count(), 0u);
 }
@@ -141,7 +141,7 @@ TEST_F(Cli, PfmOutputHoldsLinearFloats) {
 
 TEST_F(Cli, OutputIntoMissingDirectoryIsRefusedBeforeRendering) {
     const Result r = run("render -o " + path("no/such/dir/x.png"));
-    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.output.find("does not exist"), std::string::npos) << r.output;
 }
 

@@ -32,6 +32,7 @@ int replay(const std::string& target, Fn&& run) {
 
 TEST(FuzzRegression, SceneJsonInputs) { replay("scene_json", fuzz::scene_json_input); }
 TEST(FuzzRegression, ObjInputs) { replay("obj", fuzz::obj_input); }
+TEST(FuzzRegression, MtlInputs) { replay("mtl", fuzz::mtl_input); }
 TEST(FuzzRegression, ImageInputs) { EXPECT_GE(replay("image", fuzz::image_input), 1); }
 TEST(FuzzRegression, GltfInputs) { EXPECT_GE(replay("gltf", fuzz::gltf_input), 1); }
 TEST(FuzzRegression, PlyInputs) { EXPECT_GE(replay("ply", fuzz::ply_input), 1); }

@@ -24,6 +24,12 @@ SceneIntersector::SceneIntersector(const Scene& scene) : m_scene(scene) {
         m_shadow_bvh = build_wide_bvh(tris.positions, casters);
         m_all_cast = false;
     }
+    m_spheres = build_sphere_bvh(scene.spheres);
+    if (std::any_of(scene.spheres.begin(), scene.spheres.end(),
+                    [](const Sphere& s) { return !s.casts_shadow; })) {
+        m_sphere_casters = build_sphere_bvh(scene.spheres, true);
+        m_all_spheres_cast = false;
+    }
     m_build_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -36,11 +42,8 @@ bool SceneIntersector::closest(const Ray& ray, Interval range, SurfaceHit& hit) 
         kind = HitKind::triangle;
     }
     size_t index = 0;
-    for (size_t i = 0; i < m_scene.spheres.size(); ++i) {
-        const Sphere& s = m_scene.spheres[i];
-        const float t = intersect_sphere(ray, s.center, s.radius, range);
-        if (t == t) range.max = t, kind = HitKind::sphere, index = i;  // t == t: not NaN
-    }
+    if (SphereHit sphere_hit; closest_sphere(ray, range, sphere_hit))
+        range.max = sphere_hit.t, kind = HitKind::sphere, index = sphere_hit.sphere;
     for (size_t i = 0; i < m_scene.planes.size(); ++i) {
         const Plane& p = m_scene.planes[i];
         const float t = intersect_plane(ray, p.point, p.normal, range);
@@ -122,10 +125,17 @@ bool SceneIntersector::occluded(const Ray& ray, Interval range) const {
     return occluded_by_triangles(ray, range) || occluded_by_spheres_and_planes(ray, range);
 }
 
+bool SceneIntersector::closest_sphere(const Ray& ray, Interval range, SphereHit& hit) const {
+    return !m_spheres.empty() && intersect_closest(m_spheres, ray, range, hit);
+}
+
+bool SceneIntersector::occluded_by_spheres(const Ray& ray, Interval range) const {
+    const SphereBvh& casters = m_all_spheres_cast ? m_spheres : m_sphere_casters;
+    return !casters.empty() && intersect_any(casters, ray, range);
+}
+
 bool SceneIntersector::occluded_by_spheres_and_planes(const Ray& ray, Interval range) const {
-    for (const Sphere& s : m_scene.spheres)
-        if (s.casts_shadow && !std::isnan(intersect_sphere(ray, s.center, s.radius, range)))
-            return true;
+    if (occluded_by_spheres(ray, range)) return true;
     for (const Plane& p : m_scene.planes)
         if (p.casts_shadow && !std::isnan(intersect_plane(ray, p.point, p.normal, range)))
             return true;
@@ -139,6 +149,10 @@ void report_bvh_stats(const SceneIntersector& intersector, RenderStats* stats) {
     stats->bvh_nodes = bvh.nodes.size();
     stats->bvh_bytes = bvh.memory_bytes();
     stats->bvh_build_us = static_cast<uint64_t>(intersector.build_ms() * 1000.0);
+    const SphereBvh& spheres = intersector.sphere_bvh();
+    stats->bvh_spheres = spheres.sphere_count();
+    stats->bvh_sphere_nodes = spheres.tree.nodes.size();
+    stats->bvh_sphere_bytes = spheres.memory_bytes();
 }
 
 }  // namespace hikari

@@ -1,8 +1,10 @@
 #pragma once
-// Nearest-hit and shadow-ray queries against a whole scene: spheres and planes tested
-// directly, triangles through the wide
-// (8-child, SIMD) BVH. Built once per render, read by all threads.
+// Nearest-hit and shadow-ray queries against a whole scene: triangles through the wide (8-child,
+// SIMD) BVH, spheres through a wide BVH of their own (sphere_bvh.h), asked second with the nearest
+// triangle as its limit; infinite planes, which no box holds, tested directly. Built once per
+// render, read by all threads.
 
+#include "hikari/bvh/sphere_bvh.h"
 #include "hikari/bvh/triangle_hit.h"
 #include "hikari/bvh/wide_bvh.h"
 #include "hikari/bvh/wide_bvh_packet.h"
@@ -44,6 +46,11 @@ class SceneIntersector {
     bool occluded_by_triangles(const Ray& ray, Interval range) const;
     /// Whether a shadow-casting sphere or plane blocks `ray` inside `range` (occluded's rest).
     bool occluded_by_spheres_and_planes(const Ray& ray, Interval range) const;
+    /// Whether a shadow-casting sphere blocks `ray` inside `range`.
+    bool occluded_by_spheres(const Ray& ray, Interval range) const;
+    /// The nearest sphere hit by `ray` inside `range`, as testing every sphere in index order
+    /// with intersect_sphere finds it (each later one strictly nearer): closest()'s sphere step.
+    bool closest_sphere(const Ray& ray, Interval range, SphereHit& hit) const;
     /// occluded_by_triangles for the lanes `active` of a packet, each with its own interval:
     /// the mask of blocked lanes, each lane's answer exactly the single ray's (wide_bvh_packet.h).
     uint32_t occluded_by_triangles(const RayPacket& packet, uint32_t active) const;
@@ -62,7 +69,9 @@ class SceneIntersector {
 
     /// The wide BVH over the scene's triangles.
     const WideBvh& bvh() const { return m_bvh; }
-    /// Wall time the BVH build took, in milliseconds.
+    /// The wide BVH over the scene's spheres.
+    const SphereBvh& sphere_bvh() const { return m_spheres; }
+    /// Wall time the BVH builds took, in milliseconds.
     double build_ms() const { return m_build_ms; }
 
   private:
@@ -70,6 +79,9 @@ class SceneIntersector {
     WideBvh m_bvh;
     WideBvh m_shadow_bvh;    ///< the shadow-casting triangles, when some do not cast
     bool m_all_cast = true;  ///< every triangle casts: shadow rays use m_bvh
+    SphereBvh m_spheres;
+    SphereBvh m_sphere_casters;      ///< the shadow-casting spheres, when some do not cast
+    bool m_all_spheres_cast = true;  ///< every sphere casts: shadow rays use m_spheres
     double m_build_ms = 0;
 };
 

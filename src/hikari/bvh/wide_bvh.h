@@ -69,6 +69,7 @@ struct WideBvh {
     HugePageVector<float> triangle_data;  ///< per-leaf SoA vertices, plus 8 floats of padding so
                                           ///< 8-wide loads at a leaf's end stay inside
     HugePageVector<uint32_t> triangle_ids;  ///< triangle_ids[slot]: input index of that triangle
+                                            ///< (of that box, for a tree built over boxes)
     uint32_t root = WideBvhRef::k_empty;    ///< the root reference (a leaf for tiny meshes)
     Aabb root_bounds;                       ///< box around every triangle
 

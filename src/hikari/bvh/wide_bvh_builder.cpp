@@ -11,12 +11,15 @@
 #include <stdexcept>
 #include <vector>
 
+#include <fmt/format.h>
 #include <tbb/blocked_range.h>
 
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
 
+#include "hikari/core/cancel.h"
+#include "hikari/core/memory_budget.h"
 #include "hikari/core/parallel.h"
 
 namespace hikari {
@@ -102,6 +105,18 @@ bool make_prim_ref(std::span<const Vec3> positions, const std::array<uint32_t, 3
     ref.lower = vmin(vmin(a, b), c);
     ref.set_id(id);
     ref.upper = vmax(vmax(a, b), c);
+    return true;
+}
+
+/// A box can be hit only when it is finite and not empty; then `ref` gets it.
+bool make_prim_ref(const Aabb& box, uint32_t id, PrimRef& ref) {
+    ref.lower = splat(0.0f);
+    ref.upper = splat(0.0f);
+    ref.set_id(k_unusable);
+    if (!is_finite(box.min) || !is_finite(box.max) || box.empty()) return false;
+    ref.lower = to_f4(box.min);
+    ref.set_id(id);
+    ref.upper = to_f4(box.max);
     return true;
 }
 
@@ -410,6 +425,8 @@ struct Subtree {
 /// on the range, never on the threads, so the tree is the same for any thread count.
 class WideSahBuilder {
   public:
+    /// Over triangles (`indices` into `positions`, leaves written into out.triangle_data) or,
+    /// with both spans empty, over boxes (leaves hold primitive ids only).
     WideSahBuilder(const BvhBuildSettings& settings, PrimRef* refs, std::span<const Vec3> positions,
                    std::span<const std::array<uint32_t, 3>> indices, NodeArena& arena, WideBvh& out)
         : m_refs(refs),
@@ -427,6 +444,7 @@ class WideSahBuilder {
     /// Builds the tree over `range` into `out` (its node 0 when the root is inner); returns the
     /// root reference.
     uint32_t build(const BuildRange& range, Subtree& out) {
+        throw_if_cancelled();  // SIGINT / SIGTERM: once per node, a relaxed load
         const Decision decision = decide(range);
         if (decision.leaf) return make_leaf(range);
 
@@ -702,13 +720,15 @@ class WideSahBuilder {
         return h;
     }
 
-    /// Writes the leaf's ids and its SoA block: nine rows of `count` floats at 9 * first.
+    /// Writes the leaf's ids and, for triangles, its SoA block: nine rows of `count` floats at
+    /// 9 * first.
     uint32_t make_leaf(const BuildRange& range) const {
         const uint32_t first = range.begin, count = range.size();
+        for (uint32_t i = 0; i < count; ++i) m_ids[first + i] = m_refs[first + i].id();
+        if (m_indices.empty()) return WideBvhRef::leaf(first, count);
         float* block = m_triangle_data + 9 * size_t(first);
         for (uint32_t i = 0; i < count; ++i) {
-            const uint32_t id = m_refs[first + i].id();
-            m_ids[first + i] = id;
+            const uint32_t id = m_ids[first + i];
             const auto& tri = m_indices[id];
             for (int v = 0; v < 3; ++v) {
                 const Vec3 p = m_positions[tri[v]];
@@ -732,12 +752,12 @@ class WideSahBuilder {
     uint32_t m_data_parallel_threshold = 4 * 4096;
 };
 
-/// The PrimRefs of the usable triangles, in input order, and the root range over them.
-/// Fixed blocks in parallel; the bounds merge exactly, so the result is thread-independent.
-BuildRange make_prim_refs(std::span<const Vec3> positions,
-                          std::span<const std::array<uint32_t, 3>> indices, PrimRef* refs) {
+/// The PrimRefs of the usable primitives [0, n), in input order (make_ref(i, ref) fills ref
+/// and says whether primitive i is usable), and the root range over them. Fixed blocks in
+/// parallel; the bounds merge exactly, so the result is thread-independent.
+template <class MakeRef>
+BuildRange make_prim_refs(uint32_t n, const MakeRef& make_ref, PrimRef* refs) {
     constexpr uint32_t k_block = 4096;
-    const auto n = static_cast<uint32_t>(indices.size());
     const uint32_t blocks = (n + k_block - 1) / k_block;
     struct Part {
         Box4 bounds = Box4::empty(), centroids = Box4::empty();
@@ -747,7 +767,7 @@ BuildRange make_prim_refs(std::span<const Vec3> positions,
     hikari::parallel_for(0u, blocks, [&](uint32_t b) {
         Part& part = parts[b];
         for (uint32_t i = b * k_block; i < std::min(n, (b + 1) * k_block); ++i) {
-            if (!make_prim_ref(positions, indices[i], i, refs[i])) continue;
+            if (!make_ref(i, refs[i])) continue;
             ++part.usable;
             part.bounds.extend(refs[i].lower, refs[i].upper);
             const F4 c = refs[i].centroid2();
@@ -794,24 +814,33 @@ void assemble(Subtree& root, HugePageVector<WideBvhNode>& nodes) {
     });
 }
 
-}  // namespace
-
-WideBvh build_wide_bvh(std::span<const Vec3> positions,
-                       std::span<const std::array<uint32_t, 3>> indices,
-                       const BvhBuildSettings& settings) {
-    if (indices.size() >= WideBvhRef::k_max_triangles)
-        throw std::length_error("build_wide_bvh: too many triangles for the reference encoding");
-    if (indices.empty()) return {};
-    const ScratchBlock refs_block(indices.size() * sizeof(PrimRef), true);
+/// The tree over the PrimRefs [0, n) that make_ref makes (see make_prim_refs): over
+/// triangles when `indices` is not empty, over bare boxes otherwise.
+template <class MakeRef>
+WideBvh build_over(size_t n, const MakeRef& make_ref, std::span<const Vec3> positions,
+                   std::span<const std::array<uint32_t, 3>> indices,
+                   const BvhBuildSettings& settings) {
+    if (n >= WideBvhRef::k_max_triangles)
+        throw std::length_error("build_wide_bvh: too many primitives for the reference encoding");
+    if (n == 0) return {};
+    const bool triangles = !indices.empty();
+    // Everything the build takes at its peak: the references, the leaf data and ids, and the
+    // nodes (about one per 8 primitives, counted as one per 4 for the scratch arena's slack).
+    const double leaf_bytes = triangles ? 9 * sizeof(float) : 0.0;
+    check_memory_need(
+        double(n) * (sizeof(PrimRef) + leaf_bytes + sizeof(uint32_t) + sizeof(WideBvhNode) / 4.0),
+        fmt::format("the BVH of {} {}", n, triangles ? "triangles" : "primitives"));
+    const ScratchBlock refs_block(n * sizeof(PrimRef), true);
     auto* const refs = static_cast<PrimRef*>(refs_block.data());
-    const BuildRange root = make_prim_refs(positions, indices, refs);
+    const BuildRange root = make_prim_refs(static_cast<uint32_t>(n), make_ref, refs);
     WideBvh wide;
     if (root.size() == 0) return wide;
 
     // The 8 floats of padding stay 0; every other float is written by its leaf.
-    resize_on_huge_pages(wide.triangle_data, 9 * size_t(root.size()) + k_wide_bvh_width);
+    if (triangles)
+        resize_on_huge_pages(wide.triangle_data, 9 * size_t(root.size()) + k_wide_bvh_width);
     resize_on_huge_pages(wide.triangle_ids, root.size());
-    // A first block with room for one node per 8 triangles (trees here have about one per 15)
+    // A first block with room for one node per 8 primitives (trees here have about one per 15)
     // and a part-used chunk per subtree; more blocks if it fills up.
     const size_t subtrees = 2 * size_t(root.size()) / std::max(settings.parallel_threshold, 2u);
     NodeArena arena(root.size() / (8 * NodeArena::k_chunk) + subtrees);
@@ -821,6 +850,23 @@ WideBvh build_wide_bvh(std::span<const Vec3> positions,
     if (!WideBvhRef::is_leaf(wide.root)) assemble(top, wide.nodes);
     wide.root_bounds = root.bounds.to_aabb();
     return wide;
+}
+
+}  // namespace
+
+WideBvh build_wide_bvh(std::span<const Vec3> positions,
+                       std::span<const std::array<uint32_t, 3>> indices,
+                       const BvhBuildSettings& settings) {
+    return build_over(
+        indices.size(),
+        [&](uint32_t i, PrimRef& ref) { return make_prim_ref(positions, indices[i], i, ref); },
+        positions, indices, settings);
+}
+
+WideBvh build_wide_bvh_over_boxes(std::span<const Aabb> boxes, const BvhBuildSettings& settings) {
+    return build_over(
+        boxes.size(), [&](uint32_t i, PrimRef& ref) { return make_prim_ref(boxes[i], i, ref); }, {},
+        {}, settings);
 }
 
 }  // namespace hikari

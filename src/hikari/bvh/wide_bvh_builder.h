@@ -10,6 +10,7 @@
 #include <span>
 
 #include "hikari/bvh/wide_bvh.h"
+#include "hikari/core/aabb.h"
 #include "hikari/core/vec.h"
 
 namespace hikari {
@@ -28,6 +29,13 @@ struct BvhBuildSettings {
     /// partitioned in parallel above four times that; smaller ones are built serially.
     uint32_t parallel_threshold = 4096;
 };
+
+/// Builds the wide tree over bounded primitives given by their boxes (spheres, any shape with a
+/// box): leaves over slots of WideBvh::triangle_ids, which hold the index into `boxes` of each
+/// primitive, and no triangle_data (the caller lays out its primitives by slot). Empty or
+/// non-finite boxes are left out. Deterministic and limited as the triangle build.
+WideBvh build_wide_bvh_over_boxes(std::span<const Aabb> boxes,
+                                  const BvhBuildSettings& settings = {});
 
 /// Builds the wide tree over the triangles `indices` (three vertex indices each, into
 /// `positions`). Triangles with an index out of range, a non-finite vertex or zero area are left

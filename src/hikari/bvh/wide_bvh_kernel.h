@@ -3,6 +3,13 @@
 // the portable, AVX2 and AVX-512 kernels each instantiate it in their own translation unit,
 // compiled for their instruction set. Internal to wide_bvh_traversal*.cpp.
 //
+// The loops are also templates over their leaves (`Leaves`, built once per ray): triangles
+// (TriangleLeaves, the kernel's own SIMD test) or spheres (SphereLeaves, intersect_sphere), each
+// providing
+//   template <bool k_any_hit> bool test(uint32_t first, uint32_t count, Interval& valid,
+//                                       LeafHit& hit)  -> Ops::LeafTest's contract, below
+//   const void* address(uint32_t first) const -> where the leaf's data starts (prefetching)
+//
 // Ops provides, all bit-identical across implementations:
 //   static uint32_t test_node(const WideBvhNode&, const NodeRay&, float t_min, float t_max,
 //                             float* entry)  -> mask of children whose box the ray meets in
@@ -10,6 +17,9 @@
 //   static uint32_t test_node_any(const WideBvhNode&, const NodeRay&, float t_min,
 //                                 float t_max_far) -> the same mask with the exits widened
 //                                 through NodeRay::inv_dir_far (see k_far_scale), no entries
+//   static uint32_t sphere_candidates(const float* block, uint32_t count, uint32_t begin,
+//                                     const Ray&) -> bit i clear only where sphere begin + i of
+//                                     a sphere leaf surely misses (see SphereLeaves)
 //   class LeafTest, built once per ray from a LeafRay, with
 //     template <bool k_any_hit> bool test(const float* block, uint32_t count, uint32_t first,
 //                                         Interval& valid, LeafHit& hit) const
@@ -23,9 +33,11 @@
 #include <limits>
 #include <optional>
 
+#include "hikari/bvh/sphere_bvh.h"
 #include "hikari/bvh/triangle_hit.h"
 #include "hikari/bvh/wide_bvh.h"
 #include "hikari/core/ray.h"
+#include "hikari/geometry/intersect.h"
 #include "hikari/geometry/triangle_intersect.h"
 
 namespace hikari::wide_kernel {
@@ -139,6 +151,109 @@ bool test_leaf_scalar(const LeafRay& ray, const float* block, uint32_t count, ui
     return found;
 }
 
+/// A WideBvh's triangle leaves for the closest-hit loop, the triangle test's set-up made at the
+/// first leaf: a ray that reaches none (most camera rays beside a model) never pays for it.
+template <typename Ops>
+class LazyTriangleLeaves {
+  public:
+    LazyTriangleLeaves(const WideBvh& bvh, const Ray& ray)
+        : m_data(bvh.triangle_data.data()), m_ray(ray) {}
+    LazyTriangleLeaves(const LazyTriangleLeaves&) = delete;
+
+    template <bool k_any_hit>
+    bool test(uint32_t first, uint32_t count, Interval& valid, LeafHit& hit) {
+        if (!m_test) m_test.emplace(m_leaf_ray.emplace(m_ray));
+        return m_test->template test<k_any_hit>(m_data + 9 * size_t(first), count, first, valid,
+                                                hit);
+    }
+    const void* address(uint32_t first) const { return m_data + 9 * size_t(first); }
+
+  private:
+    const float* m_data;
+    const Ray& m_ray;
+    std::optional<LeafRay> m_leaf_ray;
+    std::optional<typename Ops::LeafTest> m_test;
+};
+
+/// A WideBvh's triangle leaves for the any-hit loop, the set-up made at once (a shadow ray
+/// nearly always reaches a leaf).
+template <typename Ops>
+class TriangleLeaves {
+  public:
+    TriangleLeaves(const WideBvh& bvh, const Ray& ray)
+        : m_data(bvh.triangle_data.data()), m_leaf_ray(ray), m_test(m_leaf_ray) {}
+    TriangleLeaves(const TriangleLeaves&) = delete;
+
+    template <bool k_any_hit>
+    bool test(uint32_t first, uint32_t count, Interval& valid, LeafHit& hit) const {
+        return m_test.template test<k_any_hit>(m_data + 9 * size_t(first), count, first, valid,
+                                               hit);
+    }
+    const void* address(uint32_t first) const { return m_data + 9 * size_t(first); }
+
+  private:
+    const float* m_data;
+    const LeafRay m_leaf_ray;
+    const typename Ops::LeafTest m_test;
+};
+
+/// The next float above `x` (a positive finite distance), without a call into libm.
+inline float next_float_up(float x) {
+    return x > 0.0f && x < k_infinity ? std::bit_cast<float>(std::bit_cast<uint32_t>(x) + 1)
+                                      : std::nextafter(x, k_infinity);
+}
+
+/// A SphereBvh's leaves: intersect_sphere for each sphere, in slot order, so every SIMD level
+/// and every caller gets its exact t; Ops::sphere_candidates first drops, eight at a time, the
+/// spheres whose discriminant is negative (most of a leaf's). Of spheres at exactly the same
+/// distance the one of lowest index wins, as when all are tested in index order, each needing
+/// to be strictly nearer.
+template <typename Ops>
+class SphereLeaves {
+  public:
+    SphereLeaves(const SphereBvh& bvh, const Ray& ray)
+        : m_data(bvh.sphere_data.data()), m_ids(bvh.tree.triangle_ids.data()), m_ray(ray) {}
+    SphereLeaves(const SphereLeaves&) = delete;
+
+    template <bool k_any_hit>
+    bool test(uint32_t first, uint32_t count, Interval& valid, LeafHit& hit) {
+        bool found = false;
+        const float* block = m_data + 4 * size_t(first);
+        for (uint32_t begin = 0; begin < count; begin += k_wide_bvh_width) {
+            // (No std::min: a library template instantiated under a kernel's target pragma could
+            // be the copy the linker keeps for baseline code.)
+            const uint32_t left = count - begin;
+            const uint32_t lanes = left < k_wide_bvh_width ? left : k_wide_bvh_width;
+            uint32_t mask =
+                Ops::sphere_candidates(block, count, begin, m_ray) & ((1u << lanes) - 1u);
+            for (; mask != 0; mask &= mask - 1) {
+                const uint32_t i = begin + static_cast<uint32_t>(std::countr_zero(mask));
+                const uint32_t slot = first + i;
+                const Vec3 center{block[i], block[count + i], block[2 * count + i]};
+                // Once a sphere holds valid.max, a sphere of lower index at that t wins too.
+                const Interval range{valid.min, m_found ? next_float_up(valid.max) : valid.max};
+                const float t = intersect_sphere(m_ray, center, block[3 * count + i], range);
+                if (!(t == t)) continue;  // NaN: no hit
+                if constexpr (k_any_hit) return true;
+                if (t == valid.max && m_ids[slot] > m_best_id) continue;
+                valid.max = t;
+                hit.t = t, hit.slot = slot;
+                m_best_id = m_ids[slot];
+                m_found = found = true;
+            }
+        }
+        return found;
+    }
+    const void* address(uint32_t first) const { return m_data + 4 * size_t(first); }
+
+  private:
+    const float* m_data;
+    const uint32_t* m_ids;
+    const Ray& m_ray;
+    bool m_found = false;  ///< a sphere holds valid.max
+    uint32_t m_best_id = 0;
+};
+
 /// Rays the traversal can handle: finite origin, finite non-zero direction.
 inline bool is_traceable(const Ray& ray) {
     return is_finite(ray.origin) && is_finite(ray.direction) && !(ray.direction == Vec3(0.0f));
@@ -152,16 +267,11 @@ struct StackEntry {
 
 /// The closest-hit loop: a stack of (reference, entry distance); at an inner node all eight
 /// boxes are tested at once and the hit children visited nearest first.
-template <typename Ops>
-bool traverse(const WideBvh& bvh, const Ray& ray, Interval valid, LeafHit& hit) {
+template <typename Ops, typename Leaves>
+bool traverse(const WideBvh& bvh, const Ray& ray, Interval valid, Leaves& leaves, LeafHit& hit) {
     if (bvh.empty() || !is_traceable(ray)) return false;
     const NodeRay node_ray(ray);
-    // Built at the first leaf: a ray that reaches none (most camera rays beside a model) never
-    // pays for the triangle test's set-up.
-    std::optional<LeafRay> leaf_ray;
-    std::optional<typename Ops::LeafTest> leaf_test;
     const WideBvhNode* nodes = bvh.nodes.data();
-    const float* triangle_data = bvh.triangle_data.data();
 
     std::array<StackEntry, k_wide_bvh_stack_size> stack;
     uint32_t stack_size = 0;
@@ -198,12 +308,10 @@ bool traverse(const WideBvh& bvh, const Ray& ray, Interval valid, LeafHit& hit) 
                 continue;
             }
         } else {
-            /* leaf: test its triangles; a nearest hit shrinks valid.max */
+            /* leaf: test its primitives; a nearest hit shrinks valid.max */
             const uint32_t first = WideBvhRef::leaf_first(current);
             const uint32_t count = WideBvhRef::leaf_count(current);
-            const float* block = triangle_data + 9 * size_t(first);
-            if (!leaf_test) leaf_test.emplace(leaf_ray.emplace(ray));
-            if (leaf_test->template test<false>(block, count, first, valid, hit)) found = true;
+            if (leaves.template test<false>(first, count, valid, hit)) found = true;
         }
 
         /* pop the next node that starts before the nearest hit so far */
@@ -218,30 +326,34 @@ bool traverse(const WideBvh& bvh, const Ray& ray, Interval valid, LeafHit& hit) 
     }
 }
 
+/// The closest-hit loop over a triangle tree.
+template <typename Ops>
+bool traverse(const WideBvh& bvh, const Ray& ray, Interval valid, LeafHit& hit) {
+    LazyTriangleLeaves<Ops> leaves(bvh, ray);
+    return traverse<Ops>(bvh, ray, valid, leaves, hit);
+}
+
 /// Starts loading the first four cache lines of a child pushed for later: an inner node (224
 /// bytes) or a leaf's triangle rows (up to 7 triangles), so that its misses overlap the walk of
 /// the siblings before it, as Embree's traversal does for the children it pushes. Measured on
 /// the any-hit walk (both walks alternated in one process over all B2 rays): +1 to +6% on
 /// bumpy1m, level to +7% on the bunny; 3-10% in separate processes in the VM's slow phases.
-inline void prefetch_child(const WideBvhNode* nodes, const float* triangle_data, uint32_t ref) {
-    const char* line =
-        WideBvhRef::is_leaf(ref)
-            ? reinterpret_cast<const char*>(triangle_data + 9 * size_t(WideBvhRef::leaf_first(ref)))
-            : reinterpret_cast<const char*>(nodes + ref);
+template <typename Leaves>
+inline void prefetch_child(const WideBvhNode* nodes, const Leaves& leaves, uint32_t ref) {
+    const char* line = WideBvhRef::is_leaf(ref)
+                           ? static_cast<const char*>(leaves.address(WideBvhRef::leaf_first(ref)))
+                           : reinterpret_cast<const char*>(nodes + ref);
     for (int k = 0; k < 4; ++k) __builtin_prefetch(line + 64 * k);
 }
 
 /// The any-hit loop (shadow rays): children in slot order, a stack of bare references. A
 /// hit ends the walk, so valid.max never shrinks, and every pushed child (entered before
 /// valid.max) stays worth visiting: no entry distances, no test when popping.
-template <typename Ops>
-bool occluded(const WideBvh& bvh, const Ray& ray, Interval valid) {
+template <typename Ops, typename Leaves>
+bool occluded(const WideBvh& bvh, const Ray& ray, Interval valid, Leaves& leaves) {
     if (bvh.empty() || !is_traceable(ray)) return false;
     const NodeRay node_ray(ray);
-    const LeafRay leaf_ray(ray);
-    const typename Ops::LeafTest leaf_test(leaf_ray);
     const WideBvhNode* nodes = bvh.nodes.data();
-    const float* triangle_data = bvh.triangle_data.data();
 
     std::array<uint32_t, k_wide_bvh_stack_size> stack;
     uint32_t stack_size = 0;
@@ -259,22 +371,46 @@ bool occluded(const WideBvh& bvh, const Ray& ray, Interval valid) {
                 for (mask &= mask - 1; mask != 0; mask &= mask - 1) {
                     const uint32_t deferred = node.child[std::countr_zero(mask)];
                     stack[stack_size++] = deferred;
-                    prefetch_child(nodes, triangle_data, deferred);
+                    prefetch_child(nodes, leaves, deferred);
                 }
                 continue;
             }
         } else {
-            /* leaf: any triangle inside valid ends the walk */
+            /* leaf: any primitive inside valid ends the walk */
             const uint32_t first = WideBvhRef::leaf_first(current);
             const uint32_t count = WideBvhRef::leaf_count(current);
-            const float* block = triangle_data + 9 * size_t(first);
-            if (leaf_test.template test<true>(block, count, first, valid, unused)) return true;
+            if (leaves.template test<true>(first, count, valid, unused)) return true;
         }
 
         /* pop the next node */
         if (stack_size == 0) return false;
         current = stack[--stack_size];
     }
+}
+
+/// The any-hit loop over a triangle tree.
+template <typename Ops>
+bool occluded(const WideBvh& bvh, const Ray& ray, Interval valid) {
+    if (bvh.empty() || !is_traceable(ray)) return false;
+    TriangleLeaves<Ops> leaves(bvh, ray);
+    return occluded<Ops>(bvh, ray, valid, leaves);
+}
+
+/// The nearest sphere of `bvh` along `ray` inside `valid`.
+template <typename Ops>
+bool closest_sphere(const SphereBvh& bvh, const Ray& ray, Interval valid, SphereHit& hit) {
+    SphereLeaves<Ops> leaves(bvh, ray);
+    LeafHit h;
+    if (!traverse<Ops>(bvh.tree, ray, valid, leaves, h)) return false;
+    hit = {h.t, bvh.tree.triangle_ids[h.slot]};
+    return true;
+}
+
+/// Whether any sphere of `bvh` meets `ray` inside `valid`.
+template <typename Ops>
+bool any_sphere(const SphereBvh& bvh, const Ray& ray, Interval valid) {
+    SphereLeaves<Ops> leaves(bvh, ray);
+    return occluded<Ops>(bvh.tree, ray, valid, leaves);
 }
 
 /// The hit as the public API reports it.

@@ -65,6 +65,32 @@ struct Simd8Ops {
         return HIKARI_CMP_MASK(t0, t1, _CMP_LE_OQ);
     }
 
+    /// Bit i clear only where sphere begin + i of a sphere leaf block (rows centre x, y, z and
+    /// radius of `count` floats; sphere_bvh.h) surely misses `ray`: intersect_sphere's
+    /// discriminant, by the same operations in the same order, is negative. Bits past the leaf
+    /// are meaningless; the caller masks them.
+    static uint32_t sphere_candidates(const float* block, uint32_t count, uint32_t begin,
+                                      const Ray& ray) {
+        const auto row = [&](uint32_t r) { return _mm256_loadu_ps(block + r * count + begin); };
+        const __m256 fx = _mm256_sub_ps(_mm256_set1_ps(ray.origin.x), row(0));
+        const __m256 fy = _mm256_sub_ps(_mm256_set1_ps(ray.origin.y), row(1));
+        const __m256 fz = _mm256_sub_ps(_mm256_set1_ps(ray.origin.z), row(2));
+        const __m256 dx = _mm256_set1_ps(ray.direction.x), dy = _mm256_set1_ps(ray.direction.y),
+                     dz = _mm256_set1_ps(ray.direction.z);
+        const __m256 f_dot_d = _mm256_add_ps(
+            _mm256_add_ps(_mm256_mul_ps(fx, dx), _mm256_mul_ps(fy, dy)), _mm256_mul_ps(fz, dz));
+        const __m256 b = _mm256_xor_ps(f_dot_d, _mm256_set1_ps(-0.0f));
+        const __m256 px = _mm256_add_ps(fx, _mm256_mul_ps(dx, b));
+        const __m256 py = _mm256_add_ps(fy, _mm256_mul_ps(dy, b));
+        const __m256 pz = _mm256_add_ps(fz, _mm256_mul_ps(dz, b));
+        const __m256 p2 = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(px, px), _mm256_mul_ps(py, py)),
+                                        _mm256_mul_ps(pz, pz));
+        const __m256 radius = row(3);
+        const __m256 discriminant = _mm256_sub_ps(_mm256_mul_ps(radius, radius), p2);
+        // Not less than 0 (NaN included): intersect_sphere decides.
+        return HIKARI_CMP_MASK(discriminant, _mm256_setzero_ps(), _CMP_NLT_UQ);
+    }
+
     /// Woop et al. 2013 on eight triangles of a leaf at once (the steps as in
     /// triangle_intersect.h), built once per ray: the ray's values are broadcast here, not at
     /// every leaf, and the rows of its axes are found by one multiplication each.

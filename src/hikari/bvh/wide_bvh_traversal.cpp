@@ -9,6 +9,11 @@ bool wide_closest_avx2(const WideBvh& bvh, const Ray& ray, Interval valid, Trian
 bool wide_any_avx2(const WideBvh& bvh, const Ray& ray, Interval valid);
 bool wide_closest_avx512(const WideBvh& bvh, const Ray& ray, Interval valid, TriangleHit& hit);
 bool wide_any_avx512(const WideBvh& bvh, const Ray& ray, Interval valid);
+bool wide_closest_sphere_avx2(const SphereBvh& bvh, const Ray& ray, Interval valid, SphereHit& hit);
+bool wide_any_sphere_avx2(const SphereBvh& bvh, const Ray& ray, Interval valid);
+bool wide_closest_sphere_avx512(const SphereBvh& bvh, const Ray& ray, Interval valid,
+                                SphereHit& hit);
+bool wide_any_sphere_avx512(const SphereBvh& bvh, const Ray& ray, Interval valid);
 }  // namespace detail
 
 namespace {
@@ -58,6 +63,11 @@ struct PortableOps {
             if (t0 <= t1) mask |= 1u << i;
         }
         return mask;
+    }
+
+    /// No filter: intersect_sphere itself rejects every sphere of the leaf it misses.
+    static uint32_t sphere_candidates(const float*, uint32_t, uint32_t, const Ray&) {
+        return 0xffu;
     }
 
     /// The reference test, one triangle at a time.
@@ -124,6 +134,45 @@ bool intersect_closest(const WideBvh& bvh, const Ray& ray, Interval valid, Trian
 }
 
 bool intersect_any(const WideBvh& bvh, const Ray& ray, Interval valid) {
+    static const SimdLevel level = best_simd_level();
+    return intersect_any(bvh, ray, valid, level);
+}
+
+bool intersect_closest(const SphereBvh& bvh, const Ray& ray, Interval valid, SphereHit& hit,
+                       SimdLevel level) {
+#if HIKARI_SIMD_KERNELS
+    switch (level) {
+        case SimdLevel::avx512:
+            return detail::wide_closest_sphere_avx512(bvh, ray, valid, hit);
+        case SimdLevel::avx2:
+            return detail::wide_closest_sphere_avx2(bvh, ray, valid, hit);
+        default:
+            break;
+    }
+#endif
+    return wide_kernel::closest_sphere<PortableOps>(bvh, ray, valid, hit);
+}
+
+bool intersect_any(const SphereBvh& bvh, const Ray& ray, Interval valid, SimdLevel level) {
+#if HIKARI_SIMD_KERNELS
+    switch (level) {
+        case SimdLevel::avx512:
+            return detail::wide_any_sphere_avx512(bvh, ray, valid);
+        case SimdLevel::avx2:
+            return detail::wide_any_sphere_avx2(bvh, ray, valid);
+        default:
+            break;
+    }
+#endif
+    return wide_kernel::any_sphere<PortableOps>(bvh, ray, valid);
+}
+
+bool intersect_closest(const SphereBvh& bvh, const Ray& ray, Interval valid, SphereHit& hit) {
+    static const SimdLevel level = best_simd_level();
+    return intersect_closest(bvh, ray, valid, hit, level);
+}
+
+bool intersect_any(const SphereBvh& bvh, const Ray& ray, Interval valid) {
     static const SimdLevel level = best_simd_level();
     return intersect_any(bvh, ray, valid, level);
 }

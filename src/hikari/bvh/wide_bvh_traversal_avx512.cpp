@@ -9,11 +9,14 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 
+#include "hikari/bvh/sphere_bvh.h"
 #include "hikari/bvh/triangle_hit.h"
 #include "hikari/bvh/wide_bvh.h"
 #include "hikari/core/ray.h"
 #include "hikari/core/simd_level.h"
+#include "hikari/geometry/intersect.h"
 #include "hikari/geometry/triangle_intersect.h"
 
 #if HIKARI_SIMD_KERNELS
@@ -32,6 +35,15 @@ bool wide_closest_avx512(const WideBvh& bvh, const Ray& ray, Interval valid, Tri
 
 bool wide_any_avx512(const WideBvh& bvh, const Ray& ray, Interval valid) {
     return wide_kernel::occluded<wide_kernel::Simd8Ops>(bvh, ray, valid);
+}
+
+bool wide_closest_sphere_avx512(const SphereBvh& bvh, const Ray& ray, Interval valid,
+                                SphereHit& hit) {
+    return wide_kernel::closest_sphere<wide_kernel::Simd8Ops>(bvh, ray, valid, hit);
+}
+
+bool wide_any_sphere_avx512(const SphereBvh& bvh, const Ray& ray, Interval valid) {
+    return wide_kernel::any_sphere<wide_kernel::Simd8Ops>(bvh, ray, valid);
 }
 
 }  // namespace hikari::detail

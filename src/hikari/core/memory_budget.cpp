@@ -23,6 +23,12 @@ std::atomic<double>& limit() {
 
 }  // namespace
 
+std::string memory_size_text(double bytes) {
+    constexpr double mib = 1 << 20, gib = 1 << 30;
+    if (bytes >= 0.1 * gib) return fmt::format("{:.1f} GiB", bytes / gib);
+    return fmt::format("{:.1f} MiB", bytes / mib);
+}
+
 double memory_limit() { return limit().load(); }
 
 void set_memory_limit(double bytes) {
@@ -32,10 +38,10 @@ void set_memory_limit(double bytes) {
 void check_memory_need(double bytes, std::string_view what) {
     const double cap = memory_limit();
     if (!(bytes > cap)) return;
-    constexpr double gib = 1 << 30;
-    throw InputError(fmt::format(
-        "{} needs about {:.1f} GiB, more than the limit of {:.1f} GiB (raise it with --max-memory)",
-        what, bytes / gib, cap / gib));
+    throw InputError(
+        fmt::format("{} needs about {}, more than the limit of {} (raise it with "
+                    "--max-memory)",
+                    what, memory_size_text(bytes), memory_size_text(cap)));
 }
 
 }  // namespace hikari

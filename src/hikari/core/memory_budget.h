@@ -4,9 +4,13 @@
 // machine.
 
 #include <cstdint>
+#include <string>
 #include <string_view>
 
 namespace hikari {
+
+/// "1.5 GiB", or "12.0 MiB" below a tenth of a GiB: a size for messages.
+std::string memory_size_text(double bytes);
 
 /// The limit in bytes; by default half the machine's physical memory (4 GiB when unknown).
 double memory_limit();

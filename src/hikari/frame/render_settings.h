@@ -21,10 +21,13 @@ struct RenderStats {
     std::atomic<uint64_t> paths_traced{0};  ///< path tracing: camera samples traced
     /// Path tracing: samples whose radiance came out NaN or infinite, left out of the image.
     std::atomic<uint64_t> bad_samples{0};
-    std::atomic<uint64_t> bvh_triangles{0};  ///< triangles in the BVH
-    std::atomic<uint64_t> bvh_nodes{0};      ///< wide BVH nodes
-    std::atomic<uint64_t> bvh_bytes{0};      ///< BVH nodes + triangle data + ids
-    std::atomic<uint64_t> bvh_build_us{0};   ///< BVH build wall time, microseconds
+    std::atomic<uint64_t> bvh_triangles{0};     ///< triangles in the BVH
+    std::atomic<uint64_t> bvh_nodes{0};         ///< wide BVH nodes
+    std::atomic<uint64_t> bvh_bytes{0};         ///< BVH nodes + triangle data + ids
+    std::atomic<uint64_t> bvh_build_us{0};      ///< BVH build wall time, microseconds
+    std::atomic<uint64_t> bvh_spheres{0};       ///< spheres in the sphere BVH
+    std::atomic<uint64_t> bvh_sphere_nodes{0};  ///< its wide nodes
+    std::atomic<uint64_t> bvh_sphere_bytes{0};  ///< its nodes + sphere data + ids
     // Raster methods (raster/vertex_pipeline.h VertexStageCounts and the visibility passes).
     std::atomic<uint64_t> raster_triangles{0};     ///< tessellated triangles into the vertex stage
     std::atomic<uint64_t> raster_culled{0};        ///< back faces dropped

@@ -31,7 +31,10 @@
 
 #include "hikari/core/error.h"
 #include "hikari/core/mat4.h"
+#include "hikari/core/memory_budget.h"
 #include "hikari/io/image_read.h"
+#include "hikari/io/material_rules.h"
+#include "hikari/io/printable_text.h"
 #include "hikari/io/read_file.h"
 #include "hikari/io/texture_files.h"
 #include "hikari/shading/textures/mip_pyramid.h"
@@ -46,7 +49,7 @@ static_assert(std::endian::native == std::endian::little);
 namespace fs = std::filesystem;
 
 [[noreturn]] void fail(const fs::path& file, std::string_view what) {
-    throw InputError(fmt::format("{}: {}", file.string(), what));
+    throw InputError(printable_text(fmt::format("{}: {}", file.string(), what)));
 }
 
 /// list[index], after checking that it exists; `where` ("mesh 2 primitive 0: ") and `kind`
@@ -204,7 +207,7 @@ std::string expand_file_path(const std::string& path, void*) { return path; }
 bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
                      void* user_data) {
     try {
-        const std::string bytes = read_file_bytes(path);
+        const std::string bytes = read_file_bytes(path, InputKind::mesh);
         out->assign(bytes.begin(), bytes.end());
         return true;
     } catch (const InputError& e) {
@@ -485,6 +488,7 @@ class GltfReader {
             Vec3(static_cast<float>(e[0] * strength), static_cast<float>(e[1] * strength),
                  static_cast<float>(e[2] * strength));
         if (!is_finite(out.emission)) fail(m_file, at + "emission is not finite");
+        if (const auto problem = find_material_problem(out)) fail(m_file, at + problem->message);
         out.texture = base_color_texture(pbr.baseColorTexture, at + "baseColorTexture: ");
         return out;
     }
@@ -719,6 +723,12 @@ class GltfReader {
                                      at, k_max_vertices));
         }
 
+        // Every instance of a primitive adds its vertices again: the memory they will take (44
+        // bytes of attributes each, about twice over once build_mesh has run) is checked as
+        // the instances accumulate.
+        check_memory_need(88.0 * static_cast<double>(base + n),
+                          fmt::format("{}: {}loading {} vertices", m_file.string(), at, base + n));
+
         // Vertices, in world space.
         if (normals && mesh.normals.size() < base) mesh.normals.resize(base, Vec3(0.0f));
         if (uvs && mesh.uvs.size() < base) mesh.uvs.resize(base, Vec2{});
@@ -757,6 +767,10 @@ class GltfReader {
                  type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
                  type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
                 fail(m_file, at + "indices must be SCALAR unsigned bytes, shorts or ints");
+            // 4 bytes a corner here and in the mesh, and a third of a triangle's 48 in build_mesh.
+            check_memory_need(
+                24.0 * static_cast<double>(mesh.corners.size() + indices.count),
+                fmt::format("{}: {}loading {} corners", m_file.string(), at, indices.count));
             corners.resize(indices.count);
             for (size_t i = 0; i < indices.count; ++i) {
                 corners[i] = index_at(indices, i);
@@ -897,7 +911,7 @@ class GltfReader {
 }  // namespace
 
 GltfContent read_gltf(const std::filesystem::path& file) {
-    const std::string bytes = read_file_bytes(file);
+    const std::string bytes = read_file_bytes(file, InputKind::mesh);
     if (bytes.empty()) fail(file, "the file is empty");
     std::vector<std::string> warnings;
     const tinygltf::Model model = parse_with_tinygltf(file, bytes, warnings);

@@ -3,6 +3,8 @@
 #include <stb_image.h>
 #include <tinyexr.h>
 
+#include <fmt/format.h>
+
 #include <array>
 #include <bit>
 #include <cctype>
@@ -16,7 +18,9 @@
 
 #include "hikari/core/color.h"
 #include "hikari/core/error.h"
+#include "hikari/core/memory_budget.h"
 #include "hikari/io/image_format.h"
+#include "hikari/io/printable_text.h"
 #include "hikari/io/read_file.h"
 
 namespace hikari {
@@ -24,7 +28,7 @@ namespace hikari {
 namespace {
 
 [[noreturn]] void fail(const std::filesystem::path& path, const std::string& reason) {
-    throw InputError(path.string() + ": " + reason);
+    throw InputError(printable_text(path.string() + ": " + reason));
 }
 
 /// Refuses sizes that are not positive or exceed the limits, before anything is allocated.
@@ -38,6 +42,10 @@ void check_size(const std::filesystem::path& path, long long width, long long he
         fail(path, "image size " + std::to_string(width) + "x" + std::to_string(height) +
                        " exceeds the limit (65536 per side, 2^28 pixels)");
     }
+    // The image's RGB floats (12 bytes a pixel) and the decoder's own buffer (up to 16 bytes a
+    // pixel: tinyexr's float RGBA planes).
+    check_memory_need(28.0 * static_cast<double>(width) * static_cast<double>(height),
+                      fmt::format("{}: decoding a {}x{} image", path.string(), width, height));
 }
 
 /// Linear values of the 256 8-bit sRGB codes, so decoding is a table look-up per sample.
@@ -442,7 +450,7 @@ Image read_image(const std::filesystem::path& path) {
         fail(path, "unknown image extension '" + path.extension().string() +
                        "' (supported: .png, .jpg, .jpeg, .ppm, .pfm, .exr, .hdr)");
     }
-    const std::string bytes = read_file_bytes(path);
+    const std::string bytes = read_file_bytes(path, InputKind::image);
     if (bytes.empty()) fail(path, "the file is empty");
     switch (*format) {
         case ImageFormat::Png:

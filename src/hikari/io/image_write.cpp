@@ -12,6 +12,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "hikari/core/cancel.h"
 #include "hikari/core/error.h"
 #include "hikari/core/srgb8_encoder.h"
 #include "hikari/io/atomic_file.h"
@@ -110,6 +111,7 @@ Bytes encode_exr(const std::filesystem::path& path, const Image& image) {
     std::vector<float> planes[3];  // B, G, R
     for (auto& plane : planes) plane.resize(n);
     for (size_t i = 0; i < n; ++i) {
+        if (i % (1 << 20) == 0) throw_if_cancelled();  // SIGINT / SIGTERM
         planes[0][i] = image.pixels[i].z;
         planes[1][i] = image.pixels[i].y;
         planes[2][i] = image.pixels[i].x;
@@ -214,6 +216,7 @@ void write_any_image(const std::filesystem::path& path, const AnyImage& image, s
                          std::to_string(settings.bit_depth) +
                          "-bit samples are not possible (8 bits, or 16 for .png and .ppm)");
     }
+    throw_if_cancelled();  // SIGINT / SIGTERM: nothing to encode for a stopped render
     const ImageFormat format = *image_format_from_extension(path);
     Bytes bytes;
     if constexpr (std::is_same_v<AnyImage, Image>)

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "hikari/core/error.h"
+#include "hikari/io/printable_text.h"
 
 namespace hikari {
 
@@ -40,8 +41,8 @@ size_t edit_distance(std::string_view a, std::string_view b) {
 }  // namespace
 
 void JsonNode::fail(std::string_view message) const {
-    throw InputError(
-        fmt::format("{}: {}: {}", m_file, m_path.empty() ? "(top level)" : m_path, message));
+    throw InputError(printable_text(
+        fmt::format("{}: {}: {}", m_file, m_path.empty() ? "(top level)" : m_path, message)));
 }
 
 bool JsonNode::has(std::string_view key) const {
@@ -95,8 +96,9 @@ float JsonNode::as_number() const {
     if (!m_value.is_number())
         fail(fmt::format("expected a number, got {}", json_type_name(m_value)));
     const double v = m_value.get<double>();
-    if (!std::isfinite(v) || std::abs(v) > std::numeric_limits<float>::max())
-        fail("expected a finite number");
+    if (!std::isfinite(v)) fail("expected a finite number");
+    if (std::abs(v) > std::numeric_limits<float>::max())
+        fail(fmt::format("{} is too large for a 32-bit float", v));
     return static_cast<float>(v);
 }
 
@@ -144,26 +146,72 @@ Vec3 JsonNode::as_colour() const {
     return {at(size_t{0}).as_non_negative(), at(1).as_non_negative(), at(2).as_non_negative()};
 }
 
+namespace {
+
+/// "FILE:LINE:COLUMN" of the character just before the 1-based byte offset `byte` (where
+/// nlohmann's errors point: just past the offending character).
+std::string text_position(std::string_view text, const std::string& file, size_t byte) {
+    const size_t end = std::min(text.size(), byte == 0 ? size_t{0} : byte - 1);
+    size_t line = 1, column = 1;
+    for (size_t i = 0; i < end; ++i) {
+        if (text[i] == '\n')
+            ++line, column = 1;
+        else
+            ++column;
+    }
+    return fmt::format("{}:{}:{}", file, line, column);
+}
+
+/// A SAX handler that builds nothing and keeps where the first error is: nlohmann's
+/// out_of_range errors (a number like 1e400 that overflows a double) carry no position, the
+/// parse_error event of the SAX interface does.
+struct ErrorPosition final : nlohmann::json_sax<nlohmann::json> {
+    size_t byte = 0;
+    std::string token;
+    bool null() override { return true; }
+    bool boolean(bool) override { return true; }
+    bool number_integer(number_integer_t) override { return true; }
+    bool number_unsigned(number_unsigned_t) override { return true; }
+    bool number_float(number_float_t, const string_t&) override { return true; }
+    bool string(string_t&) override { return true; }
+    bool binary(binary_t&) override { return true; }
+    bool start_object(std::size_t) override { return true; }
+    bool key(string_t&) override { return true; }
+    bool end_object() override { return true; }
+    bool start_array(std::size_t) override { return true; }
+    bool end_array() override { return true; }
+    bool parse_error(std::size_t position, const std::string& last_token,
+                     const nlohmann::json::exception&) override {
+        byte = position;
+        token = last_token;
+        return false;
+    }
+};
+
+}  // namespace
+
 nlohmann::json parse_json(std::string_view text, const std::string& file) {
     try {
         return nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
-        // e.byte is 1-based and points just past the offending character.
-        const size_t end = std::min(text.size(), e.byte == 0 ? size_t{0} : e.byte - 1);
-        size_t line = 1, column = 1;
-        for (size_t i = 0; i < end; ++i) {
-            if (text[i] == '\n')
-                ++line, column = 1;
-            else
-                ++column;
-        }
         std::string_view reason = e.what();
         // Drop nlohmann's "[json.exception.parse_error.101] parse error at line 3, column 5: ".
         if (const size_t colon = reason.find(": "); colon != std::string_view::npos)
             reason.remove_prefix(colon + 2);
-        throw InputError(fmt::format("{}:{}:{}: {}", file, line, column, reason));
-    } catch (const nlohmann::json::exception& e) {  // e.g. a number too large to represent
-        throw InputError(fmt::format("{}: invalid JSON: {}", file, e.what()));
+        throw InputError(
+            printable_text(fmt::format("{}: {}", text_position(text, file, e.byte), reason)));
+    } catch (const nlohmann::json::out_of_range& e) {
+        // Error 406, "number overflow": a number beyond a double's range, so beyond a float's.
+        // The SAX position is that of the number's last character.
+        ErrorPosition where;
+        nlohmann::json::sax_parse(text, &where);
+        if (e.id == 406 && where.byte > 0)
+            throw InputError(printable_text(fmt::format(
+                "{}: {} is too large for a 32-bit float",
+                text_position(text, file, where.byte + 1 - where.token.size()), where.token)));
+        throw InputError(printable_text(fmt::format("{}: invalid JSON: {}", file, e.what())));
+    } catch (const nlohmann::json::exception& e) {
+        throw InputError(printable_text(fmt::format("{}: invalid JSON: {}", file, e.what())));
     }
 }
 

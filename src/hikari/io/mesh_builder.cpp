@@ -8,7 +8,9 @@
 #include <optional>
 #include <utility>
 
+#include "hikari/core/cancel.h"
 #include "hikari/core/error.h"
+#include "hikari/core/memory_budget.h"
 #include "hikari/geometry/polygon_triangulation.h"
 
 namespace hikari {
@@ -44,6 +46,7 @@ std::vector<PendingTriangle> triangulate_faces(const std::filesystem::path& file
     std::vector<Vec3> outline;
     size_t crossing_faces = 0;
     for (size_t f = 0; f < mesh.face_count(); ++f) {
+        if (f % 65536 == 0) throw_if_cancelled();  // SIGINT / SIGTERM
         const uint32_t begin = mesh.face_start[f], end = mesh.face_start[f + 1];
         const uint32_t n = end - begin;
         if (n < 3)
@@ -111,6 +114,7 @@ class CornerNormals {
         m_unit_normal.resize(triangles.size());
         m_corner_angle.resize(triangles.size());
         for (size_t t = 0; t < triangles.size(); ++t) {
+            if (t % 65536 == 0) throw_if_cancelled();  // SIGINT / SIGTERM
             const auto& v = triangles[t].v;
             const Vec3 p[3] = {mesh.positions[v[0]], mesh.positions[v[1]], mesh.positions[v[2]]};
             m_unit_normal[t] = normalize(cross(p[1] - p[0], p[2] - p[1]));
@@ -207,6 +211,16 @@ MeshData build_mesh(const std::filesystem::path& file, PolygonMesh mesh,
                     const MeshOptions& options) {
     MeshData out;
     out.warnings = std::move(mesh.warnings);
+    // What the triangles and vertices below will take, checked before any of it is allocated:
+    // per triangle the pending one, its output indices, material and edge flags, and the
+    // computed normals' face normal and corner angles; per vertex its output attributes and
+    // the bookkeeping of normal variants (about 40 bytes).
+    const size_t corners = mesh.corners.size(), faces = mesh.face_count();
+    const double triangle_count =
+        corners >= 2 * faces ? static_cast<double>(corners - 2 * faces) : 0.0;
+    check_memory_need(triangle_count * (sizeof(PendingTriangle) + 41.0) +
+                          40.0 * static_cast<double>(mesh.positions.size()),
+                      fmt::format("{}: building {:.0f} triangles", file.string(), triangle_count));
     const std::vector<PendingTriangle> triangles = triangulate_faces(file, mesh, out);
     if (triangles.empty()) {
         throw InputError(fmt::format(
@@ -244,6 +258,7 @@ MeshData build_mesh(const std::filesystem::path& file, PolygonMesh mesh,
     out.material.reserve(triangles.size());
     out.edge_flags.reserve(triangles.size());
     for (size_t t = 0; t < triangles.size(); ++t) {
+        if (t % 65536 == 0) throw_if_cancelled();  // SIGINT / SIGTERM
         const PendingTriangle& tri = triangles[t];
         std::array<uint32_t, 3> index{};
         for (int slot = 0; slot < 3; ++slot) {

@@ -18,8 +18,13 @@
 
 #include "hikari/core/error.h"
 #include "hikari/core/huge_page_allocator.h"
+#include "hikari/core/memory_budget.h"
+#include "hikari/io/material_rules.h"
 #include "hikari/io/mesh_builder.h"
+#include "hikari/io/mtl_scan.h"
+#include "hikari/io/printable_text.h"
 #include "hikari/io/read_file.h"
+#include "hikari/io/text_number.h"
 #include "hikari/io/texture_files.h"
 
 namespace hikari {
@@ -33,7 +38,7 @@ std::string where(const std::filesystem::path& file, size_t line) {
 }
 
 [[noreturn]] void fail(const std::filesystem::path& file, size_t line, const std::string& what) {
-    throw InputError(where(file, line) + what);
+    throw InputError(printable_text(where(file, line) + what));
 }
 
 // --- Pass 1: our own scan of the text ----------------------------------------------------------
@@ -42,9 +47,13 @@ std::string where(const std::filesystem::path& file, size_t line) {
 // checks every number strictly and records the line of each v, vt and face, so later checks can
 // point at the line. It splits lines and tokens exactly as tinyobjloader does.
 
-/// Line numbers (1-based) of each `v`, `vt` and `f` statement, in order.
+/// Line numbers (1-based) of each `v`, `vt` and `f` statement, in order, and the counts that
+/// size what tinyobjloader and we are about to allocate.
 struct LineTable {
     std::vector<uint32_t> v, vt, f;
+    size_t vn_count = 0, corner_count = 0;
+    /// Each `mtllib` statement: its line and the rest of the line (the library names).
+    std::vector<std::pair<uint32_t, std::string_view>> mtllib;
 };
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
@@ -76,14 +85,9 @@ void check_numbers(const std::filesystem::path& file, size_t line, const char* s
              fmt::format("'{}' needs {} numbers, found {}", statement, min_count, count));
     }
     for_each_token(rest, [&](std::string_view t) {
-        std::string_view digits = t.starts_with('+') ? t.substr(1) : t;
-        double value = 0;
-        const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
         // tinyobjloader stores floats: a finite double beyond FLT_MAX would become infinite.
-        if (ec != std::errc() || end != digits.data() + digits.size() || !std::isfinite(value) ||
-            std::abs(value) > std::numeric_limits<float>::max()) {
-            fail(file, line, fmt::format("'{}': '{}' is not a finite number", statement, t));
-        }
+        std::string why;
+        if (!parse_float_token(t, &why)) fail(file, line, fmt::format("'{}': {}", statement, why));
     });
 }
 
@@ -159,6 +163,7 @@ LineTable scan_obj_text(const std::filesystem::path& file, std::string_view text
             table.v.push_back(line);
         } else if (s[0] == 'v' && s[1] == 'n' && blank2) {
             check_numbers(file, line, "vn", s.substr(3), 3);
+            ++table.vn_count;
         } else if (s[0] == 'v' && s[1] == 't' && blank2) {
             check_numbers(file, line, "vt", s.substr(3), 1);
             table.vt.push_back(line);
@@ -170,9 +175,38 @@ LineTable scan_obj_text(const std::filesystem::path& file, std::string_view text
             }
             check_face_corners(file, line, s.substr(2));
             table.f.push_back(line);
+            table.corner_count += corners;
+        } else if (s.starts_with("mtllib") && s.size() > 6 && is_blank(s[6])) {
+            table.mtllib.emplace_back(line, s.substr(7));
         }
     }
     return table;
+}
+
+/// Refuses, before tinyobjloader runs, a file whose faces would take more memory than
+/// --max-memory allows. Bytes per item, measured on a file of ten million triangles (1.8 GB at
+/// the peak): tinyobjloader keeps each face as a vector of its own (some 90 bytes with its heap
+/// block) and every corner twice (24 bytes), then our polygons and build_mesh take about as much
+/// again per corner; attributes are 12 bytes each, kept about twice.
+void check_obj_memory(const std::filesystem::path& file, size_t faces, size_t corners,
+                      size_t attributes) {
+    check_memory_need(100.0 * static_cast<double>(faces) + 40.0 * static_cast<double>(corners) +
+                          24.0 * static_cast<double>(attributes),
+                      fmt::format("{}: loading {} faces", file.string(), faces));
+}
+
+/// The number of lines that start with "f " (no leading blanks): a lower bound on the faces,
+/// counted with memchr in a few milliseconds, so that a file of ten million faces is refused
+/// before the strict scan spends seconds on it.
+size_t count_face_lines(std::string_view text) {
+    size_t count = text.starts_with("f ") ? 1 : 0;
+    const char* const end = text.data() + text.size();
+    const char* p = text.data();
+    while ((p = static_cast<const char*>(std::memchr(p, '\n', static_cast<size_t>(end - p))))) {
+        if (end - p > 2 && p[1] == 'f' && p[2] == ' ') ++count;
+        ++p;
+    }
+    return count;
 }
 
 // --- Pass 2: tinyobjloader ---------------------------------------------------------------------
@@ -186,6 +220,13 @@ class MtlReader : public tinyobj::MaterialReader {
 
     /// The MTL file of each material, in tinyobjloader's order.
     const std::vector<std::filesystem::path>& library_of_material() const { return m_library_of; }
+    /// Where each material's statements are (scan_mtl_text), in tinyobjloader's order; an empty
+    /// entry when the scan and tinyobjloader disagree on the materials.
+    const std::vector<MtlMaterialLines>& lines_of_material() const { return m_lines_of; }
+    /// Why a library that exists could not be used (a device, FIFO or directory, too large: its
+    /// name as the OBJ gives it and the read error; a bad number: no name and the scan's error,
+    /// which says where). Both empty when none.
+    const std::pair<std::string, std::string>& failure() const { return m_failure; }
 
     bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                     std::map<std::string, int>* material_map, std::string* warn,
@@ -193,22 +234,40 @@ class MtlReader : public tinyobj::MaterialReader {
         const std::filesystem::path mtl = m_dir / name;
         // Through read_file_bytes, which reads only regular files and bounds the read: an
         // `mtllib /dev/zero` must not run until memory is gone.
+        // A library that is missing is a warning (OBJ files often travel without theirs); one
+        // that exists but cannot be used is an error, reported by load_obj.
         std::string text;
+        std::vector<MtlMaterialLines> lines;
         try {
-            text = read_file_bytes(mtl);
+            text = read_file_bytes(mtl, InputKind::mesh);
         } catch (const InputError& e) {
+            std::error_code ec;
+            if (m_failure.second.empty() && std::filesystem::exists(mtl, ec))
+                m_failure = {name, e.what()};
             *warn += std::string("cannot open material library: ") + e.what() + "\n";
             return false;
         }
+        try {
+            lines = scan_mtl_text(mtl, text);
+        } catch (const InputError& e) {
+            if (m_failure.second.empty()) m_failure = {"", e.what()};
+            return false;
+        }
+        const size_t before = materials->size();
         std::istringstream stream(std::move(text));
         tinyobj::LoadMtl(material_map, materials, &stream, warn, err);
         m_library_of.resize(materials->size(), mtl);
+        if (materials->size() - before != lines.size())
+            lines.assign(materials->size() - before, {});
+        m_lines_of.insert(m_lines_of.end(), lines.begin(), lines.end());
         return true;
     }
 
   private:
     std::filesystem::path m_dir;
     std::vector<std::filesystem::path> m_library_of;
+    std::vector<MtlMaterialLines> m_lines_of;
+    std::pair<std::string, std::string> m_failure;
 };
 
 /// tinyobjloader's messages, one per line, as "FILE:LINE: message" (its "(line N.)" moved to the
@@ -233,7 +292,7 @@ std::vector<std::string> clean_messages(const std::filesystem::path& file,
         const size_t b = message.find_first_not_of(" \t\r.");
         if (b == std::string::npos) continue;
         const size_t e = message.find_last_not_of(" \t\r");
-        out.push_back(where(file, line) + message.substr(b, e - b + 1));
+        out.push_back(printable_text(where(file, line) + message.substr(b, e - b + 1)));
     }
     return out;
 }
@@ -243,6 +302,7 @@ struct ParsedObj {
     std::vector<tinyobj::shape_t> shapes;
     std::vector<tinyobj::material_t> materials;
     std::vector<std::filesystem::path> material_library;  ///< the MTL file of each material
+    std::vector<MtlMaterialLines> material_lines;         ///< where each material's lines are
     std::vector<std::string> warnings;
 };
 
@@ -274,13 +334,29 @@ bool run_tinyobj(const std::string& text, tinyobj::MaterialReader* mtl_reader, b
                             mtl_reader, triangulate, /*default_vcols_fallback=*/false);
 }
 
-ParsedObj parse_with_tinyobj(const std::filesystem::path& file, const std::string& text) {
+/// The line of the `mtllib` statement that names `library`, or 0.
+size_t mtllib_line(const LineTable& lines, std::string_view library) {
+    for (const auto& [line, names] : lines.mtllib) {
+        bool found = false;
+        for_each_token(names, [&](std::string_view name) { found |= name == library; });
+        if (found) return line;
+    }
+    return 0;
+}
+
+ParsedObj parse_with_tinyobj(const std::filesystem::path& file, const std::string& text,
+                             const LineTable& lines) {
     ParsedObj parsed;
     MtlReader mtl_reader(file.parent_path());
     std::string warn, err;
     // triangulate = false: rc10 splits quads along the shorter diagonal and ear-clips larger
     // polygons; we fan-triangulate ourselves so triangle order and shape are predictable.
-    if (!run_tinyobj(text, &mtl_reader, /*triangulate=*/false, parsed, warn, err)) {
+    const bool loaded = run_tinyobj(text, &mtl_reader, /*triangulate=*/false, parsed, warn, err);
+    if (const auto& [library, error] = mtl_reader.failure(); !library.empty())
+        fail(file, mtllib_line(lines, library), fmt::format("mtllib {}: {}", library, error));
+    else if (!error.empty())
+        throw InputError(error);
+    if (!loaded) {
         const std::vector<std::string> errors = clean_messages(file, err);
         throw InputError(errors.empty() ? where(file, 0) + "cannot parse OBJ" : errors.front());
     }
@@ -288,6 +364,8 @@ ParsedObj parse_with_tinyobj(const std::filesystem::path& file, const std::strin
     parsed.warnings = clean_messages(file, warn + err);
     parsed.material_library = mtl_reader.library_of_material();
     parsed.material_library.resize(parsed.materials.size(), file);
+    parsed.material_lines = mtl_reader.lines_of_material();
+    parsed.material_lines.resize(parsed.materials.size());
     return parsed;
 }
 
@@ -302,29 +380,12 @@ Vec3 to_vec3(const tinyobj::real_t c[3]) {
     return {static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2])};
 }
 
-/// The line of `library` that gives material `name` its `keyword` statement (map_Kd, ...), or
-/// 0 when it cannot be found: tinyobjloader keeps no line numbers.
-size_t mtl_statement_line(const std::filesystem::path& library, const std::string& name,
-                          std::string_view keyword) {
-    std::ifstream stream(library, std::ios::binary);
-    std::string text;
-    bool in_material = false;
-    for (size_t line = 1; std::getline(stream, text); ++line) {
-        std::istringstream words(text);
-        std::string first, second;
-        words >> first >> second;
-        if (first == "newmtl") in_material = second == name;
-        if (in_material && first == keyword) return line;
-    }
-    return 0;
-}
-
-/// A material's MTL texture statement (`keyword` naming `texture_name`) as an image texture,
-/// the file relative to the MTL library. Fails with the library's file:line when the image
-/// cannot be used.
-ImageTexture mtl_texture(const std::filesystem::path& library, const std::string& material,
-                         std::string_view keyword, std::string texture_name,
-                         TextureFiles& textures) {
+/// A material's MTL texture statement (`keyword` naming `texture_name`, at `line` of `library`)
+/// as an image texture, the file relative to the MTL library. Fails with the library's file:line
+/// when the image cannot be used.
+ImageTexture mtl_texture(const std::filesystem::path& library, size_t line,
+                         const std::string& material, std::string_view keyword,
+                         std::string texture_name, TextureFiles& textures) {
     // MTL files written on Windows separate directories with backslashes.
     std::replace(texture_name.begin(), texture_name.end(), '\\', '/');
     ImageTexture t;
@@ -332,15 +393,37 @@ ImageTexture mtl_texture(const std::filesystem::path& library, const std::string
     try {
         t.pyramid = textures.pyramid(library.parent_path() / texture_name);
     } catch (const InputError& e) {
-        fail(library, mtl_statement_line(library, material, keyword),
+        fail(library, line,
              fmt::format("{} of material '{}': cannot use texture \"{}\": {}", keyword, material,
                          texture_name, e.what()));
     }
     return t;
 }
 
-Material to_material(const std::filesystem::path& file, const tinyobj::material_t& m,
-                     const std::filesystem::path& library, TextureFiles& textures) {
+/// The MTL statement that sets a Material field, for messages.
+std::string_view mtl_keyword(MaterialField field, const MtlMaterialLines& lines) {
+    switch (field) {
+        case MaterialField::ka:
+            return "Ka";
+        case MaterialField::kd:
+            return "Kd";
+        case MaterialField::ks:
+        case MaterialField::reflectivity:
+            return "Ks";
+        case MaterialField::shininess:
+            return "Ns";
+        case MaterialField::transparency:
+            return lines.line_of("Tr") > lines.line_of("d") ? "Tr" : "d";
+        case MaterialField::ior:
+            return "Ni";
+        case MaterialField::emission:
+            return "Ke";
+    }
+    return "";
+}
+
+Material to_material(const tinyobj::material_t& m, const std::filesystem::path& library,
+                     const MtlMaterialLines& lines, TextureFiles& textures) {
     Material out;
     out.name = m.name;
     out.ka = to_vec3(m.ambient);
@@ -348,27 +431,27 @@ Material to_material(const std::filesystem::path& file, const tinyobj::material_
     out.ks = to_vec3(m.specular);
     out.shininess = static_cast<float>(m.shininess);
     out.ior = static_cast<float>(m.ior);
-    out.transparency = std::clamp(1.0f - static_cast<float>(m.dissolve), 0.0f, 1.0f);
+    // Not clamped: `d 2` is out of range, refused below as the scene JSON refuses it.
+    out.transparency = 1.0f - static_cast<float>(m.dissolve);
     // illum 3, 5, 6 and 7 ask for ray-traced reflection weighted by Ks (the MTL specification);
     // hikari's mirror weight is one number, so it takes Ks's mean.
     const bool mirror = m.illum == 3 || m.illum == 5 || m.illum == 6 || m.illum == 7;
     out.reflectivity =
         mirror ? std::clamp((out.ks.x + out.ks.y + out.ks.z) / 3.0f, 0.0f, 1.0f) : 0.0f;
     out.emission = to_vec3(m.emission);
-    if (!is_finite(out.ka) || !is_finite(out.kd) || !is_finite(out.ks) ||
-        !is_finite(out.emission) || !std::isfinite(out.shininess) || !std::isfinite(out.ior) ||
-        !std::isfinite(static_cast<float>(m.dissolve))) {
-        fail(file, 0, "material '" + m.name + "' has a non-finite coefficient");
+    if (const auto problem = find_material_problem(out)) {
+        const std::string_view keyword = mtl_keyword(problem->field, lines);
+        fail(library, lines.line_of(keyword),
+             fmt::format("material '{}', {}: {}", m.name, keyword, problem->message));
     }
-    if (out.emission.x < 0.0f || out.emission.y < 0.0f || out.emission.z < 0.0f)
-        fail(library, mtl_statement_line(library, m.name, "Ke"),
-             "material '" + m.name + "': Ke (emission) must not be negative");
     // map_Kd colours ka and kd alike, as a scene material's texture does; map_Ka, when present,
     // takes over ka.
     if (!m.diffuse_texname.empty())
-        out.texture = mtl_texture(library, m.name, "map_Kd", m.diffuse_texname, textures);
+        out.texture = mtl_texture(library, lines.line_of("map_Kd"), m.name, "map_Kd",
+                                  m.diffuse_texname, textures);
     if (!m.ambient_texname.empty())
-        out.ambient_texture = mtl_texture(library, m.name, "map_Ka", m.ambient_texname, textures);
+        out.ambient_texture = mtl_texture(library, lines.line_of("map_Ka"), m.name, "map_Ka",
+                                          m.ambient_texname, textures);
     return out;
 }
 
@@ -525,23 +608,27 @@ std::vector<std::array<uint32_t, 3>> triangle_positions(const std::filesystem::p
 }  // namespace
 
 MeshData load_obj(const std::filesystem::path& file, const MeshOptions& options) {
-    const std::string text = read_file_bytes(file);
+    const std::string text = read_file_bytes(file, InputKind::mesh);
+    const size_t face_lines = count_face_lines(text);
+    check_obj_memory(file, face_lines, 3 * face_lines, 0);
     const LineTable lines = scan_obj_text(file, text);
-    const ParsedObj parsed = parse_with_tinyobj(file, text);
+    check_obj_memory(file, lines.f.size(), lines.corner_count,
+                     lines.v.size() + lines.vt.size() + lines.vn_count);
+    const ParsedObj parsed = parse_with_tinyobj(file, text, lines);
 
     PolygonMesh mesh = to_polygons(file, parsed, lines);
     mesh.warnings = parsed.warnings;
     TextureFiles textures;
     for (size_t k = 0; k < parsed.materials.size(); ++k)
-        mesh.materials.push_back(
-            to_material(file, parsed.materials[k], parsed.material_library[k], textures));
+        mesh.materials.push_back(to_material(parsed.materials[k], parsed.material_library[k],
+                                             parsed.material_lines[k], textures));
     return build_mesh(file, std::move(mesh), options);
 }
 
 ObjTriangles load_obj_triangles(const std::filesystem::path& file) {
     // No line table, no number check, and tinyobjloader's own triangulation: the peers read the
     // file with tinyobjloader alone.
-    const std::string text = read_file_bytes(file);
+    const std::string text = read_file_bytes(file, InputKind::mesh);
     ParsedObj parsed;
     std::string warn, err;
     if (!run_tinyobj(text, nullptr, /*triangulate=*/true, parsed, warn, err)) {

@@ -18,7 +18,10 @@
 
 #include "hikari/core/color.h"
 #include "hikari/core/error.h"
+#include "hikari/core/memory_budget.h"
+#include "hikari/io/printable_text.h"
 #include "hikari/io/read_file.h"
+#include "hikari/io/text_number.h"
 
 namespace hikari {
 
@@ -133,11 +136,11 @@ struct PlyHeader {
 };
 
 [[noreturn]] void fail_at_line(const fs::path& file, size_t line, std::string_view what) {
-    throw InputError(fmt::format("{}:{}: {}", file.string(), line, what));
+    throw InputError(printable_text(fmt::format("{}:{}: {}", file.string(), line, what)));
 }
 
 [[noreturn]] void fail_at_byte(const fs::path& file, size_t byte, std::string_view what) {
-    throw InputError(fmt::format("{}: byte {}: {}", file.string(), byte, what));
+    throw InputError(printable_text(fmt::format("{}: byte {}: {}", file.string(), byte, what)));
 }
 
 std::vector<std::string_view> split_words(std::string_view line) {
@@ -494,6 +497,16 @@ class AsciiBody {
         }
         double value = 0;
         const auto [stop, ec] = std::from_chars(digits.data(), end, value);
+        if (type == PlyType::float32 && !digits.empty() && stop == end &&
+            (ec == std::errc() || ec == std::errc::result_out_of_range)) {
+            // The text form of a float property: its range is a float's (nan and inf pass, to be
+            // refused where the value is used, with its meaning).
+            std::string why;
+            if (std::isfinite(value) || ec != std::errc()) {
+                if (const auto f = parse_float_token(word, &why)) return *f;
+                fail(why);
+            }
+        }
         if (digits.empty() || ec != std::errc() || stop != end)
             fail(fmt::format("'{}' is not a number", word));
         return value;
@@ -826,13 +839,22 @@ void read_elements(Body& body, const PlyHeader& header, const PlyPlan& plan, Pol
     }
 }
 
-/// Room for what the header declares (counts already checked against the file's size).
-void reserve(const PlyHeader& header, const PlyPlan& plan, PolygonMesh& mesh) {
+/// Room for what the header declares (counts already checked against the file's size), after
+/// checking it against --max-memory: per vertex its attributes (up to 44 bytes) and per face a
+/// start and three corners (16 bytes), each about twice over once build_mesh has made its
+/// triangles.
+void reserve(const fs::path& file, const PlyHeader& header, const PlyPlan& plan,
+             PolygonMesh& mesh) {
+    const PlyElement* face = header.find("face");
+    const double faces = face ? static_cast<double>(face->count) : 0.0;
+    check_memory_need(2.0 * (44.0 * static_cast<double>(plan.vertex_count) + 16.0 * faces),
+                      fmt::format("{}: loading {} vertices and {} faces", file.string(),
+                                  plan.vertex_count, face ? face->count : 0));
     mesh.positions.reserve(plan.vertex_count);
     if (plan.slots.has_normals()) mesh.normals.reserve(plan.vertex_count);
     if (plan.slots.has_uvs()) mesh.uvs.reserve(plan.vertex_count);
     if (plan.slots.has_colors()) mesh.colors.reserve(plan.vertex_count);
-    if (const PlyElement* face = header.find("face")) {
+    if (face) {
         mesh.face_start.reserve(face->count + 1);
         mesh.corners.reserve(3 * face->count);
     }
@@ -847,7 +869,7 @@ PolygonMesh read_ply(const fs::path& file, std::string_view bytes) {
     check_counts_fit(file, header, bytes.size() - header.body_offset);
     if (plan.vertex_count > std::numeric_limits<uint32_t>::max())
         fail_at_line(file, header.find("vertex")->line, "more than 2^32 - 1 vertices");
-    reserve(header, plan, mesh);
+    reserve(file, header, plan, mesh);
 
     if (header.format == PlyFormat::ascii) {
         AsciiBody body(file, bytes, header.body_offset, header.body_line);
@@ -870,7 +892,7 @@ PolygonMesh read_ply(const fs::path& file, std::string_view bytes) {
 }
 
 MeshData load_ply(const fs::path& file, const MeshOptions& options) {
-    const std::string bytes = read_file_bytes(file);
+    const std::string bytes = read_file_bytes(file, InputKind::mesh);
     return build_mesh(file, read_ply(file, bytes), options);
 }
 

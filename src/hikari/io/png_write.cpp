@@ -15,6 +15,7 @@
 #include <span>
 #include <string_view>
 
+#include "hikari/core/cancel.h"
 #include "hikari/core/color.h"
 #include "hikari/core/huge_page_allocator.h"
 #include "hikari/core/parallel.h"
@@ -332,6 +333,7 @@ struct RawRows {
 };
 
 Band encode_band(const RawRows& image, int y0, int y1, bool last, SimdLevel level) {
+    throw_if_cancelled();  // SIGINT / SIGTERM: once per band of rows
     const size_t n = image.row_bytes();
     const std::vector<uint8_t> zeros(y0 == 0 ? n : 0, 0);  // the row above row 0
     Band band;

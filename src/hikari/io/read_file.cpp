@@ -10,13 +10,15 @@
 
 #include "hikari/core/error.h"
 #include "hikari/core/huge_page_allocator.h"
+#include "hikari/core/memory_budget.h"
+#include "hikari/io/printable_text.h"
 
 namespace hikari {
 
 namespace {
 
 [[noreturn]] void throw_read_error(const std::filesystem::path& path, int error) {
-    throw InputError(path.string() + ": cannot read: " + std::strerror(error));
+    throw InputError(printable_text(path.string() + ": cannot read: " + std::strerror(error)));
 }
 
 /// What a file that is not a regular one is, for the message.
@@ -36,17 +38,43 @@ const char* kind_of(std::filesystem::file_type type) {
     }
 }
 
+/// read_file_bytes() with `too_large` as the end of the message for a file over `max_bytes`.
+std::string read_bounded(const std::filesystem::path& path, std::uintmax_t max_bytes,
+                         const std::string& too_large_reason);
+
 }  // namespace
 
 std::string read_file_bytes(const std::filesystem::path& path, std::uintmax_t max_bytes) {
+    return read_bounded(path, max_bytes,
+                        fmt::format("larger than the limit of {} bytes", max_bytes));
+}
+
+std::string read_file_bytes(const std::filesystem::path& path, InputKind kind) {
+    const std::uintmax_t max_bytes = input_limit(kind);
+    const auto size = static_cast<double>(max_bytes);
+    const std::string limit = max_bytes >= (1u << 30) ? fmt::format("{:.3g} GiB", size / (1 << 30))
+                              : max_bytes >= (1u << 20)
+                                  ? fmt::format("{:.3g} MiB", size / (1 << 20))
+                                  : fmt::format("{} bytes", max_bytes);
+    return read_bounded(
+        path, max_bytes,
+        fmt::format("larger than the limit of {} for {} {} file (raise it with "
+                    "--max-input-size)",
+                    limit, kind == InputKind::image ? "an" : "a", input_kind_name(kind)));
+}
+
+namespace {
+
+std::string read_bounded(const std::filesystem::path& path, std::uintmax_t max_bytes,
+                         const std::string& too_large_reason) {
     // Refused before opening: fopen blocks on a FIFO until a writer comes, and a device such as
     // /dev/zero never ends.
     std::error_code status_error;
     const std::filesystem::file_status status = std::filesystem::status(path, status_error);
     if (!status_error && std::filesystem::exists(status) &&
         !std::filesystem::is_regular_file(status)) {
-        throw InputError(path.string() + ": cannot read: " + kind_of(status.type()) +
-                         ", not a file");
+        throw InputError(printable_text(path.string() + ": cannot read: " + kind_of(status.type()) +
+                                        ", not a file"));
     }
     // stdio rather than iostreams: POSIX fopen/fread set errno, so the message can say why.
     errno = 0;
@@ -59,10 +87,11 @@ std::string read_file_bytes(const std::filesystem::path& path, std::uintmax_t ma
     std::error_code size_error;
     const std::uintmax_t size = std::filesystem::file_size(path, size_error);
     const auto too_large = [&] {
-        throw InputError(fmt::format("{}: cannot read: larger than the limit of {} bytes",
-                                     path.string(), max_bytes));
+        throw InputError(
+            printable_text(fmt::format("{}: cannot read: {}", path.string(), too_large_reason)));
     };
     if (!size_error && size > max_bytes) too_large();
+    if (!size_error) check_memory_need(static_cast<double>(size), "reading " + path.string());
     if (!size_error && size < bytes.max_size()) {
         bytes.reserve(static_cast<size_t>(size));
         populate_pages(bytes.data(), static_cast<size_t>(size));
@@ -77,5 +106,7 @@ std::string read_file_bytes(const std::filesystem::path& path, std::uintmax_t ma
     if (std::ferror(file.get())) throw_read_error(path, errno != 0 ? errno : EIO);
     return bytes;
 }
+
+}  // namespace
 
 }  // namespace hikari

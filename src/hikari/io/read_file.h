@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <string>
 
+#include "hikari/io/input_limits.h"
+
 namespace hikari {
 
 /// The most bytes read_file_bytes() reads from one file unless told otherwise: 4 GiB, beyond
@@ -18,5 +20,10 @@ inline constexpr std::uintmax_t k_max_input_bytes = std::uintmax_t{4} << 30;
 /// files that grow while read).
 std::string read_file_bytes(const std::filesystem::path& path,
                             std::uintmax_t max_bytes = k_max_input_bytes);
+
+/// The same, bounded by the limit of `kind` (input_limits.h); a longer file is refused with
+/// "PATH: cannot read: larger than the limit of N MiB for a KIND file (raise it with
+/// --max-input-size)".
+std::string read_file_bytes(const std::filesystem::path& path, InputKind kind);
 
 }  // namespace hikari

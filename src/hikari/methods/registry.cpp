@@ -14,6 +14,7 @@
 #include "hikari/raster/scanline.h"
 #include "hikari/raster/wireframe.h"
 #include "hikari/raster/zbuffer.h"
+#include "hikari/scene/rebase.h"
 
 namespace hikari {
 
@@ -314,6 +315,8 @@ const Method* find_method(std::string_view name) {
 
 Framebuffer render_scene(const Method& method, const Scene& scene, Film film,
                          RenderSettings settings, const MethodSettings& own) {
+    if (worth_rebasing(scene.camera))
+        return render_scene(method, rebased_to_camera(scene), std::move(film), settings, own);
     if (!scene.depth_cue) return method.render(scene, std::move(film), settings, own);
     settings.aov_buffers = true;
     Framebuffer fb =
@@ -324,6 +327,7 @@ Framebuffer render_scene(const Method& method, const Scene& scene, Film film,
 }
 
 LineDrawing draw_scene(const Method& method, const Scene& scene, const MethodSettings& own) {
+    if (worth_rebasing(scene.camera)) return draw_scene(method, rebased_to_camera(scene), own);
     LineDrawing drawing = method.draw(scene, own);
     if (scene.depth_cue) return depth_cued(drawing, *scene.depth_cue);
     return drawing;

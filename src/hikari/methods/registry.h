@@ -54,12 +54,14 @@ const Method* find_method(std::string_view name);
 /// depth cueing (Fig 4.1b, frame/depth_cue.h). A depth cue needs linear colour and the depth
 /// AOV, so with one the method renders into a linear film with the AOV buffers, whatever `film`
 /// and `settings` ask, and the framebuffer returned holds linear colour. A render stopped
-/// through settings.control is returned as it is.
+/// through settings.control is returned as it is. A scene far from the origin is first rebased
+/// to its camera (scene/rebase.h), so it renders as it would at the origin.
 Framebuffer render_scene(const Method& method, const Scene& scene, Film film,
                          RenderSettings settings, const MethodSettings& own);
 
 /// The segments `method` draws for `scene` (method.draw must be set), depth-cued as the scene
-/// asks (frame/line_drawing.h, depth_cued): what its image shows, as vectors.
+/// asks (frame/line_drawing.h, depth_cued): what its image shows, as vectors. Rebased to the
+/// camera as render_scene does.
 LineDrawing draw_scene(const Method& method, const Scene& scene, const MethodSettings& own);
 
 /// The methods whose colour is a sum of shading terms, e.g. "raytrace, zbuffer".

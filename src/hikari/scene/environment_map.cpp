@@ -5,7 +5,10 @@
 #include <numbers>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "hikari/core/color.h"
+#include "hikari/core/memory_budget.h"
 
 namespace hikari {
 
@@ -20,6 +23,8 @@ EnvironmentMap::EnvironmentMap(Image image, float rotation_degrees) : m_image(st
     // Each texel's weight: its luminance times sin θ at its centre, the solid angle it covers
     // (Pharr, Jakob & Humphreys, "Physically Based Rendering", §12.6: infinite area lights).
     const int w = m_image.width, h = m_image.height;
+    // The weights and the sampling tables built from them: some 12 bytes a texel.
+    check_memory_need(12.0 * w * h, fmt::format("a {}x{} environment map's sampling tables", w, h));
     std::vector<float> weights(static_cast<size_t>(w) * static_cast<size_t>(h));
     for (int y = 0; y < h; ++y) {
         const float sin_theta =

@@ -154,6 +154,26 @@ TEST(PrimaryHits, RandomScenesMatchClosest) {
     }
 }
 
+TEST(PrimaryHits, ManySpheresThroughTheirBvhMatchClosest) {
+    // Past the lanes' limit the spheres are found one ray at a time through their BVH; the
+    // answers (hits and shadows) must stay those of SceneIntersector::closest and occluded.
+    for (uint64_t seed = 1; seed <= 3; ++seed) {
+        SCOPED_TRACE(seed);
+        Scene scene = random_scene(seed);
+        Pcg32 rng(seed, 11);
+        for (int i = 0; i < 300; ++i) {
+            Sphere s;
+            s.center = testing::random_point(rng, 3.0f);
+            s.radius = 0.05f + 0.3f * rng.next_float();
+            s.material = static_cast<uint32_t>(i % 3);
+            s.id = scene.primitive_count++;
+            s.casts_shadow = i % 5 != 0;
+            scene.spheres.push_back(s);
+        }
+        expect_blocks_match_closest(scene);
+    }
+}
+
 TEST(PrimaryHits, NoTrianglesMatchClosest) {
     Scene scene = random_scene(5);
     scene.triangles = TriangleSet{};

@@ -6,12 +6,13 @@
 // Why a block: camera rays through neighbouring pixels share their origin and nearly their
 // direction (Wald, Slusallek, Benthin & Wagner 2001, "Interactive Rendering with Coherent Ray
 // Tracing"), so they are cheapest found together: triangles through the wide BVH as 4x4 packets
-// (bvh/wide_bvh_packet.h), spheres and planes one primitive at a time against all rays of the
-// block in SIMD lanes (Boulos et al. 2007, "Packet-based Whitted and Distribution Ray Tracing",
-// which packets the camera rays of a Whitted tracer the same way). The answers are exactly those
-// of generating each ray with camera_ray and asking SceneIntersector::closest: same primitive,
-// bit-identical t, position and normals, at every SIMD level (the lane loops perform the scalar
-// code's operations in the scalar code's order, without FMA contraction).
+// (bvh/wide_bvh_packet.h), planes and a few spheres one primitive at a time against all rays of
+// the block in SIMD lanes (Boulos et al. 2007, "Packet-based Whitted and Distribution Ray
+// Tracing", which packets the camera rays of a Whitted tracer the same way), many spheres one ray
+// at a time through their BVH (bvh/sphere_bvh.h). The answers are exactly those of generating each
+// ray with camera_ray and asking SceneIntersector::closest: same primitive, bit-identical t,
+// position and normals, at every SIMD level (the lane loops perform the scalar code's operations in
+// the scalar code's order, without FMA contraction).
 
 #include <cstdint>
 #include <vector>
@@ -56,6 +57,9 @@ struct PrimaryAnalytic {
     const float* sphere_center[3];
     const float* sphere_radius;
     int32_t spheres;
+    /// Object codes the scene's spheres take: plane p is code 2 + sphere_codes + p. The scene's
+    /// sphere count, also when its spheres are not in these arrays but in the BVH.
+    int32_t sphere_codes;
     const float* plane_point[3];
     const float* plane_normal[3];
     int32_t planes;
@@ -101,6 +105,7 @@ class PrimaryHitTracer {
     struct Analytic {
         std::vector<float> sphere_center[3], sphere_radius;
         std::vector<float> plane_point[3], plane_normal[3];
+        int32_t sphere_codes = 0;
 
         void add(const Sphere& s);
         void add(const Plane& p);
@@ -122,11 +127,18 @@ class PrimaryHitTracer {
     /// Steps shared by trace() and trace_rays() once every lane's nearest hit is known (object 0
     /// in lanes that hold no ray): each hit described, and the hits' shadow rays.
     void finish(const TriangleHit* triangle_hits, PrimaryBlock& block) const;
+    /// Where the spheres live in the BVH: lane k's nearest sphere nearer than its hit so far.
+    void find_spheres(int k, PrimaryBlock& block) const;
+    /// Where the spheres live in the BVH: whether one blocks lane j's shadow ray in `chunk`.
+    bool sphere_blocks_shadow(const detail::LaneChunk& chunk, int j) const;
 
     const SceneIntersector& m_intersector;
     const Scene& m_scene;
     CameraFrame m_frame;
     SimdLevel m_level;
+    /// The spheres are few enough to be tested one at a time against all rays of a block, in
+    /// the lanes; otherwise each ray asks the sphere BVH (the same answers, found faster).
+    bool m_spheres_in_lanes = true;
     Analytic m_analytic;
     Analytic m_casters;  ///< the spheres and planes that cast shadows
     Objects m_objects;

@@ -136,7 +136,7 @@ inline void analytic_chunk(const PrimaryAnalytic& a, LaneChunk& chunk) {
             const float limit = t_max[i];
             const bool hit = denominator != 0.0f && 0.0f < t && t < limit;
             t_max[i] = hit ? t : limit;
-            object[i] = hit ? 2 + spheres + p : object[i];
+            object[i] = hit ? 2 + a.sphere_codes + p : object[i];
         }
     }
 }
