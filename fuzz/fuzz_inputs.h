@@ -56,16 +56,25 @@ inline void scene_json_input(const uint8_t* data, size_t size) {
     }
 }
 
+/// Aborts unless a loaded mesh is internally consistent: a normal (and uv, if any) per position,
+/// a material per triangle that is one of the mesh's or none, every corner a vertex.
+inline void check_mesh(const MeshData& mesh) {
+    if (mesh.normals.size() != mesh.positions.size() ||
+        mesh.material.size() != mesh.indices.size() ||
+        (!mesh.uvs.empty() && mesh.uvs.size() != mesh.positions.size()))
+        std::abort();
+    for (const auto& triangle : mesh.indices)
+        for (uint32_t i : triangle)
+            if (i >= mesh.positions.size()) std::abort();
+    for (int32_t m : mesh.material)
+        if (m < -1 || m >= static_cast<int32_t>(mesh.materials.size())) std::abort();
+}
+
 /// OBJ text -> MeshData, which must be internally consistent.
 inline void obj_input(const uint8_t* data, size_t size) {
     try {
         const MeshData mesh = load_obj(write_input(data, size, "input.obj"));
-        if (mesh.normals.size() != mesh.positions.size() ||
-            mesh.material.size() != mesh.indices.size())
-            std::abort();
-        for (const auto& triangle : mesh.indices)
-            for (uint32_t i : triangle)
-                if (i >= mesh.positions.size()) std::abort();
+        check_mesh(mesh);
     } catch (const InputError&) {
     }
 }
@@ -86,8 +95,7 @@ inline void mtl_input(const uint8_t* data, size_t size) {
                                                    obj.size(), "input-with-mtl.obj"));
         for (const Material& m : mesh.materials)
             if (find_material_problem(m)) std::abort();
-        for (int32_t m : mesh.material)
-            if (m < -1 || m >= static_cast<int32_t>(mesh.materials.size())) std::abort();
+        check_mesh(mesh);
     } catch (const InputError&) {
     }
 }
@@ -112,12 +120,7 @@ inline void ply_input(const uint8_t* data, size_t size) {
         for (uint32_t corner : polygons.corners)
             if (corner >= vertices) std::abort();
         const MeshData mesh = build_mesh("input.ply", std::move(polygons));
-        if (mesh.normals.size() != mesh.positions.size() ||
-            mesh.material.size() != mesh.indices.size())
-            std::abort();
-        for (const auto& triangle : mesh.indices)
-            for (uint32_t i : triangle)
-                if (i >= mesh.positions.size()) std::abort();
+        check_mesh(mesh);
     } catch (const InputError&) {
     }
 }
@@ -140,16 +143,7 @@ inline void image_input(const uint8_t* data, size_t size) {
 inline void gltf_input(const uint8_t* data, size_t size) {
     const auto load = [](const std::filesystem::path& path) {
         try {
-            const MeshData mesh = load_gltf(path);
-            if (mesh.normals.size() != mesh.positions.size() ||
-                mesh.material.size() != mesh.indices.size() ||
-                (!mesh.uvs.empty() && mesh.uvs.size() != mesh.positions.size()))
-                std::abort();
-            for (const auto& triangle : mesh.indices)
-                for (uint32_t i : triangle)
-                    if (i >= mesh.positions.size()) std::abort();
-            for (int32_t m : mesh.material)
-                if (m < -1 || m >= static_cast<int32_t>(mesh.materials.size())) std::abort();
+            check_mesh(load_gltf(path));
         } catch (const InputError&) {
         }
     };

@@ -19,6 +19,7 @@
 #include <string>
 #include <string_view>
 #include <thread>
+#include <tuple>
 #include <variant>
 #include <vector>
 
@@ -413,7 +414,7 @@ Scene load_render_scene(const RenderOptions& o) {
                         : load_scene_file(o.scene_file, warnings, load);
     }
     if (o.ground && !model)
-        warnings.push_back("--ground adds a plane under a model file; the scene has its own");
+        warnings.emplace_back("--ground adds a plane under a model file; the scene has its own");
     for (const std::string& w : warnings) fmt::print(stderr, "hikari: warning: {}\n", w);
     resize_camera(scene.camera, o.width, o.height);
     if (o.tessellation > 0)
@@ -984,22 +985,16 @@ void add_set_option(CLI::App& app, RenderOptions& o) {
 void add_model_options(CLI::App& render, RenderOptions& o) {
     render.add_flag("--ground", o.ground,
                     "With a model file: a checkered ground plane just under the model");
-    render
-        .add_option("--camera-from", o.camera_from,
-                    "Put the camera's eye at X,Y,Z (overrides the scene's camera or a model's "
-                    "framing)")
-        ->delimiter(',')
-        ->expected(3)
-        ->type_name("X,Y,Z")
-        ->check(real_in(-k_max_real, k_max_real));
-    render
-        .add_option("--look-at", o.look_at,
-                    "Point the camera at X,Y,Z (overrides the scene's camera or a model's "
-                    "framing)")
-        ->delimiter(',')
-        ->expected(3)
-        ->type_name("X,Y,Z")
-        ->check(real_in(-k_max_real, k_max_real));
+    for (auto [flag, field, what] :
+         {std::tuple{"--camera-from", &o.camera_from, "Put the camera's eye at X,Y,Z"},
+          std::tuple{"--look-at", &o.look_at, "Point the camera at X,Y,Z"}})
+        render
+            .add_option(flag, *field,
+                        std::string(what) + " (overrides the scene's camera or a model's framing)")
+            ->delimiter(',')
+            ->expected(3)
+            ->type_name("X,Y,Z")
+            ->check(real_in(-k_max_real, k_max_real));
     render
         .add_option("--crease-angle", o.crease_angle,
                     "Meshes without normals: smooth across edges whose faces meet at less than "

@@ -15,24 +15,14 @@
 
 #include "../io/temp_dir.h"
 
+#include "run_hikari.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-    int status;
-    std::string output;  // stdout and stderr together
-};
-
-Result run(const std::string& args) {
-    const std::string command = std::string(HIKARI_CLI_PATH) + " " + args + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    std::string output;
-    char buffer[4096];
-    while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
-    const int raw = pclose(pipe);
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), output};
-}
+using Result = hikari::testing::RunResult;
+constexpr auto run = hikari::testing::run_hikari;
 
 class HostileCli : public ::testing::Test {
   protected:

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <optional>
@@ -203,7 +204,13 @@ class CornerNormals {
     float m_min_cos = -1.0f;
 };
 
-bool same_bits(Vec3 a, Vec3 b) { return std::memcmp(&a, &b, sizeof(Vec3)) == 0; }
+/// Equal to the bit (so -0 and 0 differ, and a NaN equals itself): normals computed from the same
+/// faces in the same order share a vertex, any other pair does not.
+bool same_bits(Vec3 a, Vec3 b) {
+    return std::bit_cast<uint32_t>(a.x) == std::bit_cast<uint32_t>(b.x) &&
+           std::bit_cast<uint32_t>(a.y) == std::bit_cast<uint32_t>(b.y) &&
+           std::bit_cast<uint32_t>(a.z) == std::bit_cast<uint32_t>(b.z);
+}
 
 }  // namespace
 
