@@ -13,6 +13,7 @@
 #include <string>
 #include <thread>
 #include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -919,6 +920,41 @@ TEST_F(Cli, InfoSaysWhatAFileHolds) {
     const Result scene = run("info " + std::string(HIKARI_SOURCE_DIR) + "/scenes/whitted.json");
     EXPECT_EQ(scene.status, 0) << scene.output;
     EXPECT_NE(scene.output.find("spheres"), std::string::npos) << scene.output;
+}
+
+TEST_F(Cli, VertexColoursShadeInEveryMethod) {
+    // A quad, red on its left edge and green on its right (8-bit PLY colours), rendered as a
+    // model: every method must show red on the left half and green on the right, alike.
+    write("quad.ply",
+          "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+          "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+          "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+          "-1 -1 0 255 0 0\n1 -1 0 0 255 0\n1 1 0 0 255 0\n-1 1 0 255 0 0\n4 0 1 2 3\n");
+    std::vector<hikari::Image> images;
+    for (const char* method : {"raytrace", "zbuffer", "scanline", "path --spp 4"}) {
+        const std::string out = path(std::string(method).substr(0, 4) + ".pfm");
+        const Result r =
+            run("render " + path("quad.ply") + " --width 64 -m " + method + " -o " + out);
+        ASSERT_EQ(r.status, 0) << method << ": " << r.output;
+        const hikari::Image image = hikari::read_image(out);
+        double left = 0, right = 0;  // red minus green over the quad (no blue in it)
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x) {
+                const hikari::Vec3 c = image.at(x, y);
+                if (c.z < 0.05f) (x < image.width / 2 ? left : right) += c.x - c.y;
+            }
+        EXPECT_GT(left, 0.0) << method;
+        EXPECT_LT(right, 0.0) << method;
+        images.push_back(image);
+    }
+    // The Z-buffer and the scanline method shade as the ray tracer does (at most a few pixels
+    // on the silhouette may differ, where a pixel centre lies on an edge).
+    for (size_t k = 1; k < 3; ++k) {
+        size_t differ = 0;
+        for (size_t i = 0; i < images[0].pixels.size(); ++i)
+            differ += length(images[0].pixels[i] - images[k].pixels[i]) > 0.02f;
+        EXPECT_LE(differ, images[0].pixels.size() / 100) << k;
+    }
 }
 
 }  // namespace

@@ -192,4 +192,14 @@ TEST(MeshBuilder, ObjSmoothingGroupsAndConcaveFacesThroughTheLoader) {
 }
 
 }  // namespace
+TEST(MeshBuilder, VertexColoursFollowTheirVerticesThroughSplits) {
+    PolygonMesh m = cube();
+    for (const Vec3& p : m.positions) m.colors.push_back(p);  // colour = position
+    const MeshData out = build_mesh("cube.ply", m);
+    ASSERT_EQ(out.colors.size(), out.positions.size());
+    EXPECT_EQ(out.positions.size(), 24u);
+    for (size_t v = 0; v < out.positions.size(); ++v) EXPECT_EQ(out.colors[v], out.positions[v]);
+    EXPECT_TRUE(build_mesh("cube.ply", cube()).colors.empty());
+}
+
 }  // namespace hikari

@@ -111,6 +111,14 @@ SurfaceUv SceneIntersector::surface_uv(const SurfaceHit& hit) const {
     return out;
 }
 
+Vec3 SceneIntersector::surface_colour(const SurfaceHit& hit) const {
+    const TriangleSet& tris = m_scene.triangles;
+    if (hit.kind != HitKind::triangle || tris.colors.empty()) return Vec3(1.0f);
+    const auto& [i0, i1, i2] = tris.indices[hit.index];
+    const float w = 1.0f - hit.bary_u - hit.bary_v;
+    return w * tris.colors[i0] + hit.bary_u * tris.colors[i1] + hit.bary_v * tris.colors[i2];
+}
+
 bool SceneIntersector::occluded_by_triangles(const Ray& ray, Interval range) const {
     return m_scene.triangles.size() > 0 &&
            intersect_any(m_all_cast ? m_bvh : m_shadow_bvh, ray, range);

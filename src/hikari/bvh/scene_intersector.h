@@ -67,6 +67,10 @@ class SceneIntersector {
     /// plane's from their mappings.
     SurfaceUv surface_uv(const SurfaceHit& hit) const;
 
+    /// The vertex colour at `hit` (TriangleSet::colors): a triangle's interpolated from its
+    /// corners', white for every other hit and where the scene has none.
+    Vec3 surface_colour(const SurfaceHit& hit) const;
+
     /// The wide BVH over the scene's triangles.
     const WideBvh& bvh() const { return m_bvh; }
     /// The wide BVH over the scene's spheres.

@@ -29,6 +29,7 @@
 #include <string>
 #include <string_view>
 
+#include "hikari/core/cancel.h"
 #include "hikari/core/error.h"
 #include "hikari/core/mat4.h"
 #include "hikari/core/memory_budget.h"
@@ -664,6 +665,7 @@ class GltfReader {
         // A mirroring transform turns counter-clockwise corners clockwise: swap two back.
         const bool mirrored = determinant(world) < 0.0f;
         for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+            throw_if_cancelled();  // SIGINT / SIGTERM: once per primitive instance
             const std::string at = fmt::format("mesh {} primitive {}: ", mesh_index, p);
             add_primitive(mesh.primitives[p], world, invertible ? &normal_matrix : nullptr,
                           mirrored, at);
@@ -709,6 +711,9 @@ class GltfReader {
         if (normals) require(*normals, "NORMAL", 3, false);
         const std::optional<AccessorData> uvs = attribute("TEXCOORD_0");
         if (uvs) require(*uvs, "TEXCOORD_0", 2, true);
+        // Vertex colours (linear RGB, alpha ignored) multiply the base colour (§3.7.2.1).
+        const std::optional<AccessorData> colours = attribute("COLOR_0");
+        if (colours) require(*colours, "COLOR_0", colours->components == 4 ? 4 : 3, true);
 
         int32_t material = -1;
         if (prim.material != -1) {
@@ -732,6 +737,7 @@ class GltfReader {
         // Vertices, in world space.
         if (normals && mesh.normals.size() < base) mesh.normals.resize(base, Vec3(0.0f));
         if (uvs && mesh.uvs.size() < base) mesh.uvs.resize(base, Vec2{});
+        if (colours && mesh.colors.size() < base) mesh.colors.resize(base, Vec3(1.0f));
         for (size_t i = 0; i < n; ++i) {
             mesh.positions.push_back(transform_point(world, vec3_at(*positions, i)));
             if (normals) {
@@ -753,6 +759,16 @@ class GltfReader {
                 mesh.uvs.push_back(Vec2{u, 1.0f - v});
             } else if (!mesh.uvs.empty()) {
                 mesh.uvs.push_back(Vec2{});
+            }
+            if (colours) {
+                const Vec3 c{component(*colours, i, 0), component(*colours, i, 1),
+                             component(*colours, i, 2)};
+                if (!is_finite(c) || c.x < 0.0f || c.y < 0.0f || c.z < 0.0f)
+                    fail(m_file,
+                         fmt::format("{}COLOR_0 {} is not a finite, non-negative colour", at, i));
+                mesh.colors.push_back(c);
+            } else if (!mesh.colors.empty()) {
+                mesh.colors.emplace_back(1.0f);
             }
         }
 

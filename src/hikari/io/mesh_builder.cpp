@@ -261,6 +261,8 @@ MeshData build_mesh(const std::filesystem::path& file, PolygonMesh mesh,
     out.positions.reserve(vertex_count);
     out.normals.reserve(vertex_count);
     if (has_uvs) out.uvs.reserve(vertex_count);
+    const bool has_colors = !mesh.colors.empty();
+    if (has_colors) out.colors.reserve(vertex_count);
     out.indices.reserve(triangles.size());
     out.material.reserve(triangles.size());
     out.edge_flags.reserve(triangles.size());
@@ -285,6 +287,7 @@ MeshData build_mesh(const std::filesystem::path& file, PolygonMesh mesh,
                 out.positions.push_back(mesh.positions[v]);
                 out.normals.push_back(n);
                 if (has_uvs) out.uvs.push_back(mesh.uvs[v]);
+                if (has_colors) out.colors.push_back(mesh.colors[v]);
             }
             index[slot] = at;
         }

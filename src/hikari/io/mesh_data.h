@@ -69,6 +69,9 @@ struct MeshData {
     std::vector<Vec3> normals;
     /// Same size as `positions`, or empty when the file has no texture coordinates.
     std::vector<Vec2> uvs;
+    /// Same size as `positions`, or empty when the file has no vertex colours: linear RGB that
+    /// multiplies the material's ka and kd (as a texture's colour does).
+    std::vector<Vec3> colors;
     /// Triangles as indices into `positions`, in file face order; a polygon of n corners becomes
     /// n - 2 triangles (a fan when convex, ear clipping otherwise). Counter-clockwise is the
     /// front: the face normal is N = (P2 - P1) x (P3 - P2).

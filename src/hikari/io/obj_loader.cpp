@@ -16,6 +16,7 @@
 #include <string_view>
 #include <unordered_map>
 
+#include "hikari/core/cancel.h"
 #include "hikari/core/error.h"
 #include "hikari/core/huge_page_allocator.h"
 #include "hikari/core/memory_budget.h"
@@ -146,6 +147,7 @@ LineTable scan_obj_text(const std::filesystem::path& file, std::string_view text
     LineTable table;
     size_t pos = 0;
     for (uint32_t line = 1; pos < text.size(); ++line) {
+        if (line % 65536 == 0) throw_if_cancelled();  // SIGINT / SIGTERM
         // Lines end at \n, \r\n or a lone \r, as in tinyobjloader's safeGetline.
         const size_t end = line_end(text, pos);
         std::string_view s = text.substr(pos, end - pos);

@@ -16,6 +16,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "hikari/core/cancel.h"
 #include "hikari/core/color.h"
 #include "hikari/core/error.h"
 #include "hikari/core/memory_budget.h"
@@ -424,7 +425,10 @@ class BinaryBody {
     BinaryBody(const fs::path& file, std::string_view bytes, size_t offset, bool swap)
         : m_file(file), m_bytes(bytes), m_pos(offset), m_swap(swap) {}
 
-    void begin_item(std::string_view element, uint64_t index) { point_at(element, index, m_pos); }
+    void begin_item(std::string_view element, uint64_t index) {
+        if (index % 65536 == 0) throw_if_cancelled();  // SIGINT / SIGTERM
+        point_at(element, index, m_pos);
+    }
     /// Names an item already taken, at `byte`, for fail().
     void point_at(std::string_view element, uint64_t index, size_t byte) {
         m_item = {element, index};
@@ -479,6 +483,7 @@ class AsciiBody {
         : m_file(file), m_bytes(bytes), m_pos(offset), m_line(line) {}
 
     void begin_item(std::string_view element, uint64_t index) {
+        if (index % 65536 == 0) throw_if_cancelled();  // SIGINT / SIGTERM
         m_item = {element, index};
         skip_blanks();
         m_item_line = m_line;
@@ -640,6 +645,7 @@ void read_fixed_vertices(BinaryBody& body, const PlyElement& e, const VertexSlot
         mesh.positions.resize(e.count);
         if (slots.has_normals()) mesh.normals.resize(e.count);
         for (uint64_t i = 0; i < e.count; ++i) {
+            if (i % 65536 == 0) throw_if_cancelled();  // SIGINT / SIGTERM
             const char* r = data + i * record;
             Vec3& p = mesh.positions[i];
             std::memcpy(&p, r + offsets[slots.position[0]], sizeof(Vec3));
@@ -654,6 +660,7 @@ void read_fixed_vertices(BinaryBody& body, const PlyElement& e, const VertexSlot
     }
     std::vector<double> values(e.properties.size());
     for (uint64_t i = 0; i < e.count; ++i) {
+        if (i % 65536 == 0) throw_if_cancelled();  // SIGINT / SIGTERM
         const char* r = data + i * record;
         body.point_at("vertex", i, start + i * record);
         for (size_t k = 0; k < values.size(); ++k)

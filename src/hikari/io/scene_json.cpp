@@ -379,6 +379,15 @@ void add_uvs(TriangleSet& t, size_t base, const std::vector<Vec2>& uvs) {
     t.uvs.resize(t.positions.size());
 }
 
+/// Appends `colors` for the vertices from `base` on (the object just added): TriangleSet::colors
+/// stays empty until some object has vertex colours; the vertices before it, and those of objects
+/// without, are white (parse_scene pads the end).
+void add_colors(TriangleSet& t, size_t base, const std::vector<Vec3>& colors) {
+    if (colors.empty()) return;
+    t.colors.resize(base, Vec3(1.0f));
+    t.colors.insert(t.colors.end(), colors.begin(), colors.end());
+}
+
 /// A triangle object's optional "uvs": three [u, v] pairs.
 std::vector<Vec2> parse_triangle_uvs(const JsonNode& node) {
     if (!node.has("uvs")) return {};
@@ -453,11 +462,21 @@ void parse_mesh(SceneBuilder& b, const JsonNode& node) {
     const bool named = node.has("material");
     const bool any_unassigned =
         std::find(mesh.material.begin(), mesh.material.end(), -1) != mesh.material.end();
-    const uint32_t fallback = named || any_unassigned ? resolve_material(b, node) : 0;
+    uint32_t fallback = named || any_unassigned ? resolve_material(b, node) : 0;
+    // A mesh with vertex colours gets its own copies of its materials that read them.
+    const bool coloured = !mesh.colors.empty();
+    if (coloured && (named || any_unassigned)) {
+        Material m = b.scene.materials[fallback];
+        m.name += fmt::format(" (vertex colours of {})", file.filename().string());
+        m.vertex_colours = true;
+        b.scene.materials.push_back(std::move(m));
+        fallback = static_cast<uint32_t>(b.scene.materials.size() - 1);
+    }
     if (!named)
         for (size_t k = 0; k < mesh.materials.size(); ++k) {
             Material m = mesh.materials[k];
             m.name = fmt::format("{}:{}", file.filename().string(), m.name);
+            m.vertex_colours = coloured;
             b.scene.materials.push_back(std::move(m));
             material_of[k] = static_cast<uint32_t>(b.scene.materials.size() - 1);
         }
@@ -470,6 +489,7 @@ void parse_mesh(SceneBuilder& b, const JsonNode& node) {
         t.normals.push_back(dot(n, n) > 0.0f ? normalize(n) : mesh.normals[k]);
     }
     add_uvs(t, base, mesh.uvs);
+    add_colors(t, base, mesh.colors);
     for (size_t k = 0; k < mesh.indices.size(); ++k) {
         auto tri = mesh.indices[k];
         uint8_t edges = mesh.edge_flags[k];
@@ -571,6 +591,8 @@ Scene parse_scene(std::string_view text, const std::string& file,
     const JsonNode objects = root.at("objects");
     objects.expect_array();
     for (size_t i = 0; i < objects.value().size(); ++i) parse_object(b, objects.at(i));
+    if (!b.scene.triangles.colors.empty())
+        b.scene.triangles.colors.resize(b.scene.triangles.positions.size(), Vec3(1.0f));
     if (origin) keep_checkers_in_place(b.scene, *origin);
     if (!root.has("camera") && b.file_camera) {
         const Camera& c = *b.file_camera;

@@ -62,6 +62,9 @@ struct PixelSurface {
     bool entering;           ///< the ray meets the side `ng` points to
     Vec3 ng_front;           ///< `ng` turned toward the eye
     PixelUv tex;             ///< texture coordinates and their pixel derivatives
+    /// The corners' vertex colours (white where the scene has none), for materials with
+    /// vertex_colours.
+    Vec3 c[3] = {Vec3(1.0f), Vec3(1.0f), Vec3(1.0f)};
 };
 
 /// Half the mean edge length of an area light: the radius PCSS gives it.
@@ -139,7 +142,7 @@ struct RasterExtendedLights {
 /// The material at `p` (its texture applied) lit by every light that reaches the pixel of
 /// `shadow`.
 Vec3 shade_point(const ShadeContext& ctx, uint32_t material, Vec3 p, Vec3 n, Vec3 to_eye,
-                 const PixelUv& tex, const ShadowQuery& shadow) {
+                 const PixelUv& tex, Vec3 vertex_colour, const ShadowQuery& shadow) {
     SurfacePoint<float> s;
     s.position = p;
     s.normal = n;
@@ -147,6 +150,7 @@ Vec3 shade_point(const ShadeContext& ctx, uint32_t material, Vec3 p, Vec3 n, Vec
     s.to_eye = to_eye;
     s.u = tex.uv.x, s.v = tex.uv.y;
     s.du_dx = tex.du_dx, s.dv_dx = tex.dv_dx, s.du_dy = tex.du_dy, s.dv_dy = tex.dv_dy;
+    s.vertex_colour = vertex_colour;
     const MaterialSample<float> m =
         evaluate_material<float>(ctx.scene.materials.data(), static_cast<int32_t>(material), s);
     const auto lit = [&](size_t l, const LightSample&, const SurfacePoint<float>&, bool) {
@@ -190,6 +194,8 @@ PixelSurface surface_at(const ShadeContext& ctx, uint32_t src, int x, int y) {
             perspective_uv(clip, {ctx.tris.uvs[idx[0]], ctx.tris.uvs[idx[1]], ctx.tris.uvs[idx[2]]},
                            ndc_x, ndc_y, ctx.width, ctx.height);
     }
+    if (!ctx.tris.colors.empty() && ctx.scene.materials[ctx.tris.material[src]].vertex_colours)
+        for (int k = 0; k < 3; ++k) s.c[k] = ctx.tris.colors[idx[k]];
     s.dir = camera_ray(ctx.frame, x + 0.5f, y + 0.5f).direction;
 
     // Two-sided, as in the ray tracer: the side the eye sees is the front.
@@ -210,20 +216,22 @@ Vec3 shade_surface(const ShadeContext& ctx, const PixelSurface& s, size_t pixel)
     switch (ctx.interp) {
         case Interpolation::flat: {  // one colour per polygon, at its centroid
             const Vec3 c = (s.p[0] + s.p[1] + s.p[2]) / 3.0f;
-            return shade_point(ctx, m, c, s.ng_front, toward_viewer(ctx.frame, c), s.tex, shadow);
+            return shade_point(ctx, m, c, s.ng_front, toward_viewer(ctx.frame, c), s.tex,
+                               (s.c[0] + s.c[1] + s.c[2]) / 3.0f, shadow);
         }
         case Interpolation::gouraud: {  // shade the vertices, blend the colours
             Vec3 colour(0.0f);
             for (int k = 0; k < 3; ++k) {
                 const Vec3 to_eye = toward_viewer(ctx.frame, s.p[k]);
                 const Vec3 nk = facing(s.n[k], s.entering, s.ng_front, -to_eye);
-                colour += s.b[k] * shade_point(ctx, m, s.p[k], nk, to_eye, s.tex, shadow);
+                colour += s.b[k] * shade_point(ctx, m, s.p[k], nk, to_eye, s.tex, s.c[k], shadow);
             }
             return colour;
         }
         case Interpolation::phong:  // interpolate the normal, shade the pixel
             return shade_point(ctx, m, s.point, facing(s.n_interp, s.entering, s.ng_front, s.dir),
-                               -s.dir, s.tex, shadow);
+                               -s.dir, s.tex, s.b[0] * s.c[0] + s.b[1] * s.c[1] + s.b[2] * s.c[2],
+                               shadow);
     }
     return Vec3(0.0f);
 }

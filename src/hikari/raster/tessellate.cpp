@@ -40,6 +40,7 @@ uint32_t push_vertex(TriangleSet& out, Vec3 p, Vec3 n, Vec2 uv = {}) {
     out.positions.push_back(p);
     out.normals.push_back(n);
     out.uvs.push_back(uv);
+    if (!out.colors.empty()) out.colors.emplace_back(1.0f);  // spheres and planes: white
     return static_cast<uint32_t>(out.positions.size() - 1);
 }
 
@@ -51,7 +52,9 @@ bool is_pole(const Sphere& s, Vec3 p) { return p.x == s.center.x && p.z == s.cen
 
 /// A copy of vertex `k` of `out` with texture coordinates `uv`.
 uint32_t copy_vertex(TriangleSet& out, uint32_t k, Vec2 uv) {
-    return push_vertex(out, out.positions[k], out.normals[k], uv);
+    const uint32_t copy = push_vertex(out, out.positions[k], out.normals[k], uv);
+    if (!out.colors.empty()) out.colors[copy] = out.colors[k];
+    return copy;
 }
 
 /// The sphere's longitude/latitude mapping (geometry/surface_uv.h) on its triangles from
@@ -216,6 +219,7 @@ RasterScene tessellate_scene(const Scene& scene) {
     // without get (0, 0)).
     out.uvs = in.uvs;
     out.uvs.resize(out.positions.size());
+    out.colors = in.colors;  // empty, or one per vertex: then white for what is added below
 
     // Spheres and planes by id, to be merged with the (id-ordered) mesh triangles.
     struct Item {

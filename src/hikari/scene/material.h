@@ -28,6 +28,9 @@ struct Material {
     std::optional<Texture> texture;
     /// When set, ka is multiplied by this texture instead of `texture` (an MTL file's map_Ka).
     std::optional<Texture> ambient_texture;
+    /// Set on the materials of meshes with vertex colours (TriangleSet::colors): ka and kd are
+    /// multiplied by the colour interpolated at the surface point, as by a texture's.
+    bool vertex_colours = false;
 };
 
 }  // namespace hikari

@@ -50,6 +50,9 @@ struct TriangleSet {
     /// Texture coordinates per vertex, (0, 0) the image's lower-left corner (the OBJ and OpenGL
     /// convention); empty when no triangle has any.
     std::vector<Vec2> uvs;
+    /// Linear RGB per vertex (a PLY scan's colours), white for vertices of objects without;
+    /// empty when no object has any. Read where the triangle's material has vertex_colours.
+    std::vector<Vec3> colors;
     std::vector<std::array<uint32_t, 3>> indices;  ///< vertex indices per triangle,
                                                    ///< counter-clockwise seen from the front
     std::vector<uint32_t> material;                ///< material index per triangle

@@ -40,6 +40,15 @@ HIKARI_INLINE MaterialSample<F> evaluate_one_material(const Material& m,
             s.scalar_only = MaskOf<F>(true);
         }
     }
+    if (m.vertex_colours) {
+        // Only one-ray shading interpolates the colour (packs leave it white): packs go there.
+        if constexpr (k_is_scalar<F>) {
+            s.ka = s.ka * point.vertex_colour;
+            s.kd = s.kd * point.vertex_colour;
+        } else {
+            s.scalar_only = MaskOf<F>(true);
+        }
+    }
     if (m.ambient_texture) {
         if (texture_has_lanes<F>(*m.ambient_texture))
             s.ka = s.ka * texture_colour(*m.ambient_texture, point);

@@ -148,6 +148,8 @@ class PathIntegrator {
             const SurfaceUv uv = m_intersector.surface_uv(hit);
             point.u = uv.uv.x, point.v = uv.uv.y;
         }
+        if (m_scene.materials[hit.material].vertex_colours)
+            point.vertex_colour = m_intersector.surface_colour(hit);
         return evaluate_material<float>(m_scene.materials.data(),
                                         static_cast<int32_t>(hit.material), point);
     }

@@ -324,6 +324,8 @@ class WaveTracer {
             h.du_dx = footprint.du_dx, h.dv_dx = footprint.dv_dx;
             h.du_dy = footprint.du_dy, h.dv_dy = footprint.dv_dy;
         }
+        if (m_ctx.shading.materials[hit.material].vertex_colours)
+            h.vertex_colour = m_ctx.intersector.surface_colour(hit);
         const ShadowRays visible{m_ctx.intersector, lit_known, lit};
         return shade_whitted_hit<float>(m_ctx.shading, h, true, visible).direct;
     }

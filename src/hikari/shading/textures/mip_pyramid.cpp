@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "hikari/core/cancel.h"
 #include "hikari/core/parallel.h"
 
 namespace hikari {
@@ -77,6 +78,7 @@ MipPyramid build_mip_pyramid(Image base) {
     MipPyramid pyramid;
     pyramid.levels.push_back(std::move(base));
     while (pyramid.levels.back().width > 1 || pyramid.levels.back().height > 1) {
+        throw_if_cancelled();  // SIGINT / SIGTERM: once per level
         const Image& last = pyramid.levels.back();
         Image next = box_downsample(last, next_mip_size(last.width), next_mip_size(last.height));
         pyramid.levels.push_back(std::move(next));
