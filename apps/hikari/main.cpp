@@ -478,16 +478,17 @@ void write_progressive_snapshot(const std::string& output, const Image& mean,
     write_colour(output, mean, o);
 }
 
-/// Refuses, before any work is done, an SVG output that the method or --aov cannot give.
+/// Refuses, before any work is done, an SVG output that the method or --aov cannot give: a
+/// command-line mistake (exit 2), like any other -o mistake.
 void check_svg_output(const std::string& output, const Method& method, Aov aov) {
     if (!is_svg_path(output)) return;
     if (!method.draw)
-        throw InputError(
+        throw UsageError(
             fmt::format("{}: SVG output is for the line methods (wireframe, "
                         "hiddenline); method {} draws no lines",
                         output, method.name));
     if (aov != Aov::color)
-        throw InputError(
+        throw UsageError(
             fmt::format("{}: SVG output holds the lines' colours; --aov {} needs an "
                         "image format",
                         output, choice_name<Aov>(k_aov_choices, aov)));
@@ -1021,7 +1022,12 @@ void add_output_development_options(CLI::App& render, RenderOptions& o) {
     render
         .add_option("--bit-depth", o.bit_depth,
                     "Bits per sample of the sRGB files: 8, or 16 for .png and .ppm")
-        ->check(CLI::IsMember({8, 16}))
+        ->check(CLI::Validator(
+            [](const std::string& bits) {
+                return bits == "8" || bits == "16" ? std::string()
+                                                   : std::string("expected 8 or 16");
+            },
+            "8|16"))
         ->capture_default_str();
 }
 

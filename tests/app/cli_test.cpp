@@ -236,13 +236,13 @@ TEST_F(Cli, SvgForAnotherMethodIsAnErrorAndWritesNothing) {
     for (const char* method : {"raytrace", "zbuffer", "depthsort"}) {
         const Result r =
             run(std::string("render --width 16 -m ") + method + " -o " + path("x.svg"));
-        EXPECT_EQ(r.status, 1) << r.output;
+        EXPECT_EQ(r.status, 2) << r.output;  // an -o mistake: a usage error
         EXPECT_EQ(r.output.rfind("hikari: error: ", 0), 0u) << r.output;
         EXPECT_NE(r.output.find("SVG output is for the line methods"), std::string::npos)
             << r.output;
     }
     const Result depth = run("render --width 16 -m wireframe --aov depth -o " + path("x.svg"));
-    EXPECT_EQ(depth.status, 1) << depth.output;
+    EXPECT_EQ(depth.status, 2) << depth.output;
     EXPECT_EQ(file_count(), 0u);
 }
 
@@ -479,7 +479,8 @@ TEST_F(Cli, BitDepthSixteenIsForPngAndPpm) {
     EXPECT_NE(exr.output.find("hikari: error: --bit-depth 16: " + path("x.exr")), std::string::npos)
         << exr.output;
     EXPECT_EQ(run("render --bit-depth 16 -o " + path("x.jpg")).status, 2);
-    expect_usage_error("--bit-depth 12", "--bit-depth");
+    expect_usage_error("--bit-depth 12", "--bit-depth: expected 8 or 16");
+    expect_usage_error("--bit-depth nan", "--bit-depth: expected 8 or 16");
     EXPECT_EQ(file_count(), 2u);  // x.png and y.png
 }
 
