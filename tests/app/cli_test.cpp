@@ -800,8 +800,9 @@ namespace {
 
 TEST_F(Cli, RasterStatsCountTheStages) {
     write("scene.json", k_two_spheres);
-    const Result z = run("render " + path("scene.json") + " -m zbuffer --cull back --stats -q -o " +
-                         path("z.png"));
+    const Result z =
+        run("render " + path("scene.json") +
+            " -m zbuffer --tessellation 16 --cull back --stats -q -o " + path("z.png"));
     EXPECT_EQ(z.status, 0) << z.output;
     EXPECT_NE(z.output.find("triangles in"), std::string::npos) << z.output;
     EXPECT_NE(z.output.find("fragments depth-tested"), std::string::npos) << z.output;

@@ -1,6 +1,7 @@
 #include "hikari/raster/scanline.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <cmath>
 #include <vector>
@@ -145,6 +146,22 @@ TEST(Scanline, SameResultForAnyImageSizeOfTheSameScene) {
     const auto tris = testing::random_triangles(3, 50, 80);
     const VisibilityBuffer reference = ray_cast_visibility(tris, 133, 71);
     EXPECT_LE(mismatches(scanline_visibility(tris, 133, 71), reference), 5);
+}
+
+TEST(Scanline, TallTrianglesSeedEveryBandTheyCrossWhateverTheThreadCount) {
+    // each band's active edge list starts from the edges that began above it (its seed list):
+    // triangles many bands tall, starting and ending mid-band, must come out as the ray caster
+    // sees them, and the same on one thread as on all
+    std::vector<ScreenTriangle> tris;
+    for (int k = 0; k < 24; ++k) {
+        const float x = 10.0f * k, top = 3.3f + 7.0f * k, z = 0.05f * float(k % 7);
+        tris.push_back(make_triangle({x, top, z}, {x + 40.0f, top + 5.0f, 0.5f},
+                                     {x + 12.0f, top + 180.0f, 0.9f - z}));
+    }
+    expect_matches_ray_caster(tris, 131);
+    const VisibilityBuffer all = scanline_visibility(tris, k_size, k_size);
+    const tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    EXPECT_EQ(scanline_visibility(tris, k_size, k_size).triangle, all.triangle);
 }
 
 }  // namespace

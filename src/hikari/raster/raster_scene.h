@@ -1,6 +1,7 @@
 #pragma once
-// The scene as the rasterizer sees it: nothing but triangles. Spheres and planes are tessellated
-// (raster/tessellate.h), meshes keep their own triangles.
+// The scene as the rasterizer sees it: triangles. Spheres and planes are tessellated
+// (raster/tessellate.h), meshes keep their own triangles; only the Z-buffer may keep spheres
+// exact (raster/sphere_raster.h), since it needs nothing but a depth per pixel.
 
 #include <limits>
 #include <vector>
@@ -18,6 +19,9 @@ struct RasterScene {
     /// The infinite planes tessellated into `triangles`, as the scene gave them: the view setup
     /// finds the nearest of their visible points exactly (make_raster_view).
     std::vector<Plane> planes;
+    /// The spheres kept exact rather than tessellated (SphereGeometry::exact), in scene order;
+    /// empty when they are in `triangles`.
+    std::vector<Sphere> spheres;
     /// The distance from the eye to the nearest mesh triangle or sphere that the view could
     /// show (tessellate_scene: triangles wholly behind the eye, or edge-on with the eye in their
     /// plane, are left out); infinity for none.

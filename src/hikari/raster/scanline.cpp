@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
+#include <span>
+#include <utility>
 #include <vector>
 
 #include <tbb/blocked_range.h>
@@ -21,18 +24,25 @@ constexpr int k_band_rows = 16;
 constexpr uint32_t k_no_edge = UINT32_MAX;
 
 /// One non-horizontal triangle edge in the edge table (ET), from its upper end point down.
+/// Its upper end point is a vertex of a ScreenTriangle, so float holds it exactly (40 bytes a
+/// record rather than 56). No member initializers: the table is allocated without zeroing it,
+/// then written by several threads, which spreads the page faults of a large table over them.
 struct EdgeRecord {
-    double x_top = 0, y_top = 0, z_top = 0;
-    double dx_dy = 0;                 ///< x step per scanline
-    double dz_dy = 0;                 ///< depth step per scanline along the edge
-    int first_row = 0, last_row = 0;  ///< rows (inclusive, clipped to the image) it is active on
-    uint32_t triangle = 0;
+    float x_top, y_top, z_top;
+    double dx_dy;             ///< x step per scanline
+    double dz_dy;             ///< depth step per scanline along the edge
+    int first_row, last_row;  ///< rows (inclusive, clipped to the image) it is active on
+    uint32_t triangle;
 };
 
-/// An entry of the active edge list (AEL): an edge with its intercept at the current scanline.
+/// An entry of the active edge list (AEL): an edge with its intercept at the current scanline,
+/// carrying the steps and the end row it is updated with, so that the per-row update and the
+/// segment pairing read the AEL alone and never the (much larger, randomly indexed) edge table.
 struct ActiveEdge {
     double x = 0, z = 0;
-    uint32_t edge = 0;
+    double dx_dy = 0, dz_dy = 0;
+    int last_row = 0;
+    uint32_t triangle = 0;
 };
 
 /// A scan segment: the intersection of the scan plane with one triangle, covering the pixel
@@ -54,10 +64,17 @@ struct EndPoint {
 /// The edge table: edges bucketed by the first scanline they are active on, plus each triangle's
 /// depth slope along x.
 struct EdgeTable {
-    std::vector<EdgeRecord> edges;
+    std::unique_ptr<EdgeRecord[]> edge_storage;
+    std::span<EdgeRecord> edges;
     std::vector<uint32_t> order;  ///< edge indices grouped by first_row
     std::vector<uint32_t>
-        bucket_begin;           ///< order[bucket_begin[j] .. bucket_begin[j + 1]) start on row j
+        bucket_begin;  ///< order[bucket_begin[j] .. bucket_begin[j + 1]) start on row j
+    /// Per band, the edges already active on its first row (started above it), in edge order:
+    /// band_seed[band_seed_begin[b] .. band_seed_begin[b + 1]) seed band b's AEL. Listing them
+    /// here once costs the edges' band crossings; finding them at every band start by a scan of
+    /// the whole table cost (bands × edges), most of the pass on large meshes.
+    std::vector<uint32_t> band_seed;
+    std::vector<uint32_t> band_seed_begin;
     std::vector<double> dz_dx;  ///< per ScreenTriangle
 };
 
@@ -91,8 +108,7 @@ struct RowRecorder {
             trace.starting.push_back(
                 {e.triangle, e.x_top, e.y_top, e.z_top, e.dx_dy, e.dz_dy, e.first_row, e.last_row});
         }
-        for (const ActiveEdge& a : s.active)
-            trace.active.push_back({table.edges[a.edge].triangle, a.x, a.z});
+        for (const ActiveEdge& a : s.active) trace.active.push_back({a.triangle, a.x, a.z});
         std::stable_sort(trace.active.begin(), trace.active.end(),
                          [](const auto& a, const auto& b) { return a.x < b.x; });
         for (const Segment& g : s.segments)
@@ -119,36 +135,70 @@ PolygonVertex to_vertex(const ScreenVertex& v) {
     return {v.position.x, v.position.y, v.position.z};
 }
 
-/// Alg 4.1, step 1 (the triangles arrive projected): the edge table.
+/// Alg 4.1, step 1 for triangle t: writes its edges that cross a scanline into `out` and returns
+/// how many (0 to 3); `dz_dx` gets its depth slope along x.
+int triangle_edges(const ScreenTriangle& triangle, uint32_t t, int height, EdgeRecord* out,
+                   double& dz_dx) {
+    const PolygonVertex a = to_vertex(triangle.v[0]);
+    const PolygonVertex b = to_vertex(triangle.v[1]);
+    const PolygonVertex c = to_vertex(triangle.v[2]);
+    const double area2 = signed_area2(a, b, c);
+    if (!std::isfinite(area2) || area2 == 0 || !std::isfinite(a.z + b.z + c.z))
+        return 0;  // edge-on or invalid: covers no pixel centre
+    // z = z_a + dz_dx (x - x_a) + dz_dy (y - y_a) (the plane stays planar after projection)
+    dz_dx = ((b.z - a.z) * (c.y - a.y) - (c.z - a.z) * (b.y - a.y)) / area2;
+    const PolygonVertex corners[3] = {a, b, c};
+    int count = 0;
+    for (int k = 0; k < 3; ++k) {
+        const auto [top, bottom] = canonical_edge(corners[k], corners[(k + 1) % 3]);
+        const PixelRange rows = centre_range(top.y, bottom.y, height);
+        if (rows.empty()) continue;  // horizontal, between two scanlines, or off-screen
+        EdgeRecord& e = out[count++];
+        e.x_top = static_cast<float>(top.x);
+        e.y_top = static_cast<float>(top.y);
+        e.z_top = static_cast<float>(top.z);
+        e.dx_dy = (bottom.x - top.x) / (bottom.y - top.y);
+        e.dz_dy = (bottom.z - top.z) / (bottom.y - top.y);
+        e.first_row = rows.begin;
+        e.last_row = rows.end - 1;
+        e.triangle = t;
+    }
+    return count;
+}
+
+/// Alg 4.1, step 1 (the triangles arrive projected): the edge table. The edges are listed in
+/// triangle order whatever the thread count: each fixed chunk of triangles counts its edges, then
+/// writes them at its prefix-sum offset.
 EdgeTable build_edge_table(std::span<const ScreenTriangle> triangles, int height) {
     EdgeTable table;
     table.dz_dx.assign(triangles.size(), 0.0);
-    for (size_t t = 0; t < triangles.size(); ++t) {
-        const PolygonVertex a = to_vertex(triangles[t].v[0]);
-        const PolygonVertex b = to_vertex(triangles[t].v[1]);
-        const PolygonVertex c = to_vertex(triangles[t].v[2]);
-        const double area2 = signed_area2(a, b, c);
-        if (!std::isfinite(area2) || area2 == 0 || !std::isfinite(a.z + b.z + c.z))
-            continue;  // edge-on or invalid: covers no pixel centre
-        // z = z_a + dz_dx (x - x_a) + dz_dy (y - y_a) (the plane stays planar after projection)
-        table.dz_dx[t] = ((b.z - a.z) * (c.y - a.y) - (c.z - a.z) * (b.y - a.y)) / area2;
-        const PolygonVertex corners[3] = {a, b, c};
-        for (int k = 0; k < 3; ++k) {
-            const auto [top, bottom] = canonical_edge(corners[k], corners[(k + 1) % 3]);
-            const PixelRange rows = centre_range(top.y, bottom.y, height);
-            if (rows.empty()) continue;  // horizontal, between two scanlines, or off-screen
-            EdgeRecord e;
-            e.x_top = top.x;
-            e.y_top = top.y;
-            e.z_top = top.z;
-            e.dx_dy = (bottom.x - top.x) / (bottom.y - top.y);
-            e.dz_dy = (bottom.z - top.z) / (bottom.y - top.y);
-            e.first_row = rows.begin;
-            e.last_row = rows.end - 1;
-            e.triangle = static_cast<uint32_t>(t);
-            table.edges.push_back(e);
-        }
-    }
+    constexpr size_t k_chunk = 4096;
+    const size_t chunks = (triangles.size() + k_chunk - 1) / k_chunk;
+    std::vector<size_t> chunk_begin(chunks + 1, 0);
+    auto for_each_chunk = [&](auto&& body) {
+        hikari::parallel_for(
+            tbb::blocked_range<size_t>(0, chunks, 1), [&](const tbb::blocked_range<size_t>& r) {
+                for (size_t c = r.begin(); c != r.end(); ++c)
+                    body(c, c * k_chunk, std::min(triangles.size(), (c + 1) * k_chunk));
+            });
+    };
+    for_each_chunk([&](size_t c, size_t t0, size_t t1) {
+        EdgeRecord three[3];
+        size_t count = 0;
+        for (size_t t = t0; t < t1; ++t)
+            count += triangle_edges(triangles[t], static_cast<uint32_t>(t), height, three,
+                                    table.dz_dx[t]);
+        chunk_begin[c + 1] = count;
+    });
+    for (size_t c = 0; c < chunks; ++c) chunk_begin[c + 1] += chunk_begin[c];
+    table.edge_storage = std::make_unique_for_overwrite<EdgeRecord[]>(chunk_begin[chunks]);
+    table.edges = {table.edge_storage.get(), chunk_begin[chunks]};
+    for_each_chunk([&](size_t c, size_t t0, size_t t1) {
+        EdgeRecord* out = table.edges.data() + chunk_begin[c];
+        double dz_dx = 0;
+        for (size_t t = t0; t < t1; ++t)
+            out += triangle_edges(triangles[t], static_cast<uint32_t>(t), height, out, dz_dx);
+    });
     // bucket the edges by starting scanline (counting sort)
     table.bucket_begin.assign(static_cast<size_t>(height) + 1, 0);
     for (const EdgeRecord& e : table.edges) ++table.bucket_begin[e.first_row + 1];
@@ -157,6 +207,24 @@ EdgeTable build_edge_table(std::span<const ScreenTriangle> triangles, int height
     std::vector<uint32_t> cursor(table.bucket_begin.begin(), table.bucket_begin.end() - 1);
     for (size_t i = 0; i < table.edges.size(); ++i)
         table.order[cursor[table.edges[i].first_row]++] = static_cast<uint32_t>(i);
+    // the band seeds (counting sort again): edge e seeds every band whose first row lies in
+    // (first_row, last_row]
+    const int bands = (height + k_band_rows - 1) / k_band_rows;
+    auto seeded_bands = [](const EdgeRecord& e) {
+        return std::pair{e.first_row / k_band_rows + 1, e.last_row / k_band_rows + 1};
+    };
+    table.band_seed_begin.assign(static_cast<size_t>(bands) + 1, 0);
+    for (const EdgeRecord& e : table.edges) {
+        const auto [b0, b1] = seeded_bands(e);
+        for (int b = b0; b < b1; ++b) ++table.band_seed_begin[b + 1];
+    }
+    for (int b = 0; b < bands; ++b) table.band_seed_begin[b + 1] += table.band_seed_begin[b];
+    table.band_seed.resize(table.band_seed_begin[bands]);
+    cursor.assign(table.band_seed_begin.begin(), table.band_seed_begin.end() - 1);
+    for (size_t i = 0; i < table.edges.size(); ++i) {
+        const auto [b0, b1] = seeded_bands(table.edges[i]);
+        for (int b = b0; b < b1; ++b) table.band_seed[cursor[b]++] = static_cast<uint32_t>(i);
+    }
     return table;
 }
 
@@ -164,14 +232,15 @@ EdgeTable build_edge_table(std::span<const ScreenTriangle> triangles, int height
 ActiveEdge activate(const EdgeTable& table, uint32_t edge, int row) {
     const EdgeRecord& e = table.edges[edge];
     const double dy = (row + 0.5) - e.y_top;
-    return {e.x_top + dy * e.dx_dy, e.z_top + dy * e.dz_dy, edge};
+    return {
+        e.x_top + dy * e.dx_dy, e.z_top + dy * e.dz_dy, e.dx_dy, e.dz_dy, e.last_row, e.triangle};
 }
 
 /// Alg 4.1: the scan segments of this row, pairing each triangle's two active edges.
 void form_segments(const EdgeTable& table, int width, Scratch& s) {
     s.segments.clear();
     for (uint32_t k = 0; k < s.active.size(); ++k) {
-        const uint32_t t = table.edges[s.active[k].edge].triangle;
+        const uint32_t t = s.active[k].triangle;
         if (s.pending_edge[t] == k_no_edge) {
             s.pending_edge[t] = k;
             continue;
@@ -184,7 +253,7 @@ void form_segments(const EdgeTable& table, int width, Scratch& s) {
         if (centre_range(l->x, r->x, width).empty()) continue;
         s.segments.push_back({l->x, r->x, l->z, table.dz_dx[t], t});
     }
-    for (const ActiveEdge& a : s.active) s.pending_edge[table.edges[a.edge].triangle] = k_no_edge;
+    for (const ActiveEdge& a : s.active) s.pending_edge[a.triangle] = k_no_edge;
 }
 
 /// Nearer of two open segments at x: smaller depth, then the one getting nearer to the right,
@@ -273,9 +342,9 @@ template <class Observer>
 void scan_band(const EdgeTable& table, int width, int row_begin, int row_end, Scratch& s,
                uint32_t* pixels, const Observer& observer) {
     s.active.clear();
-    for (uint32_t e = 0; e < table.edges.size(); ++e)
-        if (table.edges[e].first_row < row_begin && table.edges[e].last_row >= row_begin)
-            s.active.push_back(activate(table, e, row_begin));
+    const int band = row_begin / k_band_rows;
+    for (uint32_t k = table.band_seed_begin[band]; k < table.band_seed_begin[band + 1]; ++k)
+        s.active.push_back(activate(table, table.band_seed[k], row_begin));
     for (int j = row_begin; j < row_end; ++j) {
         // add the edges that start on this scanline (the ET bucket)
         for (uint32_t k = table.bucket_begin[j]; k < table.bucket_begin[j + 1]; ++k)
@@ -286,9 +355,11 @@ void scan_band(const EdgeTable& table, int width, int row_begin, int row_end, Sc
         // update the AEL: drop the edges ending here, step the rest to the next scanline
         size_t kept = 0;
         for (const ActiveEdge& a : s.active) {
-            const EdgeRecord& e = table.edges[a.edge];
-            if (e.last_row <= j) continue;
-            s.active[kept++] = {a.x + e.dx_dy, a.z + e.dz_dy, a.edge};
+            if (a.last_row <= j) continue;
+            ActiveEdge& stepped = s.active[kept++];
+            stepped = a;
+            stepped.x += a.dx_dy;
+            stepped.z += a.dz_dy;
         }
         s.active.resize(kept);
     }

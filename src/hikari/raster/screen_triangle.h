@@ -35,11 +35,14 @@ struct ScreenTriangle {
 inline constexpr uint32_t k_no_triangle = std::numeric_limits<uint32_t>::max();
 
 /// The result of hidden-surface removal: for each pixel centre, the ScreenTriangle seen there.
-/// Row-major, row 0 at the top.
+/// Row-major, row 0 at the top. The Z-buffer may also draw spheres exactly
+/// (raster/sphere_raster.h): values from the ScreenTriangle count n on name them, n + k for
+/// sphere k of RasterScene::spheres; every reader of a zbuffer's buffer must expect them.
 struct VisibilityBuffer {
     int width = 0;
     int height = 0;
-    std::vector<uint32_t> triangle;  ///< index into the ScreenTriangle list, or k_no_triangle
+    /// index into the ScreenTriangle list, n + sphere index, or k_no_triangle
+    std::vector<uint32_t> triangle;
 };
 
 }  // namespace hikari

@@ -7,9 +7,12 @@
 
 #include "hikari/frame/tiles.h"
 #include "hikari/geometry/ray_offset.h"
+#include "hikari/geometry/surface_uv.h"
 #include "hikari/raster/cull.h"
 #include "hikari/raster/shadow_map.h"
 #include "hikari/raster/shadow_volume.h"
+#include "hikari/raster/sphere_raster.h"
+#include "hikari/raster/tessellate.h"
 #include "hikari/shading/direct.h"
 #include "hikari/shading/lights.h"
 #include "hikari/shading/material_eval.h"
@@ -37,7 +40,37 @@ struct ShadeContext {
     int light_samples;                              ///< specular samples per area light
     bool has_area_lights = false;                   ///< camera rays may see a light's face
     const EnvironmentLight* environment = nullptr;  ///< what pixels without a surface show
+    /// The camera rays the Z-buffer drew exact spheres with (ps.scene.spheres); visibility
+    /// values from ps.triangles.size() on name those spheres.
+    PixelRays sphere_rays;
 };
+
+/// The exact sphere that visibility value `t` names, or null for a screen triangle.
+const Sphere* sphere_named(const ShadeContext& ctx, uint32_t t) {
+    const size_t first = ctx.ps.triangles.size();
+    return t >= first && t - first < ctx.ps.scene.spheres.size() ? &ctx.ps.scene.spheres[t - first]
+                                                                 : nullptr;
+}
+
+/// What the centre of pixel (x, y) sees of an exact sphere: the ray tracer's hit
+/// (SceneIntersector::describe_hit), its normal (p − c) / r turned toward the eye.
+struct SpherePixel {
+    Ray ray;
+    Vec3 point;
+    Vec3 normal_front;
+};
+
+SpherePixel sphere_pixel(const ShadeContext& ctx, const Sphere& s, int x, int y) {
+    SpherePixel out;
+    float t = pixel_sphere_hit(ctx.sphere_rays, s, x, y, out.ray);
+    // The Z-buffer drew the sphere here, so the ray meets it; should rounding say otherwise,
+    // the ray's closest approach to the centre stands in.
+    if (!(t == t)) t = std::max(0.0f, dot(s.center - out.ray.origin, out.ray.direction));
+    out.point = out.ray.at(t);
+    const Vec3 n = (out.point - s.center) / s.radius;
+    out.normal_front = dot(n, out.ray.direction) < 0.0f ? n : -n;
+    return out;
+}
 
 /// Where a pixel's shadows are decided: its visible point, face normal toward the eye, and
 /// index. Every light's visibility is asked there, also when the colour is computed elsewhere
@@ -250,6 +283,47 @@ std::optional<Vec3> light_face_at(const ShadeContext& ctx, int x, int y, float d
     return light_face_seen(ctx.scene.lights, ray.origin, ray.direction, depth);
 }
 
+/// Texture coordinates of sphere `s` at `p` (normal `n`) seen by pixel (x, y), as the ray tracer
+/// maps them (geometry/surface_uv.h), and how they move per pixel step: the neighbouring pixels'
+/// rays meet the tangent plane at p, and the surface gradients turn those steps into uv.
+PixelUv sphere_pixel_uv(const ShadeContext& ctx, const Sphere& s, Vec3 p, Vec3 n, int x, int y) {
+    const SurfaceUv su = sphere_uv(s, p);
+    PixelUv out;
+    out.uv = su.uv;
+    const auto step = [&](int dx, int dy) {
+        const Ray r = ctx.sphere_rays.at(x + dx, y + dy);
+        const float denominator = dot(n, r.direction);
+        return denominator == 0.0f ? Vec3(0.0f) : r.at(dot(p - r.origin, n) / denominator) - p;
+    };
+    const Vec3 along_x = step(1, 0), along_y = step(0, 1);
+    out.du_dx = dot(su.du_dp, along_x), out.dv_dx = dot(su.dv_dp, along_x);
+    out.du_dy = dot(su.du_dp, along_y), out.dv_dy = dot(su.dv_dp, along_y);
+    return out;
+}
+
+/// Colour and AOVs of a pixel that sees exact sphere `s`: shaded per pixel (it has no polygons
+/// to be flat or Gouraud shaded) by the code that shades triangles.
+void shade_sphere_pixel(const ShadeContext& ctx, const Sphere& s, int x, int y, size_t pixel,
+                        Framebuffer& fb) {
+    const SpherePixel sp = sphere_pixel(ctx, s, x, y);
+    const float eye_distance = camera_distance(ctx.frame, sp.point);
+    const std::optional<Vec3> light =
+        ctx.has_area_lights ? light_face_at(ctx, x, y, eye_distance) : std::nullopt;
+    if (light) {
+        fb.set_color(pixel, *light);
+    } else {
+        const PixelUv tex = ctx.scene.materials[s.material].texture
+                                ? sphere_pixel_uv(ctx, s, sp.point, sp.normal_front, x, y)
+                                : PixelUv{};
+        const ShadowQuery shadow{sp.point, sp.normal_front, pixel};
+        fb.set_color(pixel, shade_point(ctx, s.material, sp.point, sp.normal_front,
+                                        -sp.ray.direction, tex, Vec3(1.0f), shadow));
+    }
+    fb.depth[pixel] = eye_distance;
+    fb.id[pixel] = s.id + 1;
+    fb.normal[pixel] = sp.normal_front;
+}
+
 /// Colour and AOVs of every pixel of `tile`.
 void shade_tile(const ShadeContext& ctx, const VisibilityBuffer& vis, const Tile& tile,
                 Framebuffer& fb) {
@@ -261,6 +335,10 @@ void shade_tile(const ShadeContext& ctx, const VisibilityBuffer& vis, const Tile
                 const std::optional<Vec3> light =
                     ctx.has_area_lights ? light_face_at(ctx, x, y, k_infinity) : std::nullopt;
                 fb.set_color(pixel, light ? *light : background_at(ctx, x, y));
+                continue;
+            }
+            if (const Sphere* sphere = sphere_named(ctx, t)) {
+                shade_sphere_pixel(ctx, *sphere, x, y, pixel, fb);
                 continue;
             }
             const PixelSurface s = surface_at(ctx, ctx.ps.triangles[t].source, x, y);
@@ -300,6 +378,11 @@ std::vector<float> visible_depth(const ShadeContext& ctx, const VisibilityBuffer
                 const size_t pixel = static_cast<size_t>(y) * ctx.width + x;
                 const uint32_t t = vis.triangle[pixel];
                 if (t == k_no_triangle) continue;
+                if (const Sphere* sphere = sphere_named(ctx, t)) {
+                    depth[pixel] =
+                        camera_distance(ctx.frame, sphere_pixel(ctx, *sphere, x, y).point);
+                    continue;
+                }
                 const PixelSurface s = surface_at(ctx, ctx.ps.triangles[t].source, x, y);
                 depth[pixel] = camera_distance(ctx.frame, s.point);
             }
@@ -310,9 +393,21 @@ std::vector<float> visible_depth(const ShadeContext& ctx, const VisibilityBuffer
 /// The bounds of every triangle seen at some pixel centre: where shadows can be seen.
 Aabb visible_bounds(const ProjectedScene& ps, const VisibilityBuffer& vis) {
     std::vector<uint8_t> seen(ps.scene.triangles.size(), 0);
+    std::vector<uint8_t> sphere_seen(ps.scene.spheres.size(), 0);
     for (uint32_t t : vis.triangle)
-        if (t != k_no_triangle) seen[ps.triangles[t].source] = 1;
+        if (t == k_no_triangle)
+            continue;
+        else if (t >= ps.triangles.size())
+            sphere_seen[t - ps.triangles.size()] = 1;  // an exact sphere (VisibilityBuffer)
+        else
+            seen[ps.triangles[t].source] = 1;
     Aabb bounds;
+    for (size_t k = 0; k < sphere_seen.size(); ++k)
+        if (sphere_seen[k]) {
+            const Sphere& s = ps.scene.spheres[k];
+            bounds.extend(s.center - Vec3(s.radius));
+            bounds.extend(s.center + Vec3(s.radius));
+        }
     for (size_t t = 0; t < seen.size(); ++t)
         if (seen[t])
             for (uint32_t i : ps.scene.triangles.indices[t])
@@ -405,6 +500,7 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
         environment_sh.push_back(env ? std::optional(project_environment(*env)) : std::nullopt);
     }
     ctx.environment_sh = &environment_sh;
+    ctx.sphere_rays = camera_pixel_rays(scene.camera, ps.view);
     if (scene.show_background) {
         ctx.environment = find_environment(scene.lights);
         ctx.has_area_lights = has_area_light(scene.lights);
@@ -424,14 +520,19 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
         ctx.shadow_maps = &maps;
     } else if (ctx.shadows == ShadowMode::volume) {
         const std::vector<float> depth = visible_depth(ctx, vis);
-        const std::vector<uint8_t> casters = shadow_casting_triangles(scene, ps.scene);
+        // Shadow volumes are built from polygon silhouettes: exact spheres cast theirs through
+        // their tessellation.
+        std::optional<RasterScene> tessellated;
+        if (!ps.scene.spheres.empty()) tessellated.emplace(tessellate_scene(scene));
+        const RasterScene& volume_scene = tessellated ? *tessellated : ps.scene;
+        const std::vector<uint8_t> casters = shadow_casting_triangles(scene, volume_scene);
         for (const Light& light : scene.lights) {
             if (std::holds_alternative<EnvironmentLight>(light)) {
                 in_volume.emplace_back();  // lit unshadowed: never asked
                 continue;
             }
             const std::vector<VolumePolygon> volume =
-                shadow_volume_polygons(ps.scene.triangles, casters, light);
+                shadow_volume_polygons(volume_scene.triangles, casters, light);
             in_volume.push_back(stencil_shadow_mask(volume, ps.view, ctx.frame, depth));
         }
         ctx.in_volume = &in_volume;

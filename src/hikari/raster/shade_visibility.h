@@ -52,6 +52,8 @@ PixelUv perspective_uv(const std::array<Vec4, 3>& clip, const std::array<Vec2, 3
 /// `raster.shadow_map_size`: raster/shadow_map.h); normals are turned toward the eye as the ray
 /// tracer turns them, so both pipelines shade a surface alike. Parallel over tiles; reports to
 /// `settings.control`. The AOV buffers are always filled (the methods need depth anyway).
+/// Visibility values past the screen triangles name the exact spheres of `projected.scene`
+/// (raster/sphere_raster.h): their pixels show the ray tracer's hit, shaded per pixel.
 Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& projected,
                              const VisibilityBuffer& visibility, Film film,
                              const RenderSettings& settings, const RasterSettings& raster);

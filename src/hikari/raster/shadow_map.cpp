@@ -9,6 +9,7 @@
 
 #include "hikari/core/parallel.h"
 #include "hikari/raster/cull.h"
+#include "hikari/raster/sphere_raster.h"
 #include "hikari/raster/zbuffer.h"
 
 namespace hikari {
@@ -36,22 +37,33 @@ RasterScene caster_scene(const RasterScene& raster, const std::vector<uint8_t>& 
         out.triangles.material.push_back(all.material[t]);
         out.triangles.id.push_back(all.id[t]);
     }
+    for (const Sphere& s : raster.spheres)
+        if (s.casts_shadow) out.spheres.push_back(s);
     return out;
 }
 
-/// The bounds of the vertices that `scene`'s triangles use, in the frame (origin, u, v, w).
-Aabb bounds_in_frame(const TriangleSet& tris, Vec3 origin, Vec3 u, Vec3 v, Vec3 w) {
+/// The bounds of the vertices that `scene`'s triangles use and of its exact spheres, in the
+/// orthonormal frame (origin, u, v, w).
+Aabb bounds_in_frame(const RasterScene& scene, Vec3 origin, Vec3 u, Vec3 v, Vec3 w) {
+    const TriangleSet& tris = scene.triangles;
     Aabb b;
     for (const auto& tri : tris.indices)
         for (uint32_t i : tri) {
             const Vec3 d = tris.positions[i] - origin;
             b.extend(Vec3(dot(d, u), dot(d, v), dot(d, w)));
         }
+    for (const Sphere& s : scene.spheres) {
+        const Vec3 d = s.center - origin;
+        const Vec3 c(dot(d, u), dot(d, v), dot(d, w));
+        b.extend(c - Vec3(s.radius));
+        b.extend(c + Vec3(s.radius));
+    }
     return b;
 }
 
-/// Renders `view` over `casters` by the project's vertex stage and Z-buffer, then stores each
-/// texel's exact depth: its centre ray intersected with the plane of the caster seen there.
+/// Renders `view` over `casters` by the project's vertex stage and Z-buffer (exact spheres drawn
+/// per texel, raster/sphere_raster.h), then stores each texel's exact depth: its centre ray
+/// intersected with the plane of the caster seen there, or with the sphere seen there.
 /// `depth_of(hit)` turns a world point into the map's depth.
 template <class DepthOf>
 ShadowMapFace render_face(const RasterScene& casters, const RasterView& view, DepthOf depth_of) {
@@ -59,7 +71,10 @@ ShadowMapFace render_face(const RasterScene& casters, const RasterView& view, De
     face.view = view;
     invert(view.clip_from_world, face.world_from_clip);
     const ProjectedScene ps = project_triangles(casters, view, /*cull_back_faces=*/false);
-    const VisibilityBuffer vis = zbuffer_visibility(ps.triangles, view.width, view.height);
+    const SphereRaster spheres = prepare_sphere_raster(
+        ps.scene.spheres, view, view_pixel_rays(view), static_cast<uint32_t>(ps.triangles.size()));
+    const VisibilityBuffer vis =
+        zbuffer_visibility(ps.triangles, view.width, view.height, nullptr, &spheres);
     face.depth.assign(vis.triangle.size(), k_no_caster);
     const TriangleSet& tris = ps.scene.triangles;
     hikari::parallel_for(tbb::blocked_range<int>(0, view.height), [&](const auto& rows) {
@@ -67,6 +82,13 @@ ShadowMapFace render_face(const RasterScene& casters, const RasterView& view, De
             for (int x = 0; x < view.width; ++x) {
                 const size_t texel = static_cast<size_t>(y) * view.width + x;
                 if (vis.triangle[texel] == k_no_triangle) continue;
+                if (spheres.is_sphere(vis.triangle[texel])) {
+                    Ray ray;
+                    const Sphere& s = spheres.spheres[vis.triangle[texel] - spheres.first_id];
+                    const float t = pixel_sphere_hit(spheres.rays, s, x, y, ray);
+                    if (t == t) face.depth[texel] = depth_of(ray.at(t));
+                    continue;
+                }
                 const auto& idx = tris.indices[ps.triangles[vis.triangle[texel]].source];
                 const Vec3 a = tris.positions[idx[0]];
                 const Vec3 n = face_normal(a, tris.positions[idx[1]], tris.positions[idx[2]]);
@@ -100,7 +122,7 @@ std::optional<LightShadowMap> directional_map(const DirectionalLight& light,
     const Vec3 up = std::abs(w.y) < 0.9f ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
     const Vec3 u = normalize(cross(up, w));
     const Vec3 v = cross(w, u);
-    const Aabb caster_box = bounds_in_frame(casters.triangles, map.origin, u, v, w);
+    const Aabb caster_box = bounds_in_frame(casters, map.origin, u, v, w);
     Aabb receiver_box;
     for (int corner = 0; corner < 8; ++corner) {
         const Vec3 p{(corner & 1) ? receivers.max.x : receivers.min.x,
@@ -145,7 +167,7 @@ std::optional<LightShadowMap> directional_map(const DirectionalLight& light,
 /// A point light's cube map: six 90° views along ±x, ±y, ±z, in that order (face 2a + (d_a < 0)
 /// holds the directions whose largest component is axis a).
 std::optional<LightShadowMap> point_map(Vec3 position, const RasterScene& casters, int size) {
-    if (casters.triangles.indices.empty()) return std::nullopt;
+    if (casters.triangles.indices.empty() && casters.spheres.empty()) return std::nullopt;
     LightShadowMap map;
     map.origin = position;
     map.size = size;
@@ -153,6 +175,10 @@ std::optional<LightShadowMap> point_map(Vec3 position, const RasterScene& caster
     Aabb bounds;
     for (const auto& tri : casters.triangles.indices)
         for (uint32_t i : tri) bounds.extend(casters.triangles.positions[i]);
+    for (const Sphere& s : casters.spheres) {
+        bounds.extend(s.center - Vec3(s.radius));
+        bounds.extend(s.center + Vec3(s.radius));
+    }
     float far_dist = 0.0f;
     for (int corner = 0; corner < 8; ++corner) {
         const Vec3 p{(corner & 1) ? bounds.max.x : bounds.min.x,

@@ -51,7 +51,8 @@ struct ShadowMaps {
 std::vector<uint8_t> shadow_casting_triangles(const Scene& scene, const RasterScene& raster);
 
 /// Renders the shadow maps of every light of `scene` at `size` × `size` texels per face:
-/// casters are the triangles of `raster` that `casters` marks. A directional light's map is
+/// casters are the triangles of `raster` that `casters` marks and the exact spheres of `raster`
+/// that cast shadows (drawn per texel: their shadows are round). A directional light's map is
 /// fitted to the bounds of those casters, in the light's view, that lie over `receivers` (the
 /// bounds of the points the camera sees): casters elsewhere cannot shadow anything visible.
 /// Faces render in parallel; the maps do not depend on the thread count.

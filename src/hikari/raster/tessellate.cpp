@@ -209,7 +209,7 @@ float nearest_object(const Scene& scene) {
     return nearest;
 }
 
-RasterScene tessellate_scene(const Scene& scene) {
+RasterScene tessellate_scene(const Scene& scene, SphereGeometry spheres) {
     RasterScene rs;
     TriangleSet& out = rs.triangles;
     const TriangleSet& in = scene.triangles;
@@ -229,7 +229,10 @@ RasterScene tessellate_scene(const Scene& scene) {
     };
     std::vector<Item> items;
     for (uint32_t i = 0; i < scene.spheres.size(); ++i)
-        items.push_back({scene.spheres[i].id, false, i});
+        if (spheres == SphereGeometry::exact && scene.spheres[i].segments == 0)
+            rs.spheres.push_back(scene.spheres[i]);
+        else
+            items.push_back({scene.spheres[i].id, false, i});
     for (uint32_t i = 0; i < scene.planes.size(); ++i)
         items.push_back({scene.planes[i].id, true, i});
     std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.id < b.id; });

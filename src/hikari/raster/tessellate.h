@@ -25,9 +25,16 @@ void tessellate_plane(const Plane& plane, Vec3 eye, float half_extent, TriangleS
 /// horizon is well under a pixel (10^4 times the larger of the eye's height and the scene size).
 float plane_half_extent(const Scene& scene);
 
+/// What the rasterizer makes of spheres: polygons (every method), or the spheres themselves for a
+/// method that can draw a quadric per pixel (the Z-buffer, raster/sphere_raster.h).
+enum class SphereGeometry { tessellated, exact };
+
 /// Every primitive of `scene` as triangles, in scene order. Sphere resolutions follow each
-/// sphere's projected size through `scene.camera`.
-RasterScene tessellate_scene(const Scene& scene);
+/// sphere's projected size through `scene.camera`; with SphereGeometry::exact the spheres go to
+/// RasterScene::spheres instead, except those given a tessellation of their own
+/// (Sphere::segments, `--tessellation`): asked for as polygons, they stay polygons.
+RasterScene tessellate_scene(const Scene& scene,
+                             SphereGeometry spheres = SphereGeometry::tessellated);
 
 /// The distance from the camera's eye to the nearest sphere or mesh triangle it could see
 /// (RasterScene::nearest_object): triangles wholly behind the eye, and triangles edge-on with

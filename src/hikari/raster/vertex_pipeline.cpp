@@ -78,8 +78,13 @@ RasterView make_raster_view(const Camera& camera, const RasterScene& scene, Vec2
     v.eye = camera.eye;
     v.width = camera.width;
     v.height = camera.height;
+    v.sample_offset = sample_offset;
     Aabb bounds;
     for (const Vec3& p : scene.triangles.positions) bounds.extend(p);
+    for (const Sphere& s : scene.spheres) {
+        bounds.extend(s.center - Vec3(s.radius));
+        bounds.extend(s.center + Vec3(s.radius));
+    }
     float far_dist = 1.0f;
     if (!bounds.empty())
         for (int corner = 0; corner < 8; ++corner) {
@@ -160,8 +165,9 @@ ProjectedScene project_triangles(RasterScene scene, const RasterView& view, bool
     return ps;
 }
 
-ProjectedScene project_scene(const Scene& scene, const RasterSettings& raster) {
-    RasterScene rs = tessellate_scene(scene);
+ProjectedScene project_scene(const Scene& scene, const RasterSettings& raster,
+                             SphereGeometry spheres) {
+    RasterScene rs = tessellate_scene(scene, spheres);
     const RasterView view = make_raster_view(scene.camera, rs, raster.sample_offset);
     return project_triangles(std::move(rs), view, raster.cull_back_faces);
 }

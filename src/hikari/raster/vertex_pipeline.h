@@ -10,6 +10,7 @@
 #include "hikari/raster/raster_scene.h"
 #include "hikari/raster/raster_settings.h"
 #include "hikari/raster/screen_triangle.h"
+#include "hikari/raster/tessellate.h"
 #include "hikari/scene/scene.h"
 
 namespace hikari {
@@ -30,6 +31,9 @@ struct RasterView {
     /// 1 / w, which is affine across a triangle as 1 / w is under perspective and larger for
     /// nearer points, so every depth test works unchanged.
     bool orthographic = false;
+    /// Where pixels are sampled, relative to their centres (RasterSettings::sample_offset): the
+    /// exact spheres' camera rays go through centre + offset.
+    Vec2 sample_offset{0.0f, 0.0f};
 
     /// The lecture's view vector V toward world point `p` (Fig 4.5, D = V·N): from the eye, or
     /// the view direction itself under a parallel projection.
@@ -83,6 +87,8 @@ struct ProjectedScene {
 ProjectedScene project_triangles(RasterScene scene, const RasterView& view, bool cull_back_faces);
 
 /// tessellate_scene, make_raster_view and project_triangles with `raster.cull_back_faces`.
-ProjectedScene project_scene(const Scene& scene, const RasterSettings& raster);
+/// Exact spheres (`spheres`) stay in ProjectedScene::scene.spheres, unprojected.
+ProjectedScene project_scene(const Scene& scene, const RasterSettings& raster,
+                             SphereGeometry spheres = SphereGeometry::tessellated);
 
 }  // namespace hikari

@@ -42,7 +42,8 @@ struct FragmentCounts {
 
 template <class Observer>
 VisibilityBuffer zbuffer_pass(std::span<const ScreenTriangle> triangles, int width, int height,
-                              RenderControl* control, const Observer& observer) {
+                              RenderControl* control, const Observer& observer,
+                              const SphereRaster* spheres = nullptr) {
     VisibilityBuffer vis{width, height,
                          std::vector<uint32_t>(static_cast<size_t>(width) * height, k_no_triangle)};
     std::vector<HalfSpaceTriangle> setup(triangles.size());
@@ -78,6 +79,7 @@ VisibilityBuffer zbuffer_pass(std::span<const ScreenTriangle> triangles, int wid
                                        }
                                    });
         }
+        if (spheres) draw_spheres_in_tile(*spheres, tile, depth.data(), nearest.data());
         for (int y = tile.y0; y < tile.y1; ++y)
             for (int x = tile.x0; x < tile.x1; ++x)
                 vis.triangle[static_cast<size_t>(y) * width + x] =
@@ -89,16 +91,17 @@ VisibilityBuffer zbuffer_pass(std::span<const ScreenTriangle> triangles, int wid
 }  // namespace
 
 VisibilityBuffer zbuffer_visibility(std::span<const ScreenTriangle> triangles, int width,
-                                    int height, RenderControl* control) {
-    return zbuffer_pass(triangles, width, height, control, NoFragmentObserver{});
+                                    int height, RenderControl* control,
+                                    const SphereRaster* spheres) {
+    return zbuffer_pass(triangles, width, height, control, NoFragmentObserver{}, spheres);
 }
 
 VisibilityBuffer zbuffer_visibility_counted(std::span<const ScreenTriangle> triangles, int width,
-                                            int height,
-                                            std::vector<uint32_t>& fragments_per_pixel) {
+                                            int height, std::vector<uint32_t>& fragments_per_pixel,
+                                            const SphereRaster* spheres) {
     fragments_per_pixel.assign(static_cast<size_t>(width) * height, 0);
     return zbuffer_pass(triangles, width, height, nullptr,
-                        FragmentCounts{width, fragments_per_pixel.data()});
+                        FragmentCounts{width, fragments_per_pixel.data()}, spheres);
 }
 
 VisibilityBuffer zbuffer_visibility_at(std::span<const ScreenTriangle> triangles, int width,
@@ -109,17 +112,26 @@ VisibilityBuffer zbuffer_visibility_at(std::span<const ScreenTriangle> triangles
 
 Framebuffer render_zbuffer(const Scene& scene, Film film, const RenderSettings& settings,
                            const RasterSettings& raster) {
-    return render_raster(
-        scene, std::move(film), settings, raster, [&](auto triangles, int width, int height) {
-            if (!settings.stats)
-                return zbuffer_visibility(triangles, width, height, settings.control);
-            std::vector<uint32_t> fragments;
-            VisibilityBuffer vis = zbuffer_visibility_counted(triangles, width, height, fragments);
-            uint64_t total = 0;
-            for (const uint32_t f : fragments) total += f;
-            settings.stats->raster_fragments += total;
-            return vis;
-        });
+    // Per-pixel shading can use the exact sphere; flat and Gouraud shading need its polygons.
+    const SphereGeometry geometry =
+        raster.interp == Interpolation::phong ? SphereGeometry::exact : SphereGeometry::tessellated;
+    const ProjectedScene ps = project_scene(scene, raster, geometry);
+    const int width = scene.camera.width, height = scene.camera.height;
+    const SphereRaster spheres =
+        prepare_sphere_raster(ps.scene.spheres, ps.view, camera_pixel_rays(scene.camera, ps.view),
+                              static_cast<uint32_t>(ps.triangles.size()));
+    VisibilityBuffer vis;
+    if (!settings.stats) {
+        vis = zbuffer_visibility(ps.triangles, width, height, settings.control, &spheres);
+    } else {
+        std::vector<uint32_t> fragments;
+        vis = zbuffer_visibility_counted(ps.triangles, width, height, fragments, &spheres);
+        uint64_t total = 0;
+        for (const uint32_t f : fragments) total += f;
+        settings.stats->raster_fragments += total;
+        report_raster_stats(ps, vis, *settings.stats);
+    }
+    return shade_visibility(scene, ps, vis, std::move(film), settings, raster);
 }
 
 }  // namespace hikari

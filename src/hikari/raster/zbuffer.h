@@ -10,6 +10,7 @@
 #include "hikari/frame/render_settings.h"
 #include "hikari/raster/raster_settings.h"
 #include "hikari/raster/screen_triangle.h"
+#include "hikari/raster/sphere_raster.h"
 #include "hikari/scene/scene.h"
 
 namespace hikari {
@@ -18,9 +19,12 @@ namespace hikari {
 /// centres) into a width × height visibility buffer. Z is the view depth 1 / inv_w interpolated
 /// perspective-correctly, initialised to infinity; a fragment wins when z < Z, so on equal depth
 /// the earlier triangle stays. Parallel over tiles, each with the triangles binned to it in
-/// order: the result does not depend on the thread count. `control` may be null.
+/// order: the result does not depend on the thread count. `control` may be null. `spheres`, when
+/// given, are drawn exactly after the triangles of each tile (raster/sphere_raster.h); the
+/// buffer then names them by the ids SphereRaster gives them.
 VisibilityBuffer zbuffer_visibility(std::span<const ScreenTriangle> triangles, int width,
-                                    int height, RenderControl* control = nullptr);
+                                    int height, RenderControl* control = nullptr,
+                                    const SphereRaster* spheres = nullptr);
 
 /// One pass of Alg 4.2's inner loop at one pixel: a triangle's fragment, its depth, what the
 /// Z-buffer held when it was tested, and whether the test let it replace that.
@@ -32,9 +36,11 @@ struct ZBufferFragment {
 };
 
 /// zbuffer_visibility, also counting the fragments depth-tested at every pixel into
-/// `fragments_per_pixel` (row-major): the overdraw (`--aov overdraw`, `--stats`).
+/// `fragments_per_pixel` (row-major): the overdraw (`--aov overdraw`, `--stats`). Exact spheres
+/// are drawn but not counted.
 VisibilityBuffer zbuffer_visibility_counted(std::span<const ScreenTriangle> triangles, int width,
-                                            int height, std::vector<uint32_t>& fragments_per_pixel);
+                                            int height, std::vector<uint32_t>& fragments_per_pixel,
+                                            const SphereRaster* spheres = nullptr);
 
 /// zbuffer_visibility, also recording into `fragments` every fragment tested at pixel (x, y), in
 /// the order the algorithm tested them (`hikari explain -m zbuffer --pixel X,Y`). The same code
@@ -44,7 +50,10 @@ VisibilityBuffer zbuffer_visibility_at(std::span<const ScreenTriangle> triangles
                                        std::vector<ZBufferFragment>& fragments);
 
 /// The `zbuffer` method: vertex stage (raster/vertex_pipeline.h), zbuffer_visibility, then the
-/// shared deferred shading pass (raster/shade_visibility.h).
+/// shared deferred shading pass (raster/shade_visibility.h). With per-pixel (Phong) shading,
+/// spheres are drawn exactly (raster/sphere_raster.h); flat and Gouraud shading are defined on
+/// polygons, so with them spheres are tessellated as for the other methods, and so are spheres
+/// given a tessellation of their own (`segments`, `--tessellation`).
 Framebuffer render_zbuffer(const Scene& scene, Film film, const RenderSettings& settings = {},
                            const RasterSettings& raster = {});
 
