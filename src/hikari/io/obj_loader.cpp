@@ -8,10 +8,13 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string_view>
 #include <unordered_map>
@@ -42,19 +45,98 @@ std::string where(const std::filesystem::path& file, size_t line) {
     throw InputError(printable_text(where(file, line) + what));
 }
 
+// --- MTL libraries ------------------------------------------------------------------------------
+
+/// Opens MTL libraries relative to the OBJ's directory. tinyobjloader's own MaterialFileReader
+/// splits its base directory at ':' (a search path), which breaks directories containing ':'.
+/// Remembers which library each material came from, for texture paths and messages.
+class MtlReader : public tinyobj::MaterialReader {
+  public:
+    explicit MtlReader(std::filesystem::path dir) : m_dir(std::move(dir)) {}
+
+    /// The MTL file of each material, in tinyobjloader's order.
+    const std::vector<std::filesystem::path>& library_of_material() const { return m_library_of; }
+    /// Where each material's statements are (scan_mtl_text), in tinyobjloader's order; an empty
+    /// entry when the scan and tinyobjloader disagree on the materials.
+    const std::vector<MtlMaterialLines>& lines_of_material() const { return m_lines_of; }
+    /// Why a library that exists could not be used (a device, FIFO or directory, too large: its
+    /// name as the OBJ gives it and the read error; a bad number: no name and the scan's error,
+    /// which says where). Both empty when none.
+    const std::pair<std::string, std::string>& failure() const { return m_failure; }
+
+    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                    std::map<std::string, int>* material_map, std::string* warn,
+                    std::string* err) override {
+        const std::filesystem::path mtl = m_dir / name;
+        // Through read_file_bytes, which reads only regular files and bounds the read: an
+        // `mtllib /dev/zero` must not run until memory is gone.
+        // A library that is missing is a warning (OBJ files often travel without theirs); one
+        // that exists but cannot be used is an error, reported by load_obj.
+        std::string text;
+        std::vector<MtlMaterialLines> lines;
+        try {
+            text = read_file_bytes(mtl, InputKind::mesh);
+        } catch (const InputError& e) {
+            std::error_code ec;
+            if (m_failure.second.empty() && std::filesystem::exists(mtl, ec))
+                m_failure = {name, e.what()};
+            *warn += std::string("cannot open material library: ") + e.what() + "\n";
+            return false;
+        }
+        try {
+            lines = scan_mtl_text(mtl, text);
+        } catch (const InputError& e) {
+            if (m_failure.second.empty()) m_failure = {"", e.what()};
+            return false;
+        }
+        const size_t before = materials->size();
+        std::istringstream stream(std::move(text));
+        tinyobj::LoadMtl(material_map, materials, &stream, warn, err);
+        m_library_of.resize(materials->size(), mtl);
+        if (materials->size() - before != lines.size())
+            lines.assign(materials->size() - before, {});
+        m_lines_of.insert(m_lines_of.end(), lines.begin(), lines.end());
+        return true;
+    }
+
+  private:
+    std::filesystem::path m_dir;
+    std::vector<std::filesystem::path> m_library_of;
+    std::vector<MtlMaterialLines> m_lines_of;
+    std::pair<std::string, std::string> m_failure;
+};
+
 // --- Pass 1: our own scan of the text ----------------------------------------------------------
 // tinyobjloader 2.0.0rc10 reads a malformed number as 0 without a word, accepts faces with
 // indices out of range (only a warning for the largest one), and keeps no line numbers. This scan
-// checks every number strictly and records the line of each v, vt and face, so later checks can
-// point at the line. It splits lines and tokens exactly as tinyobjloader does.
+// checks every number strictly and records the line of each face, so later checks can point at
+// the line. It splits lines and tokens exactly as tinyobjloader does. It also carries out the
+// statements that set state (mtllib, usemtl, s, g), as tinyobjloader's LoadObj does, since its
+// streaming parser (pass 2) ignores `s` and reads `usemtl` differently.
 
-/// Line numbers (1-based) of each `v`, `vt` and `f` statement, in order, and the counts that
-/// size what tinyobjloader and we are about to allocate.
+/// The material and smoothing group of faces from `first_face` on (until the next change).
+struct FaceState {
+    uint32_t first_face = 0;
+    int32_t material = -1;
+    uint32_t smoothing = 0;
+};
+
+/// What the scan found: the line (1-based) of each face, the counts that size what pass 2
+/// allocates, the state each face is drawn with, and tinyobjloader's messages about them.
 struct LineTable {
-    std::vector<uint32_t> v, vt, f;
-    size_t vn_count = 0, corner_count = 0;
+    std::vector<uint32_t> f;
+    size_t v_count = 0, vt_count = 0, vn_count = 0, corner_count = 0;
     /// Each `mtllib` statement: its line and the rest of the line (the library names).
     std::vector<std::pair<uint32_t, std::string_view>> mtllib;
+    /// State changes in face order; the first applies from face 0.
+    std::vector<FaceState> states{FaceState{}};
+    /// The materials of the libraries loaded, in tinyobjloader's order.
+    std::vector<tinyobj::material_t> materials;
+    /// Warnings and errors in tinyobjloader's words (for clean_messages), in line order.
+    std::string warn, err;
+    /// tinyobjloader's LoadObj fails at an `l` or `p` statement with a zero index; its message,
+    /// else empty. Statements after it set no state (LoadObj stops there).
+    std::string load_failure;
 };
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
@@ -143,8 +225,171 @@ size_t line_end(std::string_view text, size_t pos) {
     return pos + (carriage_return ? size_t(carriage_return - begin) : length);
 }
 
-LineTable scan_obj_text(const std::filesystem::path& file, std::string_view text) {
+/// tinyobjloader's parseString: the word at `*token` (after blanks), up to a blank, \r or the end.
+std::string parse_word(const char** token) {
+    *token += std::strspn(*token, " \t");
+    const size_t length = std::strcspn(*token, " \t\r");
+    std::string word(*token, length);
+    *token += length;
+    return word;
+}
+
+/// Whether tinyobjloader's parseTriple accepts every corner of an `l` or `p` statement (`rest`,
+/// NUL-terminated): it fails on an index that atoi reads as 0.
+bool tinyobj_reads_indices(const char* t) {
+    const auto part = [&t] {
+        const bool nonzero = std::atoi(t) != 0;
+        t += std::strcspn(t, "/ \t\r");
+        return nonzero;
+    };
+    while (t[0] != '\0' && t[0] != '\r' && t[0] != '\n') {
+        if (!part()) return false;
+        if (t[0] == '/') {
+            ++t;
+            if (t[0] == '/') {
+                ++t;
+                if (!part()) return false;
+            } else {
+                if (!part()) return false;
+                if (t[0] == '/') {
+                    ++t;
+                    if (!part()) return false;
+                }
+            }
+        }
+        t += std::strspn(t, " \t\r");
+    }
+    return true;
+}
+
+/// tinyobjloader's SplitString(names, ' ', '\\'): words separated by spaces, a backslash escaping
+/// the next character; the last word is kept even when empty.
+std::vector<std::string> split_library_names(std::string_view names) {
+    std::vector<std::string> out;
+    std::string word;
+    bool escaping = false;
+    for (const char c : names) {
+        if (escaping) {
+            escaping = false;
+        } else if (c == '\\') {
+            escaping = true;
+            continue;
+        } else if (c == ' ') {
+            if (!word.empty()) out.push_back(word);
+            word.clear();
+            continue;
+        }
+        word += c;
+    }
+    out.push_back(word);
+    return out;
+}
+
+/// Carries out the statements that set the state of the faces after them, as LoadObj does
+/// (tiny_obj_loader.h, LoadObj: "use mtl", "load mtl", "group name", "smoothing group id"):
+/// `s` is the line after its leading blanks, NUL-free.
+class StatementState {
+  public:
+    StatementState(LineTable& table, MtlReader& mtl_reader)
+        : m_table(table), m_mtl_reader(mtl_reader) {}
+
+    /// Handles `s` if it is one of these statements; `faces` is the number of faces before it.
+    void statement(std::string_view s, size_t line, size_t faces) {
+        if (!m_table.load_failure.empty()) return;
+        const bool blank1 = s.size() > 1 && (s[1] == ' ' || s[1] == '\t');
+        if (s.starts_with("usemtl")) {
+            use_material(std::string(s.substr(6)), faces);
+        } else if (s.starts_with("mtllib") && s.size() > 6 && (s[6] == ' ' || s[6] == '\t')) {
+            load_libraries(s.substr(7));
+        } else if (s[0] == 'g' && blank1) {
+            // LoadObj's names[0] is the 'g' itself: a group statement without a name.
+            if (count_tokens(s) < 2)
+                m_table.warn += fmt::format("Empty group name. line: {}\n", line);
+        } else if (s[0] == 's' && blank1) {
+            set_smoothing(std::string(s.substr(2)), faces);
+        } else if ((s[0] == 'l' || s[0] == 'p') && blank1) {
+            if (!tinyobj_reads_indices(std::string(s.substr(2)).c_str()))
+                m_table.load_failure = fmt::format(
+                    "Failed parse `{}' line(e.g. zero value for vertex index. line {}.)\n", s[0],
+                    line);
+        }
+    }
+
+    /// The material_map lookups that found nothing, beyond the first k_max_missing (a file of
+    /// ten million `usemtl` lines must not make ten million warnings).
+    size_t missing_not_reported() const {
+        return m_missing > k_max_missing ? m_missing - k_max_missing : 0;
+    }
+
+  private:
+    static constexpr size_t k_max_missing = 100;
+
+    void set_state(size_t faces, int32_t material, uint32_t smoothing) {
+        FaceState& last = m_table.states.back();
+        if (last.material == material && last.smoothing == smoothing) return;
+        const FaceState next{static_cast<uint32_t>(faces), material, smoothing};
+        if (last.first_face == next.first_face)
+            last = next;
+        else
+            m_table.states.push_back(next);
+    }
+
+    void use_material(const std::string& rest, size_t faces) {
+        const char* token = rest.c_str();
+        const std::string name = parse_word(&token);
+        int32_t material = -1;
+        if (const auto it = m_material_map.find(name); it != m_material_map.end()) {
+            material = it->second;
+        } else if (++m_missing <= k_max_missing) {
+            m_table.warn += "material [ '" + name + "' ] not found in .mtl\n";
+        }
+        set_state(faces, material, m_table.states.back().smoothing);
+    }
+
+    void load_libraries(std::string_view names) {
+        const std::vector<std::string> files = split_library_names(names);
+        bool found = false;
+        for (const std::string& name : files) {
+            if (m_loaded.count(name) > 0) {
+                found = true;
+                continue;
+            }
+            std::string warn, err;
+            const bool ok = m_mtl_reader(name, &m_table.materials, &m_material_map, &warn, &err);
+            m_table.warn += warn;
+            m_table.err += err;
+            if (ok) {
+                found = true;
+                m_loaded.insert(name);
+                break;
+            }
+        }
+        if (!found) m_table.warn += "Failed to load material file(s). Use default material.\n";
+    }
+
+    void set_smoothing(const std::string& rest, size_t faces) {
+        const char* token = rest.c_str();
+        token += std::strspn(token, " \t");
+        if (token[0] == '\0' || token[0] == '\r' || token[1] == '\n') return;
+        uint32_t group = 0;
+        if (!(std::strlen(token) >= 3 && std::strncmp(token, "off", 3) == 0)) {
+            const int id = std::atoi(token);  // LoadObj's parseInt; negative means off
+            group = id < 0 ? 0u : static_cast<uint32_t>(id);
+        }
+        set_state(faces, m_table.states.back().material, group);
+    }
+
+    LineTable& m_table;
+    MtlReader& m_mtl_reader;
+    std::map<std::string, int> m_material_map;
+    std::set<std::string> m_loaded;
+    size_t m_missing = 0;
+};
+
+LineTable scan_obj_text(const std::filesystem::path& file, std::string_view text,
+                        MtlReader& mtl_reader) {
     LineTable table;
+    StatementState state(table, mtl_reader);
     size_t pos = 0;
     for (uint32_t line = 1; pos < text.size(); ++line) {
         if (line % 65536 == 0) throw_if_cancelled();  // SIGINT / SIGTERM
@@ -162,13 +407,13 @@ LineTable scan_obj_text(const std::filesystem::path& file, std::string_view text
         const bool blank2 = s.size() > 2 && (s[2] == ' ' || s[2] == '\t');
         if (s[0] == 'v' && blank1) {
             check_numbers(file, line, "v", s.substr(2), 3);
-            table.v.push_back(line);
+            ++table.v_count;
         } else if (s[0] == 'v' && s[1] == 'n' && blank2) {
             check_numbers(file, line, "vn", s.substr(3), 3);
             ++table.vn_count;
         } else if (s[0] == 'v' && s[1] == 't' && blank2) {
             check_numbers(file, line, "vt", s.substr(3), 1);
-            table.vt.push_back(line);
+            ++table.vt_count;
         } else if (s[0] == 'f' && blank1) {
             const size_t corners = count_tokens(s.substr(2));
             if (corners < 3 || corners > 255) {
@@ -178,21 +423,26 @@ LineTable scan_obj_text(const std::filesystem::path& file, std::string_view text
             check_face_corners(file, line, s.substr(2));
             table.f.push_back(line);
             table.corner_count += corners;
-        } else if (s.starts_with("mtllib") && s.size() > 6 && is_blank(s[6])) {
-            table.mtllib.emplace_back(line, s.substr(7));
+        } else if (s[0] != '#') {
+            if (s.starts_with("mtllib") && s.size() > 6 && is_blank(s[6]))
+                table.mtllib.emplace_back(line, s.substr(7));
+            state.statement(s, line, table.f.size());
         }
     }
+    if (const size_t more = state.missing_not_reported(); more > 0)
+        table.warn +=
+            fmt::format("{} more usemtl statements name materials not found in .mtl\n", more);
     return table;
 }
 
-/// Refuses, before tinyobjloader runs, a file whose faces would take more memory than
-/// --max-memory allows. Bytes per item, measured on a file of ten million triangles (1.8 GB at
-/// the peak): tinyobjloader keeps each face as a vector of its own (some 90 bytes with its heap
-/// block) and every corner twice (24 bytes), then our polygons and build_mesh take about as much
-/// again per corner; attributes are 12 bytes each, kept about twice.
+/// Refuses, before pass 2 runs, a file whose faces would take more memory than --max-memory
+/// allows, with every face kept. Bytes per item: a face takes its line (scan), its state change
+/// at worst, its start, material, smoothing group and line (pass 2, 4 bytes each); a corner its
+/// resolved (v, vn, vt) indices and its vertex in the polygons (4 bytes each); an attribute its
+/// value, read once and copied once into the polygons' vertices.
 void check_obj_memory(const std::filesystem::path& file, size_t faces, size_t corners,
                       size_t attributes) {
-    check_memory_need(100.0 * static_cast<double>(faces) + 40.0 * static_cast<double>(corners) +
+    check_memory_need(32.0 * static_cast<double>(faces) + 16.0 * static_cast<double>(corners) +
                           24.0 * static_cast<double>(attributes),
                       fmt::format("{}: loading {} faces", file.string(), faces));
 }
@@ -211,66 +461,7 @@ size_t count_face_lines(std::string_view text) {
     return count;
 }
 
-// --- Pass 2: tinyobjloader ---------------------------------------------------------------------
-
-/// Opens MTL libraries relative to the OBJ's directory. tinyobjloader's own MaterialFileReader
-/// splits its base directory at ':' (a search path), which breaks directories containing ':'.
-/// Remembers which library each material came from, for texture paths and messages.
-class MtlReader : public tinyobj::MaterialReader {
-  public:
-    explicit MtlReader(std::filesystem::path dir) : m_dir(std::move(dir)) {}
-
-    /// The MTL file of each material, in tinyobjloader's order.
-    const std::vector<std::filesystem::path>& library_of_material() const { return m_library_of; }
-    /// Where each material's statements are (scan_mtl_text), in tinyobjloader's order; an empty
-    /// entry when the scan and tinyobjloader disagree on the materials.
-    const std::vector<MtlMaterialLines>& lines_of_material() const { return m_lines_of; }
-    /// Why a library that exists could not be used (a device, FIFO or directory, too large: its
-    /// name as the OBJ gives it and the read error; a bad number: no name and the scan's error,
-    /// which says where). Both empty when none.
-    const std::pair<std::string, std::string>& failure() const { return m_failure; }
-
-    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
-                    std::map<std::string, int>* material_map, std::string* warn,
-                    std::string* err) override {
-        const std::filesystem::path mtl = m_dir / name;
-        // Through read_file_bytes, which reads only regular files and bounds the read: an
-        // `mtllib /dev/zero` must not run until memory is gone.
-        // A library that is missing is a warning (OBJ files often travel without theirs); one
-        // that exists but cannot be used is an error, reported by load_obj.
-        std::string text;
-        std::vector<MtlMaterialLines> lines;
-        try {
-            text = read_file_bytes(mtl, InputKind::mesh);
-        } catch (const InputError& e) {
-            std::error_code ec;
-            if (m_failure.second.empty() && std::filesystem::exists(mtl, ec))
-                m_failure = {name, e.what()};
-            *warn += std::string("cannot open material library: ") + e.what() + "\n";
-            return false;
-        }
-        try {
-            lines = scan_mtl_text(mtl, text);
-        } catch (const InputError& e) {
-            if (m_failure.second.empty()) m_failure = {"", e.what()};
-            return false;
-        }
-        const size_t before = materials->size();
-        std::istringstream stream(std::move(text));
-        tinyobj::LoadMtl(material_map, materials, &stream, warn, err);
-        m_library_of.resize(materials->size(), mtl);
-        if (materials->size() - before != lines.size())
-            lines.assign(materials->size() - before, {});
-        m_lines_of.insert(m_lines_of.end(), lines.begin(), lines.end());
-        return true;
-    }
-
-  private:
-    std::filesystem::path m_dir;
-    std::vector<std::filesystem::path> m_library_of;
-    std::vector<MtlMaterialLines> m_lines_of;
-    std::pair<std::string, std::string> m_failure;
-};
+// --- Pass 2: tinyobjloader's streaming parser ---------------------------------------------------
 
 /// tinyobjloader's messages, one per line, as "FILE:LINE: message" (its "(line N.)" moved to the
 /// front). Lines that are only punctuation (it writes "Degenerated face found\n.") are dropped.
@@ -346,30 +537,169 @@ size_t mtllib_line(const LineTable& lines, std::string_view library) {
     return 0;
 }
 
-ParsedObj parse_with_tinyobj(const std::filesystem::path& file, const std::string& text,
-                             const LineTable& lines) {
-    ParsedObj parsed;
-    MtlReader mtl_reader(file.parent_path());
-    std::string warn, err;
-    // triangulate = false: rc10 splits quads along the shorter diagonal and ear-clips larger
-    // polygons; we fan-triangulate ourselves so triangle order and shape are predictable.
-    const bool loaded = run_tinyobj(text, &mtl_reader, /*triangulate=*/false, parsed, warn, err);
+/// One face corner, resolved to 0-based indices (-1 = absent).
+struct Corner {
+    int v = -1, vn = -1, vt = -1;
+    bool operator==(const Corner&) const = default;
+};
+
+struct CornerHash {
+    size_t operator()(const Corner& c) const {
+        size_t h = std::hash<int>()(c.v);
+        h = h * 0x9E3779B97F4A7C15ull + std::hash<int>()(c.vn);
+        return h * 0x9E3779B97F4A7C15ull + std::hash<int>()(c.vt);
+    }
+};
+
+/// The scan's state statements, checked as LoadObj checked them: a library that exists but cannot
+/// be used, then an `l` or `p` statement LoadObj fails on, is an error. Returns the warnings.
+std::vector<std::string> check_statements(const std::filesystem::path& file, const LineTable& lines,
+                                          const MtlReader& mtl_reader) {
     if (const auto& [library, error] = mtl_reader.failure(); !library.empty())
         fail(file, mtllib_line(lines, library), fmt::format("mtllib {}: {}", library, error));
     else if (!error.empty())
         throw InputError(error);
-    if (!loaded) {
-        const std::vector<std::string> errors = clean_messages(file, err);
+    if (!lines.load_failure.empty()) {
+        const std::vector<std::string> errors = clean_messages(file, lines.load_failure);
         throw InputError(errors.empty() ? where(file, 0) + "cannot parse OBJ" : errors.front());
     }
-    // After a successful parse `err` holds only MTL problems: the mesh is still usable.
-    parsed.warnings = clean_messages(file, warn + err);
-    parsed.material_library = mtl_reader.library_of_material();
-    parsed.material_library.resize(parsed.materials.size(), file);
-    parsed.material_lines = mtl_reader.lines_of_material();
-    parsed.material_lines.resize(parsed.materials.size());
-    return parsed;
+    // `err` holds only MTL problems: the mesh is still usable.
+    return clean_messages(file, lines.warn + lines.err);
 }
+
+/// What pass 2 keeps of the file: its attributes, and the faces that may be drawn, in file order,
+/// as polygons of resolved corners. Nothing per face beyond that: tinyobjloader's LoadObj keeps
+/// each face in a vector of its own (1.8 GB for ten million triangles).
+struct StreamedObj {
+    std::vector<Vec3> positions, normals;
+    std::vector<Vec2> texcoords;
+    /// The kept faces' corners, 0-based as tinyobjloader resolves them (-1: absent), unchecked.
+    std::vector<Corner> corners;
+    /// Per kept face: face_start (into `corners`), face_material, smoothing_group, face_line.
+    PolygonMesh faces;
+    bool has_normals = false, has_uvs = false;  ///< whether any corner, kept or not, names one
+    /// Triangles dropped as they came because build_mesh would drop them: zero area.
+    size_t degenerate_dropped = 0;
+};
+
+/// Pass 2: tinyobjloader's streaming parser (LoadObjWithCallback), which reads the numbers as
+/// LoadObj does but keeps nothing itself, feeding StreamedObj directly. Degenerate triangles are
+/// dropped as they come, so a flood of them costs no memory, and the cancel flag is polled.
+class ObjStreamer {
+  public:
+    ObjStreamer(const LineTable& lines) : m_lines(lines) {
+        // Exact counts from the scan, accounted for by check_obj_memory; the face arrays only up
+        // to a few million faces, since a flood of degenerate ones keeps nothing.
+        constexpr size_t k_max_face_reserve = size_t{1} << 22;
+        m_out.positions.reserve(lines.v_count);
+        m_out.normals.reserve(lines.vn_count);
+        m_out.texcoords.reserve(lines.vt_count);
+        const size_t faces = std::min(lines.f.size(), k_max_face_reserve);
+        m_out.corners.reserve(std::min(lines.corner_count, 3 * k_max_face_reserve));
+        m_out.faces.face_start.reserve(faces + 1);
+        m_out.faces.face_material.reserve(faces);
+        m_out.faces.smoothing_group.reserve(faces);
+        m_out.faces.face_line.reserve(faces);
+    }
+
+    StreamedObj run(const std::string& text) {
+        tinyobj::callback_t callback;
+        callback.vertex_cb = [](void* self, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z,
+                                tinyobj::real_t) {
+            static_cast<ObjStreamer*>(self)->poll();
+            static_cast<ObjStreamer*>(self)->m_out.positions.emplace_back(
+                static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
+        };
+        callback.normal_cb = [](void* self, tinyobj::real_t x, tinyobj::real_t y,
+                                tinyobj::real_t z) {
+            static_cast<ObjStreamer*>(self)->poll();
+            static_cast<ObjStreamer*>(self)->m_out.normals.emplace_back(
+                static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
+        };
+        callback.texcoord_cb = [](void* self, tinyobj::real_t u, tinyobj::real_t v,
+                                  tinyobj::real_t) {
+            static_cast<ObjStreamer*>(self)->poll();
+            static_cast<ObjStreamer*>(self)->m_out.texcoords.push_back(
+                Vec2{static_cast<float>(u), static_cast<float>(v)});
+        };
+        callback.index_cb = [](void* self, tinyobj::index_t* corners, int count) {
+            static_cast<ObjStreamer*>(self)->face(corners, static_cast<size_t>(count));
+        };
+        // No MTL reader and no usemtl callback: the scan carried those statements out.
+        TextStreambuf text_buffer(text);
+        std::istream stream(&text_buffer);
+        tinyobj::LoadObjWithCallback(stream, callback, this, nullptr, nullptr, nullptr);
+        return std::move(m_out);
+    }
+
+  private:
+    /// SIGINT / SIGTERM, every 65536 statements.
+    void poll() {
+        if ((++m_records & 0xFFFF) == 0) throw_if_cancelled();
+    }
+
+    /// tinyobjloader's fixIndex over a raw index (0: absent, as parseRawTriple gives it): 1-based
+    /// from the front, or relative to the `count` defined so far when negative.
+    static int resolve(int raw, size_t count) {
+        if (raw > 0) return raw - 1;
+        if (raw == 0) return -1;
+        return static_cast<int>(static_cast<int64_t>(count) + raw);
+    }
+
+    static bool within(int i, size_t count) { return i >= 0 && static_cast<size_t>(i) < count; }
+
+    void face(const tinyobj::index_t* raw, size_t count) {
+        poll();
+        const size_t face = m_face++;
+        while (m_next_state < m_lines.states.size() &&
+               m_lines.states[m_next_state].first_face <= face)
+            m_state = m_lines.states[m_next_state++];
+        m_corners.clear();
+        for (size_t k = 0; k < count; ++k) {
+            const Corner c{resolve(raw[k].vertex_index, m_out.positions.size()),
+                           resolve(raw[k].normal_index, m_out.normals.size()),
+                           resolve(raw[k].texcoord_index, m_out.texcoords.size())};
+            m_out.has_normals |= c.vn >= 0;
+            m_out.has_uvs |= c.vt >= 0;
+            m_corners.push_back(c);
+        }
+        if (is_degenerate_triangle()) {
+            ++m_out.degenerate_dropped;
+            return;
+        }
+        m_out.corners.insert(m_out.corners.end(), m_corners.begin(), m_corners.end());
+        PolygonMesh& faces = m_out.faces;
+        faces.face_start.push_back(static_cast<uint32_t>(m_out.corners.size()));
+        faces.face_material.push_back(m_state.material);
+        faces.smoothing_group.push_back(m_state.smoothing);
+        faces.face_line.push_back(face < m_lines.f.size() ? m_lines.f[face] : 0);
+    }
+
+    /// Whether the face in m_corners is a triangle that build_mesh would drop for its zero (or
+    /// non-finite) area, computed as it does (mesh_builder.cpp: doubled_area), from points already
+    /// defined. A corner that names anything not yet defined keeps the face, for pass 3 to judge
+    /// (a forward index is valid OBJ; an index out of range must still be an error).
+    bool is_degenerate_triangle() const {
+        if (m_corners.size() != 3) return false;
+        for (const Corner& c : m_corners) {
+            if (!within(c.v, m_out.positions.size()) ||
+                (c.vn != -1 && !within(c.vn, m_out.normals.size())) ||
+                (c.vt != -1 && !within(c.vt, m_out.texcoords.size())))
+                return false;
+        }
+        const Vec3 p1 = m_out.positions[static_cast<size_t>(m_corners[0].v)];
+        const Vec3 p2 = m_out.positions[static_cast<size_t>(m_corners[1].v)];
+        const Vec3 p3 = m_out.positions[static_cast<size_t>(m_corners[2].v)];
+        const float area2 = length(cross(p2 - p1, p3 - p2));
+        return !(area2 > 0.0f) || !std::isfinite(area2);
+    }
+
+    const LineTable& m_lines;
+    StreamedObj m_out;
+    std::vector<Corner> m_corners;  ///< the current face's, reused
+    FaceState m_state;
+    size_t m_next_state = 0, m_face = 0, m_records = 0;
+};
 
 // --- Pass 3: checks and flattening -------------------------------------------------------------
 
@@ -457,23 +787,9 @@ Material to_material(const tinyobj::material_t& m, const std::filesystem::path& 
     return out;
 }
 
-/// One face corner, resolved to 0-based indices (-1 = absent).
-struct Corner {
-    int v = -1, vn = -1, vt = -1;
-    bool operator==(const Corner&) const = default;
-};
-
-struct CornerHash {
-    size_t operator()(const Corner& c) const {
-        size_t h = std::hash<int>()(c.v);
-        h = h * 0x9E3779B97F4A7C15ull + std::hash<int>()(c.vn);
-        return h * 0x9E3779B97F4A7C15ull + std::hash<int>()(c.vt);
-    }
-};
-
 /// Checks a corner's indices against the attribute counts; `line` is 0 when unknown.
-void check_corner(const std::filesystem::path& file, size_t line, const tinyobj::index_t& idx,
-                  const tinyobj::attrib_t& attrib) {
+void check_corner(const std::filesystem::path& file, size_t line, const Corner& c,
+                  const StreamedObj& obj) {
     auto check = [&](int i, size_t count, const char* kind) {
         if (i >= 0 && static_cast<size_t>(i) < count) return;
         if (i < 0) {
@@ -484,49 +800,32 @@ void check_corner(const std::filesystem::path& file, size_t line, const tinyobj:
              std::string("face refers to ") + kind + " " + std::to_string(i + 1) +
                  ", but the file defines only " + std::to_string(count));
     };
-    check(idx.vertex_index, attrib.vertices.size() / 3, "vertex");
-    if (idx.normal_index != -1) check(idx.normal_index, attrib.normals.size() / 3, "normal");
-    if (idx.texcoord_index != -1) {
-        check(idx.texcoord_index, attrib.texcoords.size() / 2, "texture coordinate");
-    }
+    check(c.v, obj.positions.size(), "vertex");
+    if (c.vn != -1) check(c.vn, obj.normals.size(), "normal");
+    if (c.vt != -1) check(c.vt, obj.texcoords.size(), "texture coordinate");
 }
 
 /// The file's normal for a corner, or -1 when it has none or it cannot be normalized.
-int usable_normal(const tinyobj::attrib_t& attrib, int vn) {
+int usable_normal(const StreamedObj& obj, int vn) {
     if (vn < 0) return -1;
-    const Vec3 n = vec3_at(attrib.normals, vn);
-    const float len = length(n);
+    const float len = length(obj.normals[static_cast<size_t>(vn)]);
     return std::isfinite(len) && len > 0.0f ? vn : -1;
 }
 
-/// The faces as polygons over vertices made of unique (v, vn, vt) corners, numbered in order of
-/// first use; indices checked, with the face's line. Triangulation and missing normals are left to
-/// build_mesh, as for every format.
-PolygonMesh to_polygons(const std::filesystem::path& file, const ParsedObj& parsed,
-                        const LineTable& lines) {
-    const tinyobj::attrib_t& attrib = parsed.attrib;
-    size_t face_count = 0, corner_count = 0;
-    bool has_normals = false, has_uvs = false;
-    for (const auto& shape : parsed.shapes) {
-        face_count += shape.mesh.num_face_vertices.size();
-        corner_count += shape.mesh.indices.size();
-        for (const tinyobj::index_t& idx : shape.mesh.indices) {
-            has_normals |= idx.normal_index >= 0;
-            has_uvs |= idx.texcoord_index >= 0;
-        }
-    }
-    const bool know_lines = face_count == lines.f.size();
-    PolygonMesh mesh;
-    mesh.face_start.reserve(face_count + 1);
-    mesh.corners.reserve(corner_count);
-    mesh.face_material.reserve(face_count);
-    mesh.smoothing_group.reserve(face_count);
-    if (know_lines) mesh.face_line.assign(lines.f.begin(), lines.f.end());
+/// The kept faces as polygons over vertices made of unique (v, vn, vt) corners, numbered in order
+/// of first use; indices checked, with the face's line. Triangulation and missing normals are left
+/// to build_mesh, as for every format.
+PolygonMesh to_polygons(const std::filesystem::path& file, StreamedObj& obj,
+                        size_t material_count) {
+    PolygonMesh mesh = std::move(obj.faces);
+    mesh.corners.reserve(obj.corners.size());
+    for (int32_t& material : mesh.face_material)
+        if (material < -1 || material >= static_cast<int32_t>(material_count)) material = -1;
     // A corner with neither vn nor vt is its position alone: a flat table finds its vertex
     // (the common case, and a hash map's node per vertex costs a million allocations on a big
     // mesh). Corners with either go through the map.
     constexpr uint32_t k_none = UINT32_MAX;
-    std::vector<uint32_t> vertex_of_position(attrib.vertices.size() / 3, k_none);
+    std::vector<uint32_t> vertex_of_position(obj.positions.size(), k_none);
     std::unordered_map<Corner, uint32_t, CornerHash> vertex_of;
     auto vertex = [&](const Corner& c) {
         const auto next = static_cast<uint32_t>(mesh.positions.size());
@@ -543,42 +842,49 @@ PolygonMesh to_polygons(const std::filesystem::path& file, const ParsedObj& pars
             found = it.first->second;
         }
         if (inserted) {
-            mesh.positions.push_back(vec3_at(attrib.vertices, c.v));
-            if (has_normals)
-                mesh.normals.push_back(c.vn >= 0 ? vec3_at(attrib.normals, c.vn) : Vec3(0.0f));
-            if (has_uvs)
-                mesh.uvs.push_back(c.vt >= 0
-                                       ? Vec2{static_cast<float>(attrib.texcoords[2 * c.vt]),
-                                              static_cast<float>(attrib.texcoords[2 * c.vt + 1])}
-                                       : Vec2{});
+            mesh.positions.push_back(obj.positions[static_cast<size_t>(c.v)]);
+            if (obj.has_normals)
+                mesh.normals.push_back(c.vn >= 0 ? obj.normals[static_cast<size_t>(c.vn)]
+                                                 : Vec3(0.0f));
+            if (obj.has_uvs)
+                mesh.uvs.push_back(c.vt >= 0 ? obj.texcoords[static_cast<size_t>(c.vt)] : Vec2{});
         }
         return found;
     };
-    size_t face = 0;
-    for (const auto& shape : parsed.shapes) {
-        const bool has_groups =
-            shape.mesh.smoothing_group_ids.size() == shape.mesh.num_face_vertices.size();
-        size_t offset = 0;
-        for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++face) {
-            const size_t n = shape.mesh.num_face_vertices[f];
-            const size_t line = know_lines ? lines.f[face] : 0;
-            for (size_t k = 0; k < n; ++k) {
-                const tinyobj::index_t& idx = shape.mesh.indices[offset + k];
-                check_corner(file, line, idx, attrib);
-                mesh.corners.push_back(
-                    vertex({idx.vertex_index, usable_normal(attrib, idx.normal_index),
-                            idx.texcoord_index}));
-            }
-            offset += n;
-            mesh.face_start.push_back(static_cast<uint32_t>(mesh.corners.size()));
-            int32_t material = shape.mesh.material_ids[f];
-            if (material < -1 || material >= static_cast<int32_t>(parsed.materials.size()))
-                material = -1;
-            mesh.face_material.push_back(material);
-            mesh.smoothing_group.push_back(has_groups ? shape.mesh.smoothing_group_ids[f] : 0);
+    for (size_t f = 0; f < mesh.face_count(); ++f) {
+        if (f % 65536 == 0) throw_if_cancelled();  // SIGINT / SIGTERM
+        for (uint32_t k = mesh.face_start[f]; k < mesh.face_start[f + 1]; ++k) {
+            const Corner& c = obj.corners[k];
+            check_corner(file, mesh.face_line[f], c, obj);
+            mesh.corners.push_back(vertex({c.v, usable_normal(obj, c.vn), c.vt}));
         }
     }
     return mesh;
+}
+
+/// build_mesh over `mesh`, counting the `dropped` triangles pass 2 left out as if build_mesh had
+/// dropped them itself: in degenerate_skipped, and in the error for a mesh of nothing else.
+MeshData build_mesh_counting(const std::filesystem::path& file, PolygonMesh mesh,
+                             const MeshOptions& options, size_t dropped) {
+    const auto all_degenerate = [&](size_t count) {
+        return InputError(
+            fmt::format("{}: no usable triangles: all {} are degenerate", file.string(), count));
+    };
+    if (dropped > 0 && mesh.face_count() == 0) throw all_degenerate(dropped);
+    try {
+        MeshData out = build_mesh(file, std::move(mesh), options);
+        out.degenerate_skipped += dropped;
+        return out;
+    } catch (const InputError& e) {
+        const std::string prefix = file.string() + ": no usable triangles: all ";
+        const std::string_view message = e.what();
+        size_t count = 0;
+        if (dropped == 0 || !message.starts_with(prefix)) throw;
+        const auto [end, ec] =
+            std::from_chars(message.data() + prefix.size(), message.data() + message.size(), count);
+        if (ec != std::errc() || std::string_view(end) != " are degenerate") throw;
+        throw all_degenerate(count + dropped);
+    }
 }
 
 /// The triangles tinyobjloader made of the faces, in file order, as position indices. It passes
@@ -613,18 +919,27 @@ MeshData load_obj(const std::filesystem::path& file, const MeshOptions& options)
     const std::string text = read_file_bytes(file, InputKind::mesh);
     const size_t face_lines = count_face_lines(text);
     check_obj_memory(file, face_lines, 3 * face_lines, 0);
-    const LineTable lines = scan_obj_text(file, text);
+    MtlReader mtl_reader(file.parent_path());
+    const LineTable lines = scan_obj_text(file, text, mtl_reader);
     check_obj_memory(file, lines.f.size(), lines.corner_count,
-                     lines.v.size() + lines.vt.size() + lines.vn_count);
-    const ParsedObj parsed = parse_with_tinyobj(file, text, lines);
+                     lines.v_count + lines.vt_count + lines.vn_count);
+    std::vector<std::string> warnings = check_statements(file, lines, mtl_reader);
 
-    PolygonMesh mesh = to_polygons(file, parsed, lines);
-    mesh.warnings = parsed.warnings;
+    StreamedObj streamed = ObjStreamer(lines).run(text);
+    const std::vector<tinyobj::material_t>& materials = lines.materials;
+    PolygonMesh mesh = to_polygons(file, streamed, materials.size());
+    const size_t dropped = streamed.degenerate_dropped;
+    streamed = {};  // the attributes are in the polygons now
+    mesh.warnings = std::move(warnings);
+    std::vector<std::filesystem::path> library = mtl_reader.library_of_material();
+    library.resize(materials.size(), file);
+    std::vector<MtlMaterialLines> material_lines = mtl_reader.lines_of_material();
+    material_lines.resize(materials.size());
     TextureFiles textures;
-    for (size_t k = 0; k < parsed.materials.size(); ++k)
-        mesh.materials.push_back(to_material(parsed.materials[k], parsed.material_library[k],
-                                             parsed.material_lines[k], textures));
-    return build_mesh(file, std::move(mesh), options);
+    for (size_t k = 0; k < materials.size(); ++k)
+        mesh.materials.push_back(
+            to_material(materials[k], library[k], material_lines[k], textures));
+    return build_mesh_counting(file, std::move(mesh), options, dropped);
 }
 
 ObjTriangles load_obj_triangles(const std::filesystem::path& file) {

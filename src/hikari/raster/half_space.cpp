@@ -1,6 +1,7 @@
 #include "hikari/raster/half_space.h"
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 namespace hikari {
@@ -35,6 +36,12 @@ bool setup_half_space(const ScreenTriangle& t, int width, int height, HalfSpaceT
         const bool top_left = dy < 0 || (dy == 0 && dx > 0);
         out.bias[i] = top_left ? 0 : -1;
     }
+    // Interpolated 1/w lies between the corners' up to a few roundings of the weights, so the
+    // largest corner value, rounded up by far more than those, bounds every pixel's depth.
+    const auto [least_inv_w, most_inv_w] = std::minmax({out.inv_w[0], out.inv_w[1], out.inv_w[2]});
+    out.nearest_depth = least_inv_w > 0.0f && std::isfinite(most_inv_w)
+                            ? (1.0f / most_inv_w) * (1.0f - 1e-5f)
+                            : -std::numeric_limits<float>::infinity();
     // Pixels i with centre (i + 1/2) inside [min, max].
     const auto [xmin, xmax] = std::minmax({out.x[0], out.x[1], out.x[2]});
     const auto [ymin, ymax] = std::minmax({out.y[0], out.y[1], out.y[2]});

@@ -24,6 +24,9 @@ struct HalfSpaceTriangle {
     std::array<float, 3> z;       ///< ScreenVertex::position.z of each (reordered) vertex
     std::array<int64_t, 3> bias;  ///< 0 for top-left edges (a centre on them is in), −1 else
     int64_t area = 0;             ///< twice the signed area, in 1/256² pixel², > 0
+    /// A lower bound of the depth 1 / inv_w at every covered pixel (−infinity when unknown): a
+    /// Z-buffer whose tile is nearer everywhere can skip the triangle (hierarchical rejection).
+    float nearest_depth = 0;
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  ///< pixels whose centres the bounding box holds,
                                          ///< [x0, x1) × [y0, y1), clipped to the viewport
 };

@@ -286,8 +286,8 @@ std::vector<uint8_t> stencil_shadow_mask(std::span<const VolumePolygon> polygons
         }
     std::vector<HalfSpaceTriangle> setup(pieces.size());
     for (size_t i = 0; i < pieces.size(); ++i) setup[i] = pieces[i].setup;
-    const TileBins bins =
-        bin_triangles(setup, std::vector<uint8_t>(pieces.size(), 1), width, height);
+    TileBins bins;
+    bin_triangles(setup, std::vector<uint8_t>(pieces.size(), 1), width, height, bins);
 
     std::vector<uint8_t> mask(static_cast<size_t>(width) * height, 0);
     for_each_tile(width, height, nullptr, [&](const Tile& tile) {
@@ -306,8 +306,8 @@ std::vector<uint8_t> stencil_shadow_mask(std::span<const VolumePolygon> polygons
                 seen[i] = depth[static_cast<size_t>(y) * width + x];
             }
         const size_t bin = bins.tile_at(tile.x0, tile.y0);
-        for (uint32_t k = bins.begin[bin]; k < bins.begin[bin + 1]; ++k) {
-            const StencilPiece& piece = pieces[bins.triangle[k]];
+        bins.for_each(bin, [&](uint32_t piece_index) {
+            const StencilPiece& piece = pieces[piece_index];
             const auto& pl = piece.plane;
             if (pl[0] == 0.0 && pl[1] == 0.0 && pl[2] == 0.0) {
                 // A cap at infinity lies behind every visible point.
@@ -317,7 +317,7 @@ std::vector<uint8_t> stencil_shadow_mask(std::span<const VolumePolygon> polygons
                                                (y - tile.y0) * k_tile_size + (x - tile.x0);
                                            if (seen[i] < k_infinity) stencil[i] += piece.step;
                                        });
-                continue;
+                return;
             }
             for_each_covered_pixel(piece.setup, tile.x0, tile.y0, tile.x1, tile.y1,
                                    [&](int x, int y, float, float, float) {
@@ -338,7 +338,7 @@ std::vector<uint8_t> stencil_shadow_mask(std::span<const VolumePolygon> polygons
                                        // volume is outside it.
                                        if (t >= seen[i] * (1.0 - 1e-4)) stencil[i] += piece.step;
                                    });
-        }
+        });
         for (int y = tile.y0; y < tile.y1; ++y)
             for (int x = tile.x0; x < tile.x1; ++x)
                 mask[static_cast<size_t>(y) * width + x] =

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "hikari/core/parallel.h"
 #include "hikari/frame/tiles.h"
 
 namespace hikari {
@@ -63,14 +64,20 @@ size_t TileBins::tile_at(int x0, int y0) const {
     return static_cast<size_t>(y0 / k_tile_size) * tiles_x + x0 / k_tile_size;
 }
 
-TileBins bin_triangles(const std::vector<HalfSpaceTriangle>& setup,
-                       const std::vector<uint8_t>& valid, int width, int height) {
-    TileBins bins;
+void bin_triangles(std::span<const HalfSpaceTriangle> setup, std::span<const uint8_t> valid,
+                   int width, int height, TileBins& bins) {
     bins.tiles_x = (width + k_tile_size - 1) / k_tile_size;
     bins.tiles_y = (height + k_tile_size - 1) / k_tile_size;
-    bins.begin.assign(static_cast<size_t>(bins.tiles_x) * bins.tiles_y + 1, 0);
+    const size_t tiles = static_cast<size_t>(bins.tiles_x) * bins.tiles_y;
+    bins.chunk_count =
+        (setup.size() + TileBins::k_chunk_triangles - 1) / TileBins::k_chunk_triangles;
+    if (bins.chunks.size() < bins.chunk_count) bins.chunks.resize(bins.chunk_count);
     auto for_tiles = [&](const HalfSpaceTriangle& t, auto&& fn) {
-        for (int ty = t.y0 / k_tile_size; ty <= (t.y1 - 1) / k_tile_size; ++ty) {
+        const int tx0 = t.x0 / k_tile_size, tx1 = (t.x1 - 1) / k_tile_size;
+        const int ty0 = t.y0 / k_tile_size, ty1 = (t.y1 - 1) / k_tile_size;
+        // Most triangles of a dense mesh lie in one tile: nothing to test.
+        if (tx0 == tx1 && ty0 == ty1) return fn(static_cast<size_t>(ty0) * bins.tiles_x + tx0);
+        for (int ty = ty0; ty <= ty1; ++ty) {
             int first = 0, last = 0;
             const int row0 = std::max(t.y0, ty * k_tile_size);
             const int row1 = std::min(t.y1 - 1, ty * k_tile_size + k_tile_size - 1);
@@ -80,16 +87,26 @@ TileBins bin_triangles(const std::vector<HalfSpaceTriangle>& setup,
                     fn(static_cast<size_t>(ty) * bins.tiles_x + tx);
         }
     };
-    for (size_t i = 0; i < setup.size(); ++i)
-        if (valid[i]) for_tiles(setup[i], [&](size_t tile) { ++bins.begin[tile + 1]; });
-    for (size_t k = 1; k < bins.begin.size(); ++k) bins.begin[k] += bins.begin[k - 1];
-    bins.triangle.resize(bins.begin.back());
-    std::vector<uint32_t> fill(bins.begin.begin(), bins.begin.end() - 1);
-    for (size_t i = 0; i < setup.size(); ++i)
-        if (valid[i])
-            for_tiles(setup[i],
-                      [&](size_t tile) { bins.triangle[fill[tile]++] = static_cast<uint32_t>(i); });
-    return bins;
+    hikari::parallel_for(size_t{0}, bins.chunk_count, [&](size_t c) {
+        TileBins::Chunk& chunk = bins.chunks[c];
+        const size_t first = c * TileBins::k_chunk_triangles;
+        const size_t last = std::min(setup.size(), first + TileBins::k_chunk_triangles);
+        chunk.begin.assign(tiles + 1, 0);
+        for (size_t i = first; i < last; ++i)
+            if (valid[i]) for_tiles(setup[i], [&](size_t tile) { ++chunk.begin[tile + 1]; });
+        for (size_t k = 1; k < chunk.begin.size(); ++k) chunk.begin[k] += chunk.begin[k - 1];
+        chunk.triangle.resize(chunk.begin.back());
+        // Fill from the back, moving each tile's start back to its place as it fills: the
+        // counts array doubles as the fill pointers.
+        for (size_t i = last; i-- > first;)
+            if (valid[i])
+                for_tiles(setup[i], [&](size_t tile) {
+                    chunk.triangle[--chunk.begin[tile + 1]] = static_cast<uint32_t>(i);
+                });
+        // begin[t + 1] now holds the start of tile t; shift back by one.
+        for (size_t k = 0; k < tiles; ++k) chunk.begin[k] = chunk.begin[k + 1];
+        chunk.begin[tiles] = static_cast<uint32_t>(chunk.triangle.size());
+    });
 }
 
 }  // namespace hikari

@@ -1,27 +1,63 @@
 #pragma once
 // Sorting screen triangles into the image's tiles, so that each tile can be rasterized by one
-// thread from the triangles that touch it, in their original order.
+// thread from the triangles that touch it, in their original order. The triangles are binned in
+// fixed chunks, in parallel, each chunk into bins of its own (as llvmpipe's setup threads do);
+// a tile reads the chunks in order, so the order is the triangles' for any thread count.
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "hikari/raster/half_space.h"
 
 namespace hikari {
 
-/// Triangle indices per tile in a flat array (compressed rows), each tile's in ascending order.
+/// Triangle indices per tile, chunk by chunk. Kept from frame to frame: binning the next frame
+/// into the same TileBins reuses its storage.
 struct TileBins {
+    /// Triangles per chunk: a chunk's bins are built by one thread.
+    static constexpr size_t k_chunk_triangles = 16384;
+
+    /// One chunk's bins as compressed rows: the triangles of tile i are
+    /// triangle[begin[i], begin[i + 1]), ascending.
+    struct Chunk {
+        std::vector<uint32_t> begin;
+        std::vector<uint32_t> triangle;
+    };
+
     int tiles_x = 0, tiles_y = 0;
-    std::vector<uint32_t> begin;  ///< tiles_x · tiles_y + 1 offsets into `triangle`
-    std::vector<uint32_t> triangle;
+    std::vector<Chunk> chunks;  ///< only the first `chunk_count` are this frame's
+    size_t chunk_count = 0;
 
     /// The bin of the tile whose top-left pixel is (x0, y0).
     size_t tile_at(int x0, int y0) const;
+
+    /// Calls `fn(triangle index)` for every triangle binned to tile `tile`, in ascending order.
+    template <class Fn>
+    void for_each(size_t tile, Fn&& fn) const {
+        for (size_t c = 0; c < chunk_count; ++c) {
+            const Chunk& chunk = chunks[c];
+            for (uint32_t k = chunk.begin[tile]; k < chunk.begin[tile + 1]; ++k)
+                fn(chunk.triangle[k]);
+        }
+    }
+
+    /// Calls `fn(const uint32_t* triangles, size_t count)` for each chunk's run of the tile's
+    /// triangles, in order (what a kernel loops over).
+    template <class Fn>
+    void for_each_run(size_t tile, Fn&& fn) const {
+        for (size_t c = 0; c < chunk_count; ++c) {
+            const Chunk& chunk = chunks[c];
+            if (chunk.begin[tile + 1] > chunk.begin[tile])
+                fn(chunk.triangle.data() + chunk.begin[tile],
+                   size_t{chunk.begin[tile + 1] - chunk.begin[tile]});
+        }
+    }
 };
 
 /// Bins every triangle of `setup` whose `valid` entry is non-zero into the k_tile_size tiles
-/// (frame/tiles.h) of a width × height image that its bounding box touches.
-TileBins bin_triangles(const std::vector<HalfSpaceTriangle>& setup,
-                       const std::vector<uint8_t>& valid, int width, int height);
+/// (frame/tiles.h) of a width × height image that it may cover, into `bins` (its storage reused).
+void bin_triangles(std::span<const HalfSpaceTriangle> setup, std::span<const uint8_t> valid,
+                   int width, int height, TileBins& bins);
 
 }  // namespace hikari

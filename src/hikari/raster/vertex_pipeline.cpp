@@ -39,33 +39,41 @@ bool finite(Vec4 p) {
 /// What the vertex stage did with a triangle (for --stats).
 enum Fate : uint8_t { k_kept, k_cut, k_clipped_away, k_culled, k_not_finite };
 
+/// The perspective divide, then the viewport (pixel centres at +0.5, y down).
+ScreenVertex to_screen(const RasterView& view, Vec4 clip) {
+    const Vec3 ndc = clip.xyz() * (1.0f / clip.w);
+    const float inv_w = view.orthographic ? 1.5f - 0.5f * ndc.z : 1.0f / clip.w;
+    Vec3 screen = transform_point(view.screen_from_clip, ndc);
+    // Depth key −near/w rather than NDC z: both are affine across the triangle, but NDC z
+    // crowds toward 1 (float spacing 6e-8) when far/near is large.
+    screen.z = -view.near_plane * inv_w;
+    return {screen, inv_w};
+}
+
 /// Clips triangle t and writes its screen-space pieces to `out` (when not null); returns how
-/// many pieces there are, and in `fate` what happened to it.
-int project_one(const ProjectedScene& ps, uint32_t t, bool cull, ScreenTriangle* out,
-                uint8_t& fate) {
-    const auto& idx = ps.scene.triangles.indices[t];
+/// many pieces there are, and in `fate` what happened to it. A triangle whose corners are all
+/// inside the clip volume (most) takes its corners' screen vertices as they are.
+int project_one(const TriangleSet& tris, const RasterView& view, const ScreenProjection& sp,
+                uint32_t t, bool cull, ScreenTriangle* out, uint8_t& fate) {
+    const auto& idx = tris.indices[t];
     fate = k_culled;
-    if (cull && is_back_facing(ps.view, ps.scene.triangles, t)) return 0;
-    const Vec4 a = ps.clip_positions[idx[0]], b = ps.clip_positions[idx[1]],
-               c = ps.clip_positions[idx[2]];
+    if (cull && is_back_facing(view, tris, t)) return 0;
+    if (sp.vertex_inside[idx[0]] && sp.vertex_inside[idx[1]] && sp.vertex_inside[idx[2]]) {
+        fate = k_kept;
+        if (out) *out = {{sp.screen[idx[0]], sp.screen[idx[1]], sp.screen[idx[2]]}, t};
+        return 1;
+    }
+    const Vec4 a = sp.clip_positions[idx[0]], b = sp.clip_positions[idx[1]],
+               c = sp.clip_positions[idx[2]];
     fate = k_not_finite;
     if (!finite(a) || !finite(b) || !finite(c)) return 0;
     const ClipPolygon poly = clip_triangle(a, b, c);
     fate = k_clipped_away;
     if (poly.count < 3) return 0;
-    fate = inside_clip_volume(a) && inside_clip_volume(b) && inside_clip_volume(c) ? k_kept : k_cut;
+    fate = k_cut;
     if (out) {
-        // The perspective divide, then the viewport (pixel centres at +0.5, y down).
         std::array<ScreenVertex, k_max_clip_vertices> sv;
-        for (int i = 0; i < poly.count; ++i) {
-            const Vec3 ndc = poly.v[i].xyz() * (1.0f / poly.v[i].w);
-            const float inv_w = ps.view.orthographic ? 1.5f - 0.5f * ndc.z : 1.0f / poly.v[i].w;
-            Vec3 screen = transform_point(ps.view.screen_from_clip, ndc);
-            // Depth key −near/w rather than NDC z: both are affine across the triangle, but
-            // NDC z crowds toward 1 (float spacing 6e-8) when far/near is large.
-            screen.z = -ps.view.near_plane * inv_w;
-            sv[i] = {screen, inv_w};
-        }
+        for (int i = 0; i < poly.count; ++i) sv[i] = to_screen(view, poly.v[i]);
         for (int i = 1; i + 1 < poly.count; ++i) out[i - 1] = {{sv[0], sv[i], sv[i + 1]}, t};
     }
     return poly.count - 2;
@@ -129,39 +137,64 @@ RasterView make_raster_view(const Camera& camera, const RasterScene& scene, Vec2
     return v;
 }
 
+void project_to_screen(const TriangleSet& tris, const RasterView& view, bool cull_back_faces,
+                       ScreenProjection& out) {
+    const size_t vertices = tris.positions.size();
+    out.clip_positions.resize(vertices);
+    out.screen.resize(vertices);
+    out.vertex_inside.resize(vertices);
+    hikari::parallel_for(tbb::blocked_range<size_t>(0, vertices, 4096),
+                         [&](const tbb::blocked_range<size_t>& range) {
+                             for (size_t i = range.begin(); i != range.end(); ++i) {
+                                 const Vec4 c =
+                                     view.clip_from_world * Vec4(tris.positions[i], 1.0f);
+                                 out.clip_positions[i] = c;
+                                 out.vertex_inside[i] = inside_clip_volume(c) ? 1 : 0;
+                                 if (out.vertex_inside[i]) out.screen[i] = to_screen(view, c);
+                             }
+                         });
+
+    // Count the pieces of every triangle, place them by a prefix sum, then write them: the
+    // output is in scene order whatever the thread count.
+    const size_t n = tris.size();
+    out.offset.assign(n + 1, 0);
+    out.fate.resize(n);
+    hikari::parallel_for(
+        tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& range) {
+            for (size_t t = range.begin(); t != range.end(); ++t)
+                out.offset[t + 1] =
+                    static_cast<uint32_t>(project_one(tris, view, out, static_cast<uint32_t>(t),
+                                                      cull_back_faces, nullptr, out.fate[t]));
+        });
+    for (size_t t = 0; t < n; ++t) out.offset[t + 1] += out.offset[t];
+    out.triangles.resize(out.offset[n]);
+    hikari::parallel_for(
+        tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& range) {
+            for (size_t t = range.begin(); t != range.end(); ++t) {
+                uint8_t again = 0;
+                if (out.offset[t + 1] > out.offset[t])
+                    project_one(tris, view, out, static_cast<uint32_t>(t), cull_back_faces,
+                                &out.triangles[out.offset[t]], again);
+            }
+        });
+    out.counts = {};
+    out.counts.triangles_in = n;
+    for (const uint8_t f : out.fate) {
+        out.counts.culled += f == k_culled;
+        out.counts.clipped_away += f == k_clipped_away || f == k_not_finite;
+        out.counts.cut += f == k_cut;
+    }
+}
+
 ProjectedScene project_triangles(RasterScene scene, const RasterView& view, bool cull_back_faces) {
     ProjectedScene ps;
     ps.scene = std::move(scene);
     ps.view = view;
-    const auto& positions = ps.scene.triangles.positions;
-    ps.clip_positions.resize(positions.size());
-    hikari::parallel_for(size_t{0}, positions.size(), [&](size_t i) {
-        ps.clip_positions[i] = view.clip_from_world * Vec4(positions[i], 1.0f);
-    });
-
-    // Count the pieces of every triangle, place them by a prefix sum, then write them: the
-    // output is in scene order whatever the thread count.
-    const size_t n = ps.scene.triangles.size();
-    std::vector<uint32_t> offset(n + 1, 0);
-    std::vector<uint8_t> fate(n);
-    hikari::parallel_for(size_t{0}, n, [&](size_t t) {
-        offset[t + 1] = static_cast<uint32_t>(
-            project_one(ps, static_cast<uint32_t>(t), cull_back_faces, nullptr, fate[t]));
-    });
-    for (size_t t = 0; t < n; ++t) offset[t + 1] += offset[t];
-    ps.triangles.resize(offset[n]);
-    hikari::parallel_for(size_t{0}, n, [&](size_t t) {
-        uint8_t again = 0;
-        if (offset[t + 1] > offset[t])
-            project_one(ps, static_cast<uint32_t>(t), cull_back_faces, &ps.triangles[offset[t]],
-                        again);
-    });
-    ps.counts.triangles_in = n;
-    for (const uint8_t f : fate) {
-        ps.counts.culled += f == k_culled;
-        ps.counts.clipped_away += f == k_clipped_away || f == k_not_finite;
-        ps.counts.cut += f == k_cut;
-    }
+    ScreenProjection sp;
+    project_to_screen(ps.scene.triangles, view, cull_back_faces, sp);
+    ps.clip_positions = std::move(sp.clip_positions);
+    ps.triangles = std::move(sp.triangles);
+    ps.counts = sp.counts;
     return ps;
 }
 

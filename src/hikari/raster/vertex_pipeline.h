@@ -81,6 +81,24 @@ struct ProjectedScene {
     VertexStageCounts counts;
 };
 
+/// The vertex stage's output for one frame, with its scratch: projecting frame after frame into
+/// the same ScreenProjection allocates nothing once it has grown to size.
+struct ScreenProjection {
+    std::vector<Vec4> clip_positions;       ///< clip_from_world · p for every vertex
+    std::vector<ScreenTriangle> triangles;  ///< in triangle order; pieces of a clipped one follow
+    VertexStageCounts counts;
+    std::vector<ScreenVertex> screen;    ///< every vertex inside the clip volume, projected
+    std::vector<uint8_t> vertex_inside;  ///< 1 where the vertex is inside the clip volume
+    std::vector<uint32_t> offset;        ///< first screen triangle of each triangle
+    std::vector<uint8_t> fate;           ///< what the stage did with each triangle
+};
+
+/// The vertex stage of `tris` through `view` into `out`: culls back faces when
+/// `cull_back_faces`, clips in clip space, divides by w and maps to pixels; parallel, and the
+/// output does not depend on the thread count.
+void project_to_screen(const TriangleSet& tris, const RasterView& view, bool cull_back_faces,
+                       ScreenProjection& out);
+
 /// Projects every triangle of `scene` through `view`: culls back faces when `cull_back_faces`
 /// (D = V·N > 0, raster/cull.h), clips in clip space (raster/clip.h), divides by w and maps to
 /// pixels. Runs in parallel over triangles; the output order does not depend on the threads.

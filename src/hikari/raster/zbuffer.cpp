@@ -1,5 +1,7 @@
 #include "hikari/raster/zbuffer.h"
 
+#include <algorithm>
+#include <array>
 #include <vector>
 
 #include "hikari/core/parallel.h"
@@ -9,6 +11,7 @@
 #include "hikari/raster/shade_visibility.h"
 #include "hikari/raster/tile_bins.h"
 #include "hikari/raster/vertex_pipeline.h"
+#include "hikari/raster/zbuffer_tile.h"
 
 namespace hikari {
 
@@ -40,18 +43,24 @@ struct FragmentCounts {
     }
 };
 
+/// Alg 4.2 over every tile of the image, into `nearest_out` and `depth_out` (row-major, either
+/// may be null). The render's pass runs the SIMD tile kernel; an observer that must see every
+/// fragment gets the per-pixel loop, which computes the same buffer.
 template <class Observer>
-VisibilityBuffer zbuffer_pass(std::span<const ScreenTriangle> triangles, int width, int height,
-                              RenderControl* control, const Observer& observer,
-                              const SphereRaster* spheres = nullptr) {
-    VisibilityBuffer vis{width, height,
-                         std::vector<uint32_t>(static_cast<size_t>(width) * height, k_no_triangle)};
-    std::vector<HalfSpaceTriangle> setup(triangles.size());
-    std::vector<uint8_t> valid(triangles.size());
-    hikari::parallel_for(size_t{0}, triangles.size(), [&](size_t i) {
-        valid[i] = setup_half_space(triangles[i], width, height, setup[i]) ? 1 : 0;
-    });
-    const TileBins bins = bin_triangles(setup, valid, width, height);
+void zbuffer_pass(std::span<const ScreenTriangle> triangles, int width, int height,
+                  ZBufferWorkspace& ws, uint32_t* nearest_out, float* depth_out,
+                  RenderControl* control, const Observer& observer, const SphereRaster* spheres,
+                  SimdLevel level) {
+    ws.setup.resize(triangles.size());
+    ws.valid.resize(triangles.size());
+    hikari::parallel_for(
+        tbb::blocked_range<size_t>(0, triangles.size(), 1024),
+        [&](const tbb::blocked_range<size_t>& range) {
+            for (size_t i = range.begin(); i != range.end(); ++i)
+                ws.valid[i] = setup_half_space(triangles[i], width, height, ws.setup[i]) ? 1 : 0;
+        });
+    bin_triangles(ws.setup, ws.valid, width, height, ws.bins);
+    ZBufferTileKernel* const kernel = zbuffer_tile_kernel(level);
 
     for_each_tile(width, height, control, [&](const Tile& tile) {
         // Alg 4.2: Z(i, j) = ∞ for every pixel of the tile.
@@ -59,36 +68,64 @@ VisibilityBuffer zbuffer_pass(std::span<const ScreenTriangle> triangles, int wid
         std::array<uint32_t, k_tile_size * k_tile_size> nearest;
         depth.fill(k_infinity);
         nearest.fill(k_no_triangle);
-        const size_t tile_index = bins.tile_at(tile.x0, tile.y0);
-        for (uint32_t k = bins.begin[tile_index]; k < bins.begin[tile_index + 1]; ++k) {
-            const uint32_t t = bins.triangle[k];
-            const HalfSpaceTriangle& h = setup[t];
-            for_each_covered_pixel(h, tile.x0, tile.y0, tile.x1, tile.y1,
-                                   [&](int x, int y, float b0, float b1, float b2) {
-                                       // 1/w is affine in screen space: interpolate it, invert.
-                                       const float inv_w =
-                                           b0 * h.inv_w[0] + b1 * h.inv_w[1] + b2 * h.inv_w[2];
-                                       const float z = 1.0f / inv_w;
-                                       const int i = (y - tile.y0) * k_tile_size + (x - tile.x0);
-                                       if constexpr (Observer::k_active)
-                                           observer.fragment(x, y, t, z, depth[i], z < depth[i]);
-                                       // Alg 4.2: the depth test; nearer fragments replace.
-                                       if (z < depth[i]) {
-                                           depth[i] = z;
-                                           nearest[i] = t;
-                                       }
-                                   });
+        const size_t tile_index = ws.bins.tile_at(tile.x0, tile.y0);
+        if constexpr (Observer::k_active) {
+            ws.bins.for_each(tile_index, [&](uint32_t t) {
+                const HalfSpaceTriangle& h = ws.setup[t];
+                for_each_covered_pixel(
+                    h, tile.x0, tile.y0, tile.x1, tile.y1,
+                    [&](int x, int y, float b0, float b1, float b2) {
+                        // 1/w is affine in screen space: interpolate it, invert.
+                        const float inv_w = b0 * h.inv_w[0] + b1 * h.inv_w[1] + b2 * h.inv_w[2];
+                        const float z = 1.0f / inv_w;
+                        const int i = (y - tile.y0) * k_tile_size + (x - tile.x0);
+                        observer.fragment(x, y, t, z, depth[i], z < depth[i]);
+                        // Alg 4.2: the depth test; nearer fragments replace.
+                        if (z < depth[i]) {
+                            depth[i] = z;
+                            nearest[i] = t;
+                        }
+                    });
+            });
+        } else {
+            TileDepth target{&tile, depth.data(), nearest_out || spheres ? nearest.data() : nullptr,
+                             k_infinity};
+            ws.bins.for_each_run(tile_index, [&](const uint32_t* run, size_t count) {
+                kernel(ws.setup.data(), run, count, target);
+            });
         }
         if (spheres) draw_spheres_in_tile(*spheres, tile, depth.data(), nearest.data());
-        for (int y = tile.y0; y < tile.y1; ++y)
-            for (int x = tile.x0; x < tile.x1; ++x)
-                vis.triangle[static_cast<size_t>(y) * width + x] =
-                    nearest[(y - tile.y0) * k_tile_size + (x - tile.x0)];
+        for (int y = tile.y0; y < tile.y1; ++y) {
+            const size_t row = static_cast<size_t>(y) * width + tile.x0;
+            const size_t local = static_cast<size_t>(y - tile.y0) * k_tile_size;
+            const auto columns = static_cast<size_t>(tile.x1 - tile.x0);
+            if (nearest_out) std::copy_n(nearest.data() + local, columns, nearest_out + row);
+            if (depth_out) std::copy_n(depth.data() + local, columns, depth_out + row);
+        }
     });
+}
+
+/// zbuffer_pass into a new visibility buffer.
+template <class Observer>
+VisibilityBuffer zbuffer_pass(std::span<const ScreenTriangle> triangles, int width, int height,
+                              RenderControl* control, const Observer& observer,
+                              const SphereRaster* spheres = nullptr) {
+    VisibilityBuffer vis{width, height,
+                         std::vector<uint32_t>(static_cast<size_t>(width) * height, k_no_triangle)};
+    ZBufferWorkspace ws;
+    zbuffer_pass(triangles, width, height, ws, vis.triangle.data(), nullptr, control, observer,
+                 spheres, best_simd_level());
     return vis;
 }
 
 }  // namespace
+
+void zbuffer_draw(std::span<const ScreenTriangle> triangles, int width, int height,
+                  ZBufferWorkspace& workspace, uint32_t* nearest, float* depth,
+                  RenderControl* control, SimdLevel level) {
+    zbuffer_pass(triangles, width, height, workspace, nearest, depth, control, NoFragmentObserver{},
+                 nullptr, level);
+}
 
 VisibilityBuffer zbuffer_visibility(std::span<const ScreenTriangle> triangles, int width,
                                     int height, RenderControl* control,

@@ -5,12 +5,14 @@
 #include <span>
 #include <vector>
 
+#include "hikari/core/simd_level.h"
 #include "hikari/frame/film.h"
 #include "hikari/frame/framebuffer.h"
 #include "hikari/frame/render_settings.h"
 #include "hikari/raster/raster_settings.h"
 #include "hikari/raster/screen_triangle.h"
 #include "hikari/raster/sphere_raster.h"
+#include "hikari/raster/tile_bins.h"
 #include "hikari/scene/scene.h"
 
 namespace hikari {
@@ -25,6 +27,22 @@ namespace hikari {
 VisibilityBuffer zbuffer_visibility(std::span<const ScreenTriangle> triangles, int width,
                                     int height, RenderControl* control = nullptr,
                                     const SphereRaster* spheres = nullptr);
+
+/// What the Z-buffer keeps from one frame to the next: the triangles' setup and their tile bins.
+/// Drawing frame after frame with one workspace allocates nothing once it has grown to size.
+struct ZBufferWorkspace {
+    std::vector<HalfSpaceTriangle> setup;
+    std::vector<uint8_t> valid;
+    TileBins bins;
+};
+
+/// zbuffer_visibility into buffers the caller owns: `nearest` (the ScreenTriangle seen at each
+/// pixel) and `depth` (its depth 1 / inv_w, +infinity where none), width × height row-major;
+/// either may be null (a depth-only pass). Edge functions and depth tests run `level`'s SIMD
+/// kernel (raster/zbuffer_tile.h); every level gives the same buffers.
+void zbuffer_draw(std::span<const ScreenTriangle> triangles, int width, int height,
+                  ZBufferWorkspace& workspace, uint32_t* nearest, float* depth,
+                  RenderControl* control = nullptr, SimdLevel level = best_simd_level());
 
 /// One pass of Alg 4.2's inner loop at one pixel: a triangle's fragment, its depth, what the
 /// Z-buffer held when it was tested, and whether the test let it replace that.
