@@ -31,6 +31,7 @@
 #include "gallery.h"
 #include "hikari/bench/bench_runner.h"
 #include "hikari/bench/path_bench.h"
+#include "hikari/bench/raster_bench.h"
 #include "hikari/core/cancel.h"
 #include "hikari/core/error.h"
 #include "hikari/core/memory_budget.h"
@@ -654,12 +655,16 @@ struct BenchOptions {
     int threads = 1;
     std::optional<int> repetitions;  // default: 5 for B1 and B2, 3 for B5 (the SPEC's)
     bool packets = false;
+    bool shadow = false;  // B4
+    std::string output;   // B4: the last frame
 };
 
 /// `hikari bench B5`: the path tracer on the Cornell box (SPEC §7), one JSON object on stdout.
 int run_path_bench_command(const BenchOptions& o) {
-    if (!o.mesh.empty() || o.packets || o.simd)
-        throw InputError("B5 renders a scene: --mesh, --packets and --simd are for B1 and B2");
+    if (!o.mesh.empty() || o.packets || o.simd || o.shadow || !o.output.empty())
+        throw InputError(
+            "B5 renders a scene: --mesh, --packets, --simd, --shadow and --output are for B1, B2 "
+            "and B4");
     const std::string file =
         o.scene.empty() ? std::string(HIKARI_SOURCE_DIR) + "/scenes/bench/cornell.json" : o.scene;
     std::vector<std::string> warnings;
@@ -674,9 +679,36 @@ int run_path_bench_command(const BenchOptions& o) {
     return 0;
 }
 
-/// `hikari bench`: one JSON object on stdout (SPEC's B1 or B2 on one mesh, or B5).
+/// `hikari bench B4`: the raster frame of SPEC §6, one JSON object on stdout.
+int run_raster_bench_command(const BenchOptions& o) {
+    if (o.packets || !o.scene.empty())
+        throw InputError("B4 draws a mesh: --packets and --scene are for B1 and B5");
+    RasterBenchSettings settings;
+    settings.threads = o.threads;
+    settings.shadow = o.shadow;
+    settings.timed_frames = o.repetitions.value_or(settings.timed_frames);
+    if (o.simd) {
+        settings.simd = *o.simd;
+        if (!simd_level_supported(settings.simd))
+            throw InputError(
+                fmt::format("this CPU cannot run --simd {}", simd_level_name(settings.simd)));
+    }
+    const BenchMesh mesh = load_bench_mesh(o.mesh);
+    const tbb::global_control thread_limit(tbb::global_control::max_allowed_parallelism,
+                                           static_cast<size_t>(o.threads));
+    Srgb8Image image;
+    const RasterBenchResult result =
+        run_raster_bench(mesh, std::filesystem::path(o.mesh).stem().string(), settings, &image);
+    if (!o.output.empty()) write_image(o.output, image);
+    fmt::print("{}\n", result.to_json());
+    return 0;
+}
+
+/// `hikari bench`: one JSON object on stdout (SPEC's B1, B2 or B4 on one mesh, or B5).
 int run_bench_command(const BenchOptions& o) {
     if (o.bench == "B5") return run_path_bench_command(o);
+    if (o.bench == "B4") return run_raster_bench_command(o);
+    if (o.shadow || !o.output.empty()) throw InputError("--shadow and --output are for B4");
     if (!o.scene.empty()) throw InputError("--scene is for B5");
     BenchSettings settings;
     settings.bench = o.bench;
@@ -1100,13 +1132,14 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& b) {
         "bench", "Run a peer benchmark (bench/SPEC.md) and print one JSON object on stdout.");
     bench
         ->add_option("name", b.bench,
-                     "B1 (primary rays, closest hit), B2 (occlusion rays) or B5 (path-traced "
-                     "Cornell box, 64 spp, 8 bounces)")
+                     "B1 (primary rays, closest hit), B2 (occlusion rays), B4 (rasterized "
+                     "1920x1080 Phong frame, as llvmpipe draws it) or B5 (path-traced Cornell "
+                     "box, 64 spp, 8 bounces)")
         ->required()
-        ->check(CLI::IsMember({"B1", "B2", "B5"}));
+        ->check(CLI::IsMember({"B1", "B2", "B4", "B5"}));
     // No CLI::ExistingFile: a missing or unreadable mesh is an input error (exit 1), as for
     // a render's scene file, reported by the loader.
-    bench->add_option("--mesh", b.mesh, "B1, B2: OBJ mesh (positions and faces are read)");
+    bench->add_option("--mesh", b.mesh, "B1, B2, B4: OBJ mesh (positions and faces are read)");
     bench->add_option("--scene", b.scene,
                       "B5: scene file (default: the repository's scenes/bench/cornell.json)");
     bench->add_option("--threads", b.threads, "Threads for build and trace")
@@ -1114,13 +1147,18 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& b) {
         ->capture_default_str();
     bench
         ->add_option("--reps", b.repetitions,
-                     "Timed repetitions after one warm-up (default: 5; B5: 3)")
+                     "Timed repetitions after the warm-up (default: 5; B4: 20 frames after 3; "
+                     "B5: 3)")
         ->check(whole_in(1, 1000));
     add_choice_option<std::optional<SimdLevel>>(
         *bench, "--simd", "Traversal kernel: auto (best), portable, avx2, avx512", k_simd_choices,
         b.simd);
     bench->add_flag("--packets", b.packets,
                     "B1 as 4x4 pixel packets (coherent packet traversal); reported as B1p16");
+    bench->add_flag("--shadow", b.shadow,
+                    "B4 with the 2048x2048 shadow-map pass before every frame");
+    bench->add_option("-o,--output", b.output,
+                      "B4: write the last frame (PNG, PPM, ...), to compare with llvmpipe's");
     return bench;
 }
 

@@ -6,6 +6,14 @@
 
 namespace hikari {
 
+namespace {
+
+/// std::llround without the library call: a float times 256 is exact in double, and so is that
+/// plus or minus one half below 2^52, so truncating it rounds halves away from zero as llround.
+int64_t round_half_away(double v) { return static_cast<int64_t>(v + std::copysign(0.5, v)); }
+
+}  // namespace
+
 bool setup_half_space(const ScreenTriangle& t, int width, int height, HalfSpaceTriangle& out) {
     // Far beyond the guard band (raster/clip.h): products of differences stay below 2^63.
     constexpr double k_limit = 1 << 28;
@@ -13,8 +21,8 @@ bool setup_half_space(const ScreenTriangle& t, int width, int height, HalfSpaceT
     for (int i = 0; i < 3; ++i) {
         const Vec3 p = t.v[i].position;
         if (!(std::abs(p.x) < k_limit && std::abs(p.y) < k_limit)) return false;
-        out.x[i] = std::llround(static_cast<double>(p.x) * k_subpixel_one);
-        out.y[i] = std::llround(static_cast<double>(p.y) * k_subpixel_one);
+        out.x[i] = round_half_away(static_cast<double>(p.x) * k_subpixel_one);
+        out.y[i] = round_half_away(static_cast<double>(p.y) * k_subpixel_one);
     }
     int64_t area = (out.x[1] - out.x[0]) * (out.y[2] - out.y[0]) -
                    (out.y[1] - out.y[0]) * (out.x[2] - out.x[0]);

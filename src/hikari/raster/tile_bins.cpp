@@ -72,12 +72,9 @@ void bin_triangles(std::span<const HalfSpaceTriangle> setup, std::span<const uin
     bins.chunk_count =
         (setup.size() + TileBins::k_chunk_triangles - 1) / TileBins::k_chunk_triangles;
     if (bins.chunks.size() < bins.chunk_count) bins.chunks.resize(bins.chunk_count);
+    bins.home.resize(setup.size());
     auto for_tiles = [&](const HalfSpaceTriangle& t, auto&& fn) {
-        const int tx0 = t.x0 / k_tile_size, tx1 = (t.x1 - 1) / k_tile_size;
-        const int ty0 = t.y0 / k_tile_size, ty1 = (t.y1 - 1) / k_tile_size;
-        // Most triangles of a dense mesh lie in one tile: nothing to test.
-        if (tx0 == tx1 && ty0 == ty1) return fn(static_cast<size_t>(ty0) * bins.tiles_x + tx0);
-        for (int ty = ty0; ty <= ty1; ++ty) {
+        for (int ty = t.y0 / k_tile_size; ty <= (t.y1 - 1) / k_tile_size; ++ty) {
             int first = 0, last = 0;
             const int row0 = std::max(t.y0, ty * k_tile_size);
             const int row1 = std::min(t.y1 - 1, ty * k_tile_size + k_tile_size - 1);
@@ -92,17 +89,37 @@ void bin_triangles(std::span<const HalfSpaceTriangle> setup, std::span<const uin
         const size_t first = c * TileBins::k_chunk_triangles;
         const size_t last = std::min(setup.size(), first + TileBins::k_chunk_triangles);
         chunk.begin.assign(tiles + 1, 0);
-        for (size_t i = first; i < last; ++i)
-            if (valid[i]) for_tiles(setup[i], [&](size_t tile) { ++chunk.begin[tile + 1]; });
+        // Count, noting each triangle's one tile when it has one: the fill pass then reads four
+        // bytes of it, not its setup again.
+        for (size_t i = first; i < last; ++i) {
+            bins.home[i] = TileBins::k_none;
+            if (!valid[i]) continue;
+            const HalfSpaceTriangle& t = setup[i];
+            const int tx = t.x0 / k_tile_size, ty = t.y0 / k_tile_size;
+            if (tx == (t.x1 - 1) / k_tile_size && ty == (t.y1 - 1) / k_tile_size) {
+                const auto tile = static_cast<uint32_t>(ty * bins.tiles_x + tx);
+                bins.home[i] = tile;
+                ++chunk.begin[tile + 1];
+                continue;
+            }
+            bins.home[i] = TileBins::k_several;
+            for_tiles(t, [&](size_t tile) { ++chunk.begin[tile + 1]; });
+        }
         for (size_t k = 1; k < chunk.begin.size(); ++k) chunk.begin[k] += chunk.begin[k - 1];
         chunk.triangle.resize(chunk.begin.back());
         // Fill from the back, moving each tile's start back to its place as it fills: the
         // counts array doubles as the fill pointers.
-        for (size_t i = last; i-- > first;)
-            if (valid[i])
-                for_tiles(setup[i], [&](size_t tile) {
-                    chunk.triangle[--chunk.begin[tile + 1]] = static_cast<uint32_t>(i);
-                });
+        for (size_t i = last; i-- > first;) {
+            const uint32_t home = bins.home[i];
+            if (home == TileBins::k_none) continue;
+            if (home != TileBins::k_several) {
+                chunk.triangle[--chunk.begin[home + 1]] = static_cast<uint32_t>(i);
+                continue;
+            }
+            for_tiles(setup[i], [&](size_t tile) {
+                chunk.triangle[--chunk.begin[tile + 1]] = static_cast<uint32_t>(i);
+            });
+        }
         // begin[t + 1] now holds the start of tile t; shift back by one.
         for (size_t k = 0; k < tiles; ++k) chunk.begin[k] = chunk.begin[k + 1];
         chunk.begin[tiles] = static_cast<uint32_t>(chunk.triangle.size());

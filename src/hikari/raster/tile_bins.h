@@ -26,7 +26,12 @@ struct TileBins {
     };
 
     int tiles_x = 0, tiles_y = 0;
-    std::vector<Chunk> chunks;  ///< only the first `chunk_count` are this frame's
+    std::vector<Chunk> chunks;
+    /// Per triangle, scratch of the binning: its one tile, or k_several / k_none.
+    std::vector<uint32_t> home;
+    static constexpr uint32_t k_several = 0xfffffffe,
+                              k_none =
+                                  0xffffffff;  ///< only the first `chunk_count` are this frame's
     size_t chunk_count = 0;
 
     /// The bin of the tile whose top-left pixel is (x0, y0).

@@ -10,6 +10,7 @@
 
 #if HIKARI_SIMD_KERNELS
 #pragma GCC target("avx2,popcnt,bmi,bmi2,lzcnt")
+#define HIKARI_ZBUFFER_AVX2 1
 #include "hikari/raster/zbuffer_tile_kernel.h"
 
 namespace hikari::detail {

@@ -9,6 +9,10 @@
 #include <cstdint>
 #include <cstring>
 
+#if defined(HIKARI_ZBUFFER_AVX512) || defined(HIKARI_ZBUFFER_AVX2)
+#include <immintrin.h>
+#endif
+
 #include "hikari/raster/zbuffer_tile.h"
 
 namespace hikari::detail {
@@ -42,77 +46,228 @@ void draw_per_pixel(const HalfSpaceTriangle& h, uint32_t id, TileDepth& target) 
         });
 }
 
-/// One triangle over the tile in rows of 8 pixels aligned to the tile. The arithmetic is
-/// for_each_covered_pixel's: exact edge functions E(p) = dx (p.y − a.y) − dy (p.x − a.x) + bias
-/// in 1/256 pixel units, weights (E − bias) / area in float, z = 1 / Σ b_i inv_w_i.
-void draw_lanes(const HalfSpaceTriangle& h, uint32_t id, TileDepth& target) {
-    const Tile& tile = *target.tile;
-    const int x0 = std::max(tile.x0, h.x0), x1 = std::min(tile.x1, h.x1);
-    const int y0 = std::max(tile.y0, h.y0), y1 = std::min(tile.y1, h.y1);
-    if (x0 >= x1 || y0 >= y1) return;
-    // The first lane group: the 8-pixel column of the tile that holds x0.
-    const int g0 = tile.x0 + (x0 - tile.x0) / k_lanes * k_lanes;
-    const int64_t px = int64_t{g0} * k_subpixel_one + k_subpixel_one / 2;
-    const int64_t py = int64_t{y0} * k_subpixel_one + k_subpixel_one / 2;
+/// What every lane version of draw_lanes needs: the triangle's bounds in the tile, the edge
+/// functions at the first row's first lane group, their steps, and each lane's offset.
+struct LaneSetup {
+    int x0, x1, y0, y1;  ///< pixels of the triangle's bounds inside the tile
+    int g0;              ///< the first lane group: the 8-pixel column of the tile that holds x0
     int64_t row[3], step_y[3], group_step[3];
     alignas(64) int64_t lane_offset[3][k_lanes];
-    for (int e = 0; e < 3; ++e) {
-        const int a = (e + 1) % 3, b = (e + 2) % 3;
-        const int64_t dx = h.x[b] - h.x[a], dy = h.y[b] - h.y[a];
-        row[e] = dx * (py - h.y[a]) - dy * (px - h.x[a]) + h.bias[e];
-        step_y[e] = dx * k_subpixel_one;
-        group_step[e] = -dy * k_subpixel_one * k_lanes;
-        for (int k = 0; k < k_lanes; ++k) lane_offset[e][k] = -dy * k_subpixel_one * k;
-    }
-    const float inv_area = 1.0f / static_cast<float>(h.area);
-    const float iw0 = h.inv_w[0], iw1 = h.inv_w[1], iw2 = h.inv_w[2];
-    const int64_t bias0 = h.bias[0], bias1 = h.bias[1], bias2 = h.bias[2];
-    for (int y = y0; y < y1; ++y) {
-        int64_t base0 = row[0], base1 = row[1], base2 = row[2];
-        for (int g = g0; g < x1; g += k_lanes) {
-            alignas(64) int64_t e0[k_lanes], e1[k_lanes], e2[k_lanes];
-            alignas(32) int32_t inside[k_lanes];
-            int32_t any = 0;
-            for (int k = 0; k < k_lanes; ++k) {
-                e0[k] = base0 + lane_offset[0][k];
-                e1[k] = base1 + lane_offset[1][k];
-                e2[k] = base2 + lane_offset[2][k];
-                const int x = g + k;
-                inside[k] = ((e0[k] | e1[k] | e2[k]) >= 0) & (x >= x0) & (x < x1) ? -1 : 0;
-                any |= inside[k];
-            }
-            base0 += group_step[0];
-            base1 += group_step[1];
-            base2 += group_step[2];
-            if (!any) continue;
-            const int at = (y - tile.y0) * k_tile_size + (g - tile.x0);
-            float* depth = target.depth + at;
-            alignas(32) float z[k_lanes];
-            alignas(32) int32_t won[k_lanes];
-            for (int k = 0; k < k_lanes; ++k) {
-                const float b0 = exact_to_float(e0[k] - bias0) * inv_area;
-                const float b1 = exact_to_float(e1[k] - bias1) * inv_area;
-                const float b2 = exact_to_float(e2[k] - bias2) * inv_area;
-                z[k] = 1.0f / (b0 * iw0 + b1 * iw1 + b2 * iw2);
-                // Alg 4.2's depth test; lanes past the tile's row end are never inside.
-                won[k] = inside[k] & (z[k] < depth[k] ? -1 : 0);
-                depth[k] = won[k] ? z[k] : depth[k];
-            }
-            if (target.nearest) {
-                uint32_t* nearest = target.nearest + at;
-                for (int k = 0; k < k_lanes; ++k) nearest[k] = won[k] ? id : nearest[k];
-            }
+    float inv_area;
+
+    /// False when the triangle's bounds miss the tile.
+    bool init(const HalfSpaceTriangle& h, const Tile& tile) {
+        x0 = std::max(tile.x0, h.x0), x1 = std::min(tile.x1, h.x1);
+        y0 = std::max(tile.y0, h.y0), y1 = std::min(tile.y1, h.y1);
+        if (x0 >= x1 || y0 >= y1) return false;
+        g0 = tile.x0 + (x0 - tile.x0) / k_lanes * k_lanes;
+        const int64_t px = int64_t{g0} * k_subpixel_one + k_subpixel_one / 2;
+        const int64_t py = int64_t{y0} * k_subpixel_one + k_subpixel_one / 2;
+        for (int e = 0; e < 3; ++e) {
+            const int a = (e + 1) % 3, b = (e + 2) % 3;
+            const int64_t dx = h.x[b] - h.x[a], dy = h.y[b] - h.y[a];
+            row[e] = dx * (py - h.y[a]) - dy * (px - h.x[a]) + h.bias[e];
+            step_y[e] = dx * k_subpixel_one;
+            group_step[e] = -dy * k_subpixel_one * k_lanes;
+            for (int k = 0; k < k_lanes; ++k) lane_offset[e][k] = -dy * k_subpixel_one * k;
         }
-        row[0] += step_y[0];
-        row[1] += step_y[1];
-        row[2] += step_y[2];
+        inv_area = 1.0f / static_cast<float>(h.area);
+        return true;
+    }
+
+    /// Bit k set where pixel g + k lies in [x0, x1).
+    unsigned column_bits(int g) const {
+        const int lo = std::max(x0 - g, 0), hi = std::min(x1 - g, k_lanes);
+        return ((1u << hi) - 1u) & ~((1u << lo) - 1u);
+    }
+};
+
+#if defined(HIKARI_ZBUFFER_AVX512)
+/// One triangle over the tile in rows of 8 pixels aligned to the tile, AVX-512: the 8 lanes'
+/// edge functions in one register of int64, converted exactly (vcvtqq2ps rounds once, as
+/// static_cast<float> does).
+void draw_lanes(const HalfSpaceTriangle& h, uint32_t id, TileDepth& target) {
+    const Tile& tile = *target.tile;
+    LaneSetup s;
+    if (!s.init(h, tile)) return;
+    const __m512i off0 = _mm512_load_si512(s.lane_offset[0]);
+    const __m512i off1 = _mm512_load_si512(s.lane_offset[1]);
+    const __m512i off2 = _mm512_load_si512(s.lane_offset[2]);
+    const __m512i bias0 = _mm512_set1_epi64(h.bias[0]), bias1 = _mm512_set1_epi64(h.bias[1]),
+                  bias2 = _mm512_set1_epi64(h.bias[2]);
+    const __m256 inv_area = _mm256_set1_ps(s.inv_area);
+    const __m256 iw0 = _mm256_set1_ps(h.inv_w[0]), iw1 = _mm256_set1_ps(h.inv_w[1]),
+                 iw2 = _mm256_set1_ps(h.inv_w[2]);
+    const __m256 one = _mm256_set1_ps(1.0f);
+    const __m256i ids = _mm256_set1_epi32(static_cast<int>(id));
+    for (int y = s.y0; y < s.y1; ++y) {
+        int64_t base0 = s.row[0], base1 = s.row[1], base2 = s.row[2];
+        for (int g = s.g0; g < s.x1; g += k_lanes) {
+            const __m512i e0 = _mm512_add_epi64(_mm512_set1_epi64(base0), off0);
+            const __m512i e1 = _mm512_add_epi64(_mm512_set1_epi64(base1), off1);
+            const __m512i e2 = _mm512_add_epi64(_mm512_set1_epi64(base2), off2);
+            base0 += s.group_step[0];
+            base1 += s.group_step[1];
+            base2 += s.group_step[2];
+            const __m512i any_sign = _mm512_or_si512(_mm512_or_si512(e0, e1), e2);
+            const __mmask8 inside = static_cast<__mmask8>(
+                _mm512_cmpge_epi64_mask(any_sign, _mm512_setzero_si512()) & s.column_bits(g));
+            if (!inside) continue;
+            const __m256 b0 =
+                _mm256_mul_ps(_mm512_cvtepi64_ps(_mm512_sub_epi64(e0, bias0)), inv_area);
+            const __m256 b1 =
+                _mm256_mul_ps(_mm512_cvtepi64_ps(_mm512_sub_epi64(e1, bias1)), inv_area);
+            const __m256 b2 =
+                _mm256_mul_ps(_mm512_cvtepi64_ps(_mm512_sub_epi64(e2, bias2)), inv_area);
+            const __m256 inv_w =
+                _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(b0, iw0), _mm256_mul_ps(b1, iw1)),
+                              _mm256_mul_ps(b2, iw2));
+            const __m256 z = _mm256_div_ps(one, inv_w);
+            const int at = (y - tile.y0) * k_tile_size + (g - tile.x0);
+            const __m256 stored = _mm256_loadu_ps(target.depth + at);
+            // Alg 4.2's depth test.
+            const __mmask8 won = _mm256_mask_cmp_ps_mask(inside, z, stored, _CMP_LT_OQ);
+            _mm256_mask_storeu_ps(target.depth + at, won, z);
+            if (target.nearest) _mm256_mask_storeu_epi32(target.nearest + at, won, ids);
+        }
+        s.row[0] += s.step_y[0];
+        s.row[1] += s.step_y[1];
+        s.row[2] += s.step_y[2];
     }
 }
+#elif defined(HIKARI_ZBUFFER_AVX2)
+/// Four int64 lanes as doubles, exactly for |x| < 2^51 (exact_to_float's trick).
+inline __m256d exact_to_double(__m256i x) {
+    const __m256i magic_bits = _mm256_set1_epi64x(0x4338000000000000);
+    return _mm256_sub_pd(_mm256_castsi256_pd(_mm256_add_epi64(x, magic_bits)),
+                         _mm256_set1_pd(6755399441055744.0));
+}
+
+/// Eight int64 lanes (two registers) as floats, rounded once.
+inline __m256 exact_to_float8(__m256i lo, __m256i hi) {
+    return _mm256_set_m128(_mm256_cvtpd_ps(exact_to_double(hi)),
+                           _mm256_cvtpd_ps(exact_to_double(lo)));
+}
+
+/// One triangle over the tile in rows of 8 pixels aligned to the tile, AVX2: the 8 lanes'
+/// edge functions in two registers of int64 each.
+void draw_lanes(const HalfSpaceTriangle& h, uint32_t id, TileDepth& target) {
+    const Tile& tile = *target.tile;
+    LaneSetup s;
+    if (!s.init(h, tile)) return;
+    __m256i off_lo[3], off_hi[3], bias[3];
+    for (int e = 0; e < 3; ++e) {
+        off_lo[e] = _mm256_load_si256(reinterpret_cast<const __m256i*>(s.lane_offset[e]));
+        off_hi[e] = _mm256_load_si256(reinterpret_cast<const __m256i*>(s.lane_offset[e] + 4));
+        bias[e] = _mm256_set1_epi64x(h.bias[e]);
+    }
+    const __m256 inv_area = _mm256_set1_ps(s.inv_area);
+    const __m256 iw0 = _mm256_set1_ps(h.inv_w[0]), iw1 = _mm256_set1_ps(h.inv_w[1]),
+                 iw2 = _mm256_set1_ps(h.inv_w[2]);
+    const __m256 one = _mm256_set1_ps(1.0f);
+    const __m256i ids = _mm256_set1_epi32(static_cast<int>(id));
+    const __m256i lane_bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+    const __m256i minus_one = _mm256_set1_epi64x(-1);
+    for (int y = s.y0; y < s.y1; ++y) {
+        int64_t base[3] = {s.row[0], s.row[1], s.row[2]};
+        for (int g = s.g0; g < s.x1; g += k_lanes) {
+            __m256i lo[3], hi[3];
+            for (int e = 0; e < 3; ++e) {
+                const __m256i b = _mm256_set1_epi64x(base[e]);
+                lo[e] = _mm256_add_epi64(b, off_lo[e]);
+                hi[e] = _mm256_add_epi64(b, off_hi[e]);
+                base[e] += s.group_step[e];
+            }
+            const __m256i or_lo = _mm256_or_si256(_mm256_or_si256(lo[0], lo[1]), lo[2]);
+            const __m256i or_hi = _mm256_or_si256(_mm256_or_si256(hi[0], hi[1]), hi[2]);
+            const unsigned sign_bits =
+                static_cast<unsigned>(
+                    _mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpgt_epi64(or_lo, minus_one)))) |
+                static_cast<unsigned>(
+                    _mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpgt_epi64(or_hi, minus_one))))
+                    << 4;
+            const unsigned inside_bits = sign_bits & s.column_bits(g);
+            if (!inside_bits) continue;
+            const __m256i inside = _mm256_cmpeq_epi32(
+                _mm256_and_si256(_mm256_set1_epi32(static_cast<int>(inside_bits)), lane_bit),
+                lane_bit);
+            __m256 b[3];
+            for (int e = 0; e < 3; ++e)
+                b[e] = _mm256_mul_ps(exact_to_float8(_mm256_sub_epi64(lo[e], bias[e]),
+                                                     _mm256_sub_epi64(hi[e], bias[e])),
+                                     inv_area);
+            const __m256 inv_w =
+                _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(b[0], iw0), _mm256_mul_ps(b[1], iw1)),
+                              _mm256_mul_ps(b[2], iw2));
+            const __m256 z = _mm256_div_ps(one, inv_w);
+            const int at = (y - tile.y0) * k_tile_size + (g - tile.x0);
+            const __m256 stored = _mm256_loadu_ps(target.depth + at);
+            // Alg 4.2's depth test.
+            const __m256 won =
+                _mm256_and_ps(_mm256_castsi256_ps(inside), _mm256_cmp_ps(z, stored, _CMP_LT_OQ));
+            _mm256_storeu_ps(target.depth + at, _mm256_blendv_ps(stored, z, won));
+            if (target.nearest) {
+                __m256i* nearest = reinterpret_cast<__m256i*>(target.nearest + at);
+                _mm256_storeu_si256(nearest, _mm256_castps_si256(_mm256_blendv_ps(
+                                                 _mm256_castsi256_ps(_mm256_loadu_si256(nearest)),
+                                                 _mm256_castsi256_ps(ids), won)));
+            }
+        }
+        s.row[0] += s.step_y[0];
+        s.row[1] += s.step_y[1];
+        s.row[2] += s.step_y[2];
+    }
+}
+#else
+/// One triangle over the tile in rows of 8 pixels aligned to the tile, as plain loops over the
+/// lanes. The arithmetic is for_each_covered_pixel's: exact edge functions in 1/256 pixel units,
+/// weights (E − bias) / area in float, z = 1 / Σ b_i inv_w_i.
+void draw_lanes(const HalfSpaceTriangle& h, uint32_t id, TileDepth& target) {
+    const Tile& tile = *target.tile;
+    LaneSetup s;
+    if (!s.init(h, tile)) return;
+    for (int y = s.y0; y < s.y1; ++y) {
+        int64_t base[3] = {s.row[0], s.row[1], s.row[2]};
+        for (int g = s.g0; g < s.x1; g += k_lanes) {
+            const unsigned columns = s.column_bits(g);
+            const int at = (y - tile.y0) * k_tile_size + (g - tile.x0);
+            for (int k = 0; k < k_lanes; ++k) {
+                const int64_t e0 = base[0] + s.lane_offset[0][k];
+                const int64_t e1 = base[1] + s.lane_offset[1][k];
+                const int64_t e2 = base[2] + s.lane_offset[2][k];
+                if ((e0 | e1 | e2) < 0 || !(columns >> k & 1u)) continue;
+                const float b0 = exact_to_float(e0 - h.bias[0]) * s.inv_area;
+                const float b1 = exact_to_float(e1 - h.bias[1]) * s.inv_area;
+                const float b2 = exact_to_float(e2 - h.bias[2]) * s.inv_area;
+                const float z = 1.0f / (b0 * h.inv_w[0] + b1 * h.inv_w[1] + b2 * h.inv_w[2]);
+                // Alg 4.2's depth test.
+                if (z < target.depth[at + k]) {
+                    target.depth[at + k] = z;
+                    if (target.nearest) target.nearest[at + k] = id;
+                }
+            }
+            for (int e = 0; e < 3; ++e) base[e] += s.group_step[e];
+        }
+        for (int e = 0; e < 3; ++e) s.row[e] += s.step_y[e];
+    }
+}
+#endif
 
 /// The largest depth of the tile's pixels.
 float farthest_depth(const TileDepth& target) {
     const Tile& tile = *target.tile;
     float most = 0.0f;
+    if (tile.x1 - tile.x0 == k_tile_size && tile.y1 - tile.y0 == k_tile_size) {
+        // Column by column (no reduction across lanes until the end): vectorises.
+        std::array<float, k_tile_size> column{};
+        for (int y = 0; y < k_tile_size; ++y)
+            for (int x = 0; x < k_tile_size; ++x) {
+                const float d = target.depth[y * k_tile_size + x];
+                column[x] = column[x] < d ? d : column[x];
+            }
+        for (const float d : column) most = std::max(most, d);
+        return most;
+    }
     for (int y = 0; y < tile.y1 - tile.y0; ++y)
         for (int x = 0; x < tile.x1 - tile.x0; ++x)
             most = std::max(most, target.depth[y * k_tile_size + x]);
@@ -120,7 +275,7 @@ float farthest_depth(const TileDepth& target) {
 }
 
 /// Triangles drawn between two refreshes of the tile's farthest depth.
-constexpr size_t k_refresh_interval = 16;
+constexpr size_t k_refresh_interval = 32;
 
 void zbuffer_tile_body(const HalfSpaceTriangle* setup, const uint32_t* triangles, size_t count,
                        TileDepth& target) {
@@ -134,9 +289,9 @@ void zbuffer_tile_body(const HalfSpaceTriangle* setup, const uint32_t* triangles
             draw_lanes(h, t, target);
         else
             draw_per_pixel(h, t, target);
+        // Depths only decrease, so a farthest depth not yet refreshed still bounds them all.
         if (++drawn % k_refresh_interval == 0) target.farthest = farthest_depth(target);
     }
-    target.farthest = farthest_depth(target);
 }
 
 }  // namespace

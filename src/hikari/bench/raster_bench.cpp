@@ -1,0 +1,352 @@
+#include "hikari/bench/raster_bench.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+#include "hikari/core/mat4.h"
+#include "hikari/core/parallel.h"
+#include "hikari/raster/shade_visibility.h"
+#include "hikari/raster/vertex_pipeline.h"
+#include "hikari/raster/zbuffer.h"
+
+namespace hikari {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// SPEC §6: the clear colour (0.2, 0.25, 0.3) as the 8-bit framebuffer holds it.
+constexpr std::array<uint8_t, 3> k_clear_bytes{51, 64, 76};
+constexpr float k_shadow_bias = 0.002f;  ///< SPEC §6, in window depth [0, 1]
+
+/// The SPEC's directional light, towards the light.
+Vec3 light_direction() { return normalize(Vec3(-0.5f, 1.0f, 0.6f)); }
+
+/// Vertex normals as the SPEC's vertex buffer has them: the normalised sum of the unnormalised
+/// face normals (v1 − v0) × (v2 − v0) of the faces around each vertex.
+std::vector<Vec3> vertex_normals(const BenchMesh& mesh) {
+    std::vector<Vec3> sum(mesh.positions.size(), Vec3(0.0f));
+    for (const auto& t : mesh.indices) {
+        const Vec3 n = cross(mesh.positions[t[1]] - mesh.positions[t[0]],
+                             mesh.positions[t[2]] - mesh.positions[t[0]]);
+        for (const uint32_t v : t) sum[v] += n;
+    }
+    for (Vec3& n : sum) {
+        const float len = length(n);
+        n = len > 0.0f ? n / len : Vec3(0.0f, 0.0f, 1.0f);
+    }
+    return sum;
+}
+
+/// The B1 camera (SPEC §2) as gluPerspective(45°, W/H, 0.05 d, 5 d) sees it.
+RasterView camera_view(const BenchMesh& mesh, int width, int height) {
+    const Vec3 c(static_cast<float>(mesh.center[0]), static_cast<float>(mesh.center[1]),
+                 static_cast<float>(mesh.center[2]));
+    const auto d = static_cast<float>(mesh.diagonal);
+    RasterView v;
+    v.eye = c + Vec3(0.0f, 0.0f, 1.1f * d);
+    v.forward = Vec3(0.0f, 0.0f, -1.0f);
+    v.width = width;
+    v.height = height;
+    v.near_plane = 0.05f * d;
+    v.far_plane = 5.0f * d;
+    v.view_from_world = look_at(v.eye, c, Vec3(0.0f, 1.0f, 0.0f));
+    v.clip_from_view = perspective(45.0f, static_cast<float>(width) / static_cast<float>(height),
+                                   v.near_plane, v.far_plane);
+    v.screen_from_clip = viewport(width, height);
+    v.clip_from_world = v.clip_from_view * v.view_from_world;
+    return v;
+}
+
+/// SPEC §6's light view: orthographic, eye c + L d looking at c, ±d/2, near 0.4 d, far 1.6 d.
+RasterView light_view(const BenchMesh& mesh, int size) {
+    const Vec3 c(static_cast<float>(mesh.center[0]), static_cast<float>(mesh.center[1]),
+                 static_cast<float>(mesh.center[2]));
+    const auto d = static_cast<float>(mesh.diagonal);
+    RasterView v;
+    v.eye = c + light_direction() * d;
+    v.forward = -light_direction();
+    v.width = v.height = size;
+    v.orthographic = true;
+    v.near_plane = 1.0f;  // the depth key's scale under a parallel projection (RasterView)
+    v.far_plane = 1.6f * d;
+    v.view_from_world = look_at(v.eye, c, Vec3(0.0f, 1.0f, 0.0f));
+    v.clip_from_view = orthographic(-0.5f * d, 0.5f * d, -0.5f * d, 0.5f * d, 0.4f * d, 1.6f * d);
+    v.screen_from_clip = viewport(size, size);
+    v.clip_from_world = v.clip_from_view * v.view_from_world;
+    return v;
+}
+
+/// 8-bit encoding of pow(clamp(c, 0, 1), 1/2.2) rounded as a unorm8 store rounds, without a
+/// pow per channel: byte k covers the linear values from threshold k − 1 up to threshold k, and a
+/// table over 2^16 buckets of [0, 1] gives the byte at each bucket's start, so at most a step
+/// or two up remain (the thresholds crowd only near 0).
+class GammaEncoder {
+  public:
+    GammaEncoder() {
+        for (int k = 0; k < 255; ++k)
+            m_threshold[k] = std::pow((static_cast<float>(k) + 0.5f) / 255.0f, 2.2f);
+        m_threshold[255] = k_infinity;
+        int byte = 0;
+        for (int i = 0; i < k_buckets; ++i) {
+            const float start = static_cast<float>(i) / static_cast<float>(k_buckets - 1);
+            while (m_threshold[byte] <= start) ++byte;
+            m_first[i] = static_cast<uint8_t>(byte);
+        }
+    }
+    uint8_t operator()(float c) const {
+        if (!(c > 0.0f)) return 0;  // NaN too
+        c = std::min(c, 1.0f);
+        // One bucket down: the product's rounding cannot put c below that bucket's start.
+        const int i = std::max(static_cast<int>(c * static_cast<float>(k_buckets - 1)) - 1, 0);
+        int byte = m_first[i];
+        while (m_threshold[byte] <= c) ++byte;
+        return static_cast<uint8_t>(byte);
+    }
+
+  private:
+    static constexpr int k_buckets = 1 << 16;
+    std::array<float, 256> m_threshold{};
+    std::array<uint8_t, k_buckets> m_first{};
+};
+
+/// Everything a frame writes, kept between frames: a frame allocates nothing once warm.
+struct FrameBuffers {
+    ScreenProjection camera, light;
+    ZBufferWorkspace camera_z, light_z;
+    std::vector<uint32_t> nearest;
+    std::vector<float> light_depth;
+};
+
+/// The inputs of the shading pass.
+struct ShadeInputs {
+    const BenchMesh& mesh;
+    const std::vector<Vec3>& normals;
+    const RasterView& view;
+    const RasterView* light;  ///< null: no shadow pass
+    const GammaEncoder& gamma;
+};
+
+/// SPEC §6's fragment shader over the visible pixels of a frame. One per range of rows: its
+/// pointers are its own copies (the byte stores into the image cannot alias them), and it keeps
+/// the last triangle's interpolation set up, since neighbouring pixels mostly see the same one.
+class FrameShader {
+  public:
+    FrameShader(const ShadeInputs& in, const FrameBuffers& frame)
+        : m_positions(in.mesh.positions.data()),
+          m_indices(in.mesh.indices.data()),
+          m_normals(in.normals.data()),
+          m_screen(frame.camera.triangles.data()),
+          m_clip(frame.camera.clip_positions.data()),
+          m_inside(frame.camera.vertex_inside.data()),
+          m_light_depth(frame.light_depth.data()),
+          m_view(in.view),
+          m_light(in.light),
+          m_gamma(in.gamma),
+          m_to_light(light_direction()) {}
+
+    /// The colour of pixel (x, y), which sees screen triangle t; `shadowed` is set when the
+    /// shadow map darkened it.
+    std::array<uint8_t, 3> shade(uint32_t t, int x, int y, bool& shadowed) {
+        if (t != m_triangle) set_up(t);
+        const float px = static_cast<float>(x) + 0.5f - m_origin.x;
+        const float py = static_cast<float>(y) + 0.5f - m_origin.y;
+        std::array<float, 3> b{};
+        if (m_from_screen) {
+            // b_i / w_i from the screen-space edge functions, normalised (perspective-correct).
+            for (int i = 0; i < 3; ++i) b[i] = m_ax[i] * px + m_ay[i] * py + m_a0[i];
+            const float sum = b[0] + b[1] + b[2];
+            const float inv_sum = sum != 0.0f ? 1.0f / sum : 0.0f;
+            for (float& w : b) w *= inv_sum;
+        } else {
+            // A clipped piece's corners are not the mesh's: the source triangle's weights come
+            // from clip space.
+            const auto& idx = m_indices[m_screen[t].source];
+            const double ndc_x = 2.0 * (x + 0.5) / m_view.width - 1.0;
+            const double ndc_y = 1.0 - 2.0 * (y + 0.5) / m_view.height;
+            perspective_barycentrics(m_clip[idx[0]], m_clip[idx[1]], m_clip[idx[2]], ndc_x, ndc_y,
+                                     b);
+        }
+        Vec3 n = b[0] * m_n[0] + b[1] * m_n[1] + b[2] * m_n[2];
+        const Vec3 p = b[0] * m_p[0] + b[1] * m_p[1] + b[2] * m_p[2];
+        const float n_len2 = dot(n, n);
+        n = n_len2 > 0.0f ? n * (1.0f / std::sqrt(n_len2)) : Vec3(0.0f, 0.0f, 1.0f);
+        Vec3 v = m_view.eye - p;
+        v = v * (1.0f / length(v));
+        if (dot(n, v) < 0.0f) n = -n;  // two-sided
+        float visibility = 1.0f;
+        if (m_light) visibility = lit(p) ? 1.0f : 0.0f;
+        shadowed = visibility == 0.0f;
+        const Vec3 l = m_to_light;
+        const float n_dot_l = dot(n, l);
+        float spec = 0.0f;
+        if (n_dot_l > 0.0f) {
+            const Vec3 r = -l - 2.0f * dot(n, -l) * n;  // reflect(−L, N)
+            float s = std::max(dot(r, v), 0.0f);
+            for (int k = 0; k < 5; ++k) s *= s;  // ^32
+            spec = s;
+        }
+        const Vec3 albedo(0.8f, 0.75f, 0.7f);
+        const Vec3 colour = 0.1f * albedo + visibility * (0.7f * std::max(n_dot_l, 0.0f) * albedo +
+                                                          Vec3(0.3f * spec));
+        return {m_gamma(colour.x), m_gamma(colour.y), m_gamma(colour.z)};
+    }
+
+  private:
+    /// The interpolation of screen triangle t: its source's corner attributes and, when the
+    /// piece is the whole triangle, the edge functions relative to its first corner.
+    void set_up(uint32_t t) {
+        m_triangle = t;
+        const ScreenTriangle& st = m_screen[t];
+        const auto& idx = m_indices[st.source];
+        for (int i = 0; i < 3; ++i) {
+            m_n[i] = m_normals[idx[i]];
+            m_p[i] = m_positions[idx[i]];
+        }
+        m_from_screen = m_inside[idx[0]] && m_inside[idx[1]] && m_inside[idx[2]];
+        m_origin = Vec2(st.v[0].position.x, st.v[0].position.y);
+        for (int i = 0; i < 3; ++i) {
+            // E_i(d) = (p − d) × (q − d) over the edge (p, q) opposite corner i, d relative to
+            // the first corner: small numbers, so no cancellation for small triangles.
+            const Vec3 a = st.v[(i + 1) % 3].position, c = st.v[(i + 2) % 3].position;
+            const float px = a.x - m_origin.x, py = a.y - m_origin.y;
+            const float qx = c.x - m_origin.x, qy = c.y - m_origin.y;
+            const float w = st.v[i].inv_w;
+            m_ax[i] = (py - qy) * w;
+            m_ay[i] = (qx - px) * w;
+            m_a0[i] = (px * qy - qx * py) * w;
+        }
+    }
+
+    /// SPEC §6's one shadow tap: nearest texel, clamped to the edge, window depth 2 − inv_w
+    /// (RasterView's depth key 1.5 − 0.5 z_ndc against 0.5 z_ndc + 0.5), bias k_shadow_bias.
+    bool lit(Vec3 p) const {
+        const Vec4 c = m_light->clip_from_world * Vec4(p, 1.0f);
+        const int size = m_light->width;
+        const int tx =
+            std::clamp(static_cast<int>(std::floor((c.x * 0.5f + 0.5f) * size)), 0, size - 1);
+        const int ty =
+            std::clamp(static_cast<int>(std::floor((0.5f - c.y * 0.5f) * size)), 0, size - 1);
+        const float stored_key = m_light_depth[static_cast<size_t>(ty) * size + tx];
+        const float stored = 2.0f - 1.0f / stored_key;  // +∞ (nothing): 2, beyond every point
+        return c.z * 0.5f + 0.5f - k_shadow_bias <= stored;
+    }
+
+    const Vec3* m_positions;
+    const std::array<uint32_t, 3>* m_indices;
+    const Vec3* m_normals;
+    const ScreenTriangle* m_screen;
+    const Vec4* m_clip;
+    const uint8_t* m_inside;
+    const float* m_light_depth;
+    const RasterView& m_view;
+    const RasterView* m_light;
+    const GammaEncoder& m_gamma;
+    Vec3 m_to_light;
+    uint32_t m_triangle = k_no_triangle;
+    bool m_from_screen = false;
+    Vec2 m_origin;
+    std::array<Vec3, 3> m_n, m_p;
+    std::array<float, 3> m_ax{}, m_ay{}, m_a0{};
+};
+
+/// One B4 frame into `rgb` (3 bytes per pixel); returns the covered and shadowed pixel counts.
+std::pair<size_t, size_t> draw_frame(const ShadeInputs& in, const TriangleSet& tris,
+                                     FrameBuffers& frame, SimdLevel simd, uint8_t* rgb) {
+    const int width = in.view.width, height = in.view.height;
+    if (in.light) {
+        project_to_screen(tris, *in.light, /*cull_back_faces=*/false, frame.light);
+        zbuffer_draw(frame.light.triangles, in.light->width, in.light->height, frame.light_z,
+                     nullptr, frame.light_depth.data(), nullptr, simd);
+    }
+    project_to_screen(tris, in.view, /*cull_back_faces=*/false, frame.camera);
+    zbuffer_draw(frame.camera.triangles, width, height, frame.camera_z, frame.nearest.data(),
+                 nullptr, nullptr, simd);
+    // Deferred shading of the visible pixels; the clear colour elsewhere.
+    return hikari::parallel_reduce(
+        tbb::blocked_range<int>(0, height, 8), std::pair<size_t, size_t>{0, 0},
+        [&](const tbb::blocked_range<int>& rows, std::pair<size_t, size_t> counts) {
+            FrameShader shader(in, frame);
+            const uint32_t* nearest = frame.nearest.data();
+            for (int y = rows.begin(); y != rows.end(); ++y) {
+                uint8_t* out = rgb + static_cast<size_t>(y) * width * 3;
+                for (int x = 0; x < width; ++x) {
+                    const uint32_t t = nearest[static_cast<size_t>(y) * width + x];
+                    std::array<uint8_t, 3> c = k_clear_bytes;
+                    if (t != k_no_triangle) {
+                        bool shadowed = false;
+                        c = shader.shade(t, x, y, shadowed);
+                        counts.second += shadowed;
+                        counts.first += c != k_clear_bytes;
+                    }
+                    out[3 * x] = c[0];
+                    out[3 * x + 1] = c[1];
+                    out[3 * x + 2] = c[2];
+                }
+            }
+            return counts;
+        },
+        [](std::pair<size_t, size_t> a, std::pair<size_t, size_t> b) {
+            return std::pair<size_t, size_t>{a.first + b.first, a.second + b.second};
+        });
+}
+
+}  // namespace
+
+std::string RasterBenchResult::to_json() const {
+    const auto [low, high] = std::minmax_element(frame_ms.begin(), frame_ms.end());
+    return fmt::format(
+        "{{\"bench\": \"B4\", \"mesh\": \"{}\", \"threads\": {}, \"variant\": \"{}\", "
+        "\"ms_per_frame\": {:.2f}, \"ms_min\": {:.2f}, \"ms_max\": {:.2f}, "
+        "\"ms_all\": [{:.2f}], \"covered_pixels\": {}, \"shadowed_pixels\": {}, "
+        "\"triangles\": {}, \"mtris_per_s\": {:.2f}, \"simd\": \"{}\"}}",
+        mesh, threads, shadow ? "shadow" : "plain", median(frame_ms), frame_ms.empty() ? 0.0 : *low,
+        frame_ms.empty() ? 0.0 : *high, fmt::join(frame_ms, ", "), covered_pixels, shadowed_pixels,
+        triangles,
+        frame_ms.empty() ? 0.0 : static_cast<double>(triangles) / (median(frame_ms) * 1e3), simd);
+}
+
+RasterBenchResult run_raster_bench(const BenchMesh& mesh, const std::string& mesh_name,
+                                   const RasterBenchSettings& settings, Srgb8Image* image) {
+    RasterBenchResult result;
+    result.mesh = mesh_name;
+    result.threads = settings.threads;
+    result.shadow = settings.shadow;
+    result.triangles = mesh.indices.size();
+    result.simd = simd_level_name(settings.simd);
+
+    // The vertex buffer, made once (llvmpipe's is uploaded before timing).
+    TriangleSet tris;
+    tris.positions = mesh.positions;
+    tris.indices = mesh.indices;
+    const std::vector<Vec3> normals = vertex_normals(mesh);
+    const RasterView view = camera_view(mesh, settings.width, settings.height);
+    const RasterView light = light_view(mesh, settings.shadow_map_size);
+    const auto gamma = std::make_unique<GammaEncoder>();
+    const ShadeInputs inputs{mesh, normals, view, settings.shadow ? &light : nullptr, *gamma};
+
+    FrameBuffers frame;
+    frame.nearest.resize(static_cast<size_t>(settings.width) * settings.height);
+    if (settings.shadow)
+        frame.light_depth.resize(static_cast<size_t>(settings.shadow_map_size) *
+                                 settings.shadow_map_size);
+    Srgb8Image local;
+    Srgb8Image& out = image ? *image : local;
+    out = Srgb8Image(settings.width, settings.height);
+    for (int f = 0; f < settings.warmup_frames + settings.timed_frames; ++f) {
+        const auto start = Clock::now();
+        const auto [covered, shadowed] =
+            draw_frame(inputs, tris, frame, settings.simd, out.bytes.data());
+        const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+        if (f >= settings.warmup_frames) result.frame_ms.push_back(ms);
+        result.covered_pixels = covered;
+        result.shadowed_pixels = shadowed;
+    }
+    return result;
+}
+
+}  // namespace hikari
