@@ -24,6 +24,19 @@ bool setup_half_space(const ScreenTriangle& t, int width, int height, HalfSpaceT
         out.x[i] = round_half_away(static_cast<double>(p.x) * k_subpixel_one);
         out.y[i] = round_half_away(static_cast<double>(p.y) * k_subpixel_one);
     }
+    // Pixels i with centre (i + 1/2) · 256 inside [min, max]: i from ⌈(min − 128) / 256⌉ to
+    // ⌊(max − 128) / 256⌋ (arithmetic shifts floor). A triangle between pixel centres stops here.
+    const auto [xmin, xmax] = std::minmax({out.x[0], out.x[1], out.x[2]});
+    const auto [ymin, ymax] = std::minmax({out.y[0], out.y[1], out.y[2]});
+    constexpr int64_t half = k_subpixel_one / 2;
+    auto clamp_to = [](int64_t v, int limit) {
+        return static_cast<int>(std::clamp<int64_t>(v, 0, limit));
+    };
+    out.x0 = clamp_to(-((half - xmin) >> k_subpixel_bits), width);
+    out.x1 = clamp_to(((xmax - half) >> k_subpixel_bits) + 1, width);
+    out.y0 = clamp_to(-((half - ymin) >> k_subpixel_bits), height);
+    out.y1 = clamp_to(((ymax - half) >> k_subpixel_bits) + 1, height);
+    if (out.x0 >= out.x1 || out.y0 >= out.y1) return false;
     int64_t area = (out.x[1] - out.x[0]) * (out.y[2] - out.y[0]) -
                    (out.y[1] - out.y[0]) * (out.x[2] - out.x[0]);
     if (area == 0) return false;
@@ -50,15 +63,7 @@ bool setup_half_space(const ScreenTriangle& t, int width, int height, HalfSpaceT
     out.nearest_depth = least_inv_w > 0.0f && std::isfinite(most_inv_w)
                             ? (1.0f / most_inv_w) * (1.0f - 1e-5f)
                             : -std::numeric_limits<float>::infinity();
-    // Pixels i with centre (i + 1/2) inside [min, max].
-    const auto [xmin, xmax] = std::minmax({out.x[0], out.x[1], out.x[2]});
-    const auto [ymin, ymax] = std::minmax({out.y[0], out.y[1], out.y[2]});
-    const double s = static_cast<double>(k_subpixel_one);
-    out.x0 = static_cast<int>(std::clamp(std::ceil(xmin / s - 0.5), 0.0, double(width)));
-    out.x1 = static_cast<int>(std::clamp(std::floor(xmax / s - 0.5) + 1, 0.0, double(width)));
-    out.y0 = static_cast<int>(std::clamp(std::ceil(ymin / s - 0.5), 0.0, double(height)));
-    out.y1 = static_cast<int>(std::clamp(std::floor(ymax / s - 0.5) + 1, 0.0, double(height)));
-    return out.x0 < out.x1 && out.y0 < out.y1;
+    return true;
 }
 
 }  // namespace hikari

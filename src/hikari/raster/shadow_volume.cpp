@@ -285,9 +285,13 @@ std::vector<uint8_t> stencil_shadow_mask(std::span<const VolumePolygon> polygons
             add_pieces(fan, view, pieces);
         }
     std::vector<HalfSpaceTriangle> setup(pieces.size());
-    for (size_t i = 0; i < pieces.size(); ++i) setup[i] = pieces[i].setup;
+    std::vector<uint32_t> home(pieces.size());
+    for (size_t i = 0; i < pieces.size(); ++i) {
+        setup[i] = pieces[i].setup;
+        home[i] = home_tile(setup[i], width);
+    }
     TileBins bins;
-    bin_triangles(setup, std::vector<uint8_t>(pieces.size(), 1), width, height, bins);
+    bin_triangles(setup, home, width, height, bins);
 
     std::vector<uint8_t> mask(static_cast<size_t>(width) * height, 0);
     for_each_tile(width, height, nullptr, [&](const Tile& tile) {

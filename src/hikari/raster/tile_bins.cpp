@@ -64,7 +64,14 @@ size_t TileBins::tile_at(int x0, int y0) const {
     return static_cast<size_t>(y0 / k_tile_size) * tiles_x + x0 / k_tile_size;
 }
 
-void bin_triangles(std::span<const HalfSpaceTriangle> setup, std::span<const uint8_t> valid,
+uint32_t home_tile(const HalfSpaceTriangle& t, int width) {
+    const int tx = t.x0 / k_tile_size, ty = t.y0 / k_tile_size;
+    if (tx != (t.x1 - 1) / k_tile_size || ty != (t.y1 - 1) / k_tile_size) return k_several_tiles;
+    const int tiles_x = (width + k_tile_size - 1) / k_tile_size;
+    return static_cast<uint32_t>(ty * tiles_x + tx);
+}
+
+void bin_triangles(std::span<const HalfSpaceTriangle> setup, std::span<const uint32_t> home,
                    int width, int height, TileBins& bins) {
     bins.tiles_x = (width + k_tile_size - 1) / k_tile_size;
     bins.tiles_y = (height + k_tile_size - 1) / k_tile_size;
@@ -72,7 +79,6 @@ void bin_triangles(std::span<const HalfSpaceTriangle> setup, std::span<const uin
     bins.chunk_count =
         (setup.size() + TileBins::k_chunk_triangles - 1) / TileBins::k_chunk_triangles;
     if (bins.chunks.size() < bins.chunk_count) bins.chunks.resize(bins.chunk_count);
-    bins.home.resize(setup.size());
     auto for_tiles = [&](const HalfSpaceTriangle& t, auto&& fn) {
         for (int ty = t.y0 / k_tile_size; ty <= (t.y1 - 1) / k_tile_size; ++ty) {
             int first = 0, last = 0;
@@ -89,31 +95,22 @@ void bin_triangles(std::span<const HalfSpaceTriangle> setup, std::span<const uin
         const size_t first = c * TileBins::k_chunk_triangles;
         const size_t last = std::min(setup.size(), first + TileBins::k_chunk_triangles);
         chunk.begin.assign(tiles + 1, 0);
-        // Count, noting each triangle's one tile when it has one: the fill pass then reads four
-        // bytes of it, not its setup again.
         for (size_t i = first; i < last; ++i) {
-            bins.home[i] = TileBins::k_none;
-            if (!valid[i]) continue;
-            const HalfSpaceTriangle& t = setup[i];
-            const int tx = t.x0 / k_tile_size, ty = t.y0 / k_tile_size;
-            if (tx == (t.x1 - 1) / k_tile_size && ty == (t.y1 - 1) / k_tile_size) {
-                const auto tile = static_cast<uint32_t>(ty * bins.tiles_x + tx);
-                bins.home[i] = tile;
-                ++chunk.begin[tile + 1];
+            if (home[i] == k_no_tile) continue;
+            if (home[i] != k_several_tiles) {
+                ++chunk.begin[home[i] + 1];
                 continue;
             }
-            bins.home[i] = TileBins::k_several;
-            for_tiles(t, [&](size_t tile) { ++chunk.begin[tile + 1]; });
+            for_tiles(setup[i], [&](size_t tile) { ++chunk.begin[tile + 1]; });
         }
         for (size_t k = 1; k < chunk.begin.size(); ++k) chunk.begin[k] += chunk.begin[k - 1];
         chunk.triangle.resize(chunk.begin.back());
         // Fill from the back, moving each tile's start back to its place as it fills: the
         // counts array doubles as the fill pointers.
         for (size_t i = last; i-- > first;) {
-            const uint32_t home = bins.home[i];
-            if (home == TileBins::k_none) continue;
-            if (home != TileBins::k_several) {
-                chunk.triangle[--chunk.begin[home + 1]] = static_cast<uint32_t>(i);
+            if (home[i] == k_no_tile) continue;
+            if (home[i] != k_several_tiles) {
+                chunk.triangle[--chunk.begin[home[i] + 1]] = static_cast<uint32_t>(i);
                 continue;
             }
             for_tiles(setup[i], [&](size_t tile) {

@@ -26,12 +26,7 @@ struct TileBins {
     };
 
     int tiles_x = 0, tiles_y = 0;
-    std::vector<Chunk> chunks;
-    /// Per triangle, scratch of the binning: its one tile, or k_several / k_none.
-    std::vector<uint32_t> home;
-    static constexpr uint32_t k_several = 0xfffffffe,
-                              k_none =
-                                  0xffffffff;  ///< only the first `chunk_count` are this frame's
+    std::vector<Chunk> chunks;  ///< only the first `chunk_count` are this frame's
     size_t chunk_count = 0;
 
     /// The bin of the tile whose top-left pixel is (x0, y0).
@@ -60,9 +55,19 @@ struct TileBins {
     }
 };
 
-/// Bins every triangle of `setup` whose `valid` entry is non-zero into the k_tile_size tiles
-/// (frame/tiles.h) of a width × height image that it may cover, into `bins` (its storage reused).
-void bin_triangles(std::span<const HalfSpaceTriangle> setup, std::span<const uint8_t> valid,
+/// home_tile's answers for a triangle not to be drawn, and for one whose bounds span tiles.
+inline constexpr uint32_t k_no_tile = 0xffffffff;
+inline constexpr uint32_t k_several_tiles = 0xfffffffe;
+
+/// The bin of the one tile of a `width`-wide image that the bounds of `t` (set up for it) lie
+/// in, or k_several_tiles. Most triangles of a dense mesh have one: binning them is a store.
+uint32_t home_tile(const HalfSpaceTriangle& t, int width);
+
+/// Bins every triangle of `setup` into the k_tile_size tiles (frame/tiles.h) of a width × height
+/// image that it may cover, into `bins` (its storage reused). `home[i]` is home_tile of triangle
+/// i, or k_no_tile to leave it out; computed where the setup is, it spares this pass reading the
+/// setup of every one-tile triangle again.
+void bin_triangles(std::span<const HalfSpaceTriangle> setup, std::span<const uint32_t> home,
                    int width, int height, TileBins& bins);
 
 }  // namespace hikari

@@ -52,14 +52,16 @@ void zbuffer_pass(std::span<const ScreenTriangle> triangles, int width, int heig
                   RenderControl* control, const Observer& observer, const SphereRaster* spheres,
                   SimdLevel level) {
     ws.setup.resize(triangles.size());
-    ws.valid.resize(triangles.size());
-    hikari::parallel_for(
-        tbb::blocked_range<size_t>(0, triangles.size(), 1024),
-        [&](const tbb::blocked_range<size_t>& range) {
-            for (size_t i = range.begin(); i != range.end(); ++i)
-                ws.valid[i] = setup_half_space(triangles[i], width, height, ws.setup[i]) ? 1 : 0;
-        });
-    bin_triangles(ws.setup, ws.valid, width, height, ws.bins);
+    ws.home.resize(triangles.size());
+    hikari::parallel_for(tbb::blocked_range<size_t>(0, triangles.size(), 1024),
+                         [&](const tbb::blocked_range<size_t>& range) {
+                             for (size_t i = range.begin(); i != range.end(); ++i)
+                                 ws.home[i] =
+                                     setup_half_space(triangles[i], width, height, ws.setup[i])
+                                         ? home_tile(ws.setup[i], width)
+                                         : k_no_tile;
+                         });
+    bin_triangles(ws.setup, ws.home, width, height, ws.bins);
     ZBufferTileKernel* const kernel = zbuffer_tile_kernel(level);
 
     for_each_tile(width, height, control, [&](const Tile& tile) {

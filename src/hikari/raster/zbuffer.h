@@ -32,7 +32,7 @@ VisibilityBuffer zbuffer_visibility(std::span<const ScreenTriangle> triangles, i
 /// Drawing frame after frame with one workspace allocates nothing once it has grown to size.
 struct ZBufferWorkspace {
     std::vector<HalfSpaceTriangle> setup;
-    std::vector<uint8_t> valid;
+    std::vector<uint32_t> home;  ///< home_tile of each triangle (raster/tile_bins.h)
     TileBins bins;
 };
 
