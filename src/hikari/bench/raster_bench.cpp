@@ -208,7 +208,7 @@ class FrameShader {
             m_p[i] = m_positions[idx[i]];
         }
         m_from_screen = m_inside[idx[0]] && m_inside[idx[1]] && m_inside[idx[2]];
-        m_origin = Vec2(st.v[0].position.x, st.v[0].position.y);
+        m_origin = Vec2{st.v[0].position.x, st.v[0].position.y};
         for (int i = 0; i < 3; ++i) {
             // E_i(d) = (p − d) × (q − d) over the edge (p, q) opposite corner i, d relative to
             // the first corner: small numbers, so no cancellation for small triangles.

@@ -349,7 +349,7 @@ class CornerNormals {
                 continue;
             }
             const uint32_t group = m_groups.number({g});
-            if (first_sum + group == m_shared_sums.size()) m_shared_sums.push_back(Vec3(0.0f));
+            if (first_sum + group == m_shared_sums.size()) m_shared_sums.emplace_back(0.0f);
             m_shared_sums[first_sum + group] += weighted_normal(corner);
             m_shared_sum_of[corner] = first_sum + group;
         }
@@ -443,7 +443,7 @@ class CornerNormals {
                 for (int i = 0; i < 3; ++i) total[i] += cells[used[v]].sum[i];
             }
             cells[used[u]].shared = uint32_t(m_shared_sums.size());
-            m_shared_sums.push_back(Vec3{float(total[0]), float(total[1]), float(total[2])});
+            m_shared_sums.emplace_back(float(total[0]), float(total[1]), float(total[2]));
         }
         for (uint32_t k = begin; k < end; ++k)
             m_shared_sum_of[m_around[k]] =
