@@ -80,6 +80,13 @@ void bin_triangles(std::span<const HalfSpaceTriangle> setup, std::span<const uin
         (setup.size() + TileBins::k_chunk_triangles - 1) / TileBins::k_chunk_triangles;
     if (bins.chunks.size() < bins.chunk_count) bins.chunks.resize(bins.chunk_count);
     auto for_tiles = [&](const HalfSpaceTriangle& t, auto&& fn) {
+        // A triangle smaller than a tile touches at most four: each of them, without tests.
+        if (t.x1 - t.x0 <= k_tile_size && t.y1 - t.y0 <= k_tile_size) {
+            for (int ty = t.y0 / k_tile_size; ty <= (t.y1 - 1) / k_tile_size; ++ty)
+                for (int tx = t.x0 / k_tile_size; tx <= (t.x1 - 1) / k_tile_size; ++tx)
+                    fn(static_cast<size_t>(ty) * bins.tiles_x + tx);
+            return;
+        }
         for (int ty = t.y0 / k_tile_size; ty <= (t.y1 - 1) / k_tile_size; ++ty) {
             int first = 0, last = 0;
             const int row0 = std::max(t.y0, ty * k_tile_size);

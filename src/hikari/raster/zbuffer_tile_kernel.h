@@ -52,7 +52,7 @@ struct LaneSetup {
     int x0, x1, y0, y1;  ///< pixels of the triangle's bounds inside the tile
     int g0;              ///< the first lane group: the 8-pixel column of the tile that holds x0
     int64_t row[3], step_y[3], group_step[3];
-    alignas(64) int64_t lane_offset[3][k_lanes];
+    int64_t step_x[3];  ///< per pixel to the right; lane k is k steps from its group's start
     float inv_area;
 
     /// False when the triangle's bounds miss the tile.
@@ -68,8 +68,8 @@ struct LaneSetup {
             const int64_t dx = h.x[b] - h.x[a], dy = h.y[b] - h.y[a];
             row[e] = dx * (py - h.y[a]) - dy * (px - h.x[a]) + h.bias[e];
             step_y[e] = dx * k_subpixel_one;
-            group_step[e] = -dy * k_subpixel_one * k_lanes;
-            for (int k = 0; k < k_lanes; ++k) lane_offset[e][k] = -dy * k_subpixel_one * k;
+            step_x[e] = -dy * k_subpixel_one;
+            group_step[e] = step_x[e] * k_lanes;
         }
         inv_area = 1.0f / static_cast<float>(h.area);
         return true;
@@ -90,9 +90,10 @@ void draw_lanes(const HalfSpaceTriangle& h, uint32_t id, TileDepth& target) {
     const Tile& tile = *target.tile;
     LaneSetup s;
     if (!s.init(h, tile)) return;
-    const __m512i off0 = _mm512_load_si512(s.lane_offset[0]);
-    const __m512i off1 = _mm512_load_si512(s.lane_offset[1]);
-    const __m512i off2 = _mm512_load_si512(s.lane_offset[2]);
+    const __m512i lane = _mm512_setr_epi64(0, 1, 2, 3, 4, 5, 6, 7);
+    const __m512i off0 = _mm512_mullo_epi64(_mm512_set1_epi64(s.step_x[0]), lane);
+    const __m512i off1 = _mm512_mullo_epi64(_mm512_set1_epi64(s.step_x[1]), lane);
+    const __m512i off2 = _mm512_mullo_epi64(_mm512_set1_epi64(s.step_x[2]), lane);
     const __m512i bias0 = _mm512_set1_epi64(h.bias[0]), bias1 = _mm512_set1_epi64(h.bias[1]),
                   bias2 = _mm512_set1_epi64(h.bias[2]);
     const __m256 inv_area = _mm256_set1_ps(s.inv_area);
@@ -157,8 +158,9 @@ void draw_lanes(const HalfSpaceTriangle& h, uint32_t id, TileDepth& target) {
     if (!s.init(h, tile)) return;
     __m256i off_lo[3], off_hi[3], bias[3];
     for (int e = 0; e < 3; ++e) {
-        off_lo[e] = _mm256_load_si256(reinterpret_cast<const __m256i*>(s.lane_offset[e]));
-        off_hi[e] = _mm256_load_si256(reinterpret_cast<const __m256i*>(s.lane_offset[e] + 4));
+        const int64_t step = s.step_x[e];
+        off_lo[e] = _mm256_setr_epi64x(0, step, 2 * step, 3 * step);
+        off_hi[e] = _mm256_add_epi64(off_lo[e], _mm256_set1_epi64x(4 * step));
         bias[e] = _mm256_set1_epi64x(h.bias[e]);
     }
     const __m256 inv_area = _mm256_set1_ps(s.inv_area);
@@ -232,9 +234,9 @@ void draw_lanes(const HalfSpaceTriangle& h, uint32_t id, TileDepth& target) {
             const unsigned columns = s.column_bits(g);
             const int at = (y - tile.y0) * k_tile_size + (g - tile.x0);
             for (int k = 0; k < k_lanes; ++k) {
-                const int64_t e0 = base[0] + s.lane_offset[0][k];
-                const int64_t e1 = base[1] + s.lane_offset[1][k];
-                const int64_t e2 = base[2] + s.lane_offset[2][k];
+                const int64_t e0 = base[0] + s.step_x[0] * k;
+                const int64_t e1 = base[1] + s.step_x[1] * k;
+                const int64_t e2 = base[2] + s.step_x[2] * k;
                 if ((e0 | e1 | e2) < 0 || !(columns >> k & 1u)) continue;
                 const float b0 = exact_to_float(e0 - h.bias[0]) * s.inv_area;
                 const float b1 = exact_to_float(e1 - h.bias[1]) * s.inv_area;
