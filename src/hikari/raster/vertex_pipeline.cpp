@@ -154,9 +154,29 @@ void project_to_screen(const TriangleSet& tris, const RasterView& view, bool cul
                              }
                          });
 
+    const size_t n = tris.size();
+    out.counts = {};
+    out.counts.triangles_in = n;
+    // The whole scene inside the clip volume and nothing to cull (a model in view): every
+    // triangle is one screen triangle, its corners' screen vertices; no counting pass.
+    const bool all_inside =
+        !cull_back_faces && std::all_of(out.vertex_inside.begin(), out.vertex_inside.end(),
+                                        [](uint8_t inside) { return inside != 0; });
+    if (all_inside) {
+        out.triangles.resize(n);
+        hikari::parallel_for(
+            tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& range) {
+                for (size_t t = range.begin(); t != range.end(); ++t) {
+                    const auto& idx = tris.indices[t];
+                    out.triangles[t] = {
+                        {out.screen[idx[0]], out.screen[idx[1]], out.screen[idx[2]]},
+                        static_cast<uint32_t>(t)};
+                }
+            });
+        return;
+    }
     // Count the pieces of every triangle, place them by a prefix sum, then write them: the
     // output is in scene order whatever the thread count.
-    const size_t n = tris.size();
     out.offset.assign(n + 1, 0);
     out.fate.resize(n);
     hikari::parallel_for(
@@ -177,8 +197,6 @@ void project_to_screen(const TriangleSet& tris, const RasterView& view, bool cul
                                 &out.triangles[out.offset[t]], again);
             }
         });
-    out.counts = {};
-    out.counts.triangles_in = n;
     for (const uint8_t f : out.fate) {
         out.counts.culled += f == k_culled;
         out.counts.clipped_away += f == k_clipped_away || f == k_not_finite;
