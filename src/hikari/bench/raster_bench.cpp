@@ -104,6 +104,9 @@ class GammaEncoder {
         // One bucket down: the product's rounding cannot put c below that bucket's start.
         const int i = std::max(static_cast<int>(c * static_cast<float>(k_buckets - 1)) - 1, 0);
         int byte = m_first[i];
+        // Two buckets hold at most two thresholds: three steps without branches, and a loop
+        // that never runs for any c as a guarantee.
+        for (int step = 0; step < 3; ++step) byte += m_threshold[byte] <= c ? 1 : 0;
         while (m_threshold[byte] <= c) ++byte;
         return static_cast<uint8_t>(byte);
     }
@@ -149,16 +152,28 @@ class FrameShader {
           m_gamma(in.gamma),
           m_to_light(light_direction()) {}
 
-    /// The colour of pixel (x, y), which sees screen triangle t; `shadowed` is set when the
-    /// shadow map darkened it.
-    std::array<uint8_t, 3> shade(uint32_t t, int x, int y, bool& shadowed) {
+    /// Pixels lit together: the lighting below runs as loops over this many lanes, which the
+    /// compiler turns into SIMD.
+    static constexpr int k_lanes = 8;
+
+    /// The interpolated surface of k_lanes pixels, lane by lane.
+    struct Lanes {
+        alignas(32) float nx[k_lanes], ny[k_lanes], nz[k_lanes];  ///< normal, not unit
+        alignas(32) float px[k_lanes], py[k_lanes], pz[k_lanes];  ///< world position
+        alignas(32) float visibility[k_lanes];
+        alignas(32) float r[k_lanes], g[k_lanes], b[k_lanes];
+    };
+
+    /// The perspective-correct normal and position at pixel (x, y), which sees screen
+    /// triangle t, into lane k.
+    void interpolate(uint32_t t, int x, int y, Lanes& lanes, int k) {
         if (t != m_triangle) set_up(t);
-        const float px = static_cast<float>(x) + 0.5f - m_origin.x;
-        const float py = static_cast<float>(y) + 0.5f - m_origin.y;
         std::array<float, 3> b{};
         if (m_from_screen) {
             // b_i / w_i from the screen-space edge functions, normalised (perspective-correct).
-            for (int i = 0; i < 3; ++i) b[i] = m_ax[i] * px + m_ay[i] * py + m_a0[i];
+            const float dx = static_cast<float>(x) + 0.5f - m_origin.x;
+            const float dy = static_cast<float>(y) + 0.5f - m_origin.y;
+            for (int i = 0; i < 3; ++i) b[i] = m_ax[i] * dx + m_ay[i] * dy + m_a0[i];
             const float sum = b[0] + b[1] + b[2];
             const float inv_sum = sum != 0.0f ? 1.0f / sum : 0.0f;
             for (float& w : b) w *= inv_sum;
@@ -171,30 +186,49 @@ class FrameShader {
             perspective_barycentrics(m_clip[idx[0]], m_clip[idx[1]], m_clip[idx[2]], ndc_x, ndc_y,
                                      b);
         }
-        Vec3 n = b[0] * m_n[0] + b[1] * m_n[1] + b[2] * m_n[2];
+        const Vec3 n = b[0] * m_n[0] + b[1] * m_n[1] + b[2] * m_n[2];
         const Vec3 p = b[0] * m_p[0] + b[1] * m_p[1] + b[2] * m_p[2];
-        const float n_len2 = dot(n, n);
-        n = n_len2 > 0.0f ? n * (1.0f / std::sqrt(n_len2)) : Vec3(0.0f, 0.0f, 1.0f);
-        Vec3 v = m_view.eye - p;
-        v = v * (1.0f / length(v));
-        if (dot(n, v) < 0.0f) n = -n;  // two-sided
-        float visibility = 1.0f;
-        if (m_light) visibility = lit(p) ? 1.0f : 0.0f;
-        shadowed = visibility == 0.0f;
-        const Vec3 l = m_to_light;
-        const float n_dot_l = dot(n, l);
-        float spec = 0.0f;
-        if (n_dot_l > 0.0f) {
-            const Vec3 r = -l - 2.0f * dot(n, -l) * n;  // reflect(−L, N)
-            float s = std::max(dot(r, v), 0.0f);
-            for (int k = 0; k < 5; ++k) s *= s;  // ^32
-            spec = s;
-        }
-        const Vec3 albedo(0.8f, 0.75f, 0.7f);
-        const Vec3 colour = 0.1f * albedo + visibility * (0.7f * std::max(n_dot_l, 0.0f) * albedo +
-                                                          Vec3(0.3f * spec));
-        return {m_gamma(colour.x), m_gamma(colour.y), m_gamma(colour.z)};
+        lanes.nx[k] = n.x, lanes.ny[k] = n.y, lanes.nz[k] = n.z;
+        lanes.px[k] = p.x, lanes.py[k] = p.y, lanes.pz[k] = p.z;
+        lanes.visibility[k] = m_light && !lit(p) ? 0.0f : 1.0f;
     }
+
+    /// SPEC §6's fragment shader over all lanes (lanes of uncovered pixels compute garbage that
+    /// the caller ignores): r, g, b linear.
+    void light(Lanes& lanes) const {
+        const float lx = m_to_light.x, ly = m_to_light.y, lz = m_to_light.z;
+        const float ex = m_view.eye.x, ey = m_view.eye.y, ez = m_view.eye.z;
+        for (int k = 0; k < k_lanes; ++k) {
+            float nx = lanes.nx[k], ny = lanes.ny[k], nz = lanes.nz[k];
+            const float n_len2 = nx * nx + ny * ny + nz * nz;
+            const float n_scale = n_len2 > 0.0f ? 1.0f / std::sqrt(n_len2) : 0.0f;
+            nx *= n_scale, ny *= n_scale, nz *= n_scale;
+            float vx = ex - lanes.px[k], vy = ey - lanes.py[k], vz = ez - lanes.pz[k];
+            const float v_scale = 1.0f / std::sqrt(vx * vx + vy * vy + vz * vz);
+            vx *= v_scale, vy *= v_scale, vz *= v_scale;
+            // Two-sided: the normal turned toward the eye.
+            const float side = nx * vx + ny * vy + nz * vz < 0.0f ? -1.0f : 1.0f;
+            nx *= side, ny *= side, nz *= side;
+            const float n_dot_l = nx * lx + ny * ly + nz * lz;
+            // reflect(−L, N) = −L + 2 (N·L) N
+            const float rx = 2.0f * n_dot_l * nx - lx, ry = 2.0f * n_dot_l * ny - ly,
+                        rz = 2.0f * n_dot_l * nz - lz;
+            float spec = rx * vx + ry * vy + rz * vz;
+            spec = spec > 0.0f ? spec : 0.0f;
+            for (int i = 0; i < 5; ++i) spec *= spec;  // ^32
+            spec = n_dot_l > 0.0f ? spec : 0.0f;
+            const float diffuse = 0.7f * (n_dot_l > 0.0f ? n_dot_l : 0.0f);
+            const float vis = lanes.visibility[k];
+            lanes.r[k] = 0.1f * 0.8f + vis * (diffuse * 0.8f + 0.3f * spec);
+            lanes.g[k] = 0.1f * 0.75f + vis * (diffuse * 0.75f + 0.3f * spec);
+            lanes.b[k] = 0.1f * 0.7f + vis * (diffuse * 0.7f + 0.3f * spec);
+        }
+    }
+
+    const GammaEncoder& gamma() const { return m_gamma; }
+
+    /// Starts loading screen triangle t, which a coming pixel sees.
+    void prefetch(uint32_t t) const { __builtin_prefetch(m_screen + t); }
 
   private:
     /// The interpolation of screen triangle t: its source's corner attributes and, when the
@@ -271,21 +305,46 @@ std::pair<size_t, size_t> draw_frame(const ShadeInputs& in, const TriangleSet& t
         tbb::blocked_range<int>(0, height, 8), std::pair<size_t, size_t>{0, 0},
         [&](const tbb::blocked_range<int>& rows, std::pair<size_t, size_t> counts) {
             FrameShader shader(in, frame);
+            FrameShader::Lanes lanes{};
             const uint32_t* nearest = frame.nearest.data();
+            const GammaEncoder& gamma = shader.gamma();
             for (int y = rows.begin(); y != rows.end(); ++y) {
                 uint8_t* out = rgb + static_cast<size_t>(y) * width * 3;
-                for (int x = 0; x < width; ++x) {
-                    const uint32_t t = nearest[static_cast<size_t>(y) * width + x];
-                    std::array<uint8_t, 3> c = k_clear_bytes;
-                    if (t != k_no_triangle) {
-                        bool shadowed = false;
-                        c = shader.shade(t, x, y, shadowed);
-                        counts.second += shadowed;
-                        counts.first += c != k_clear_bytes;
+                const uint32_t* seen = nearest + static_cast<size_t>(y) * width;
+                for (int x0 = 0; x0 < width; x0 += FrameShader::k_lanes) {
+                    const int count = std::min(FrameShader::k_lanes, width - x0);
+                    // The next group's triangles: their screen corners are read next.
+                    for (int k = FrameShader::k_lanes; k < 2 * FrameShader::k_lanes; ++k)
+                        if (x0 + k < width && seen[x0 + k] != k_no_triangle)
+                            shader.prefetch(seen[x0 + k]);
+                    int covered = 0;
+                    for (int k = 0; k < count; ++k)
+                        if (seen[x0 + k] != k_no_triangle) {
+                            shader.interpolate(seen[x0 + k], x0 + k, y, lanes, k);
+                            ++covered;
+                        }
+                    if (!covered) {  // background: the clear colour, 8 pixels at a time
+                        for (int k = 0; k < count; ++k)
+                            std::copy(k_clear_bytes.begin(), k_clear_bytes.end(),
+                                      out + 3 * (x0 + k));
+                        continue;
                     }
-                    out[3 * x] = c[0];
-                    out[3 * x + 1] = c[1];
-                    out[3 * x + 2] = c[2];
+                    shader.light(lanes);
+                    for (int k = 0; k < count; ++k) {
+                        uint8_t r = k_clear_bytes[0], g = k_clear_bytes[1], b = k_clear_bytes[2];
+                        if (seen[x0 + k] != k_no_triangle) {
+                            r = gamma(lanes.r[k]), g = gamma(lanes.g[k]), b = gamma(lanes.b[k]);
+                            counts.second += lanes.visibility[k] == 0.0f;
+                            // Byte by byte: comparing the three as one array stalls on the
+                            // stores just made.
+                            counts.first += (r != k_clear_bytes[0]) | (g != k_clear_bytes[1]) |
+                                            (b != k_clear_bytes[2]);
+                        }
+                        uint8_t* o = out + 3 * (x0 + k);
+                        o[0] = r;
+                        o[1] = g;
+                        o[2] = b;
+                    }
                 }
             }
             return counts;

@@ -49,7 +49,6 @@ bool setup_half_space(const ScreenTriangle& t, int width, int height, HalfSpaceT
     out.area = area;
     for (int i = 0; i < 3; ++i) {
         out.inv_w[i] = t.v[order[i]].inv_w;
-        out.z[i] = t.v[order[i]].position.z;
         const int a = (i + 1) % 3, b = (i + 2) % 3;
         const int64_t dx = out.x[b] - out.x[a], dy = out.y[b] - out.y[a];
         // With y down and positive area, an edge going up (dy < 0) is a left edge, a horizontal

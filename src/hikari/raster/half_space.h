@@ -21,7 +21,6 @@ inline constexpr int64_t k_subpixel_one = int64_t{1} << k_subpixel_bits;
 struct HalfSpaceTriangle {
     std::array<int64_t, 3> x, y;  ///< snapped vertex positions, in 1/256 pixel
     std::array<float, 3> inv_w;   ///< 1 / w of each (reordered) vertex
-    std::array<float, 3> z;       ///< ScreenVertex::position.z of each (reordered) vertex
     std::array<int64_t, 3> bias;  ///< 0 for top-left edges (a centre on them is in), −1 else
     int64_t area = 0;             ///< twice the signed area, in 1/256² pixel², > 0
     /// A lower bound of the depth 1 / inv_w at every covered pixel (−infinity when unknown): a
