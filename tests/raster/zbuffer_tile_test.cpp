@@ -77,6 +77,33 @@ TEST(ZBufferTile, TheBufferDoesNotDependOnTheThreadCount) {
                          triangles[t].v[1].position == triangles[t - 1].v[1].position);
 }
 
+TEST(ZBufferTile, IndexedTrianglesDrawAsTheTrianglesTheyStandFor) {
+    const int w = 160, h = 96;
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::vector<ScreenVertex> vertices(300);
+    for (ScreenVertex& v : vertices) {
+        v.position = {unit(rng) * w, unit(rng) * h, 0.0f};
+        v.inv_w = 0.2f + unit(rng);
+    }
+    std::vector<std::array<uint32_t, 3>> indices(900);
+    for (auto& idx : indices)
+        for (uint32_t& i : idx) i = static_cast<uint32_t>(rng() % vertices.size());
+    const IndexedScreenTriangles indexed{vertices.data(), indices.data(), indices.size()};
+    std::vector<ScreenTriangle> stored;
+    for (size_t t = 0; t < indices.size(); ++t) stored.push_back(indexed[t]);
+    ZBufferWorkspace ws;
+    std::vector<uint32_t> a(static_cast<size_t>(w) * h), b(a.size());
+    std::vector<float> da(a.size()), db(a.size());
+    zbuffer_draw(stored, w, h, ws, a.data(), da.data());
+    zbuffer_draw(indexed, w, h, ws, b.data(), db.data());
+    EXPECT_EQ(a, b);
+    EXPECT_EQ(da, db);
+    size_t covered = 0;
+    for (const uint32_t t : a) covered += t != k_no_triangle;
+    EXPECT_GT(covered, a.size() / 2);
+}
+
 TEST(ZBufferTile, AnOccludedTriangleIsRejectedWithoutChangingTheBuffer) {
     // A near square covering a tile, then a far triangle inside it: hierarchical rejection may
     // skip the far one; nothing of it may show either way.

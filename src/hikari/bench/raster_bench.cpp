@@ -144,6 +144,8 @@ class FrameShader {
           m_indices(in.mesh.indices.data()),
           m_normals(in.normals.data()),
           m_screen(frame.camera.triangles.data()),
+          m_indexed(frame.camera.indexed),
+          m_vertices(frame.camera.screen.data()),
           m_clip(frame.camera.clip_positions.data()),
           m_inside(frame.camera.vertex_inside.data()),
           m_light_depth(frame.light_depth.data()),
@@ -180,7 +182,7 @@ class FrameShader {
         } else {
             // A clipped piece's corners are not the mesh's: the source triangle's weights come
             // from clip space.
-            const auto& idx = m_indices[m_screen[t].source];
+            const auto& idx = m_indices[screen_triangle(t).source];
             const double ndc_x = 2.0 * (x + 0.5) / m_view.width - 1.0;
             const double ndc_y = 1.0 - 2.0 * (y + 0.5) / m_view.height;
             perspective_barycentrics(m_clip[idx[0]], m_clip[idx[1]], m_clip[idx[2]], ndc_x, ndc_y,
@@ -228,14 +230,19 @@ class FrameShader {
     const GammaEncoder& gamma() const { return m_gamma; }
 
     /// Starts loading screen triangle t, which a coming pixel sees.
-    void prefetch(uint32_t t) const { __builtin_prefetch(m_screen + t); }
+    void prefetch(uint32_t t) const {
+        if (m_indexed)
+            __builtin_prefetch(m_indices + t);
+        else
+            __builtin_prefetch(m_screen + t);
+    }
 
   private:
     /// The interpolation of screen triangle t: its source's corner attributes and, when the
     /// piece is the whole triangle, the edge functions relative to its first corner.
     void set_up(uint32_t t) {
         m_triangle = t;
-        const ScreenTriangle& st = m_screen[t];
+        const ScreenTriangle st = screen_triangle(t);
         const auto& idx = m_indices[st.source];
         for (int i = 0; i < 3; ++i) {
             m_n[i] = m_normals[idx[i]];
@@ -273,7 +280,16 @@ class FrameShader {
     const Vec3* m_positions;
     const std::array<uint32_t, 3>* m_indices;
     const Vec3* m_normals;
+    /// Screen triangle t: stored, or its source's corners when the frame is indexed.
+    ScreenTriangle screen_triangle(uint32_t t) const {
+        if (!m_indexed) return m_screen[t];
+        const auto& idx = m_indices[t];
+        return {{m_vertices[idx[0]], m_vertices[idx[1]], m_vertices[idx[2]]}, t};
+    }
+
     const ScreenTriangle* m_screen;
+    bool m_indexed;
+    const ScreenVertex* m_vertices;
     const Vec4* m_clip;
     const uint8_t* m_inside;
     const float* m_light_depth;
@@ -288,18 +304,28 @@ class FrameShader {
     std::array<float, 3> m_ax{}, m_ay{}, m_a0{};
 };
 
+/// The Z-buffer over a projection, indexed or stored.
+void draw(const ScreenProjection& projection, const TriangleSet& tris, int width, int height,
+          ZBufferWorkspace& workspace, uint32_t* nearest, float* depth, SimdLevel simd) {
+    if (projection.indexed)
+        zbuffer_draw(IndexedScreenTriangles{projection.screen.data(), tris.indices.data(),
+                                            tris.indices.size()},
+                     width, height, workspace, nearest, depth, nullptr, simd);
+    else
+        zbuffer_draw(projection.triangles, width, height, workspace, nearest, depth, nullptr, simd);
+}
+
 /// One B4 frame into `rgb` (3 bytes per pixel); returns the covered and shadowed pixel counts.
 std::pair<size_t, size_t> draw_frame(const ShadeInputs& in, const TriangleSet& tris,
                                      FrameBuffers& frame, SimdLevel simd, uint8_t* rgb) {
     const int width = in.view.width, height = in.view.height;
     if (in.light) {
         project_to_screen(tris, *in.light, /*cull_back_faces=*/false, frame.light);
-        zbuffer_draw(frame.light.triangles, in.light->width, in.light->height, frame.light_z,
-                     nullptr, frame.light_depth.data(), nullptr, simd);
+        draw(frame.light, tris, in.light->width, in.light->height, frame.light_z, nullptr,
+             frame.light_depth.data(), simd);
     }
     project_to_screen(tris, in.view, /*cull_back_faces=*/false, frame.camera);
-    zbuffer_draw(frame.camera.triangles, width, height, frame.camera_z, frame.nearest.data(),
-                 nullptr, nullptr, simd);
+    draw(frame.camera, tris, width, height, frame.camera_z, frame.nearest.data(), nullptr, simd);
     // Deferred shading of the visible pixels; the clear colour elsewhere.
     return hikari::parallel_reduce(
         tbb::blocked_range<int>(0, height, 8), std::pair<size_t, size_t>{0, 0},
@@ -389,6 +415,7 @@ RasterBenchResult run_raster_bench(const BenchMesh& mesh, const std::string& mes
     const ShadeInputs inputs{mesh, normals, view, settings.shadow ? &light : nullptr, *gamma};
 
     FrameBuffers frame;
+    frame.camera.indexed_allowed = frame.light.indexed_allowed = true;
     frame.nearest.resize(static_cast<size_t>(settings.width) * settings.height);
     if (settings.shadow)
         frame.light_depth.resize(static_cast<size_t>(settings.shadow_map_size) *

@@ -162,6 +162,11 @@ void project_to_screen(const TriangleSet& tris, const RasterView& view, bool cul
     const bool all_inside =
         !cull_back_faces && std::all_of(out.vertex_inside.begin(), out.vertex_inside.end(),
                                         [](uint8_t inside) { return inside != 0; });
+    out.indexed = all_inside && out.indexed_allowed;
+    if (out.indexed) {
+        out.triangles.clear();
+        return;
+    }
     if (all_inside) {
         out.triangles.resize(n);
         hikari::parallel_for(
@@ -175,6 +180,7 @@ void project_to_screen(const TriangleSet& tris, const RasterView& view, bool cul
             });
         return;
     }
+    out.indexed = false;
     // Count the pieces of every triangle, place them by a prefix sum, then write them: the
     // output is in scene order whatever the thread count.
     out.offset.assign(n + 1, 0);

@@ -86,6 +86,11 @@ struct ProjectedScene {
 struct ScreenProjection {
     std::vector<Vec4> clip_positions;       ///< clip_from_world · p for every vertex
     std::vector<ScreenTriangle> triangles;  ///< in triangle order; pieces of a clipped one follow
+    /// Input: a caller that can draw IndexedScreenTriangles (raster/zbuffer.h) allows
+    /// project_to_screen to leave `triangles` empty when every triangle is one screen triangle.
+    bool indexed_allowed = false;
+    /// Output: `triangles` is empty; screen triangle t is triangle t's corners in `screen`.
+    bool indexed = false;
     VertexStageCounts counts;
     std::vector<ScreenVertex> screen;    ///< every vertex inside the clip volume, projected
     std::vector<uint8_t> vertex_inside;  ///< 1 where the vertex is inside the clip volume

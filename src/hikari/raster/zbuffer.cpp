@@ -46,11 +46,10 @@ struct FragmentCounts {
 /// Alg 4.2 over every tile of the image, into `nearest_out` and `depth_out` (row-major, either
 /// may be null). The render's pass runs the SIMD tile kernel; an observer that must see every
 /// fragment gets the per-pixel loop, which computes the same buffer.
-template <class Observer>
-void zbuffer_pass(std::span<const ScreenTriangle> triangles, int width, int height,
-                  ZBufferWorkspace& ws, uint32_t* nearest_out, float* depth_out,
-                  RenderControl* control, const Observer& observer, const SphereRaster* spheres,
-                  SimdLevel level) {
+template <class Triangles, class Observer>
+void zbuffer_pass(const Triangles& triangles, int width, int height, ZBufferWorkspace& ws,
+                  uint32_t* nearest_out, float* depth_out, RenderControl* control,
+                  const Observer& observer, const SphereRaster* spheres, SimdLevel level) {
     ws.setup.resize(triangles.size());
     ws.home.resize(triangles.size());
     hikari::parallel_for(tbb::blocked_range<size_t>(0, triangles.size(), 1024),
@@ -123,6 +122,13 @@ VisibilityBuffer zbuffer_pass(std::span<const ScreenTriangle> triangles, int wid
 }  // namespace
 
 void zbuffer_draw(std::span<const ScreenTriangle> triangles, int width, int height,
+                  ZBufferWorkspace& workspace, uint32_t* nearest, float* depth,
+                  RenderControl* control, SimdLevel level) {
+    zbuffer_pass(triangles, width, height, workspace, nearest, depth, control, NoFragmentObserver{},
+                 nullptr, level);
+}
+
+void zbuffer_draw(const IndexedScreenTriangles& triangles, int width, int height,
                   ZBufferWorkspace& workspace, uint32_t* nearest, float* depth,
                   RenderControl* control, SimdLevel level) {
     zbuffer_pass(triangles, width, height, workspace, nearest, depth, control, NoFragmentObserver{},
