@@ -65,10 +65,13 @@ size_t TileBins::tile_at(int x0, int y0) const {
 }
 
 uint32_t home_tile(const HalfSpaceTriangle& t, int width) {
+    // Larger than a tile: its tiles are tested (for_tiles below).
+    if (t.x1 - t.x0 > k_tile_size || t.y1 - t.y0 > k_tile_size) return k_several_tiles;
     const int tx = t.x0 / k_tile_size, ty = t.y0 / k_tile_size;
-    if (tx != (t.x1 - 1) / k_tile_size || ty != (t.y1 - 1) / k_tile_size) return k_several_tiles;
     const int tiles_x = (width + k_tile_size - 1) / k_tile_size;
-    return static_cast<uint32_t>(ty * tiles_x + tx);
+    return static_cast<uint32_t>(ty * tiles_x + tx) |
+           ((t.x1 - 1) / k_tile_size != tx ? k_home_spans_right : 0u) |
+           ((t.y1 - 1) / k_tile_size != ty ? k_home_spans_down : 0u);
 }
 
 void bin_triangles(std::span<const HalfSpaceTriangle> setup, std::span<const uint32_t> home,
@@ -80,13 +83,6 @@ void bin_triangles(std::span<const HalfSpaceTriangle> setup, std::span<const uin
         (setup.size() + TileBins::k_chunk_triangles - 1) / TileBins::k_chunk_triangles;
     if (bins.chunks.size() < bins.chunk_count) bins.chunks.resize(bins.chunk_count);
     auto for_tiles = [&](const HalfSpaceTriangle& t, auto&& fn) {
-        // A triangle smaller than a tile touches at most four: each of them, without tests.
-        if (t.x1 - t.x0 <= k_tile_size && t.y1 - t.y0 <= k_tile_size) {
-            for (int ty = t.y0 / k_tile_size; ty <= (t.y1 - 1) / k_tile_size; ++ty)
-                for (int tx = t.x0 / k_tile_size; tx <= (t.x1 - 1) / k_tile_size; ++tx)
-                    fn(static_cast<size_t>(ty) * bins.tiles_x + tx);
-            return;
-        }
         for (int ty = t.y0 / k_tile_size; ty <= (t.y1 - 1) / k_tile_size; ++ty) {
             int first = 0, last = 0;
             const int row0 = std::max(t.y0, ty * k_tile_size);
@@ -97,6 +93,16 @@ void bin_triangles(std::span<const HalfSpaceTriangle> setup, std::span<const uin
                     fn(static_cast<size_t>(ty) * bins.tiles_x + tx);
         }
     };
+    // A triangle no larger than a tile touches the one to four tiles its home names, untested.
+    auto for_home_tiles = [&](uint32_t home, auto&& fn) {
+        const uint32_t tile = home & k_home_tile_bits;
+        fn(tile);
+        if (home & k_home_spans_right) fn(tile + 1);
+        if (home & k_home_spans_down) {
+            fn(tile + bins.tiles_x);
+            if (home & k_home_spans_right) fn(tile + bins.tiles_x + 1);
+        }
+    };
     hikari::parallel_for(size_t{0}, bins.chunk_count, [&](size_t c) {
         TileBins::Chunk& chunk = bins.chunks[c];
         const size_t first = c * TileBins::k_chunk_triangles;
@@ -105,7 +111,7 @@ void bin_triangles(std::span<const HalfSpaceTriangle> setup, std::span<const uin
         for (size_t i = first; i < last; ++i) {
             if (home[i] == k_no_tile) continue;
             if (home[i] != k_several_tiles) {
-                ++chunk.begin[home[i] + 1];
+                for_home_tiles(home[i], [&](size_t tile) { ++chunk.begin[tile + 1]; });
                 continue;
             }
             for_tiles(setup[i], [&](size_t tile) { ++chunk.begin[tile + 1]; });
@@ -117,7 +123,9 @@ void bin_triangles(std::span<const HalfSpaceTriangle> setup, std::span<const uin
         for (size_t i = last; i-- > first;) {
             if (home[i] == k_no_tile) continue;
             if (home[i] != k_several_tiles) {
-                chunk.triangle[--chunk.begin[home[i] + 1]] = static_cast<uint32_t>(i);
+                for_home_tiles(home[i], [&](size_t tile) {
+                    chunk.triangle[--chunk.begin[tile + 1]] = static_cast<uint32_t>(i);
+                });
                 continue;
             }
             for_tiles(setup[i], [&](size_t tile) {

@@ -59,8 +59,15 @@ struct TileBins {
 inline constexpr uint32_t k_no_tile = 0xffffffff;
 inline constexpr uint32_t k_several_tiles = 0xfffffffe;
 
-/// The bin of the one tile of a `width`-wide image that the bounds of `t` (set up for it) lie
-/// in, or k_several_tiles. Most triangles of a dense mesh have one: binning them is a store.
+/// A triangle no larger than a tile lies in at most 2 × 2 tiles: its home names the top-left
+/// one's bin in the low bits, and whether it reaches into the tile to the right and below.
+inline constexpr uint32_t k_home_spans_right = 1u << 31;
+inline constexpr uint32_t k_home_spans_down = 1u << 30;
+inline constexpr uint32_t k_home_tile_bits = k_home_spans_down - 1;
+
+/// Where the bounds of `t` (set up for a `width`-wide image) lie: for a triangle no larger than
+/// a tile (most of a dense mesh), its tiles as above; else k_several_tiles. Binning the former
+/// needs no more than this word: its setup is not read again.
 uint32_t home_tile(const HalfSpaceTriangle& t, int width);
 
 /// Bins every triangle of `setup` into the k_tile_size tiles (frame/tiles.h) of a width × height
