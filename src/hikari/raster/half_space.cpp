@@ -10,13 +10,14 @@ namespace {
 
 /// std::llround without the library call: a float times 256 is exact in double, and so is that
 /// plus or minus one half below 2^52, so truncating it rounds halves away from zero as llround.
-int64_t round_half_away(double v) { return static_cast<int64_t>(v + std::copysign(0.5, v)); }
+int32_t round_half_away(double v) { return static_cast<int32_t>(v + std::copysign(0.5, v)); }
 
 }  // namespace
 
 bool setup_half_space(const ScreenTriangle& t, int width, int height, HalfSpaceTriangle& out) {
-    // Far beyond the guard band (raster/clip.h): products of differences stay below 2^63.
-    constexpr double k_limit = 1 << 28;
+    // Far beyond the guard band (raster/clip.h), which keeps every vertex within a few
+    // viewports of the image: snapped coordinates then stay below 2^30 (HalfSpaceTriangle).
+    constexpr double k_limit = 1 << 21;
     std::array<int, 3> order{0, 1, 2};
     for (int i = 0; i < 3; ++i) {
         const Vec3 p = t.v[i].position;
@@ -37,16 +38,13 @@ bool setup_half_space(const ScreenTriangle& t, int width, int height, HalfSpaceT
     out.y0 = clamp_to(-((half - ymin) >> k_subpixel_bits), height);
     out.y1 = clamp_to(((ymax - half) >> k_subpixel_bits) + 1, height);
     if (out.x0 >= out.x1 || out.y0 >= out.y1) return false;
-    int64_t area = (out.x[1] - out.x[0]) * (out.y[2] - out.y[0]) -
-                   (out.y[1] - out.y[0]) * (out.x[2] - out.x[0]);
+    int64_t area = out.area();
     if (area == 0) return false;
     if (area < 0) {  // make the area positive so that "inside" is E ≥ 0 on every edge
         std::swap(out.x[1], out.x[2]);
         std::swap(out.y[1], out.y[2]);
         std::swap(order[1], order[2]);
-        area = -area;
     }
-    out.area = area;
     for (int i = 0; i < 3; ++i) {
         out.inv_w[i] = t.v[order[i]].inv_w;
         const int a = (i + 1) % 3, b = (i + 2) % 3;

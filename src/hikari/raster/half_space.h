@@ -17,17 +17,24 @@ inline constexpr int k_subpixel_bits = 8;
 inline constexpr int64_t k_subpixel_one = int64_t{1} << k_subpixel_bits;
 
 /// A screen triangle ready for edge-function traversal. Vertices are reordered so that the
-/// signed area is positive; edge i runs between the two vertices other than i.
-struct HalfSpaceTriangle {
-    std::array<int64_t, 3> x, y;  ///< snapped vertex positions, in 1/256 pixel
+/// signed area is positive; edge i runs between the two vertices other than i. One cache line:
+/// a tile reads the setup of each of its triangles, scattered in memory, so its size is the
+/// rasterizer's memory traffic. Coordinates stay below 2^30 (setup_half_space refuses others),
+/// so differences of two fit in 32 bits and products of two differences in 63.
+struct alignas(64) HalfSpaceTriangle {
+    std::array<int32_t, 3> x, y;  ///< snapped vertex positions, in 1/256 pixel
     std::array<float, 3> inv_w;   ///< 1 / w of each (reordered) vertex
-    std::array<int64_t, 3> bias;  ///< 0 for top-left edges (a centre on them is in), −1 else
-    int64_t area = 0;             ///< twice the signed area, in 1/256² pixel², > 0
     /// A lower bound of the depth 1 / inv_w at every covered pixel (−infinity when unknown): a
     /// Z-buffer whose tile is nearer everywhere can skip the triangle (hierarchical rejection).
     float nearest_depth = 0;
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  ///< pixels whose centres the bounding box holds,
                                          ///< [x0, x1) × [y0, y1), clipped to the viewport
+    std::array<int8_t, 3> bias;  ///< 0 for top-left edges (a centre on them is in), −1 else
+
+    /// Twice the signed area, in 1/256² pixel², > 0.
+    int64_t area() const {
+        return int64_t{x[1] - x[0]} * (y[2] - y[0]) - int64_t{y[1] - y[0]} * (x[2] - x[0]);
+    }
 };
 
 /// Prepares `t` for rasterization in a width × height viewport. Returns false when the triangle
@@ -56,7 +63,7 @@ void for_each_covered_pixel(const HalfSpaceTriangle& t, int x0, int y0, int x1, 
         step_x[e] = -dy * k_subpixel_one;
         step_y[e] = dx * k_subpixel_one;
     }
-    const float inv_area = 1.0f / static_cast<float>(t.area);
+    const float inv_area = 1.0f / static_cast<float>(t.area());
     for (int y = y0; y < y1; ++y) {
         std::array<int64_t, 3> e = row;
         for (int x = x0; x < x1; ++x) {

@@ -71,7 +71,7 @@ struct LaneSetup {
             step_x[e] = -dy * k_subpixel_one;
             group_step[e] = step_x[e] * k_lanes;
         }
-        inv_area = 1.0f / static_cast<float>(h.area);
+        inv_area = 1.0f / static_cast<float>(h.area());
         return true;
     }
 
@@ -295,7 +295,7 @@ void zbuffer_tile_body(const HalfSpaceTriangle* setup, const uint32_t* triangles
         const HalfSpaceTriangle& h = setup[t];
         // Hierarchical rejection: the whole tile is nearer than any point of the triangle.
         if (h.nearest_depth > target.farthest) continue;
-        if (h.area < k_lane_area_limit)
+        if (h.area() < k_lane_area_limit)
             draw_lanes(h, t, target);
         else
             draw_per_pixel(h, t, target);
