@@ -255,6 +255,46 @@ void draw_lanes(const HalfSpaceTriangle& h, uint32_t id, TileDepth& target) {
 }
 #endif
 
+/// Pixel centres in the bounds below which a triangle is tested centre by centre: the lane
+/// setup costs more than a few direct evaluations.
+constexpr int k_few_pixels = 4;
+
+/// The triangle at each pixel centre of [x0, x1) × [y0, y1) (inside the tile), each edge function
+/// evaluated there directly: the same integers as the stepped ones, the same rounding after.
+void draw_few_pixels(const HalfSpaceTriangle& h, uint32_t id, int x0, int y0, int x1, int y1,
+                     TileDepth& target) {
+    if (x0 >= x1 || y0 >= y1) return;
+    const Tile& tile = *target.tile;
+    int64_t dx[3], dy[3];
+    for (int e = 0; e < 3; ++e) {
+        const int a = (e + 1) % 3, b = (e + 2) % 3;
+        dx[e] = int64_t{h.x[b]} - h.x[a];
+        dy[e] = int64_t{h.y[b]} - h.y[a];
+    }
+    const float inv_area = 1.0f / static_cast<float>(h.area());
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+            const int64_t px = int64_t{x} * k_subpixel_one + k_subpixel_one / 2;
+            const int64_t py = int64_t{y} * k_subpixel_one + k_subpixel_one / 2;
+            int64_t e[3];
+            for (int k = 0; k < 3; ++k) {
+                const int a = (k + 1) % 3;
+                e[k] = dx[k] * (py - h.y[a]) - dy[k] * (px - h.x[a]) + h.bias[k];
+            }
+            if ((e[0] | e[1] | e[2]) < 0) continue;
+            const float b0 = static_cast<float>(e[0] - h.bias[0]) * inv_area;
+            const float b1 = static_cast<float>(e[1] - h.bias[1]) * inv_area;
+            const float b2 = static_cast<float>(e[2] - h.bias[2]) * inv_area;
+            const float z = 1.0f / (b0 * h.inv_w[0] + b1 * h.inv_w[1] + b2 * h.inv_w[2]);
+            const int i = (y - tile.y0) * k_tile_size + (x - tile.x0);
+            // Alg 4.2's depth test.
+            if (z < target.depth[i]) {
+                target.depth[i] = z;
+                if (target.nearest) target.nearest[i] = id;
+            }
+        }
+}
+
 /// The largest depth of the tile's pixels.
 float farthest_depth(const TileDepth& target) {
     const Tile& tile = *target.tile;
@@ -288,14 +328,17 @@ void zbuffer_tile_body(const HalfSpaceTriangle* setup, const uint32_t* triangles
         if (k + k_prefetch_ahead < count) {
             const char* ahead =
                 reinterpret_cast<const char*>(&setup[triangles[k + k_prefetch_ahead]]);
-            __builtin_prefetch(ahead);
-            __builtin_prefetch(ahead + 64);
+            __builtin_prefetch(ahead);  // one line: HalfSpaceTriangle is cache-line sized
         }
         const uint32_t t = triangles[k];
         const HalfSpaceTriangle& h = setup[t];
         // Hierarchical rejection: the whole tile is nearer than any point of the triangle.
         if (h.nearest_depth > target.farthest) continue;
-        if (h.area() < k_lane_area_limit)
+        const int x0 = std::max(target.tile->x0, h.x0), x1 = std::min(target.tile->x1, h.x1);
+        const int y0 = std::max(target.tile->y0, h.y0), y1 = std::min(target.tile->y1, h.y1);
+        if ((x1 - x0) * (y1 - y0) <= k_few_pixels)
+            draw_few_pixels(h, t, x0, y0, x1, y1, target);  // a dense mesh's tiny triangles
+        else if (h.area() < k_lane_area_limit)
             draw_lanes(h, t, target);
         else
             draw_per_pixel(h, t, target);
