@@ -16,13 +16,6 @@ Mat4 operator*(const Mat4& a, const Mat4& b) {
     return r;
 }
 
-Vec4 operator*(const Mat4& a, Vec4 v) {
-    auto row = [&](int i) {
-        return a.m[i][0] * v.x + a.m[i][1] * v.y + a.m[i][2] * v.z + a.m[i][3] * v.w;
-    };
-    return {row(0), row(1), row(2), row(3)};
-}
-
 Mat4 transpose(const Mat4& a) {
     Mat4 r;
     for (int i = 0; i < 4; ++i)
@@ -95,11 +88,6 @@ bool flattens_space(const Mat4& a) {
                        d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
     return !std::isfinite(det) || largest == 0 ||
            std::abs(det) <= 1e-9 * largest * largest * largest;
-}
-
-Vec3 transform_point(const Mat4& a, Vec3 p) {
-    const Vec4 h = a * Vec4(p, 1.0f);
-    return h.w == 1.0f ? h.xyz() : h.xyz() / h.w;
 }
 
 Vec3 transform_direction(const Mat4& a, Vec3 d) { return (a * Vec4(d, 0.0f)).xyz(); }

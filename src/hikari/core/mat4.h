@@ -31,7 +31,13 @@ struct Mat4 {
 };
 
 Mat4 operator*(const Mat4& a, const Mat4& b);
-Vec4 operator*(const Mat4& a, Vec4 v);
+/// Inline, as transform_point: the vertex stage runs them once per vertex and frame.
+inline Vec4 operator*(const Mat4& a, Vec4 v) {
+    auto row = [&](int i) {
+        return a.m[i][0] * v.x + a.m[i][1] * v.y + a.m[i][2] * v.z + a.m[i][3] * v.w;
+    };
+    return {row(0), row(1), row(2), row(3)};
+}
 
 Mat4 transpose(const Mat4& a);
 /// The inverse by cofactors, computed in double. Returns false when `a` is singular (zero or
@@ -47,7 +53,10 @@ bool flattens_space(const Mat4& a);
 float determinant(const Mat4& a);
 
 /// Maps a point (w = 1), dividing by the resulting w when it is not 1.
-Vec3 transform_point(const Mat4& a, Vec3 p);
+inline Vec3 transform_point(const Mat4& a, Vec3 p) {
+    const Vec4 h = a * Vec4(p, 1.0f);
+    return h.w == 1.0f ? h.xyz() : h.xyz() / h.w;
+}
 /// Maps a direction (w = 0): translation does not apply.
 Vec3 transform_direction(const Mat4& a, Vec3 d);
 /// Maps a surface normal by the inverse transpose, given here as `normal_matrix`
