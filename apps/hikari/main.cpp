@@ -679,6 +679,15 @@ int run_path_bench_command(const BenchOptions& o) {
     return 0;
 }
 
+/// The kernel `--simd` asks for, or `fallback` (the best this CPU has) for auto; an error when
+/// this CPU cannot run the one asked for.
+SimdLevel chosen_simd(std::optional<SimdLevel> asked, SimdLevel fallback) {
+    if (!asked) return fallback;
+    if (!simd_level_supported(*asked))
+        throw InputError(fmt::format("this CPU cannot run --simd {}", simd_level_name(*asked)));
+    return *asked;
+}
+
 /// `hikari bench B4`: the raster frame of SPEC §6, one JSON object on stdout.
 int run_raster_bench_command(const BenchOptions& o) {
     if (o.packets || !o.scene.empty())
@@ -687,12 +696,7 @@ int run_raster_bench_command(const BenchOptions& o) {
     settings.threads = o.threads;
     settings.shadow = o.shadow;
     settings.timed_frames = o.repetitions.value_or(settings.timed_frames);
-    if (o.simd) {
-        settings.simd = *o.simd;
-        if (!simd_level_supported(settings.simd))
-            throw InputError(
-                fmt::format("this CPU cannot run --simd {}", simd_level_name(settings.simd)));
-    }
+    settings.simd = chosen_simd(o.simd, settings.simd);
     const BenchMesh mesh = load_bench_mesh(o.mesh);
     const tbb::global_control thread_limit(tbb::global_control::max_allowed_parallelism,
                                            static_cast<size_t>(o.threads));
@@ -716,12 +720,7 @@ int run_bench_command(const BenchOptions& o) {
     settings.repetitions = o.repetitions.value_or(settings.repetitions);
     settings.packets = o.packets;
     if (o.packets && o.bench != "B1") throw InputError("--packets is for B1 only");
-    if (o.simd) {
-        settings.simd = *o.simd;
-        if (!simd_level_supported(settings.simd))
-            throw InputError(
-                fmt::format("this CPU cannot run --simd {}", simd_level_name(settings.simd)));
-    }
+    settings.simd = chosen_simd(o.simd, settings.simd);
     const BenchMesh mesh = load_bench_mesh(o.mesh);
     const BenchResult result =
         run_bench(mesh, std::filesystem::path(o.mesh).stem().string(), settings);
