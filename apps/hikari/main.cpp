@@ -692,6 +692,9 @@ SimdLevel chosen_simd(std::optional<SimdLevel> asked, SimdLevel fallback) {
 int run_raster_bench_command(const BenchOptions& o) {
     if (o.packets || !o.scene.empty())
         throw InputError("B4 draws a mesh: --packets and --scene are for B1 and B5");
+    if (!o.output.empty() && !is_supported_image_extension(o.output))
+        throw InputError(fmt::format("{}: unsupported output format (use {})", o.output,
+                                     k_writable_image_extensions));
     RasterBenchSettings settings;
     settings.threads = o.threads;
     settings.shadow = o.shadow;

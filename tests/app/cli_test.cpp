@@ -295,6 +295,23 @@ TEST_F(Cli, BenchPrintsOneJsonObject) {
     EXPECT_NE(b2.output.find("\"occluded_fraction\""), std::string::npos) << b2.output;
 }
 
+TEST_F(Cli, BenchB4DrawsTheFrameAndWritesIt) {
+    // A quad filling the middle of the SPEC's view: B1 camera at 1.1 diagonals.
+    write("quad.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n");
+    const Result r = run("bench B4 --mesh " + path("quad.obj") +
+                         " --threads 2 --reps 1 --shadow -o " + path("frame.png") + " 2>/dev/null");
+    EXPECT_EQ(r.status, 0) << r.output;
+    for (const char* key : {"\"bench\": \"B4\"", "\"mesh\": \"quad\"", "\"threads\": 2",
+                            "\"variant\": \"shadow\"", "\"ms_per_frame\"", "\"covered_pixels\""})
+        EXPECT_NE(r.output.find(key), std::string::npos) << key << " in " << r.output;
+    EXPECT_EQ(r.output.find("\"covered_pixels\": 0,"), std::string::npos) << r.output;
+    EXPECT_TRUE(std::filesystem::exists(path("frame.png")));
+    // An output it cannot write is refused before any frame is drawn.
+    const Result bad = run("bench B4 --mesh " + path("quad.obj") + " -o " + path("frame.bmp"));
+    EXPECT_EQ(bad.status, 1) << bad.output;
+    EXPECT_NE(bad.output.find("unsupported output format"), std::string::npos) << bad.output;
+}
+
 TEST_F(Cli, BenchUsageErrorsExitTwo) {
     EXPECT_EQ(run("bench B9 --mesh x.obj").status, 2);
     EXPECT_EQ(run("bench B1").status, 2);
