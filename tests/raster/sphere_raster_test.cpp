@@ -150,6 +150,34 @@ TEST(SphereRaster, BoundsHoldEverySilhouettePixel) {
     EXPECT_GT(hits, 500);
 }
 
+// A 90° face of a point light's cube map, as shadow maps make them: a small sphere beside the
+// light reaches across the face's eye plane, but only its part beyond the near plane can be
+// seen, and that projects to a few texels, not to the whole face (which made a cloud of small
+// spheres around a point light cost seconds).
+TEST(SphereRaster, ASphereAcrossTheEyePlaneIsBoundedByItsPartBeyondTheNearPlane) {
+    RasterView face;
+    face.width = face.height = 256;
+    face.near_plane = 0.1f;
+    face.view_from_world = look_at({0, 0, 0}, {0, 0, -1}, {0, 1, 0});
+    face.clip_from_view = perspective(90, 1.0f, 0.1f, 100);
+    face.screen_from_clip = viewport(256, 256);
+    face.clip_from_world = face.clip_from_view * face.view_from_world;
+    const std::vector<Sphere> spheres = {Sphere{{3, 0, 0.01f}, 0.05f},  // across the eye plane
+                                         Sphere{{0, 0, 5}, 0.5f},       // behind the eye
+                                         Sphere{{0.5f, 0, -4}, 0.2f}};  // in front
+    const SphereRaster raster = prepare_sphere_raster(spheres, face, view_pixel_rays(face), 0);
+    auto area = [](const PixelRect& r) { return (r.x1 - r.x0) * (r.y1 - r.y0); };
+    EXPECT_LT(area(raster.bounds[0]), 256 * 256 / 16);
+    EXPECT_EQ(area(raster.bounds[1]), 0);
+    EXPECT_GT(area(raster.bounds[2]), 0);
+    EXPECT_LT(area(raster.bounds[2]), 256 * 256 / 16);
+    // Each sphere is listed in the tiles its bound meets, and only there.
+    size_t listed = 0;
+    for (const uint32_t k : raster.tile_spheres) listed += k == 2;
+    EXPECT_GE(listed, 1u);
+    EXPECT_LE(listed, 4u);
+}
+
 TEST(SphereRaster, RoundShadowOfASphereOnTheFloor) {
     // A sphere over a floor under a slanting light: its shadow-map shadow is the ellipse the
     // ray tracer's shadow rays find (up to the map's bias at the rim), not a polygon.

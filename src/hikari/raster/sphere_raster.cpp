@@ -1,6 +1,7 @@
 #include "hikari/raster/sphere_raster.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "hikari/geometry/intersect.h"
@@ -39,28 +40,44 @@ PixelRays view_pixel_rays(const RasterView& view) {
 
 namespace {
 
-/// Every pixel whose ray may meet `s`: the screen bounds of its bounding box's corners (the
-/// sphere lies in the box's convex hull, and projection keeps convex hulls of points in front of
-/// the eye), grown by one pixel, since the rays are made by other arithmetic than the matrices.
+/// Every pixel whose ray may meet `s`: the screen bounds of the part of its bounding box in front
+/// of the near plane (the sphere's part there lies in that convex polytope, and projection keeps
+/// convex hulls of points in front of the eye), grown by one pixel, since the rays are made by
+/// other arithmetic than the matrices. The pixels' rays start at the near plane (a shadow map's
+/// texels) or at the eye with nothing nearer than the near plane (make_raster_view), so the cut
+/// loses nothing; without it, a small sphere reaching across the eye's plane (beside a point
+/// light, in a cube face) would have to be tried at every pixel.
 PixelRect screen_bound(const Sphere& s, const RasterView& view) {
     const PixelRect whole{0, 0, view.width, view.height};
     float lo_x = k_infinity, lo_y = k_infinity, hi_x = -k_infinity, hi_y = -k_infinity;
-    int in_front = 0;
-    for (int corner = 0; corner < 8; ++corner) {
-        const Vec3 p =
-            s.center + s.radius * Vec3((corner & 1) ? 1.0f : -1.0f, (corner & 2) ? 1.0f : -1.0f,
-                                       (corner & 4) ? 1.0f : -1.0f);
-        const Vec4 clip = view.clip_from_world * Vec4(p, 1.0f);
-        if (!(clip.w > 0.0f)) continue;
-        ++in_front;
-        const Vec3 screen = transform_point(view.screen_from_clip, clip.xyz() * (1.0f / clip.w));
+    std::array<Vec4, 8> corner;
+    for (int k = 0; k < 8; ++k) {
+        const Vec3 p = s.center + s.radius * Vec3((k & 1) ? 1.0f : -1.0f, (k & 2) ? 1.0f : -1.0f,
+                                                  (k & 4) ? 1.0f : -1.0f);
+        corner[k] = view.clip_from_world * Vec4(p, 1.0f);
+    }
+    // Signed distance to the near plane in clip space (z = −w), ≥ 0 in front (raster/clip.h).
+    auto near_distance = [](Vec4 c) { return c.z + c.w; };
+    int kept = 0;
+    auto take = [&](Vec4 c) {
+        if (!(c.w > 0.0f)) return;
+        ++kept;
+        const Vec3 screen = transform_point(view.screen_from_clip, c.xyz() * (1.0f / c.w));
         lo_x = std::min(lo_x, screen.x), hi_x = std::max(hi_x, screen.x);
         lo_y = std::min(lo_y, screen.y), hi_y = std::max(hi_y, screen.y);
-    }
-    // Wholly behind the eye's plane: the pixels' rays, which run forward from the eye (or the
-    // near plane), never meet it. Reaching across that plane: it may cover any pixel.
-    if (in_front == 0) return {};
-    if (in_front < 8) return whole;
+    };
+    for (int k = 0; k < 8; ++k)
+        if (near_distance(corner[k]) >= 0.0f) take(corner[k]);
+    // Where the box's twelve edges cross the near plane.
+    for (int k = 0; k < 8; ++k)
+        for (const int bit : {1, 2, 4}) {
+            if (k & bit) continue;
+            const Vec4 a = corner[k], b = corner[k | bit];
+            const float da = near_distance(a), db = near_distance(b);
+            if ((da >= 0.0f) != (db >= 0.0f)) take(a + (b - a) * (da / (da - db)));
+        }
+    // Wholly behind the near plane: the pixels' rays never meet it.
+    if (kept == 0) return {};
     if (!(std::isfinite(lo_x) && std::isfinite(lo_y) && std::isfinite(hi_x) && std::isfinite(hi_y)))
         return whole;
     // Pixel i is sampled at i + ½ in this (offset) screen space.
@@ -95,6 +112,25 @@ SphereRaster prepare_sphere_raster(std::span<const Sphere> spheres, const Raster
     out.first_id = first_id;
     out.bounds.reserve(spheres.size());
     for (const Sphere& s : spheres) out.bounds.push_back(screen_bound(s, view));
+    // Bin the bounds to the tiles, counting then filling, so that each tile's list keeps the
+    // spheres' order (ties go to the lower index, as in the ray tracer).
+    out.tiles_x = (view.width + k_tile_size - 1) / k_tile_size;
+    const int tiles_y = (view.height + k_tile_size - 1) / k_tile_size;
+    out.tile_begin.assign(static_cast<size_t>(out.tiles_x) * tiles_y + 1, 0);
+    auto for_tiles = [&](const PixelRect& b, auto&& fn) {
+        const int x1 = std::min(b.x1, view.width), y1 = std::min(b.y1, view.height);
+        if (b.x0 >= x1 || b.y0 >= y1) return;
+        for (int ty = b.y0 / k_tile_size; ty <= (y1 - 1) / k_tile_size; ++ty)
+            for (int tx = b.x0 / k_tile_size; tx <= (x1 - 1) / k_tile_size; ++tx)
+                fn(static_cast<size_t>(ty) * out.tiles_x + tx);
+    };
+    for (const PixelRect& b : out.bounds)
+        for_tiles(b, [&](size_t tile) { ++out.tile_begin[tile + 1]; });
+    for (size_t t = 1; t < out.tile_begin.size(); ++t) out.tile_begin[t] += out.tile_begin[t - 1];
+    out.tile_spheres.resize(out.tile_begin.back());
+    std::vector<uint32_t> fill(out.tile_begin.begin(), out.tile_begin.end() - 1);
+    for (uint32_t k = 0; k < out.bounds.size(); ++k)
+        for_tiles(out.bounds[k], [&](size_t tile) { out.tile_spheres[fill[tile]++] = k; });
     return out;
 }
 
@@ -106,11 +142,10 @@ float pixel_sphere_hit(const PixelRays& rays, const Sphere& sphere, int x, int y
 void draw_spheres_in_tile(const SphereRaster& raster, const Tile& tile, float* depth,
                           uint32_t* nearest) {
     // The spheres that may show in this tile, in index order.
-    std::vector<uint32_t> here;
-    for (uint32_t k = 0; k < raster.spheres.size(); ++k) {
-        const PixelRect& b = raster.bounds[k];
-        if (b.x0 < tile.x1 && tile.x0 < b.x1 && b.y0 < tile.y1 && tile.y0 < b.y1) here.push_back(k);
-    }
+    const size_t bin = static_cast<size_t>(tile.y0 / k_tile_size) * raster.tiles_x +
+                       static_cast<size_t>(tile.x0 / k_tile_size);
+    const std::span<const uint32_t> here(raster.tile_spheres.data() + raster.tile_begin[bin],
+                                         raster.tile_begin[bin + 1] - raster.tile_begin[bin]);
     if (here.empty()) return;
     for (int y = tile.y0; y < tile.y1; ++y)
         for (int x = tile.x0; x < tile.x1; ++x) {

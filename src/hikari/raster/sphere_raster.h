@@ -57,6 +57,11 @@ struct SphereRaster {
     bool orthographic = false;  ///< the view's depth key is 1 / (1.5 − 0.5 z_ndc)
     uint32_t first_id = 0;
     std::vector<PixelRect> bounds;  ///< per sphere: every pixel whose ray can meet it
+    /// The spheres whose bound meets each k_tile_size tile of the view (row-major tiles), in
+    /// index order, as compressed rows: a tile reads only its own, whatever the sphere count.
+    int tiles_x = 0;
+    std::vector<uint32_t> tile_begin;
+    std::vector<uint32_t> tile_spheres;
 
     bool is_sphere(uint32_t visible) const {
         return visible >= first_id && visible - first_id < spheres.size();
