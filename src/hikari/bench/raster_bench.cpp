@@ -283,8 +283,7 @@ class FrameShader {
     /// Screen triangle t: stored, or its source's corners when the frame is indexed.
     ScreenTriangle screen_triangle(uint32_t t) const {
         if (!m_indexed) return m_screen[t];
-        const auto& idx = m_indices[t];
-        return {{m_vertices[idx[0]], m_vertices[idx[1]], m_vertices[idx[2]]}, t};
+        return IndexedScreenTriangles{m_vertices, m_indices, t + 1}[t];
     }
 
     const ScreenTriangle* m_screen;

@@ -40,6 +40,13 @@ struct alignas(64) HalfSpaceTriangle {
     }
 };
 
+/// The view depth at a point of `h` with screen-space weights (b0, b1, b2): 1/w is affine in
+/// screen space, so it is interpolated and inverted (Alg 4.2's z). Every scalar path of the
+/// Z-buffer rounds through this one expression, so the SIMD kernels can match it exactly.
+inline float interpolated_depth(const HalfSpaceTriangle& h, float b0, float b1, float b2) {
+    return 1.0f / (b0 * h.inv_w[0] + b1 * h.inv_w[1] + b2 * h.inv_w[2]);
+}
+
 /// Prepares `t` for rasterization in a width × height viewport. Returns false when the triangle
 /// covers no pixel centre for sure: zero area, off screen, or coordinates that are not finite
 /// or beyond the guard band's range.

@@ -31,6 +31,21 @@ struct ScreenTriangle {
     uint32_t source = 0;  ///< index into the tessellated scene triangles (RasterScene::triangles)
 };
 
+/// Screen triangles given by corner indices into projected vertices (the corners of every triangle
+/// of a mesh wholly inside the clip volume: ScreenProjection), built as they are read instead of
+/// stored.
+struct IndexedScreenTriangles {
+    const ScreenVertex* vertices = nullptr;
+    const std::array<uint32_t, 3>* indices = nullptr;
+    size_t count = 0;
+
+    size_t size() const { return count; }
+    ScreenTriangle operator[](size_t t) const {
+        const auto& idx = indices[t];
+        return {{vertices[idx[0]], vertices[idx[1]], vertices[idx[2]]}, static_cast<uint32_t>(t)};
+    }
+};
+
 /// Index stored in a visibility buffer where no triangle covers the pixel centre.
 inline constexpr uint32_t k_no_triangle = std::numeric_limits<uint32_t>::max();
 

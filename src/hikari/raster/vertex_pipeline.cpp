@@ -60,7 +60,8 @@ int project_one(const TriangleSet& tris, const RasterView& view, const ScreenPro
     if (cull && is_back_facing(view, tris, t)) return 0;
     if (sp.vertex_inside[idx[0]] && sp.vertex_inside[idx[1]] && sp.vertex_inside[idx[2]]) {
         fate = k_kept;
-        if (out) *out = {{sp.screen[idx[0]], sp.screen[idx[1]], sp.screen[idx[2]]}, t};
+        if (out)
+            *out = IndexedScreenTriangles{sp.screen.data(), tris.indices.data(), tris.size()}[t];
         return 1;
     }
     const Vec4 a = sp.clip_positions[idx[0]], b = sp.clip_positions[idx[1]],
@@ -171,16 +172,11 @@ void project_to_screen(const TriangleSet& tris, const RasterView& view, bool cul
         out.triangles.resize(n);
         hikari::parallel_for(
             tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& range) {
-                for (size_t t = range.begin(); t != range.end(); ++t) {
-                    const auto& idx = tris.indices[t];
-                    out.triangles[t] = {
-                        {out.screen[idx[0]], out.screen[idx[1]], out.screen[idx[2]]},
-                        static_cast<uint32_t>(t)};
-                }
+                const IndexedScreenTriangles corners{out.screen.data(), tris.indices.data(), n};
+                for (size_t t = range.begin(); t != range.end(); ++t) out.triangles[t] = corners[t];
             });
         return;
     }
-    out.indexed = false;
     // Count the pieces of every triangle, place them by a prefix sum, then write them: the
     // output is in scene order whatever the thread count.
     out.offset.assign(n + 1, 0);

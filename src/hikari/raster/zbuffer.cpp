@@ -73,20 +73,18 @@ void zbuffer_pass(const Triangles& triangles, int width, int height, ZBufferWork
         if constexpr (Observer::k_active) {
             ws.bins.for_each(tile_index, [&](uint32_t t) {
                 const HalfSpaceTriangle& h = ws.setup[t];
-                for_each_covered_pixel(
-                    h, tile.x0, tile.y0, tile.x1, tile.y1,
-                    [&](int x, int y, float b0, float b1, float b2) {
-                        // 1/w is affine in screen space: interpolate it, invert.
-                        const float inv_w = b0 * h.inv_w[0] + b1 * h.inv_w[1] + b2 * h.inv_w[2];
-                        const float z = 1.0f / inv_w;
-                        const int i = (y - tile.y0) * k_tile_size + (x - tile.x0);
-                        observer.fragment(x, y, t, z, depth[i], z < depth[i]);
-                        // Alg 4.2: the depth test; nearer fragments replace.
-                        if (z < depth[i]) {
-                            depth[i] = z;
-                            nearest[i] = t;
-                        }
-                    });
+                for_each_covered_pixel(h, tile.x0, tile.y0, tile.x1, tile.y1,
+                                       [&](int x, int y, float b0, float b1, float b2) {
+                                           const float z = interpolated_depth(h, b0, b1, b2);
+                                           const int i =
+                                               (y - tile.y0) * k_tile_size + (x - tile.x0);
+                                           observer.fragment(x, y, t, z, depth[i], z < depth[i]);
+                                           // Alg 4.2: the depth test; nearer fragments replace.
+                                           if (z < depth[i]) {
+                                               depth[i] = z;
+                                               nearest[i] = t;
+                                           }
+                                       });
             });
         } else {
             TileDepth target{&tile, depth.data(), nearest_out || spheres ? nearest.data() : nullptr,

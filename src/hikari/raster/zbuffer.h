@@ -44,20 +44,6 @@ void zbuffer_draw(std::span<const ScreenTriangle> triangles, int width, int heig
                   ZBufferWorkspace& workspace, uint32_t* nearest, float* depth,
                   RenderControl* control = nullptr, SimdLevel level = best_simd_level());
 
-/// Screen triangles given by corner indices into projected vertices (a mesh wholly inside the
-/// clip volume: ScreenProjection::indexed), built as they are read instead of stored.
-struct IndexedScreenTriangles {
-    const ScreenVertex* vertices = nullptr;
-    const std::array<uint32_t, 3>* indices = nullptr;
-    size_t count = 0;
-
-    size_t size() const { return count; }
-    ScreenTriangle operator[](size_t t) const {
-        const auto& idx = indices[t];
-        return {{vertices[idx[0]], vertices[idx[1]], vertices[idx[2]]}, static_cast<uint32_t>(t)};
-    }
-};
-
 /// zbuffer_draw over indexed triangles: the same buffers as drawing the ScreenTriangles they
 /// stand for, without writing and reading those back (52 bytes a triangle).
 void zbuffer_draw(const IndexedScreenTriangles& triangles, int width, int height,

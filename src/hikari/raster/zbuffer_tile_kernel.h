@@ -32,18 +32,18 @@ inline float exact_to_float(int64_t x) {
 /// Triangles whose edge values may reach 2^51 take the per-pixel loop.
 constexpr int64_t k_lane_area_limit = int64_t{1} << 50;
 
-/// The per-pixel loop of for_each_covered_pixel, for the rare huge triangle.
+/// The per-pixel loop of for_each_covered_pixel, for tiny triangles and the rare huge one.
 void draw_per_pixel(const HalfSpaceTriangle& h, uint32_t id, TileDepth& target) {
     const Tile& tile = *target.tile;
-    for_each_covered_pixel(
-        h, tile.x0, tile.y0, tile.x1, tile.y1, [&](int x, int y, float b0, float b1, float b2) {
-            const float z = 1.0f / (b0 * h.inv_w[0] + b1 * h.inv_w[1] + b2 * h.inv_w[2]);
-            const int i = (y - tile.y0) * k_tile_size + (x - tile.x0);
-            if (z < target.depth[i]) {
-                target.depth[i] = z;
-                if (target.nearest) target.nearest[i] = id;
-            }
-        });
+    for_each_covered_pixel(h, tile.x0, tile.y0, tile.x1, tile.y1,
+                           [&](int x, int y, float b0, float b1, float b2) {
+                               const float z = interpolated_depth(h, b0, b1, b2);
+                               const int i = (y - tile.y0) * k_tile_size + (x - tile.x0);
+                               if (z < target.depth[i]) {
+                                   target.depth[i] = z;
+                                   if (target.nearest) target.nearest[i] = id;
+                               }
+                           });
 }
 
 /// What every lane version of draw_lanes needs: the triangle's bounds in the tile, the edge
@@ -241,7 +241,7 @@ void draw_lanes(const HalfSpaceTriangle& h, uint32_t id, TileDepth& target) {
                 const float b0 = exact_to_float(e0 - h.bias[0]) * s.inv_area;
                 const float b1 = exact_to_float(e1 - h.bias[1]) * s.inv_area;
                 const float b2 = exact_to_float(e2 - h.bias[2]) * s.inv_area;
-                const float z = 1.0f / (b0 * h.inv_w[0] + b1 * h.inv_w[1] + b2 * h.inv_w[2]);
+                const float z = interpolated_depth(h, b0, b1, b2);
                 // Alg 4.2's depth test.
                 if (z < target.depth[at + k]) {
                     target.depth[at + k] = z;
@@ -255,45 +255,9 @@ void draw_lanes(const HalfSpaceTriangle& h, uint32_t id, TileDepth& target) {
 }
 #endif
 
-/// Pixel centres in the bounds below which a triangle is tested centre by centre: the lane
-/// setup costs more than a few direct evaluations.
+/// Pixel centres in the bounds below which a triangle takes the per-pixel loop: the lane setup
+/// costs more than a few stepped evaluations.
 constexpr int k_few_pixels = 4;
-
-/// The triangle at each pixel centre of [x0, x1) × [y0, y1) (inside the tile), each edge function
-/// evaluated there directly: the same integers as the stepped ones, the same rounding after.
-void draw_few_pixels(const HalfSpaceTriangle& h, uint32_t id, int x0, int y0, int x1, int y1,
-                     TileDepth& target) {
-    if (x0 >= x1 || y0 >= y1) return;
-    const Tile& tile = *target.tile;
-    int64_t dx[3], dy[3];
-    for (int e = 0; e < 3; ++e) {
-        const int a = (e + 1) % 3, b = (e + 2) % 3;
-        dx[e] = int64_t{h.x[b]} - h.x[a];
-        dy[e] = int64_t{h.y[b]} - h.y[a];
-    }
-    const float inv_area = 1.0f / static_cast<float>(h.area());
-    for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) {
-            const int64_t px = int64_t{x} * k_subpixel_one + k_subpixel_one / 2;
-            const int64_t py = int64_t{y} * k_subpixel_one + k_subpixel_one / 2;
-            int64_t e[3];
-            for (int k = 0; k < 3; ++k) {
-                const int a = (k + 1) % 3;
-                e[k] = dx[k] * (py - h.y[a]) - dy[k] * (px - h.x[a]) + h.bias[k];
-            }
-            if ((e[0] | e[1] | e[2]) < 0) continue;
-            const float b0 = static_cast<float>(e[0] - h.bias[0]) * inv_area;
-            const float b1 = static_cast<float>(e[1] - h.bias[1]) * inv_area;
-            const float b2 = static_cast<float>(e[2] - h.bias[2]) * inv_area;
-            const float z = 1.0f / (b0 * h.inv_w[0] + b1 * h.inv_w[1] + b2 * h.inv_w[2]);
-            const int i = (y - tile.y0) * k_tile_size + (x - tile.x0);
-            // Alg 4.2's depth test.
-            if (z < target.depth[i]) {
-                target.depth[i] = z;
-                if (target.nearest) target.nearest[i] = id;
-            }
-        }
-}
 
 /// The largest depth of the tile's pixels.
 float farthest_depth(const TileDepth& target) {
@@ -336,12 +300,11 @@ void zbuffer_tile_body(const HalfSpaceTriangle* setup, const uint32_t* triangles
         if (h.nearest_depth > target.farthest) continue;
         const int x0 = std::max(target.tile->x0, h.x0), x1 = std::min(target.tile->x1, h.x1);
         const int y0 = std::max(target.tile->y0, h.y0), y1 = std::min(target.tile->y1, h.y1);
-        if ((x1 - x0) * (y1 - y0) <= k_few_pixels)
-            draw_few_pixels(h, t, x0, y0, x1, y1, target);  // a dense mesh's tiny triangles
-        else if (h.area() < k_lane_area_limit)
-            draw_lanes(h, t, target);
-        else
+        // A dense mesh's tiny triangles, and the rare huge one, take the per-pixel loop.
+        if ((x1 - x0) * (y1 - y0) <= k_few_pixels || h.area() >= k_lane_area_limit)
             draw_per_pixel(h, t, target);
+        else
+            draw_lanes(h, t, target);
         // Depths only decrease, so a farthest depth not yet refreshed still bounds them all.
         if (++drawn % k_refresh_interval == 0) target.farthest = farthest_depth(target);
     }
