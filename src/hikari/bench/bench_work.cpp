@@ -31,11 +31,19 @@ void set_bench_bounds(BenchMesh& mesh) {
     mesh.diagonal = std::sqrt(d2);
 }
 
+Vec3 bench_center(const BenchMesh& mesh) {
+    return {float(mesh.center[0]), float(mesh.center[1]), float(mesh.center[2])};
+}
+
+Vec3 b1_eye(const BenchMesh& mesh) {
+    return {float(mesh.center[0]), float(mesh.center[1]),
+            float(mesh.center[2] + 1.1 * mesh.diagonal)};
+}
+
 BenchRays make_b1_rays(const BenchMesh& mesh, int width, int height) {
     // The view direction is -z, so right = +x and up = +y exactly (SPEC §2).
     const double tan_half = std::tan(45.0 * M_PI / 360.0);
-    const Vec3 eye{float(mesh.center[0]), float(mesh.center[1]),
-                   float(mesh.center[2] + 1.1 * mesh.diagonal)};
+    const Vec3 eye = b1_eye(mesh);
     BenchRays out;
     out.rays.resize(size_t(width) * size_t(height));
     for (int y = 0; y < height; ++y)

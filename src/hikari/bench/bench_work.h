@@ -30,6 +30,12 @@ BenchMesh load_bench_mesh(const std::filesystem::path& file);
 /// Computes center and diagonal from the positions (SPEC §1).
 void set_bench_bounds(BenchMesh& mesh);
 
+/// The mesh's centre c, rounded to float.
+Vec3 bench_center(const BenchMesh& mesh);
+
+/// SPEC §2's eye c + (0, 0, 1.1 d), computed in double and rounded to float (B1, B2, B4).
+Vec3 b1_eye(const BenchMesh& mesh);
+
 /// A batch of rays, each with its own far limit (the near limit is always 0).
 struct BenchRays {
     std::vector<Ray> rays;

@@ -44,11 +44,10 @@ std::vector<Vec3> vertex_normals(const BenchMesh& mesh) {
 
 /// The B1 camera (SPEC §2) as gluPerspective(45°, W/H, 0.05 d, 5 d) sees it.
 RasterView camera_view(const BenchMesh& mesh, int width, int height) {
-    const Vec3 c(static_cast<float>(mesh.center[0]), static_cast<float>(mesh.center[1]),
-                 static_cast<float>(mesh.center[2]));
+    const Vec3 c = bench_center(mesh);
     const auto d = static_cast<float>(mesh.diagonal);
     RasterView v;
-    v.eye = c + Vec3(0.0f, 0.0f, 1.1f * d);
+    v.eye = b1_eye(mesh);
     v.forward = Vec3(0.0f, 0.0f, -1.0f);
     v.width = width;
     v.height = height;
@@ -64,8 +63,7 @@ RasterView camera_view(const BenchMesh& mesh, int width, int height) {
 
 /// SPEC §6's light view: orthographic, eye c + L d looking at c, ±d/2, near 0.4 d, far 1.6 d.
 RasterView light_view(const BenchMesh& mesh, int size) {
-    const Vec3 c(static_cast<float>(mesh.center[0]), static_cast<float>(mesh.center[1]),
-                 static_cast<float>(mesh.center[2]));
+    const Vec3 c = bench_center(mesh);
     const auto d = static_cast<float>(mesh.diagonal);
     RasterView v;
     v.eye = c + light_direction() * d;
