@@ -164,6 +164,9 @@ class HeaderReader {
         return value;
     }
 
+    /// Bytes after the last token read.
+    size_t remaining() const { return m_bytes.size() - m_pos; }
+
     /// Consumes the single whitespace byte that separates the header from binary data.
     size_t data_offset() {
         if (m_pos >= m_bytes.size() || !is_space(m_bytes[m_pos])) {
@@ -216,8 +219,18 @@ Image read_ppm(const std::filesystem::path& path, std::string_view bytes) {
     const long long maxval = header.integer("maxval");
     if (maxval < 1 || maxval > 65535) fail(path, "invalid maxval " + std::to_string(maxval));
 
+    // The pixel data must be there before the image is allocated: a 19-byte header may claim
+    // 2^28 pixels.
+    const size_t samples = static_cast<size_t>(w) * static_cast<size_t>(h) * 3;
+    if (magic == "P3" && header.remaining() < 2 * samples) {  // a digit and a space each
+        fail(path, "truncated file: " + std::to_string(samples) + " ASCII samples need at least " +
+                       std::to_string(2 * samples) + " bytes, found " +
+                       std::to_string(header.remaining()));
+    }
+    const size_t width_bytes = maxval < 256 ? 1 : 2;
+    if (magic == "P6")
+        check_data_size(path, bytes.size() - header.data_offset(), samples * width_bytes);
     Image image(static_cast<int>(w), static_cast<int>(h));
-    const size_t samples = image.pixels.size() * 3;
     const auto to_linear = [&](long long v) {
         if (v > maxval) fail(path, "sample value " + std::to_string(v) + " exceeds maxval");
         return srgb_to_linear(static_cast<float>(v) / static_cast<float>(maxval));
@@ -230,8 +243,6 @@ Image read_ppm(const std::filesystem::path& path, std::string_view bytes) {
         return image;
     }
     const size_t offset = header.data_offset();
-    const size_t width_bytes = maxval < 256 ? 1 : 2;
-    check_data_size(path, bytes.size() - offset, samples * width_bytes);
     const auto* data = reinterpret_cast<const uint8_t*>(bytes.data() + offset);
     for (size_t s = 0; s < samples; ++s) {
         const long long v =
@@ -272,8 +283,9 @@ Image read_pfm(const std::filesystem::path& path, std::string_view bytes) {
     const float factor = std::abs(scale);
 
     const size_t offset = header.data_offset();
+    check_data_size(path, bytes.size() - offset,
+                    static_cast<size_t>(w) * static_cast<size_t>(h) * channels * 4);
     Image image(static_cast<int>(w), static_cast<int>(h));
-    check_data_size(path, bytes.size() - offset, image.pixels.size() * channels * 4);
     const auto* data = reinterpret_cast<const uint8_t*>(bytes.data() + offset);
     for (int row = 0; row < image.height; ++row) {
         const int y = image.height - 1 - row;  // stored bottom to top

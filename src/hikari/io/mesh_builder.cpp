@@ -470,19 +470,21 @@ class CornerNormals {
 
 }  // namespace
 
+double mesh_build_bytes(double triangles, double vertices) {
+    // Per triangle the pending one, its output indices, material and edge flags, and the
+    // computed normals' face normal, corner angles and shared sums; per vertex its output
+    // attributes and the bookkeeping of normal variants (about 40 bytes).
+    return triangles * (sizeof(PendingTriangle) + 53.0) + 40.0 * vertices;
+}
+
 MeshData build_mesh(const std::filesystem::path& file, PolygonMesh mesh,
                     const MeshOptions& options) {
     MeshData out;
     out.warnings = std::move(mesh.warnings);
-    // What the triangles and vertices below will take, checked before any of it is allocated:
-    // per triangle the pending one, its output indices, material and edge flags, and the
-    // computed normals' face normal, corner angles and shared sums; per vertex its output
-    // attributes and the bookkeeping of normal variants (about 40 bytes).
     const size_t corners = mesh.corners.size(), faces = mesh.face_count();
     const double triangle_count =
         corners >= 2 * faces ? static_cast<double>(corners - 2 * faces) : 0.0;
-    check_memory_need(triangle_count * (sizeof(PendingTriangle) + 53.0) +
-                          40.0 * static_cast<double>(mesh.positions.size()),
+    check_memory_need(mesh_build_bytes(triangle_count, static_cast<double>(mesh.positions.size())),
                       fmt::format("{}: building {:.0f} triangles", file.string(), triangle_count));
     const std::vector<PendingTriangle> triangles = triangulate_faces(file, mesh, out);
     if (triangles.empty()) {

@@ -27,4 +27,9 @@ struct MeshOptions {
 MeshData build_mesh(const std::filesystem::path& file, PolygonMesh mesh,
                     const MeshOptions& options = {});
 
+/// The bytes build_mesh takes beyond its input for `triangles` triangles over `vertices`
+/// vertices: what it checks against --max-memory, and what a loader adds to its own need when
+/// the two are held at once.
+double mesh_build_bytes(double triangles, double vertices);
+
 }  // namespace hikari

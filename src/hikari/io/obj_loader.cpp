@@ -439,11 +439,16 @@ LineTable scan_obj_text(const std::filesystem::path& file, std::string_view text
 /// allows, with every face kept. Bytes per item: a face takes its line (scan), its state change
 /// at worst, its start, material, smoothing group and line (pass 2, 4 bytes each); a corner its
 /// resolved (v, vn, vt) indices and its vertex in the polygons (4 bytes each); an attribute its
-/// value, read once and copied once into the polygons' vertices.
+/// value, read once and copied once into the polygons' vertices. build_mesh runs while all of
+/// that is held, so its own need for the triangles and the `vertices` (at most one per corner)
+/// is counted with it, as the PLY and glTF loaders count theirs: a file that could not be built
+/// is refused before the seconds spent reading it.
 void check_obj_memory(const std::filesystem::path& file, size_t faces, size_t corners,
-                      size_t attributes) {
+                      size_t attributes, size_t vertices) {
+    const double triangles = corners >= 2 * faces ? static_cast<double>(corners - 2 * faces) : 0.0;
     check_memory_need(32.0 * static_cast<double>(faces) + 16.0 * static_cast<double>(corners) +
-                          24.0 * static_cast<double>(attributes),
+                          24.0 * static_cast<double>(attributes) +
+                          mesh_build_bytes(triangles, static_cast<double>(vertices)),
                       fmt::format("{}: loading {} faces", file.string(), faces));
 }
 
@@ -918,11 +923,13 @@ std::vector<std::array<uint32_t, 3>> triangle_positions(const std::filesystem::p
 MeshData load_obj(const std::filesystem::path& file, const MeshOptions& options) {
     const std::string text = read_file_bytes(file, InputKind::mesh);
     const size_t face_lines = count_face_lines(text);
-    check_obj_memory(file, face_lines, 3 * face_lines, 0);
+    check_obj_memory(file, face_lines, 3 * face_lines, 0, 0);
     MtlReader mtl_reader(file.parent_path());
     const LineTable lines = scan_obj_text(file, text, mtl_reader);
-    check_obj_memory(file, lines.f.size(), lines.corner_count,
-                     lines.v_count + lines.vt_count + lines.vn_count);
+    const bool corners_share_positions = lines.vt_count == 0 && lines.vn_count == 0;
+    check_obj_memory(
+        file, lines.f.size(), lines.corner_count, lines.v_count + lines.vt_count + lines.vn_count,
+        corners_share_positions ? std::min(lines.v_count, lines.corner_count) : lines.corner_count);
     std::vector<std::string> warnings = check_statements(file, lines, mtl_reader);
 
     StreamedObj streamed = ObjStreamer(lines).run(text);

@@ -2,13 +2,14 @@
 // The shadow casters an area light's analytic soft shadow looks for: triangles in a wide BVH
 // (bvh/wide_bvh.h), found by the pyramid from a shaded point to the light (Nishita & Nakamae
 // 1983 find them per point; the BVH keeps that from touching every triangle), the scene's
-// spheres, each occluding as the polygon of its outline seen from the point, and its infinite
-// planes, which clip the light exactly.
+// spheres (in a BVH of their own, bvh/sphere_bvh.h), each occluding as the polygon of its outline
+// seen from the point, and its infinite planes, which clip the light exactly.
 
 #include <functional>
 #include <span>
 #include <vector>
 
+#include "hikari/bvh/sphere_bvh.h"
 #include "hikari/bvh/wide_bvh.h"
 #include "hikari/scene/scene.h"
 
@@ -41,13 +42,18 @@ class OccluderSet {
     /// (Möller & Trumbore 1997); planes are not asked.
     bool blocks_segment(Vec3 from, Vec3 dir, float t_max) const;
 
+    /// Calls `visit(sphere)` for every casting sphere that may meet the region bounded by
+    /// `planes` (those of the spheres' BVH leaves whose boxes are not wholly outside it).
+    void for_each_sphere_in(std::span<const Vec4> planes,
+                            const std::function<void(const Sphere&)>& visit) const;
+
     std::span<const Plane> planes() const { return m_planes; }
-    std::span<const Sphere> spheres() const { return m_spheres; }
     size_t triangle_count() const { return m_bvh.triangle_count(); }
 
   private:
     WideBvh m_bvh;
-    std::vector<Sphere> m_spheres;
+    std::vector<Sphere> m_spheres;  ///< the casting spheres
+    SphereBvh m_sphere_bvh;         ///< over m_spheres
     std::vector<Plane> m_planes;
 };
 

@@ -280,9 +280,9 @@ VisibleLight visible_light(const AreaLight& light, Vec3 p, Vec3 n, Vec3 ng,
             poly.assign({a, b, c});
             project();
         });
-        for (const Sphere& sphere : occluders->spheres()) {
+        occluders->for_each_sphere_in(bounds, [&](const Sphere& sphere) {
             if (sphere_outline(sphere, p, bounds, poly)) project();
-        }
+        });
         if (order.size() > k_max_analytic_occluders) {
             out.exact = false;
             order.clear();
