@@ -22,7 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 using Result = hikari::testing::RunResult;
-constexpr auto run = hikari::testing::run_hikari;
+using hikari::testing::run_hikari;
 
 class HostileCli : public ::testing::Test {
   protected:
@@ -34,7 +34,8 @@ class HostileCli : public ::testing::Test {
     /// "hikari: error: " + message, and writes nothing.
     void expect_refused(const std::string& input, const std::string& message,
                         const std::string& options = "") const {
-        const Result r = run("render -q " + input + " " + options + " -o " + path("out.png"));
+        const Result r =
+            run_hikari("render -q " + input + " " + options + " -o " + path("out.png"));
         EXPECT_EQ(r.status, 1) << input << ": " << r.output;
         EXPECT_EQ(r.output, "hikari: error: " + message + "\n");
         EXPECT_FALSE(fs::exists(path("out.png")));
@@ -80,8 +81,8 @@ TEST_F(HostileCli, MaxInputSizeBoundsEveryRead) {
                        ": cannot read: larger than the limit of 1 bytes for a mesh file (raise it "
                        "with --max-input-size)",
                    "--max-input-size 1e-9");
-    EXPECT_EQ(run("render -q " + path("m.obj") +
-                  " --width 8 --height 8 --max-input-size 0.001 -o " + path("ok.png"))
+    EXPECT_EQ(run_hikari("render -q " + path("m.obj") +
+                         " --width 8 --height 8 --max-input-size 0.001 -o " + path("ok.png"))
                   .status,
               0);
 }
@@ -108,12 +109,12 @@ TEST_F(HostileCli, IntegersAndFloatsOutOfRange) {
 TEST_F(HostileCli, BinaryBytesAreEscaped) {
     // Raw bytes that break the JSON, and control characters written as JSON escapes.
     write("b.json", "{\"objects\": [{\"type\": \"\xff\x1b[31m\"}]}");
-    const Result r = run("render -q " + path("b.json") + " -o " + path("out.png"));
+    const Result r = run_hikari("render -q " + path("b.json") + " -o " + path("out.png"));
     EXPECT_EQ(r.status, 1);
     EXPECT_EQ(r.output.rfind("hikari: error: " + path("b.json") + ":1:24: ", 0), 0u) << r.output;
     EXPECT_NE(r.output.find("\\xff"), std::string::npos) << r.output;
     write("e.json", R"({"objects": [{"type": "\u001b[31m"}]})");
-    const Result e = run("render -q " + path("e.json") + " -o " + path("out.png"));
+    const Result e = run_hikari("render -q " + path("e.json") + " -o " + path("out.png"));
     EXPECT_EQ(e.status, 1);
     EXPECT_NE(e.output.find("unknown object type \"\\x1b[31m\""), std::string::npos) << e.output;
     for (const std::string& output : {r.output, e.output}) {
@@ -131,7 +132,7 @@ TEST_F(HostileCli, TenMillionFacesAreRefusedUnderMaxMemory) {
         for (int i = 0; i < 1000; ++i) out << block;
     }
     const Result r =
-        run("render -q " + path("faces.obj") + " --max-memory 0.5 -o " + path("out.png"));
+        run_hikari("render -q " + path("faces.obj") + " --max-memory 0.5 -o " + path("out.png"));
     EXPECT_EQ(r.status, 1);
     EXPECT_EQ(
         r.output.rfind(

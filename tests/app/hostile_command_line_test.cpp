@@ -21,6 +21,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../io/temp_dir.h"
 #include "hikari/io/atomic_file.h"
 
 namespace {
@@ -42,10 +43,7 @@ size_t lines_starting_with(const std::string& text, std::string_view prefix) {
     return n;
 }
 
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
-}
+using hikari::testing::read_text;
 
 /// The names in `dir`, hidden ones included, for failure messages.
 std::string listing(const fs::path& dir) {

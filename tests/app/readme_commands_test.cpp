@@ -12,16 +12,13 @@
 
 #include <gtest/gtest.h>
 
+#include "../io/temp_dir.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using hikari::testing::read_text;
 
 /// The ```sh blocks of a Markdown file.
 std::vector<std::string> shell_blocks(const std::string& markdown) {

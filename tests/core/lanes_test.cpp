@@ -10,12 +10,14 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/same_bits.h"
 #include "hikari/core/rng.h"
 #include "test_isa.h"
 
 namespace hikari {
 namespace {
 
+using testing::same_bits;
 using testing::TestIsa;
 
 template <class Isa>
@@ -47,10 +49,6 @@ Floats awkward_floats(Pcg32& rng) {
         v = rng.next_float() < 0.25f ? special[rng.next_u32() % 8]
                                      : (rng.next_float() - 0.5f) * 1000.0f;
     return Floats::load(values);
-}
-
-bool same_bits(float a, float b) {
-    return std::bit_cast<uint32_t>(a) == std::bit_cast<uint32_t>(b);
 }
 
 TYPED_TEST(Lanes, ArithmeticIsTheFloatArithmeticLaneByLane) {

@@ -2,38 +2,36 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/expect_near.h"
+
 namespace hikari {
 namespace {
 
-void expect_near(Vec3 a, Vec3 b, float tol = 1e-5f) {
-    EXPECT_NEAR(a.x, b.x, tol);
-    EXPECT_NEAR(a.y, b.y, tol);
-    EXPECT_NEAR(a.z, b.z, tol);
-}
+using testing::expect_near;
 
 TEST(Mat4, IdentityLeavesPointsAlone) {
-    expect_near(transform_point(Mat4::identity(), {1, 2, 3}), {1, 2, 3});
+    expect_near(transform_point(Mat4::identity(), {1, 2, 3}), {1, 2, 3}, 1e-5f);
 }
 
 TEST(Mat4, TranslateMovesPointsNotDirections) {
     const Mat4 t = translate({1, 2, 3});
-    expect_near(transform_point(t, {1, 1, 1}), {2, 3, 4});
-    expect_near(transform_direction(t, {1, 1, 1}), {1, 1, 1});
+    expect_near(transform_point(t, {1, 1, 1}), {2, 3, 4}, 1e-5f);
+    expect_near(transform_direction(t, {1, 1, 1}), {1, 1, 1}, 1e-5f);
 }
 
 TEST(Mat4, ScaleScalesPerAxis) {
-    expect_near(transform_point(scale({2, 3, 4}), {1, 1, 1}), {2, 3, 4});
+    expect_near(transform_point(scale({2, 3, 4}), {1, 1, 1}), {2, 3, 4}, 1e-5f);
 }
 
 TEST(Mat4, RotateAboutZIsCounterClockwise) {
-    expect_near(transform_point(rotate({0, 0, 1}, 90), {1, 0, 0}), {0, 1, 0});
-    expect_near(transform_point(rotate({0, 0, 2}, 180), {1, 0, 0}), {-1, 0, 0});
-    expect_near(transform_point(rotate({1, 0, 0}, 90), {0, 1, 0}), {0, 0, 1});
+    expect_near(transform_point(rotate({0, 0, 1}, 90), {1, 0, 0}), {0, 1, 0}, 1e-5f);
+    expect_near(transform_point(rotate({0, 0, 2}, 180), {1, 0, 0}), {-1, 0, 0}, 1e-5f);
+    expect_near(transform_point(rotate({1, 0, 0}, 90), {0, 1, 0}), {0, 0, 1}, 1e-5f);
 }
 
 TEST(Mat4, ProductAppliesRightFactorFirst) {
     const Mat4 m = translate({1, 0, 0}) * scale({2, 2, 2});
-    expect_near(transform_point(m, {1, 1, 1}), {3, 2, 2});
+    expect_near(transform_point(m, {1, 1, 1}), {3, 2, 2}, 1e-5f);
 }
 
 TEST(Mat4, InverseUndoesTransform) {
@@ -80,8 +78,8 @@ TEST(Mat4, NormalsStayPerpendicularUnderNonUniformScale) {
 
 TEST(Mat4, LookAtPutsTargetOnNegativeZ) {
     const Mat4 v = look_at({1, 2, 3}, {1, 2, -7}, {0, 1, 0});
-    expect_near(transform_point(v, {1, 2, -7}), {0, 0, -10});
-    expect_near(transform_point(v, {1, 3, 3}), {0, 1, 0});
+    expect_near(transform_point(v, {1, 2, -7}), {0, 0, -10}, 1e-5f);
+    expect_near(transform_point(v, {1, 3, 3}), {0, 1, 0}, 1e-5f);
 }
 
 TEST(Mat4, PerspectiveMapsNearAndFarToNdcRange) {
@@ -94,8 +92,8 @@ TEST(Mat4, PerspectiveMapsNearAndFarToNdcRange) {
 
 TEST(Mat4, ViewportPutsNdcCornersOnPixelEdges) {
     const Mat4 v = viewport(640, 480);
-    expect_near(transform_point(v, {-1, 1, -1}), {0, 0, 0});
-    expect_near(transform_point(v, {1, -1, 1}), {640, 480, 1});
+    expect_near(transform_point(v, {-1, 1, -1}), {0, 0, 0}, 1e-5f);
+    expect_near(transform_point(v, {1, -1, 1}), {640, 480, 1}, 1e-5f);
 }
 
 }  // namespace

@@ -16,7 +16,7 @@ namespace hikari {
 namespace {
 
 // Two triangles facing the camera, overlapping, and one wound away from it.
-const std::string k_scene = R"({
+const std::string k_overlapping_triangles = R"({
   "camera": {"eye": [0, 0, 6], "look_at": [0, 0, 0], "fov_y": 45, "width": 40, "height": 30},
   "lights": [{"type": "directional", "direction": [0, 0, -1], "intensity": 1}],
   "objects": [
@@ -27,7 +27,7 @@ const std::string k_scene = R"({
 })";
 
 TEST(AlgorithmAovs, ZBufferOverdrawCountsEveryFragmentTested) {
-    const Scene scene = testing::parse(k_scene);
+    const Scene scene = testing::parse(k_overlapping_triangles);
     const ProjectedScene ps = project_scene(scene, RasterSettings{});
     std::vector<uint32_t> count;
     zbuffer_visibility_counted(ps.triangles, 40, 30, count);
@@ -42,7 +42,7 @@ TEST(AlgorithmAovs, ZBufferOverdrawCountsEveryFragmentTested) {
 }
 
 TEST(AlgorithmAovs, DepthSortPaintsAndOrderMatchItsVisibility) {
-    const Scene scene = testing::parse(k_scene);
+    const Scene scene = testing::parse(k_overlapping_triangles);
     const ProjectedScene ps = project_scene(scene, RasterSettings{});
     DepthSortTrace trace;
     const VisibilityBuffer vis = depth_sort_visibility_traced(ps.triangles, 40, 30, trace);
@@ -62,7 +62,7 @@ TEST(AlgorithmAovs, DepthSortPaintsAndOrderMatchItsVisibility) {
 }
 
 TEST(AlgorithmAovs, SpansMarkTheStartOfEverySpanTheTraceReports) {
-    const Scene scene = testing::parse(k_scene);
+    const Scene scene = testing::parse(k_overlapping_triangles);
     const ProjectedScene ps = project_scene(scene, RasterSettings{});
     std::vector<uint8_t> starts;
     scanline_visibility_spans(ps.triangles, 40, 30, starts);
@@ -78,7 +78,7 @@ TEST(AlgorithmAovs, SpansMarkTheStartOfEverySpanTheTraceReports) {
 }
 
 TEST(AlgorithmAovs, CulledShowsOnlyTheBackFaceThatWouldBeSeen) {
-    const Scene scene = testing::parse(k_scene);
+    const Scene scene = testing::parse(k_overlapping_triangles);
     const AlgorithmAov a =
         algorithm_aov(scene, *find_method("zbuffer"), Aov::culled, MethodSettings{}, false);
     EXPECT_NE(a.summary.find("1 of 3 triangles are back faces"), std::string::npos) << a.summary;

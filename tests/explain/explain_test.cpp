@@ -18,7 +18,7 @@ namespace hikari {
 namespace {
 
 // Three overlapping triangles at different depths, one of them tilted, and a sphere.
-const std::string k_scene = R"({
+const std::string k_triangles_and_sphere = R"({
   "camera": {"eye": [0, 0, 6], "look_at": [0, 0, 0], "fov_y": 45, "width": 40, "height": 30},
   "lights": [{"type": "directional", "direction": [0, 0, -1], "intensity": 1}],
   "objects": [
@@ -41,7 +41,7 @@ bool covers(const ScreenTriangle& t, double px, double py) {
 }
 
 TEST(ExplainZBuffer, FragmentsAreTheTrianglesCoveringThePixelInDrawingOrder) {
-    const Scene scene = testing::parse(k_scene);
+    const Scene scene = testing::parse(k_triangles_and_sphere);
     const ProjectedScene ps = project_scene(scene, RasterSettings{});
     for (const auto& [x, y] : {std::pair{20, 15}, std::pair{24, 12}, std::pair{5, 25}}) {
         std::vector<ZBufferFragment> fragments;
@@ -65,7 +65,7 @@ TEST(ExplainZBuffer, FragmentsAreTheTrianglesCoveringThePixelInDrawingOrder) {
 }
 
 TEST(ExplainScanline, ActiveEdgesAreTheEdgesCrossingTheScanLine) {
-    const Scene scene = testing::parse(k_scene);
+    const Scene scene = testing::parse(k_triangles_and_sphere);
     const ProjectedScene ps = project_scene(scene, RasterSettings{});
     for (const int row : {3, 12, 15, 22}) {
         ScanlineRowTrace trace;
@@ -100,7 +100,7 @@ TEST(ExplainScanline, ActiveEdgesAreTheEdgesCrossingTheScanLine) {
 }
 
 TEST(Explain, TextNamesTheStepsAndRefusesPointsOutsideTheImage) {
-    const Scene scene = testing::parse(k_scene);
+    const Scene scene = testing::parse(k_triangles_and_sphere);
     const std::string z = explain_zbuffer_pixel(scene, RasterSettings{}, 20, 15);
     EXPECT_NE(z.find("Z-buffer (Alg 4.2) at pixel (20, 15)"), std::string::npos);
     EXPECT_NE(z.find("written"), std::string::npos);

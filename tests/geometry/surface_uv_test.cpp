@@ -4,14 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/expect_near.h"
+
 namespace hikari {
 namespace {
 
-void expect_near(Vec3 a, Vec3 b, float tol) {
-    EXPECT_NEAR(a.x, b.x, tol);
-    EXPECT_NEAR(a.y, b.y, tol);
-    EXPECT_NEAR(a.z, b.z, tol);
-}
+using testing::expect_near;
 
 const Sphere k_sphere{{1, 2, 3}, 2.0f};
 

@@ -11,6 +11,8 @@
 #include <variant>
 #include <vector>
 
+#include "../support/expect_near.h"
+#include "../support/input_error.h"
 #include "hikari/core/error.h"
 #include "temp_dir.h"
 
@@ -18,18 +20,14 @@ namespace hikari {
 namespace {
 
 using nlohmann::json;
+using testing::expect_near;
+using testing::input_error_of;
 using testing::TempDir;
 using testing::write_text;
 
 constexpr int k_float = 5126;
 constexpr int k_ushort = 5123;
 constexpr int k_ubyte = 5121;
-
-void expect_near(Vec3 a, Vec3 b, float tol = 1e-5f) {
-    EXPECT_NEAR(a.x, b.x, tol);
-    EXPECT_NEAR(a.y, b.y, tol);
-    EXPECT_NEAR(a.z, b.z, tol);
-}
 
 std::string base64(const std::string& bytes) {
     static const char* k_digits =
@@ -142,13 +140,8 @@ json triangle_primitive(GltfBuilder& b) {
 }
 
 /// The message of the InputError read_gltf(path) throws, or "" when it throws none.
-std::string read_error(const std::filesystem::path& path) {
-    try {
-        read_gltf(path);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+std::string gltf_error(const std::filesystem::path& path) {
+    return input_error_of([&] { read_gltf(path); });
 }
 
 Vec3 corner(const PolygonMesh& m, size_t face, int k) {
@@ -175,9 +168,9 @@ TEST(GltfLoader, NodeHierarchyComposesTranslationRotationScaleAndMatrix) {
     const GltfContent g = read_gltf(b.write(dir, "tree"));
     ASSERT_EQ(g.mesh.positions.size(), 3u);
     // p → T(10,0,0) · Rz(90°) · S(2) · T(0,0,5) p
-    expect_near(g.mesh.positions[0], {10, 0, 10});
-    expect_near(g.mesh.positions[1], {10, 2, 10});
-    expect_near(g.mesh.positions[2], {8, 0, 10});
+    expect_near(g.mesh.positions[0], {10, 0, 10}, 1e-5f);
+    expect_near(g.mesh.positions[1], {10, 2, 10}, 1e-5f);
+    expect_near(g.mesh.positions[2], {8, 0, 10}, 1e-5f);
     ASSERT_EQ(g.mesh.face_count(), 1u);
     EXPECT_GT(face_normal(g.mesh, 0).z, 0.0f);
 }
@@ -224,10 +217,10 @@ TEST(GltfLoader, MirroredNodeKeepsCounterClockwiseFronts) {
     const GltfContent g = read_gltf(b.write(dir, "mirror"));
     ASSERT_EQ(g.mesh.face_count(), 1u);
     EXPECT_GT(face_normal(g.mesh, 0).z, 0.0f);
-    expect_near(g.mesh.positions[1], {-1, 0, 0});
+    expect_near(g.mesh.positions[1], {-1, 0, 0}, 1e-5f);
     // Normals by the inverse transpose, unit length.
     ASSERT_EQ(g.mesh.normals.size(), 3u);
-    expect_near(g.mesh.normals[0], Vec3(-1, 0, 1) / std::sqrt(2.0f));
+    expect_near(g.mesh.normals[0], Vec3(-1, 0, 1) / std::sqrt(2.0f), 1e-5f);
 }
 
 TEST(GltfLoader, NormalsAreZeroForPrimitivesWithout) {
@@ -240,8 +233,8 @@ TEST(GltfLoader, NormalsAreZeroForPrimitivesWithout) {
     b.scene({b.node({{"mesh", 0}})});
     const GltfContent g = read_gltf(b.write(dir, "mixed"));
     ASSERT_EQ(g.mesh.normals.size(), 6u);
-    expect_near(g.mesh.normals[0], {0, 0, 0});
-    expect_near(g.mesh.normals[5], {0, 0, 1});
+    expect_near(g.mesh.normals[0], {0, 0, 0}, 1e-5f);
+    expect_near(g.mesh.normals[5], {0, 0, 1}, 1e-5f);
 }
 
 TEST(GltfLoader, TexcoordsFlipVToBottomLeftOrigin) {
@@ -286,14 +279,14 @@ TEST(GltfLoader, MaterialsMapMetallicRoughnessToPhong) {
     ASSERT_EQ(g.mesh.materials.size(), 1u);
     const Material& m = g.mesh.materials[0];
     EXPECT_EQ(m.name, "glass");
-    expect_near(m.kd, {0.5f, 0.25f, 1.0f});
-    expect_near(m.ka, m.kd);
-    expect_near(m.ks, Vec3(0.04f * 0.25f));  // 0.04 × (1 − 0.5)²
+    expect_near(m.kd, {0.5f, 0.25f, 1.0f}, 1e-5f);
+    expect_near(m.ka, m.kd, 1e-5f);
+    expect_near(m.ks, Vec3(0.04f * 0.25f), 1e-5f);  // 0.04 × (1 − 0.5)²
     // α = r² = 0.25, n = 2/α² − 2 = 30
     EXPECT_NEAR(m.shininess, 30.0f, 1e-3f);
     EXPECT_FLOAT_EQ(m.transparency, 0.75f);
     EXPECT_FLOAT_EQ(m.ior, 1.33f);
-    expect_near(m.emission, {1, 0, 0});
+    expect_near(m.emission, {1, 0, 0}, 1e-5f);
     EXPECT_FALSE(m.texture.has_value());
 }
 
@@ -321,21 +314,21 @@ TEST(GltfLoader, CamerasAndPunctualLights) {
     const GltfContent g = read_gltf(b.write(dir, "cam"));
     ASSERT_EQ(g.cameras.size(), 1u);
     const ModelCamera& cam = g.cameras[0];
-    expect_near(cam.camera.eye, {0, 0, 5});
-    expect_near(cam.camera.look_at, {0, 0, 4});
-    expect_near(cam.camera.up, {0, 1, 0});
+    expect_near(cam.camera.eye, {0, 0, 5}, 1e-5f);
+    expect_near(cam.camera.look_at, {0, 0, 4}, 1e-5f);
+    expect_near(cam.camera.up, {0, 1, 0}, 1e-5f);
     EXPECT_NEAR(cam.camera.fov_y_degrees, 0.5 * 180 / std::numbers::pi, 1e-4);
     ASSERT_TRUE(cam.aspect.has_value());
     EXPECT_FLOAT_EQ(*cam.aspect, 1.5f);
     ASSERT_EQ(g.lights.size(), 2u);
     const auto* point = std::get_if<PointLight>(&g.lights[0]);
     ASSERT_NE(point, nullptr);
-    expect_near(point->position, {1, 2, 3});
-    expect_near(point->intensity, {2, 1, 0.5f});
+    expect_near(point->position, {1, 2, 3}, 1e-5f);
+    expect_near(point->intensity, {2, 1, 0.5f}, 1e-5f);
     const auto* sun = std::get_if<DirectionalLight>(&g.lights[1]);
     ASSERT_NE(sun, nullptr);
-    expect_near(sun->direction, {0, 1, 0});  // −Z turned 90° about +x
-    expect_near(sun->intensity, {3, 3, 3});
+    expect_near(sun->direction, {0, 1, 0}, 1e-5f);  // −Z turned 90° about +x
+    expect_near(sun->intensity, {3, 3, 3}, 1e-5f);
     bool warned = false;
     for (const std::string& w : g.mesh.warnings)
         warned |= w.find("orthographic") != std::string::npos;
@@ -348,7 +341,7 @@ TEST(GltfLoader, MissingBinIsNamed) {
     b.scene({b.node({{"mesh", b.mesh(triangle_primitive(b))}})});
     const auto path = b.write(dir, "lost", /*external_bin=*/true);
     std::filesystem::remove(dir / "lost.bin");
-    const std::string error = read_error(path);
+    const std::string error = gltf_error(path);
     EXPECT_NE(error.find("lost.gltf"), std::string::npos) << error;
     EXPECT_NE(error.find("lost.bin"), std::string::npos) << error;
 }
@@ -359,7 +352,7 @@ TEST(GltfLoader, IndexOutOfRangeNamesThePrimitive) {
     json prim = triangle_primitive(b);
     prim["indices"] = b.ushorts({0, 1, 7});
     b.scene({b.node({{"mesh", b.mesh(prim)}})});
-    const std::string error = read_error(b.write(dir, "range"));
+    const std::string error = gltf_error(b.write(dir, "range"));
     EXPECT_NE(
         error.find(
             "range.gltf: mesh 0 primitive 0: index 7 out of range (the primitive has 3 vertices)"),
@@ -373,7 +366,7 @@ TEST(GltfLoader, AccessorBeyondItsBufferViewIsRefused) {
     const json prim = triangle_primitive(b);
     b.doc["accessors"][0]["count"] = 4;  // 48 bytes from a 36-byte view
     b.scene({b.node({{"mesh", b.mesh(prim)}})});
-    const std::string error = read_error(b.write(dir, "long"));
+    const std::string error = gltf_error(b.write(dir, "long"));
     EXPECT_NE(error.find("mesh 0 primitive 0: POSITION: accessor 0:"), std::string::npos) << error;
 }
 
@@ -383,7 +376,7 @@ TEST(GltfLoader, RefusesWhatItCannotRead) {
         GltfBuilder b;
         b.scene({b.node({{"mesh", b.mesh(triangle_primitive(b))}})});
         edit(b);
-        const std::string error = read_error(b.write(dir, name));
+        const std::string error = gltf_error(b.write(dir, name));
         EXPECT_NE(error.find(expected), std::string::npos) << name << ": " << error;
     };
     refuses(
@@ -415,9 +408,9 @@ TEST(GltfLoader, RefusesWhatItCannotRead) {
         "mesh 0 primitive 0: material 3 does not exist");
 
     write_text(dir / "deep.gltf", std::string(1000, '[') + std::string(1000, ']'));
-    EXPECT_NE(read_error(dir / "deep.gltf").find("nested deeper"), std::string::npos);
+    EXPECT_NE(gltf_error(dir / "deep.gltf").find("nested deeper"), std::string::npos);
     write_text(dir / "bad.gltf", "{\"asset\": ");
-    EXPECT_NE(read_error(dir / "bad.gltf").find("bad.gltf: invalid JSON"), std::string::npos);
+    EXPECT_NE(gltf_error(dir / "bad.gltf").find("bad.gltf: invalid JSON"), std::string::npos);
 }
 
 TEST(GltfLoader, GlbLoadsAndTruncatedGlbIsRefused) {
@@ -428,10 +421,10 @@ TEST(GltfLoader, GlbLoadsAndTruncatedGlbIsRefused) {
     write_text(dir / "whole.glb", glb);
     const GltfContent g = read_gltf(dir / "whole.glb");
     ASSERT_EQ(g.mesh.positions.size(), 3u);
-    expect_near(g.mesh.positions[1], {1, 0, 0});
+    expect_near(g.mesh.positions[1], {1, 0, 0}, 1e-5f);
     for (const size_t keep : {size_t{3}, size_t{16}, glb.size() - 4, glb.size() - 40}) {
         write_text(dir / "cut.glb", glb.substr(0, keep));
-        const std::string error = read_error(dir / "cut.glb");
+        const std::string error = gltf_error(dir / "cut.glb");
         EXPECT_NE(error.find("cut.glb"), std::string::npos) << keep << ": " << error;
     }
 }
@@ -463,7 +456,7 @@ TEST(GltfLoader, BoxTexturedGltfAndGlbAgree) {
         }
     }
     for (size_t i = 0; i < 24; ++i) {
-        expect_near(text.mesh.positions[i], binary.mesh.positions[i]);
+        expect_near(text.mesh.positions[i], binary.mesh.positions[i], 1e-5f);
         EXPECT_FLOAT_EQ(text.mesh.uvs[i].x, binary.mesh.uvs[i].x);
         EXPECT_FLOAT_EQ(text.mesh.uvs[i].y, binary.mesh.uvs[i].y);
     }

@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 
+#include "../support/input_error.h"
 #include "hikari/core/color.h"
 #include "hikari/core/error.h"
 #include "hikari/io/image_write.h"
@@ -20,6 +21,7 @@ extern "C" const char* __lsan_default_suppressions() { return "leak:libtinyexr.s
 namespace hikari {
 namespace {
 
+using testing::input_error_of;
 using testing::read_text;
 using testing::TempDir;
 using testing::write_text;
@@ -126,13 +128,8 @@ TEST(ImageRead, SixteenBitP6) {
 }
 
 /// The message of the InputError that read_image(path) throws, or "" when it throws none.
-std::string read_error(const std::filesystem::path& path) {
-    try {
-        read_image(path);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+std::string image_error(const std::filesystem::path& path) {
+    return input_error_of([&] { read_image(path); });
 }
 
 TEST(ImageRead, TruncatedFilesAreErrors) {
@@ -144,7 +141,7 @@ TEST(ImageRead, TruncatedFilesAreErrors) {
         const size_t last = std::string(name) == "a.png" ? whole.size() - 12 : whole.size() - 1;
         for (size_t keep : {size_t{0}, size_t{3}, whole.size() / 2, last}) {
             write_text(dir / name, whole.substr(0, keep));
-            const std::string message = read_error(dir / name);
+            const std::string message = image_error(dir / name);
             EXPECT_NE(message.find(name), std::string::npos)
                 << name << " cut to " << keep << " bytes: '" << message << "'";
         }
@@ -156,13 +153,13 @@ TEST(ImageRead, GarbageIsAnError) {
     const std::string garbage = "this is not an image at all, just some text\n";
     for (const char* name : {"a.png", "a.jpg", "a.ppm", "a.pfm", "a.exr"}) {
         write_text(dir / name, garbage);
-        EXPECT_NE(read_error(dir / name).find(name), std::string::npos) << name;
+        EXPECT_NE(image_error(dir / name).find(name), std::string::npos) << name;
     }
 }
 
 TEST(ImageRead, MissingFileNamesFileAndReason) {
     TempDir dir;
-    const std::string message = read_error(dir / "missing.png");
+    const std::string message = image_error(dir / "missing.png");
     EXPECT_NE(message.find("missing.png"), std::string::npos) << message;
     EXPECT_NE(message.find("No such file or directory"), std::string::npos) << message;
 }
@@ -170,7 +167,7 @@ TEST(ImageRead, MissingFileNamesFileAndReason) {
 TEST(ImageRead, UnknownExtensionIsAnError) {
     TempDir dir;
     write_text(dir / "a.bmp", "BM");
-    EXPECT_NE(read_error(dir / "a.bmp").find(".pfm"), std::string::npos);
+    EXPECT_NE(image_error(dir / "a.bmp").find(".pfm"), std::string::npos);
 }
 
 TEST(ImageRead, AbsurdSizesAreRefused) {
@@ -179,10 +176,27 @@ TEST(ImageRead, AbsurdSizesAreRefused) {
     write_text(dir / "huge.ppm", "P6\n60000 60000\n255\n" + std::string(64, '\0'));
     write_text(dir / "zero.pfm", "PF\n0 1\n-1\n" + std::string(64, '\0'));
     write_text(dir / "overflow.ppm", "P6\n99999999999999999999999 1\n255\n");
-    EXPECT_NE(read_error(dir / "wide.pfm").find("exceeds the limit"), std::string::npos);
-    EXPECT_NE(read_error(dir / "huge.ppm").find("exceeds the limit"), std::string::npos);
-    EXPECT_NE(read_error(dir / "zero.pfm").find("invalid image size"), std::string::npos);
-    EXPECT_NE(read_error(dir / "overflow.ppm").find("invalid width"), std::string::npos);
+    EXPECT_NE(image_error(dir / "wide.pfm").find("exceeds the limit"), std::string::npos);
+    EXPECT_NE(image_error(dir / "huge.ppm").find("exceeds the limit"), std::string::npos);
+    EXPECT_NE(image_error(dir / "zero.pfm").find("invalid image size"), std::string::npos);
+    EXPECT_NE(image_error(dir / "overflow.ppm").find("invalid width"), std::string::npos);
+}
+
+TEST(ImageRead, HeadersClaimingMorePixelsThanTheFileHoldsAreRefusedBeforeAllocating) {
+    // A 19-byte PFM once claimed 2999 x 29990 pixels and made the reader allocate 1 GB before
+    // finding one byte of data (found by fuzz_image): the data's size is checked first.
+    TempDir dir;
+    write_text(dir / "big.pfm", "Pf\n2999 29990 1\n\xa6");
+    write_text(dir / "big.ppm", "P6\n4000 4000\n255\n\x01\x02");
+    write_text(dir / "big-ascii.ppm", "P3\n4000 4000\n255\n1 2 3\n");
+    EXPECT_NE(image_error(dir / "big.pfm").find("truncated file: expected 359760040 bytes"),
+              std::string::npos);
+    EXPECT_NE(image_error(dir / "big.ppm").find("truncated file: expected 48000000 bytes"),
+              std::string::npos);
+    EXPECT_NE(image_error(dir / "big-ascii.ppm")
+                  .find("truncated file: 48000000 ASCII samples need at least 96000000 bytes"),
+              std::string::npos)
+        << image_error(dir / "big-ascii.ppm");
 }
 
 }  // namespace

@@ -6,12 +6,15 @@
 #include <cmath>
 #include <fstream>
 
+#include "../support/input_error.h"
 #include "hikari/core/error.h"
 #include "hikari/io/obj_loader.h"
 #include "temp_dir.h"
 
 namespace hikari {
 namespace {
+
+using testing::input_error_of;
 
 /// A unit cube of 8 shared corners and 6 quads, counter-clockwise from outside, no normals.
 PolygonMesh cube() {
@@ -137,31 +140,26 @@ TEST(MeshBuilder, ConcaveFaceIsEarClippedAndKeepsItsOutline) {
     EXPECT_EQ(outline, 6);
 }
 
-std::string error_of(PolygonMesh m) {
-    try {
-        build_mesh("bad.ply", std::move(m));
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+std::string build_error(PolygonMesh m) {
+    return input_error_of([&] { build_mesh("bad.ply", std::move(m)); });
 }
 
 TEST(MeshBuilder, BadFacesAreErrorsNamingFileLineAndFace) {
     PolygonMesh m = cube();
     m.corners[5] = 8;
     m.face_line = {3, 4, 5, 6, 7, 8};
-    EXPECT_EQ(error_of(m), "bad.ply:4: face 2 refers to vertex 8, but the file has 8");
+    EXPECT_EQ(build_error(m), "bad.ply:4: face 2 refers to vertex 8, but the file has 8");
     PolygonMesh two;
     two.positions = {{0, 0, 0}, {1, 0, 0}};
     two.add_face({0, 1});
-    EXPECT_EQ(error_of(two), "bad.ply: face 1 has 2 corners; a face needs at least 3");
+    EXPECT_EQ(build_error(two), "bad.ply: face 1 has 2 corners; a face needs at least 3");
     PolygonMesh flat;
     flat.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
     flat.add_face({0, 1, 2});
-    EXPECT_EQ(error_of(flat), "bad.ply: no usable triangles: all 1 are degenerate");
+    EXPECT_EQ(build_error(flat), "bad.ply: no usable triangles: all 1 are degenerate");
     PolygonMesh none;
     none.positions = {{0, 0, 0}};
-    EXPECT_EQ(error_of(none), "bad.ply: no faces: the file defines no triangles or polygons");
+    EXPECT_EQ(build_error(none), "bad.ply: no faces: the file defines no triangles or polygons");
 }
 
 TEST(MeshBuilder, SelfIntersectingFaceIsAWarning) {

@@ -13,6 +13,7 @@
 #include <tuple>
 #include <vector>
 
+#include "../support/input_error.h"
 #include "hikari/core/color.h"
 #include "hikari/core/error.h"
 #include "temp_dir.h"
@@ -20,17 +21,13 @@
 namespace hikari {
 namespace {
 
+using testing::input_error_of;
 using testing::TempDir;
 using testing::write_text;
 
 /// The message of the InputError that read_ply throws for `bytes` (named `name`), or "".
-std::string read_error(const std::string& bytes, const std::string& name = "bad.ply") {
-    try {
-        read_ply(name, bytes);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+std::string ply_error(const std::string& bytes, const std::string& name = "bad.ply") {
+    return input_error_of([&] { read_ply(name, bytes); });
 }
 
 /// Appends values in a chosen byte order, for binary bodies.
@@ -335,7 +332,7 @@ TEST(PlyLoader, MalformedHeadersNameTheLine) {
     };
     for (const auto& [bytes, expected] : cases) {
         SCOPED_TRACE(bytes);
-        const std::string e = read_error(bytes);
+        const std::string e = ply_error(bytes);
         EXPECT_NE(e.find(expected), std::string::npos) << e;
     }
 }
@@ -367,7 +364,7 @@ TEST(PlyLoader, MalformedAsciiBodiesNameTheLineAndItem) {
     };
     for (const auto& [bytes, expected] : cases) {
         SCOPED_TRACE(bytes);
-        const std::string e = read_error(bytes);
+        const std::string e = ply_error(bytes);
         EXPECT_NE(e.find(expected), std::string::npos) << e;
     }
 }
@@ -378,33 +375,33 @@ TEST(PlyLoader, MalformedBinaryBodiesNameTheByte) {
     const size_t faces = body + 8 * 12;  // where the faces start
     // Truncated inside the vertices and inside the last face.
     EXPECT_NE(
-        read_error(cube.substr(0, body + 20)).find("bad.ply:4: element 'vertex' declares 8 items"),
+        ply_error(cube.substr(0, body + 20)).find("bad.ply:4: element 'vertex' declares 8 items"),
         std::string::npos);
-    std::string e = read_error(cube.substr(0, cube.size() - 2));
+    std::string e = ply_error(cube.substr(0, cube.size() - 2));
     EXPECT_NE(e.find(fmt::format("bad.ply: byte {}: face 5: the file ends", faces + 5 * 17)),
               std::string::npos)
         << e;
     // A face of 2 corners, a corner out of range, a huge list length.
     std::string two = cube;
     two[faces + 17] = 2;
-    e = read_error(two);
+    e = ply_error(two);
     EXPECT_NE(e.find(fmt::format("bad.ply: byte {}: face 1: it has 2 corners", faces + 17)),
               std::string::npos)
         << e;
     std::string far = cube;
     far[faces + 17 + 1 + 4] = 8;
-    e = read_error(far);
+    e = ply_error(far);
     EXPECT_NE(
         e.find(fmt::format("bad.ply: byte {}: face 1: corner index 8 is out of range", faces + 17)),
         std::string::npos)
         << e;
     std::string negative = cube;
     std::memset(&negative[faces + 1], 0xff, 4);
-    e = read_error(negative);
+    e = ply_error(negative);
     EXPECT_NE(e.find("face 0: corner index -1 is out of range"), std::string::npos) << e;
     std::string huge = cube;
     huge[faces + 5 * 17] = char(200);
-    e = read_error(huge);
+    e = ply_error(huge);
     EXPECT_NE(e.find(fmt::format("bad.ply: byte {}: face 5: the file ends", faces + 5 * 17)),
               std::string::npos)
         << e;
@@ -412,7 +409,7 @@ TEST(PlyLoader, MalformedBinaryBodiesNameTheByte) {
     std::string nan = cube;
     const float not_a_number = std::nanf("");
     std::memcpy(&nan[body + 3 * 12 + 4], &not_a_number, 4);
-    e = read_error(nan);
+    e = ply_error(nan);
     EXPECT_NE(e.find(fmt::format("bad.ply: byte {}: vertex 3: position", body + 36)),
               std::string::npos)
         << e;
@@ -436,7 +433,7 @@ TEST(PlyLoader, BadListLengthsInTheGenericBinaryPath) {
         else
             w.put(uint32_t(count));
         w.put(0).put(1).put(2);
-        const std::string e = read_error(w.bytes);
+        const std::string e = ply_error(w.bytes);
         EXPECT_NE(e.find(fmt::format("bad.ply: byte {}: face 0: list 'vertex_indices' {}", face,
                                      expected)),
                   std::string::npos)
@@ -448,15 +445,15 @@ TEST(PlyLoader, AbsurdCountsAreRefusedBeforeReading) {
     // A trillion vertices would need 12 TB of floats: refused at the header, nothing allocated.
     const std::string tail = "property float x\nproperty float y\nproperty float z\nend_header\n";
     for (const std::string format : {"ascii", "binary_little_endian"}) {
-        const std::string e = read_error("ply\nformat " + format +
-                                         " 1.0\nelement vertex 1000000000000\n" + tail + "0 0 0\n");
+        const std::string e = ply_error("ply\nformat " + format +
+                                        " 1.0\nelement vertex 1000000000000\n" + tail + "0 0 0\n");
         EXPECT_NE(e.find("bad.ply:3: element 'vertex' declares 1000000000000 items, more than "
                          "the 6 bytes after the header can hold"),
                   std::string::npos)
             << e;
     }
     // Each element is counted against what the ones before it leave.
-    const std::string faces = read_error(ascii_triangle("0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", 1000));
+    const std::string faces = ply_error(ascii_triangle("0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", 1000));
     EXPECT_NE(faces.find("bad.ply:8: element 'face' declares 1000"), std::string::npos) << faces;
     // An element of no properties takes no bytes, whatever its count, and is skipped at once.
     const PolygonMesh mesh =

@@ -12,7 +12,7 @@
 namespace hikari {
 namespace {
 
-const std::string k_scene = R"({
+const std::string k_clay_spheres = R"({
   "camera": {"eye": [0, 0, 5], "fov_y": 50},
   "materials": {"clay": {"kd": [0.8, 0.5, 0.3], "ks": [0.3, 0.3, 0.3], "shininess": 20}},
   "objects": [
@@ -25,7 +25,7 @@ Scene parse_with(const std::vector<std::string>& args) {
     std::vector<SceneOverride> overrides;
     for (const std::string& a : args) overrides.push_back(parse_scene_override(a));
     std::vector<std::string> warnings;
-    return parse_scene(k_scene, "s.json", ".", warnings, SceneLoadOptions(overrides));
+    return parse_scene(k_clay_spheres, "s.json", ".", warnings, SceneLoadOptions(overrides));
 }
 
 std::string error_with(const std::vector<std::string>& args) {

@@ -6,6 +6,7 @@
 
 #include <variant>
 
+#include "../support/input_error.h"
 #include "hikari/core/error.h"
 #include "hikari/io/image_read.h"
 #include "hikari/io/image_write.h"
@@ -16,19 +17,9 @@
 namespace hikari {
 namespace {
 
+using testing::input_error_of;
 using testing::TempDir;
 using testing::write_text;
-
-/// The InputError message of `f()` ("" when it succeeds).
-template <class F>
-std::string error_of(F&& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
 
 /// A scene whose one material "m" has `texture` (JSON) on a sphere.
 std::string scene_with_texture(const std::string& texture) {
@@ -91,12 +82,12 @@ TEST(TextureFiles, BadSceneTexturesNameTheFileAndTheJsonPath) {
     write_text(dir / "empty.png", "");
     write_text(dir / "text.png", "this is not a picture");
     write_text(dir / "notes.txt", "hello");
-    const std::string missing = error_of(
+    const std::string missing = input_error_of(
         [&] { parse_in(dir, scene_with_texture(R"({"type": "image", "file": "wood.png"})")); });
     EXPECT_NE(missing.find("materials.m.texture.file"), std::string::npos) << missing;
     EXPECT_NE(missing.find("wood.png"), std::string::npos) << missing;
     for (const char* file : {"empty.png", "text.png", "notes.txt"}) {
-        const std::string e = error_of([&] {
+        const std::string e = input_error_of([&] {
             parse_in(dir, scene_with_texture(std::string(R"({"type": "image", "file": ")") + file +
                                              "\"}"));
         });
@@ -104,12 +95,12 @@ TEST(TextureFiles, BadSceneTexturesNameTheFileAndTheJsonPath) {
         EXPECT_NE(e.find(file), std::string::npos) << e;
     }
     write_image(dir / "t.png", Image(1, 1));
-    const std::string wrap = error_of([&] {
+    const std::string wrap = input_error_of([&] {
         parse_in(dir,
                  scene_with_texture(R"({"type": "image", "file": "t.png", "wrap": "mirror"})"));
     });
     EXPECT_NE(wrap.find("materials.m.texture.wrap"), std::string::npos) << wrap;
-    const std::string filter = error_of([&] {
+    const std::string filter = input_error_of([&] {
         parse_in(dir,
                  scene_with_texture(R"({"type": "image", "file": "t.png", "filter": "cubic"})"));
     });
@@ -144,7 +135,7 @@ TEST(TextureFiles, MissingMtlTextureNamesTheMtlLine) {
     std::filesystem::create_directories(dir / "sub");
     write_text(dir / "quad.obj", k_textured_quad_obj);
     write_text(dir / "sub/quad.mtl", "# a comment\nnewmtl wood\nKd 1 1 1\nmap_Kd gone.png\n");
-    const std::string e = error_of([&] { load_obj(dir / "quad.obj"); });
+    const std::string e = input_error_of([&] { load_obj(dir / "quad.obj"); });
     EXPECT_NE(e.find("quad.mtl:4:"), std::string::npos) << e;
     EXPECT_NE(e.find("gone.png"), std::string::npos) << e;
 }

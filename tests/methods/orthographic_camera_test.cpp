@@ -13,7 +13,7 @@
 namespace hikari {
 namespace {
 
-constexpr int k_size = 64;
+constexpr int k_image_size = 64;
 constexpr float k_view_height = 4.0f;
 
 /// A sphere of radius `r` at `centre` under an orthographic camera looking down −z from z = 10.
@@ -23,7 +23,7 @@ Scene ortho_scene(Vec3 centre, float r) {
              "view_height": {}, "width": {}, "height": {}}},
             "lights": [{{"type": "directional", "direction": [0, 0, -1], "intensity": 1}}],
             "objects": [{{"type": "sphere", "center": [{}, {}, {}], "radius": {}}}]}})",
-        k_view_height, k_size, k_size, centre.x, centre.y, centre.z, r));
+        k_view_height, k_image_size, k_image_size, centre.x, centre.y, centre.z, r));
 }
 
 Framebuffer render_aovs(const std::string& method, const Scene& scene) {
@@ -38,17 +38,17 @@ Framebuffer render_aovs(const std::string& method, const Scene& scene) {
 /// Pixels whose coverage differs from the exact disc of radius r (world units) about the
 /// image point of `centre`, ignoring pixel centres within `band` pixels of the circle.
 int disc_mismatches(const Framebuffer& fb, Vec3 centre, float r, float band) {
-    const float px_per_unit = k_size / k_view_height;
-    const float cx = k_size / 2.0f + centre.x * px_per_unit;
-    const float cy = k_size / 2.0f - centre.y * px_per_unit;
+    const float px_per_unit = k_image_size / k_view_height;
+    const float cx = k_image_size / 2.0f + centre.x * px_per_unit;
+    const float cy = k_image_size / 2.0f - centre.y * px_per_unit;
     const float radius = r * px_per_unit;
     int wrong = 0;
-    for (int y = 0; y < k_size; ++y)
-        for (int x = 0; x < k_size; ++x) {
+    for (int y = 0; y < k_image_size; ++y)
+        for (int x = 0; x < k_image_size; ++x) {
             const float d = std::hypot(x + 0.5f - cx, y + 0.5f - cy);
             if (std::abs(d - radius) < band) continue;
             const bool inside = d < radius;
-            const bool seen = fb.id[static_cast<size_t>(y) * k_size + x] != k_background_id;
+            const bool seen = fb.id[static_cast<size_t>(y) * k_image_size + x] != k_background_id;
             wrong += inside != seen;
         }
     return wrong;
@@ -78,8 +78,9 @@ TEST(OrthographicCamera, DepthIsTheDistanceFromTheImagePlane) {
     // pixels beside the centre see points at the same distance whatever their lateral offset.
     for (const char* method : {"raytrace", "zbuffer"}) {
         const Framebuffer fb = render_aovs(method, ortho_scene(Vec3(0.0f), 1.0f));
-        const size_t centre = static_cast<size_t>(k_size / 2) * k_size + k_size / 2;
-        const float pixel = k_view_height / k_size;
+        const size_t centre =
+            static_cast<size_t>(k_image_size / 2) * k_image_size + k_image_size / 2;
+        const float pixel = k_view_height / k_image_size;
         const float expected = 10.0f - std::sqrt(1.0f - 0.5f * pixel * pixel);
         // The raster sphere is polygons within 0.05 px (0.003 units here) inside the sphere.
         EXPECT_NEAR(fb.depth[centre], expected, 5e-3f) << method;
@@ -94,7 +95,8 @@ TEST(OrthographicCamera, LineMethodsDrawTheSphere) {
         for (const LineSegment& s : d.segments) {
             // Every end lies within the sphere's disc in the image.
             for (const Vec2 p : {s.a, s.b})
-                EXPECT_LT(std::hypot(p.x - k_size / 2.0f, p.y - k_size / 2.0f), 16.5f) << method;
+                EXPECT_LT(std::hypot(p.x - k_image_size / 2.0f, p.y - k_image_size / 2.0f), 16.5f)
+                    << method;
         }
     }
 }

@@ -16,13 +16,13 @@ using testing::make_triangle;
 using testing::mismatches;
 using testing::ray_cast_visibility;
 
-constexpr int k_size = 256;
+constexpr int k_scan_size = 256;
 
 void expect_matches_ray_caster(const std::vector<ScreenTriangle>& triangles, int64_t allowed = 0) {
-    const VisibilityBuffer reference = ray_cast_visibility(triangles, k_size, k_size);
-    const VisibilityBuffer got = scanline_visibility(triangles, k_size, k_size);
-    ASSERT_EQ(got.width, k_size);
-    ASSERT_EQ(got.height, k_size);
+    const VisibilityBuffer reference = ray_cast_visibility(triangles, k_scan_size, k_scan_size);
+    const VisibilityBuffer got = scanline_visibility(triangles, k_scan_size, k_scan_size);
+    ASSERT_EQ(got.width, k_scan_size);
+    ASSERT_EQ(got.height, k_scan_size);
     ASSERT_EQ(got.triangle.size(), reference.triangle.size());
     EXPECT_LE(mismatches(got, reference), allowed);
 }
@@ -51,10 +51,11 @@ TEST(Scanline, SplitsTheSpanWhereTwoSegmentsCrossInDepth) {
                       {200, 900, plane_a(200)}),
         make_triangle({-300, -20, plane_b(-300)}, {700, -20, plane_b(700)},
                       {200, 900, plane_b(200)})};
-    const VisibilityBuffer vis = scanline_visibility(tris, k_size, k_size);
+    const VisibilityBuffer vis = scanline_visibility(tris, k_scan_size, k_scan_size);
     for (int j : {0, 100, 255})
-        for (int i = 0; i < k_size; ++i)
-            EXPECT_EQ(vis.triangle[j * k_size + i], i + 0.5 < 100.3 ? 0u : 1u) << i << ", " << j;
+        for (int i = 0; i < k_scan_size; ++i)
+            EXPECT_EQ(vis.triangle[j * k_scan_size + i], i + 0.5 < 100.3 ? 0u : 1u)
+                << i << ", " << j;
 }
 
 /// A fan around an off-centre point covering the square [20.25, 235.75]^2, through uneven points.
@@ -74,27 +75,27 @@ std::vector<ScreenTriangle> square_fan() {
 
 TEST(Scanline, FanOfTrianglesFillsTheSquareWithoutCracks) {
     const std::vector<ScreenTriangle> fan = square_fan();
-    const VisibilityBuffer vis = scanline_visibility(fan, k_size, k_size);
-    for (int j = 0; j < k_size; ++j)
-        for (int i = 0; i < k_size; ++i) {
+    const VisibilityBuffer vis = scanline_visibility(fan, k_scan_size, k_scan_size);
+    for (int j = 0; j < k_scan_size; ++j)
+        for (int i = 0; i < k_scan_size; ++i) {
             const bool inside = i >= 20 && i <= 235 && j >= 20 && j <= 235;
-            EXPECT_EQ(vis.triangle[j * k_size + i] != k_no_triangle, inside) << i << ", " << j;
+            EXPECT_EQ(vis.triangle[j * k_scan_size + i] != k_no_triangle, inside) << i << ", " << j;
         }
     expect_matches_ray_caster(fan);
 }
 
 TEST(PolygonFill, FanCoversEveryPixelCentreExactlyOnce) {
-    std::vector<int> count(k_size * k_size, 0);
+    std::vector<int> count(k_scan_size * k_scan_size, 0);
     for (const ScreenTriangle& t : square_fan()) {
         PolygonVertex p[3];
         for (int k = 0; k < 3; ++k) p[k] = {t.v[k].position.x, t.v[k].position.y, 0};
-        fill_convex_polygon(std::span<const PolygonVertex>(p, 3), k_size, k_size,
-                            [&](int i, int j) { ++count[j * k_size + i]; });
+        fill_convex_polygon(std::span<const PolygonVertex>(p, 3), k_scan_size, k_scan_size,
+                            [&](int i, int j) { ++count[j * k_scan_size + i]; });
     }
-    for (int j = 0; j < k_size; ++j)
-        for (int i = 0; i < k_size; ++i) {
+    for (int j = 0; j < k_scan_size; ++j)
+        for (int i = 0; i < k_scan_size; ++i) {
             const bool inside = i >= 20 && i <= 235 && j >= 20 && j <= 235;
-            EXPECT_EQ(count[j * k_size + i], inside ? 1 : 0) << i << ", " << j;
+            EXPECT_EQ(count[j * k_scan_size + i], inside ? 1 : 0) << i << ", " << j;
         }
 }
 
@@ -123,7 +124,7 @@ TEST(Scanline, IgnoresDegenerateTriangles) {
         make_triangle({10.5f, 10.5f, 0.1f}, {100.5f, 100.5f, 0.1f}, {200.5f, 200.5f, 0.1f}),
         make_triangle({50, 50, 0.1f}, {50, 50, 0.1f}, {90, 10, 0.1f}),
         make_triangle({0, 0, 0.5f}, {256, 0, 0.5f}, {0, 256, 0.5f})};
-    const VisibilityBuffer vis = scanline_visibility(tris, k_size, k_size);
+    const VisibilityBuffer vis = scanline_visibility(tris, k_scan_size, k_scan_size);
     for (uint32_t id : vis.triangle) EXPECT_NE(id, 0u);
     for (uint32_t id : vis.triangle) EXPECT_NE(id, 1u);
     expect_matches_ray_caster(tris);
@@ -137,7 +138,7 @@ TEST(Scanline, ClipsTrianglesPartlyAndFullyOffScreen) {
         make_triangle({100, 300, 0.0f}, {200, 300, 0.0f}, {150, 260.2f, 0.0f}),
         make_triangle({200, -1e6f, 0.4f}, {260, 1e6f, 0.1f}, {1e6f, 128, 0.9f})};
     expect_matches_ray_caster(tris);
-    const VisibilityBuffer vis = scanline_visibility(tris, k_size, k_size);
+    const VisibilityBuffer vis = scanline_visibility(tris, k_scan_size, k_scan_size);
     for (uint32_t id : vis.triangle) EXPECT_TRUE(id == 0u || id == 4u || id == k_no_triangle);
 }
 
@@ -159,9 +160,9 @@ TEST(Scanline, TallTrianglesSeedEveryBandTheyCrossWhateverTheThreadCount) {
                                      {x + 12.0f, top + 180.0f, 0.9f - z}));
     }
     expect_matches_ray_caster(tris, 131);
-    const VisibilityBuffer all = scanline_visibility(tris, k_size, k_size);
+    const VisibilityBuffer all = scanline_visibility(tris, k_scan_size, k_scan_size);
     const tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
-    EXPECT_EQ(scanline_visibility(tris, k_size, k_size).triangle, all.triangle);
+    EXPECT_EQ(scanline_visibility(tris, k_scan_size, k_scan_size).triangle, all.triangle);
 }
 
 }  // namespace

@@ -124,7 +124,7 @@ struct FarCase {
 
 void PrintTo(const FarCase& c, std::ostream* os) { *os << c.scene << " " << c.method; }
 
-class FarFromOrigin : public testing::TestWithParam<FarCase> {};
+class FarFromOrigin : public ::testing::TestWithParam<FarCase> {};
 
 /// Placed exactly, a scene far away loses nothing but rounding near the camera: the issue's
 /// 40 dB at every distance. (Without the rebase: 21 dB for whitted.json's ray tracing at 10⁵.)
@@ -174,8 +174,8 @@ std::vector<FarCase> far_cases() {
     return cases;
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, FarFromOrigin, testing::ValuesIn(far_cases()),
-                         [](const testing::TestParamInfo<FarCase>& info) {
+INSTANTIATE_TEST_SUITE_P(Scenes, FarFromOrigin, ::testing::ValuesIn(far_cases()),
+                         [](const ::testing::TestParamInfo<FarCase>& info) {
                              std::string name = info.param.scene + "_" + info.param.method;
                              for (char& ch : name)
                                  if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';

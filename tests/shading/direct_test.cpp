@@ -8,19 +8,18 @@
 
 #include <gtest/gtest.h>
 
-#include "../core/test_isa.h"
-
+#include "../support/test_isa16.h"
 #include "hikari/core/rng.h"
 #include "hikari/shading/material_eval.h"
 
 namespace hikari {
 namespace {
 
-using TestIsa = testing::TestIsa<16>;
-constexpr int k_lanes = TestIsa::k_width;
-using Floats = LaneFloat<TestIsa>;
-using Ints = LaneInt<TestIsa>;
-using Masks = LaneMask<TestIsa>;
+using testing::k_lanes16;
+using testing::TestIsa16;
+using Floats = LaneFloat<TestIsa16>;
+using Ints = LaneInt<TestIsa16>;
+using Masks = LaneMask<TestIsa16>;
 
 const auto k_all_visible = [](size_t, const auto&, const auto&, const auto&) { return true; };
 
@@ -100,10 +99,10 @@ TEST(DirectLighting, LanesGiveTheOnePointBits) {
     const RandomWorld world(rng);
     const LightingEnvironment env{world.lights.data(), world.lights.size(), Vec3(0.2f)};
     for (int round = 0; round < 50; ++round) {
-        SurfacePoint<float> points[k_lanes];
-        int32_t material[k_lanes], visible_bits[k_lanes];
-        alignas(64) float lanes[4][3][k_lanes];  // position, normal, geometric normal, to_eye
-        for (int i = 0; i < k_lanes; ++i) {
+        SurfacePoint<float> points[k_lanes16];
+        int32_t material[k_lanes16], visible_bits[k_lanes16];
+        alignas(64) float lanes[4][3][k_lanes16];  // position, normal, geometric normal, to_eye
+        for (int i = 0; i < k_lanes16; ++i) {
             SurfacePoint<float>& p = points[i];
             p.position = random_unit(rng) * (3.0f * rng.next_float());
             p.normal = random_unit(rng);
@@ -129,7 +128,7 @@ TEST(DirectLighting, LanesGiveTheOnePointBits) {
             evaluate_material<Floats>(world.materials.data(), Ints::load(material), pack);
         const DirectLighting<Floats> got =
             direct_lighting<Floats>(env, pack, m, true, pack_visible);
-        for (int i = 0; i < k_lanes; ++i) {
+        for (int i = 0; i < k_lanes16; ++i) {
             const auto visible = [&](size_t l, const LightSample&, const SurfacePoint<float>&,
                                      bool) { return ((visible_bits[i] >> l) & 1) != 0; };
             const MaterialSample<float> one =

@@ -15,7 +15,7 @@ namespace {
 
 // Spheres, a plane and a triangle under a point light, a directional light and ambient light,
 // with a sky the colour image shows and a mirror sphere that reflects all of it.
-const std::string k_scene = R"({
+const std::string k_lit_spheres_template = R"({
   "camera": {"eye": [0, 1.5, 5], "look_at": [0, 0.5, 0], "fov_y": 45, "width": 48, "height": 36},
   "background": [0.2, 0.3, 0.5],
   "ambient": [0.3, 0.3, 0.3],
@@ -65,7 +65,7 @@ float term_sum_error(const std::string& method_name, const std::string& json) {
 }
 
 std::string with_second_sphere(const std::string& material) {
-    std::string json = k_scene;
+    std::string json = k_lit_spheres_template;
     json.replace(json.find("MIRROR_OR_RED"), 13, material);
     return json;
 }

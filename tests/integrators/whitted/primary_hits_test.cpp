@@ -11,6 +11,8 @@
 #include <cstring>
 
 #include "../../bvh/test_meshes.h"
+#include "../../io/scene_test_util.h"
+#include "../../support/same_bits.h"
 #include "hikari/core/rng.h"
 #include "hikari/geometry/ray_offset.h"
 #include "hikari/integrators/whitted/whitted.h"
@@ -20,18 +22,14 @@
 namespace hikari {
 namespace {
 
+using testing::parse;
+using testing::same_bits;
+
 std::vector<SimdLevel> levels() {
     std::vector<SimdLevel> out;
     for (SimdLevel l : {SimdLevel::portable, SimdLevel::avx2, SimdLevel::avx512})
         if (simd_level_supported(l)) out.push_back(l);
     return out;
-}
-
-bool same_bits(float a, float b) {
-    return std::bit_cast<uint32_t>(a) == std::bit_cast<uint32_t>(b);
-}
-bool same_bits(Vec3 a, Vec3 b) {
-    return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z);
 }
 
 /// Every pixel of the scene's camera traced by blocks (clipped at the image's edges) against
@@ -97,14 +95,9 @@ void expect_blocks_match_closest(const Scene& scene) {
     if (!scene.lights.empty()) EXPECT_GT(shadowed, 0);
 }
 
-Scene scene_from(const std::string& json) {
-    std::vector<std::string> warnings;
-    return parse_scene(json, "test.json", ".", warnings);
-}
-
 /// A random scene: spheres (some overlapping, one duplicated for exact ties), planes (one twice),
 /// a triangle soup, and a camera placed at random (sometimes inside a sphere).
-Scene random_scene(uint64_t seed) {
+Scene random_scene_with_ties(uint64_t seed) {
     Pcg32 rng(seed, 7);
     Scene scene;
     scene.materials.resize(3);
@@ -150,7 +143,7 @@ Scene random_scene(uint64_t seed) {
 TEST(PrimaryHits, RandomScenesMatchClosest) {
     for (uint64_t seed = 1; seed <= 12; ++seed) {
         SCOPED_TRACE(seed);
-        expect_blocks_match_closest(random_scene(seed));
+        expect_blocks_match_closest(random_scene_with_ties(seed));
     }
 }
 
@@ -159,7 +152,7 @@ TEST(PrimaryHits, ManySpheresThroughTheirBvhMatchClosest) {
     // answers (hits and shadows) must stay those of SceneIntersector::closest and occluded.
     for (uint64_t seed = 1; seed <= 3; ++seed) {
         SCOPED_TRACE(seed);
-        Scene scene = random_scene(seed);
+        Scene scene = random_scene_with_ties(seed);
         Pcg32 rng(seed, 11);
         for (int i = 0; i < 300; ++i) {
             Sphere s;
@@ -175,13 +168,13 @@ TEST(PrimaryHits, ManySpheresThroughTheirBvhMatchClosest) {
 }
 
 TEST(PrimaryHits, NoTrianglesMatchClosest) {
-    Scene scene = random_scene(5);
+    Scene scene = random_scene_with_ties(5);
     scene.triangles = TriangleSet{};
     expect_blocks_match_closest(scene);
 }
 
 TEST(PrimaryHits, OnlyTrianglesMatchClosest) {
-    Scene scene = random_scene(4);
+    Scene scene = random_scene_with_ties(4);
     scene.spheres.clear();
     scene.planes.clear();
     expect_blocks_match_closest(scene);
@@ -189,7 +182,7 @@ TEST(PrimaryHits, OnlyTrianglesMatchClosest) {
 
 TEST(PrimaryHits, CameraOnASphereMatchesClosest) {
     // The eye exactly on the surface: q = 0 for rays along the tangent plane.
-    Scene scene = random_scene(2);
+    Scene scene = random_scene_with_ties(2);
     scene.camera.eye = scene.spheres[1].center + Vec3(scene.spheres[1].radius, 0.0f, 0.0f);
     expect_blocks_match_closest(scene);
 }
@@ -234,7 +227,7 @@ void expect_same_framebuffer(const Framebuffer& a, const Framebuffer& b) {
 }
 
 TEST(PrimaryHits, WhittedRenderEqualsTheRecursiveOracle) {
-    const Scene scene = scene_from(b3_scene_json(203, 117));
+    const Scene scene = parse(b3_scene_json(203, 117));
     expect_same_framebuffer(render_whitted(scene, Film(scene.camera)),
                             testing::render_whitted_recursive(scene));
 }
@@ -249,7 +242,7 @@ TEST(PrimaryHits, MeshRenderEqualsTheRecursiveOracle) {
 }
 
 TEST(PrimaryHits, SameImageForAnyThreadCount) {
-    const Scene scene = scene_from(b3_scene_json(160, 90));
+    const Scene scene = parse(b3_scene_json(160, 90));
     Framebuffer one, two;
     {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);

@@ -10,7 +10,7 @@
 namespace hikari {
 namespace {
 
-const std::string k_scene = R"({
+const std::string k_glass_and_mirror_spheres = R"({
   "camera": {"eye": [0, 1, 6], "look_at": [0, 0.6, 0], "fov_y": 40, "width": 40, "height": 30},
   "background": [0.4, 0.5, 0.8],
   "ambient": 0.1,
@@ -29,7 +29,7 @@ const std::string k_scene = R"({
 })";
 
 TEST(RayTree, TheTreeSumsToTheRenderedPixel) {
-    const Scene scene = testing::parse(k_scene);
+    const Scene scene = testing::parse(k_glass_and_mirror_spheres);
     RenderSettings settings;
     settings.aov_buffers = false;
     const Framebuffer fb = render_whitted(scene, Film(scene.camera, FilmFormat::linear), settings);
@@ -50,7 +50,7 @@ TEST(RayTree, TheTreeSumsToTheRenderedPixel) {
 }
 
 TEST(RayTree, GlassSpawnsMirrorAndRefractedRaysAndShadowRaysAreListed) {
-    const Scene scene = testing::parse(k_scene);
+    const Scene scene = testing::parse(k_glass_and_mirror_spheres);
     const std::vector<RayTreeNode> tree = whitted_ray_tree(scene, WhittedSettings{}, 14, 15);
     ASSERT_TRUE(tree.front().hit);
     EXPECT_EQ(tree.front().surface.id, 1u);  // the glass sphere

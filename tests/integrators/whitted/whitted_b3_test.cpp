@@ -1,16 +1,14 @@
 // Whitted ray tracing of the B3 scene-format additions: sky, checker, casts_shadow, falloff.
 #include <gtest/gtest.h>
 
+#include "../../io/scene_test_util.h"
 #include "hikari/integrators/whitted/whitted.h"
 #include "hikari/io/scene_json.h"
 
 namespace hikari {
 namespace {
 
-Scene scene_from(const std::string& json) {
-    std::vector<std::string> warnings;
-    return parse_scene(json, "test.json", ".", warnings);
-}
+using testing::parse;
 
 /// A camera looking straight down at the floor point (0, 0, 0) from (0, 1, 0), 1 pixel.
 constexpr const char* k_camera = R"("camera": {"eye": [0, 1, 0], "look_at": [0, 0, 0],
@@ -18,7 +16,7 @@ constexpr const char* k_camera = R"("camera": {"eye": [0, 1, 0], "look_at": [0, 
 
 TEST(WhittedB3, NonCastingSphereLetsLightThrough) {
     const auto render_with = [](const char* casts) {
-        const Scene scene = scene_from(std::string("{") + k_camera + R"(,
+        const Scene scene = parse(std::string("{") + k_camera + R"(,
           "ambient": 0.25,
           "materials": {"white": {"ka": 1, "kd": 1}},
           "lights": [{"type": "directional", "direction": [0, -1, 0], "intensity": 1}],
@@ -26,7 +24,7 @@ TEST(WhittedB3, NonCastingSphereLetsLightThrough) {
             {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "white"},
             {"type": "sphere", "center": [0, 5, 0], "radius": 0.1, "material": "white",
              "casts_shadow": )" + casts +
-                                       "}]}");
+                                  "}]}");
         return render_whitted(scene, Film(scene.camera)).film.linear().at(0, 0).x;
     };
     EXPECT_NEAR(render_with("true"), 0.25f, 1e-6);
@@ -34,7 +32,7 @@ TEST(WhittedB3, NonCastingSphereLetsLightThrough) {
 }
 
 TEST(WhittedB3, PointLightWithoutFalloff) {
-    const Scene scene = scene_from(std::string("{") + k_camera + R"(,
+    const Scene scene = parse(std::string("{") + k_camera + R"(,
       "materials": {"white": {"kd": 0.5}},
       "lights": [{"type": "point", "position": [0, 10, 0], "intensity": 1, "falloff": "none"}],
       "objects": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "white"}]})");
@@ -42,7 +40,7 @@ TEST(WhittedB3, PointLightWithoutFalloff) {
 }
 
 TEST(WhittedB3, CheckerScalesAmbientAndDiffuse) {
-    const Scene scene = scene_from(std::string("{") + k_camera + R"(,
+    const Scene scene = parse(std::string("{") + k_camera + R"(,
       "ambient": 1,
       "materials": {"floor": {"ka": 0.5, "kd": 0.25, "texture": {"type": "checker",
           "color_a": [1, 0, 0], "color_b": [0, 1, 0], "offset": [0.25, 0.5, 0.25]}}},
@@ -54,7 +52,7 @@ TEST(WhittedB3, CheckerScalesAmbientAndDiffuse) {
 }
 
 TEST(WhittedB3, MissesSeeTheGradientSky) {
-    const Scene scene = scene_from(R"({"camera": {"eye": [0, 0, 0], "look_at": [0, 1, 0],
+    const Scene scene = parse(R"({"camera": {"eye": [0, 0, 0], "look_at": [0, 1, 0],
         "up": [0, 0, -1], "fov_y": 1, "width": 1, "height": 1},
         "sky": {"type": "gradient", "horizon": [1, 0, 0], "zenith": [0, 0, 1]}, "objects": []})");
     const Vec3 c = render_whitted(scene, Film(scene.camera)).film.linear().at(0, 0);

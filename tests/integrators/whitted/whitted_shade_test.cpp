@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "../../bvh/test_meshes.h"
+#include "../../support/same_bits.h"
 #include "hikari/core/rng.h"
 #include "hikari/core/srgb8_encoder.h"
 #include "hikari/integrators/whitted/whitted.h"
@@ -19,9 +20,7 @@
 namespace hikari {
 namespace {
 
-bool same_bits(float a, float b) {
-    return std::bit_cast<uint32_t>(a) == std::bit_cast<uint32_t>(b);
-}
+using testing::same_bits;
 
 Vec3 random_colour(Pcg32& rng) { return {rng.next_float(), rng.next_float(), rng.next_float()}; }
 
@@ -141,7 +140,7 @@ TEST(WhittedShade, EveryLevelShadesAlike) {
 
 /// Spheres (some overlapping, some not casting shadows), a ground plane and a smooth-shaded
 /// triangle soup, all materials of random_materials, lit by random_lights.
-Scene random_scene(uint64_t seed) {
+Scene random_lit_scene(uint64_t seed) {
     Pcg32 rng(seed, 5);
     Scene scene;
     scene.materials = random_materials(rng);
@@ -199,7 +198,7 @@ TEST(WhittedShade, RandomScenesRenderAsTheRecursiveOracle) {
             for (int spp : {1, 4}) {
                 SCOPED_TRACE(::testing::Message()
                              << "seed " << seed << " depth " << depth << " spp " << spp);
-                const Scene scene = random_scene(seed);
+                const Scene scene = random_lit_scene(seed);
                 WhittedSettings whitted;
                 whitted.max_depth = depth;
                 whitted.samples_per_pixel = spp;
@@ -214,7 +213,7 @@ TEST(WhittedShade, ManyLightsAreShadedByTheOneRayCode) {
     // may change the image.
     for (const size_t lights : {k_max_block_lights, k_max_block_lights + 1}) {
         SCOPED_TRACE(::testing::Message() << lights << " lights");
-        Scene scene = random_scene(4);
+        Scene scene = random_lit_scene(4);
         Pcg32 rng(7, 9);
         while (scene.lights.size() < lights)
             scene.lights.push_back(PointLight{testing::random_point(rng, 6.0f), Vec3(0.4f), true});
@@ -228,7 +227,7 @@ TEST(WhittedShade, Srgb8OutputIsTheEncodedLinearRender) {
     // the PNG writer encodes the float framebuffer.
     for (int spp : {1, 4}) {
         SCOPED_TRACE(::testing::Message() << "spp " << spp);
-        const Scene scene = random_scene(3);
+        const Scene scene = random_lit_scene(3);
         RenderSettings colour_only;
         colour_only.aov_buffers = false;
         WhittedSettings whitted;

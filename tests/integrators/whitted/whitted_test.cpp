@@ -5,15 +5,13 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include "../../io/scene_test_util.h"
 #include "hikari/io/scene_json.h"
 
 namespace hikari {
 namespace {
 
-Scene scene_from(const std::string& json) {
-    std::vector<std::string> warnings;
-    return parse_scene(json, "test.json", ".", warnings);
-}
+using testing::parse;
 
 /// The assignment's colour at pixel (i, j), computed independently in double precision.
 std::array<double, 3> assignment_pixel(int i, int j) {
@@ -69,7 +67,7 @@ TEST(Whitted, PointLightFallsOffWithDistanceSquared) {
                                  std::to_string(height) + R"(, 0], "intensity": [4, 4, 4]}],
           "objects": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0],
                        "material": "white"}]})";
-        const Scene scene = scene_from(json);
+        const Scene scene = parse(json);
         return render_whitted(scene, Film(scene.camera)).film.linear().at(1, 1).x;
     };
     EXPECT_NEAR(floor_under_light(2), 4.0f / 4.0f, 1e-5);
@@ -95,7 +93,7 @@ const char* k_shadow_scene = R"({
   ]})";
 
 TEST(Whitted, SameImageForAnyThreadCount) {
-    const Scene scene = scene_from(k_shadow_scene);
+    const Scene scene = parse(k_shadow_scene);
     WhittedSettings settings;
     settings.samples_per_pixel = 4;
     Framebuffer one, two;
@@ -116,7 +114,7 @@ TEST(Whitted, SameImageForAnyThreadCount) {
 
 TEST(Whitted, ShadowedPointGetsOnlyAmbient) {
     // A small sphere directly between the light and the floor point under it.
-    const Scene scene = scene_from(R"({
+    const Scene scene = parse(R"({
       "camera": {"eye": [0, 1, 0], "look_at": [0, 0, 0], "up": [0, 0, -1], "fov_y": 10,
                  "width": 3, "height": 3},
       "ambient": [0.25, 0.25, 0.25],
@@ -131,7 +129,7 @@ TEST(Whitted, ShadowedPointGetsOnlyAmbient) {
 
 TEST(Whitted, PerfectMirrorShowsWhatItReflects) {
     // A mirror floor under a camera looking down reflects the background (the sky) exactly.
-    const Scene scene = scene_from(R"({
+    const Scene scene = parse(R"({
       "camera": {"eye": [0, 1, 0], "look_at": [0, 0, 0], "up": [0, 0, -1], "fov_y": 10,
                  "width": 3, "height": 3},
       "background": [0.3, 0.6, 0.9],
@@ -148,7 +146,7 @@ TEST(Whitted, PerfectMirrorShowsWhatItReflects) {
 }
 
 TEST(Whitted, AovsDescribeThePixelCentre) {
-    const Scene scene = scene_from(k_shadow_scene);
+    const Scene scene = parse(k_shadow_scene);
     WhittedSettings settings;
     settings.samples_per_pixel = 3;
     const Framebuffer fb = render_whitted(scene, Film(scene.camera), {}, settings);
@@ -162,7 +160,7 @@ TEST(Whitted, AovsDescribeThePixelCentre) {
 TEST(Whitted, AnEdgeOnTriangleThroughTheEyeIsNotSeen) {
     // The triangle's plane contains the eye: every camera ray crosses it at the eye, where no
     // surface can be seen (issue 28: 1,031 of 9,216 pixels used to come out as speckles).
-    const Scene scene = scene_from(R"({
+    const Scene scene = parse(R"({
       "camera": {"eye": [0.3, 1, 2], "look_at": [0, 0, -1], "fov_y": 60, "width": 96, "height": 96},
       "materials": {"grey": {"kd": 0.5}},
       "objects": [{"type": "triangle", "vertices": [[-20, 1, 22], [20, 1, 22], [0.3, 1, -30]], "material": "grey"},

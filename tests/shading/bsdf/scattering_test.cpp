@@ -10,12 +10,13 @@
 
 #include <gtest/gtest.h>
 
+#include "../../support/pi.h"
 #include "hikari/core/rng.h"
 
 namespace hikari {
 namespace {
 
-constexpr float k_pi = std::numbers::pi_v<float>;
+using testing::k_pi_f;
 
 MaterialSample<float> material(Vec3 kd, Vec3 ks, float n, float mirror = 0, float glass = 0,
                                float ior = 1.5f) {
@@ -32,7 +33,7 @@ MaterialSample<float> material(Vec3 kd, Vec3 ks, float n, float mirror = 0, floa
 
 /// A frame with normal +z and the eye at `degrees` from it.
 ScatterFrame frame_at(float degrees) {
-    const float a = degrees * k_pi / 180.0f;
+    const float a = degrees * k_pi_f / 180.0f;
     ScatterFrame at;
     at.to_eye = {std::sin(a), 0.0f, std::cos(a)};
     at.normal = at.geometric_normal = {0.0f, 0.0f, 1.0f};
@@ -60,22 +61,22 @@ void expect_sampling_matches_pdf(const Scattering& bsdf, const ScatterFrame& at)
         if (s.delta || !(max_component(s.weight) > 0.0f)) continue;
         const Vec3 d = s.direction;
         float phi = std::atan2(d.y, d.x);
-        if (phi < 0.0f) phi += 2.0f * k_pi;
+        if (phi < 0.0f) phi += 2.0f * k_pi_f;
         const int zi = std::clamp(static_cast<int>((d.z + 1.0f) * 0.5f * k_z), 0, k_z - 1);
-        const int pi = std::clamp(static_cast<int>(phi / (2.0f * k_pi) * k_phi), 0, k_phi - 1);
+        const int pi = std::clamp(static_cast<int>(phi / (2.0f * k_pi_f) * k_phi), 0, k_phi - 1);
         observed[zi * k_phi + pi] += 1.0;
         // The pdf the sample reports is the one evaluate gives for its direction.
         float pdf = 0.0f;
         bsdf.evaluate(at, d, pdf);
         ASSERT_NEAR(pdf, s.pdf, 1e-3f * std::max(1.0f, pdf));
     }
-    const double bin_area = (2.0 / k_z) * (2.0 * k_pi / k_phi) / (k_sub_z * k_sub);
+    const double bin_area = (2.0 / k_z) * (2.0 * k_pi_f / k_phi) / (k_sub_z * k_sub);
     for (int zi = 0; zi < k_z; ++zi)
         for (int pi = 0; pi < k_phi; ++pi)
             for (int a = 0; a < k_sub_z; ++a)
                 for (int b = 0; b < k_sub; ++b) {
                     const float z = -1.0f + 2.0f * (zi + (a + 0.5f) / k_sub_z) / k_z;
-                    const float phi = 2.0f * k_pi * (pi + (b + 0.5f) / k_sub) / k_phi;
+                    const float phi = 2.0f * k_pi_f * (pi + (b + 0.5f) / k_sub) / k_phi;
                     float pdf = 0.0f;
                     bsdf.evaluate(at, direction(z, phi), pdf);
                     expected[zi * k_phi + pi] += pdf * bin_area * k_samples;
@@ -132,11 +133,11 @@ double albedo(const Scattering& bsdf, const ScatterFrame& at) {
     double sum = 0.0;
     for (int i = 0; i < k_z; ++i)
         for (int j = 0; j < k_phi; ++j) {
-            const float z = (i + 0.5f) / k_z, phi = 2.0f * k_pi * (j + 0.5f) / k_phi;
+            const float z = (i + 0.5f) / k_z, phi = 2.0f * k_pi_f * (j + 0.5f) / k_phi;
             float pdf = 0.0f;
             sum += bsdf.evaluate(at, direction(z, phi), pdf).x * z;
         }
-    return sum * (1.0 / k_z) * (2.0 * k_pi / k_phi);
+    return sum * (1.0 / k_z) * (2.0 * k_pi_f / k_phi);
 }
 
 TEST(Scattering, NormalizedPhongNeverReflectsMoreThanItReceives) {
@@ -173,7 +174,7 @@ TEST(Scattering, DielectricSplitsByFresnel) {
     EXPECT_NEAR(fresnel_dielectric(1.0f, 1.0f / 1.5f, cos_t), 0.04f, 1e-6f);
     EXPECT_NEAR(cos_t, 1.0f, 1e-6f);
     // From inside beyond the critical angle (41.8°): total internal reflection.
-    EXPECT_EQ(fresnel_dielectric(std::cos(50.0f * k_pi / 180.0f), 1.5f, cos_t), 1.0f);
+    EXPECT_EQ(fresnel_dielectric(std::cos(50.0f * k_pi_f / 180.0f), 1.5f, cos_t), 1.0f);
     // Grazing: everything is reflected.
     EXPECT_NEAR(fresnel_dielectric(1e-4f, 1.0f / 1.5f, cos_t), 1.0f, 1e-3f);
 
@@ -192,7 +193,7 @@ TEST(Scattering, DielectricSplitsByFresnel) {
     // Snell at 45° into glass: sin θ_t = sin 45° / 1.5.
     at = frame_at(45.0f);
     const ScatterSample bent = glass.sample(at, 0.9f, {0.5f, 0.5f});
-    EXPECT_NEAR(std::hypot(bent.direction.x, bent.direction.y), std::sin(k_pi / 4) / 1.5f, 1e-5f);
+    EXPECT_NEAR(std::hypot(bent.direction.x, bent.direction.y), std::sin(k_pi_f / 4) / 1.5f, 1e-5f);
 }
 
 TEST(Scattering, MirrorAndBlackSurfaces) {
@@ -200,7 +201,7 @@ TEST(Scattering, MirrorAndBlackSurfaces) {
     EXPECT_FALSE(mirror.smooth());
     const ScatterSample s = mirror.sample(frame_at(30.0f), 0.5f, {0.1f, 0.1f});
     EXPECT_TRUE(s.delta);
-    EXPECT_NEAR(s.direction.x, -std::sin(k_pi / 6), 1e-6f);
+    EXPECT_NEAR(s.direction.x, -std::sin(k_pi_f / 6), 1e-6f);
     EXPECT_FLOAT_EQ(s.weight.y, 0.8f);
     EXPECT_TRUE(Scattering(material(Vec3(0.0f), Vec3(0.0f), 1.0f), 1.0f).black());
 }

@@ -10,12 +10,13 @@
 
 #include <gtest/gtest.h>
 
+#include "../../support/pi.h"
 #include "hikari/shading/light_integral.h"
 
 namespace hikari {
 namespace {
 
-constexpr double k_pi = std::numbers::pi;
+using testing::k_pi;
 
 /// A square light of side `size` centred over (cx, height, cz), shining down.
 AreaLight square_light(float size, float height, float cx = 0.0f, float cz = 0.0f) {

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../../support/pi.h"
 #include "hikari/core/piecewise_constant.h"
 #include "hikari/core/rng.h"
 #include "hikari/shading/lights/environment_light.h"
@@ -18,7 +19,7 @@
 namespace hikari {
 namespace {
 
-constexpr double k_pi = std::numbers::pi;
+using testing::k_pi;
 
 /// A 2:1 map: a bright blob toward +x a little above the horizon on a dim sky, ground darker.
 Image test_sky(int height) {

@@ -13,6 +13,7 @@
 #include "../../io/temp_dir.h"
 #include "../../raster/raster_test_util.h"
 
+#include "../../support/pi.h"
 #include "hikari/integrators/whitted/whitted.h"
 #include "hikari/io/image_write.h"
 #include "hikari/raster/zbuffer.h"
@@ -20,7 +21,7 @@
 namespace hikari {
 namespace {
 
-constexpr float k_pi = std::numbers::pi_v<float>;
+using testing::k_pi_f;
 
 /// A sphere on a ground of two triangles, seen from the front, lit by `lights` (JSON).
 std::string sphere_on_ground(const std::string& lights, int size = 96) {
@@ -66,7 +67,7 @@ TEST(LightsRender, ConstantSkyOnAnOpenPlaneIsKdPiL) {
       "materials": {"m": {"ka": [0, 0, 0], "kd": [0.5, 0.25, 0.125]}},
       "lights": [{"type": "environment", "radiance": [0.4, 0.6, 0.8]}],
       "objects": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "m"}]})");
-    const Vec3 expected = Vec3(0.5f, 0.25f, 0.125f) * Vec3(0.4f, 0.6f, 0.8f) * k_pi;
+    const Vec3 expected = Vec3(0.5f, 0.25f, 0.125f) * Vec3(0.4f, 0.6f, 0.8f) * k_pi_f;
     for (const Framebuffer& fb : {ray_trace(scene), rasterize(scene, ShadowMode::map)}) {
         int checked = 0;
         for (size_t i = 0; i < fb.id.size(); ++i) {

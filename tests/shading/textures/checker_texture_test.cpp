@@ -4,23 +4,23 @@
 
 #include <gtest/gtest.h>
 
-#include "../../core/test_isa.h"
+#include "../../support/test_isa16.h"
 
 namespace hikari {
 namespace {
 
-using TestIsa = testing::TestIsa<16>;
-constexpr int k_lanes = TestIsa::k_width;
-using Lanes = LaneFloat<TestIsa>;
+using testing::k_lanes16;
+using testing::TestIsa16;
+using Floats16 = LaneFloat<TestIsa16>;
 
 TEST(CheckerTexture, FloorParityIsTheParityOfFloor) {
     const float values[] = {
         -2.5f, -2.0f,        -1e-7f,      -0.0f, 0.0f,   1e-7f,         0.999999f,      1.0f,
         3.5f,  -16777217.0f, 16777216.0f, 1e12f, -1e12f, 2147483520.0f, -2147483648.0f, 7.0f};
-    float lanes[k_lanes];
-    for (int i = 0; i < k_lanes; ++i) lanes[i] = values[i];
-    const LaneInt<TestIsa> packed = floor_parity(Lanes::load(lanes));
-    for (int i = 0; i < k_lanes; ++i) {
+    float lanes[k_lanes16];
+    for (int i = 0; i < k_lanes16; ++i) lanes[i] = values[i];
+    const LaneInt<TestIsa16> packed = floor_parity(Floats16::load(lanes));
+    for (int i = 0; i < k_lanes16; ++i) {
         const auto floor = static_cast<long long>(std::floor(static_cast<double>(values[i])));
         const int32_t want = static_cast<int32_t>(floor & 1);
         EXPECT_EQ(floor_parity(values[i]), want) << values[i];

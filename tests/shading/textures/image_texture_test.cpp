@@ -4,10 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include "../../support/expect_near.h"
 #include "hikari/shading/textures/mip_pyramid.h"
 
 namespace hikari {
 namespace {
+
+using testing::expect_near;
 
 /// A 2×2 image: red at the top left, green top right, blue bottom left, white bottom right.
 Image quad_image() {
@@ -17,12 +20,6 @@ Image quad_image() {
     image.at(0, 1) = {0, 0, 1};
     image.at(1, 1) = {1, 1, 1};
     return image;
-}
-
-void expect_near(Vec3 a, Vec3 b, float tolerance = 1e-6f) {
-    EXPECT_NEAR(a.x, b.x, tolerance);
-    EXPECT_NEAR(a.y, b.y, tolerance);
-    EXPECT_NEAR(a.z, b.z, tolerance);
 }
 
 ImageTexture texture_of(Image image, TextureFilter filter, TextureWrap wrap) {
@@ -72,7 +69,7 @@ TEST(ImageTexture, LookupsFollowTheUvConventionAndWrapModes) {
     const Image image = quad_image();
     for (const Lookup& l : lookups) {
         SCOPED_TRACE(l.why);
-        expect_near(l.sample(image, l.u, l.v, l.wrap), l.expected);
+        expect_near(l.sample(image, l.u, l.v, l.wrap), l.expected, 1e-6f);
     }
 }
 
@@ -95,13 +92,13 @@ TEST(ImageTexture, TrilinearBlendsTheTwoLevelsAroundTheLevelOfDetail) {
         for (int x = 0; x < 8; ++x) stripes.at(x, y) = Vec3(static_cast<float>(x % 2));
     const ImageTexture t = texture_of(stripes, TextureFilter::trilinear, TextureWrap::repeat);
     const float u = 1.5f / 8, v = 0.5f;  // the centre of a white texel
-    expect_near(sample_image_texture(t, u, v, 0, 0, 0, 0), Vec3(1.0f));
-    expect_near(sample_image_texture(t, u, v, 2.0f / 8, 0, 0, 0), Vec3(0.5f));
+    expect_near(sample_image_texture(t, u, v, 0, 0, 0, 0), Vec3(1.0f), 1e-6f);
+    expect_near(sample_image_texture(t, u, v, 2.0f / 8, 0, 0, 0), Vec3(0.5f), 1e-6f);
     // Level of detail 0.5: halfway between white and the grey of level 1.
     expect_near(sample_image_texture(t, u, v, std::sqrt(2.0f) / 8, 0, 0, 0), Vec3(0.75f), 1e-5f);
     // The bilinear filter ignores the footprint and aliases.
     const ImageTexture b = texture_of(stripes, TextureFilter::bilinear, TextureWrap::repeat);
-    expect_near(sample_image_texture(b, u, v, 2.0f / 8, 0, 0, 0), Vec3(1.0f));
+    expect_near(sample_image_texture(b, u, v, 2.0f / 8, 0, 0, 0), Vec3(1.0f), 1e-6f);
 }
 
 TEST(ImageTexture, TextureColourReadsTheSurfacePoint) {
@@ -109,7 +106,7 @@ TEST(ImageTexture, TextureColourReadsTheSurfacePoint) {
     SurfacePoint<float> p;
     p.u = 0.75f;
     p.v = 0.75f;
-    expect_near(texture_colour<float>(t, p), {0, 1, 0});
+    expect_near(texture_colour<float>(t, p), {0, 1, 0}, 1e-6f);
 }
 
 TEST(MipPyramid, HalvesDownToOneTexelRoundingDown) {
@@ -120,7 +117,7 @@ TEST(MipPyramid, HalvesDownToOneTexelRoundingDown) {
     EXPECT_EQ(pyramid.levels[2].width, 1);
     EXPECT_EQ(pyramid.levels[2].height, 1);
     for (const Image& level : pyramid.levels)
-        for (const Vec3& texel : level.pixels) expect_near(texel, Vec3(0.25f));
+        for (const Vec3& texel : level.pixels) expect_near(texel, Vec3(0.25f), 1e-6f);
 }
 
 TEST(MipPyramid, EveryLevelKeepsTheMeanOfANonPowerOfTwoImage) {
@@ -143,15 +140,15 @@ TEST(MipPyramid, EveryLevelKeepsTheMeanOfANonPowerOfTwoImage) {
 TEST(MipPyramid, EvenSizesAverageTwoByTwoBlocks) {
     const MipPyramid pyramid = build_mip_pyramid(quad_image());
     ASSERT_EQ(pyramid.levels.size(), 2u);
-    expect_near(pyramid.levels[1].at(0, 0), {0.5f, 0.5f, 0.5f});
+    expect_near(pyramid.levels[1].at(0, 0), {0.5f, 0.5f, 0.5f}, 1e-6f);
 }
 
 TEST(MipPyramid, NonFiniteTexelsBecomeZero) {
     Image image(2, 1, Vec3(1.0f));
     image.at(0, 0) = Vec3(std::nanf(""), INFINITY, 1.0f);
     const MipPyramid pyramid = build_mip_pyramid(image);
-    expect_near(pyramid.levels[0].at(0, 0), Vec3(0.0f));
-    expect_near(pyramid.levels[1].at(0, 0), Vec3(0.5f));
+    expect_near(pyramid.levels[0].at(0, 0), Vec3(0.0f), 1e-6f);
+    expect_near(pyramid.levels[1].at(0, 0), Vec3(0.5f), 1e-6f);
 }
 
 }  // namespace
