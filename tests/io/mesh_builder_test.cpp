@@ -37,6 +37,38 @@ Vec3 face_normal(const MeshData& m, size_t t) {
         cross(m.positions[i[1]] - m.positions[i[0]], m.positions[i[2]] - m.positions[i[1]]));
 }
 
+TEST(MeshBuilder, FloodsOfOneTriangleKeepOneCopy) {
+    // 200 copies of one triangle (some turned to start at another corner), 200 of it wound the
+    // other way, 200 with another material: one of each is kept, in file order, and the count
+    // of the others is a warning. A triangle repeated a few times at vertices few triangles share
+    // is left alone.
+    PolygonMesh m;
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 0, 0}, {6, 0, 0}, {5, 1, 0}};
+    m.materials.resize(2);
+    for (int copy = 0; copy < 200; ++copy) {
+        m.add_face(copy % 3 == 0 ? std::initializer_list<uint32_t>{1, 2, 0}
+                                 : std::initializer_list<uint32_t>{0, 1, 2});
+        m.face_material.push_back(0);
+        m.add_face({0, 2, 1});
+        m.face_material.push_back(0);
+        m.add_face({0, 1, 2});
+        m.face_material.push_back(1);
+    }
+    for (int copy = 0; copy < 3; ++copy) {
+        m.add_face({3, 4, 5});
+        m.face_material.push_back(0);
+    }
+    const MeshData mesh = build_mesh("flood.obj", m);
+    ASSERT_EQ(mesh.indices.size(), 6u);
+    EXPECT_EQ(mesh.material[0], 0);
+    EXPECT_EQ(mesh.material[2], 1);
+    EXPECT_EQ(mesh.material[5], 0);
+    ASSERT_EQ(mesh.warnings.size(), 1u);
+    EXPECT_EQ(mesh.warnings[0],
+              "flood.obj: skipped 597 repeated triangle(s) (the same corners and "
+              "material as an earlier one)");
+}
+
 TEST(MeshBuilder, CubeWithoutNormalsHasFlatFacesAndSharpEdges) {
     const MeshData m = build_mesh("cube.obj", cube());
     ASSERT_EQ(m.indices.size(), 12u);

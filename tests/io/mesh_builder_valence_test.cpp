@@ -58,14 +58,20 @@ TEST(MeshBuilderValence, ConeApexOfManyTrianglesIsSmoothedAlongTheAxis) {
 
 TEST(MeshBuilderValence, CopiesOfOneTriangleEachCountAsBefore) {
     // Many exact copies of triangle A and one triangle B at 30 degrees to it, all sharing vertex
-    // 0: each copy adds its weight, as when the corners are smoothed one by one.
+    // 0: each copy adds its weight, as when the corners are smoothed one by one. Each copy has a
+    // material of its own, so none is a repeat that build_mesh drops.
     PolygonMesh m;
     const float c = std::cos(float(M_PI) / 6), s = std::sin(float(M_PI) / 6);
     // A in the plane z = 0; B beside it, folded 30 degrees down about the y axis.
     m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {c, 0, -s}};
     constexpr uint32_t copies = 1000;
-    for (uint32_t k = 0; k < copies; ++k) m.add_face({0, 1, 2});
+    m.materials.resize(copies);
+    for (uint32_t k = 0; k < copies; ++k) {
+        m.add_face({0, 1, 2});
+        m.face_material.push_back(int32_t(k));
+    }
     m.add_face({0, 3, 4});
+    m.face_material.push_back(0);
     const Vec3 a_normal = normalize(cross(m.positions[1], m.positions[2] - m.positions[1]));
     const Vec3 b_normal =
         normalize(cross(m.positions[3] - m.positions[0], m.positions[4] - m.positions[3]));
@@ -85,14 +91,36 @@ TEST(MeshBuilderValence, CopiesOfOneTriangleEachCountAsBefore) {
     EXPECT_EQ(out.indices[copies - 1][1], out.indices[0][1]);
 }
 
+TEST(MeshBuilderValence, ExactRepeatsAreDroppedBeforeSmoothing) {
+    // The same copies with one material: all but the first are repeats (mesh_builder.cpp), so
+    // the smoothed normal at vertex 0 weighs A once.
+    PolygonMesh m;
+    const float c = std::cos(float(M_PI) / 6), s = std::sin(float(M_PI) / 6);
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {c, 0, -s}};
+    for (uint32_t k = 0; k < 1000; ++k) m.add_face({0, 1, 2});
+    m.add_face({0, 3, 4});
+    const Vec3 a_normal = normalize(cross(m.positions[1], m.positions[2] - m.positions[1]));
+    const Vec3 b_normal =
+        normalize(cross(m.positions[3] - m.positions[0], m.positions[4] - m.positions[3]));
+    const float a_angle = angle_at(m.positions[0], m.positions[1], m.positions[2]);
+    const float b_angle = angle_at(m.positions[0], m.positions[3], m.positions[4]);
+    const Vec3 expected = normalize(a_angle * a_normal + b_angle * b_normal);
+    const MeshData out = build_mesh("copies.obj", std::move(m));
+    ASSERT_EQ(out.indices.size(), 2u);
+    EXPECT_NEAR(dot(out.normals[out.indices[0][0]], expected), 1.0f, 1e-6f);
+}
+
 TEST(MeshBuilderValence, ManyCopiesAcrossACreaseStaySplit) {
     // Copies of two faces meeting at 90 degrees along an edge: the crease (45) keeps each side
-    // flat, however many copies share the edge's points.
+    // flat, however many copies share the edge's points. Each pair has a material of its own, so
+    // no copy is a repeat that build_mesh drops.
     PolygonMesh m;
     m.positions = {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {0, 0, 1}};
+    m.materials.resize(k_many / 2);
     for (uint32_t k = 0; k < k_many / 2; ++k) {
         m.add_face({0, 2, 1});  // in z = 0, facing +z
         m.add_face({0, 1, 3});  // in x = 0, facing +x
+        m.face_material.insert(m.face_material.end(), {int32_t(k), int32_t(k)});
     }
     const MeshData out = build_mesh("pile.obj", std::move(m));
     ASSERT_EQ(out.indices.size(), size_t{k_many});

@@ -40,6 +40,48 @@ TEST(ObjLoader, FaceIndicesAreParsedExactly) {
     EXPECT_EQ(obj_load_error(dir / "good.obj"), "");
 }
 
+/// The colour `mesh` gives the vertex at `position` (every vertex there has the same one).
+Vec3 colour_at(const MeshData& mesh, Vec3 position) {
+    Vec3 found(-1.0f);
+    for (size_t i = 0; i < mesh.positions.size(); ++i) {
+        if (mesh.positions[i].x != position.x || mesh.positions[i].y != position.y ||
+            mesh.positions[i].z != position.z)
+            continue;
+        if (found.x >= 0.0f)
+            EXPECT_TRUE(found.x == mesh.colors[i].x && found.z == mesh.colors[i].z);
+        found = mesh.colors[i];
+    }
+    return found;
+}
+
+TEST(ObjLoader, VertexColoursAreReadAndDecodedFromSrgb) {
+    TempDir dir;
+    // `v x y z r g b` (MeshLab's extension); the first vertex has none (white), the last one's
+    // seventh number (alpha) is ignored, and a corner with a normal keeps its position's colour.
+    write_text(dir / "c.obj",
+               "v 0 0 0\nv 1 0 0 1 0 0\nv 1 1 0 0 0.5 1\nv 0 1 0 0 0 0 0.25\n"
+               "vn 0 0 1\nf 1 2//1 3\nf 1 3 4\n");
+    const MeshData mesh = load_obj(dir / "c.obj");
+    ASSERT_EQ(mesh.colors.size(), mesh.positions.size());
+    expect_near(colour_at(mesh, {0, 0, 0}), Vec3(1.0f), 0.0f);
+    expect_near(colour_at(mesh, {1, 0, 0}), Vec3(1.0f, 0.0f, 0.0f), 0.0f);
+    expect_near(colour_at(mesh, {1, 1, 0}), Vec3(0.0f, 0.21404f, 1.0f), 1e-5f);  // sRGB 0.5
+    expect_near(colour_at(mesh, {0, 1, 0}), Vec3(0.0f), 0.0f);
+
+    // Without colours there are none; `v x y z w` has a weight, not a colour.
+    write_text(dir / "w.obj", "v 0 0 0 1\nv 1 0 0 1\nv 0 1 0 1\nf 1 2 3\n");
+    EXPECT_TRUE(load_obj(dir / "w.obj").colors.empty());
+}
+
+TEST(ObjLoader, VertexColoursOutsideZeroToOneAreErrors) {
+    TempDir dir;
+    for (const char* bad : {"255 0 0", "0 -0.5 0", "0 0 nan"}) {
+        write_text(dir / "c.obj", std::string("v 0 0 0\nv 1 0 0 ") + bad + "\nv 0 1 0\nf 1 2 3\n");
+        const std::string e = obj_load_error(dir / "c.obj");
+        EXPECT_EQ(e.rfind((dir / "c.obj").string() + ":2: 'v': ", 0), 0u) << bad << ": " << e;
+    }
+}
+
 TEST(ObjLoader, QuadBecomesTwoTrianglesInOrder) {
     TempDir dir;
     write_text(dir / "quad.obj", std::string(k_obj_quad) + "f 1 2 3 4\n");

@@ -20,6 +20,7 @@
 #include <unordered_map>
 
 #include "hikari/core/cancel.h"
+#include "hikari/core/color.h"
 #include "hikari/core/error.h"
 #include "hikari/core/huge_page_allocator.h"
 #include "hikari/core/memory_budget.h"
@@ -126,6 +127,9 @@ struct FaceState {
 struct LineTable {
     std::vector<uint32_t> f;
     size_t v_count = 0, vt_count = 0, vn_count = 0, corner_count = 0;
+    /// Empty, or one per `v` from the first one that has a colour on: `v x y z r g b`, the
+    /// extension MeshLab and scanners write, sRGB-decoded; white for a `v` without one.
+    std::vector<Vec3> v_colors;
     /// Each `mtllib` statement: its line and the rest of the line (the library names).
     std::vector<std::pair<uint32_t, std::string_view>> mtllib;
     /// State changes in face order; the first applies from face 0.
@@ -172,6 +176,34 @@ void check_numbers(const std::filesystem::path& file, size_t line, const char* s
         std::string why;
         if (!parse_float_token(t, &why)) fail(file, line, fmt::format("'{}': {}", statement, why));
     });
+}
+
+/// Records the colour of a `v` statement (`v x y z r g b`, components from 0 to 1, taken as
+/// sRGB-encoded like the 8-bit colours they usually come from; a 7th number, alpha, is ignored).
+/// `v x y z` and `v x y z w` have none: white once an earlier vertex had one.
+void scan_vertex_colour(const std::filesystem::path& file, size_t line, std::string_view rest,
+                        LineTable& table) {
+    float numbers[6] = {};
+    size_t count = 0;
+    for_each_token(rest, [&](std::string_view t) {
+        if (count < 6) numbers[count] = parse_float_token(t).value_or(0.0f);
+        ++count;
+    });
+    if (count < 6) {
+        if (!table.v_colors.empty()) table.v_colors.emplace_back(1.0f);
+        return;
+    }
+    Vec3 colour;
+    for (int k = 0; k < 3; ++k) {
+        const float c = numbers[3 + k];
+        if (!(c >= 0.0f && c <= 1.0f)) {
+            fail(file, line,
+                 fmt::format("'v': colour component {} is outside 0..1 (v x y z r g b)", c));
+        }
+        colour[k] = srgb_to_linear(c);
+    }
+    if (table.v_colors.empty()) table.v_colors.assign(table.v_count, Vec3(1.0f));
+    table.v_colors.push_back(colour);
 }
 
 /// Whether `part` is an OBJ index: an optional '-' and decimal digits, nonzero, of magnitude at
@@ -407,6 +439,7 @@ LineTable scan_obj_text(const std::filesystem::path& file, std::string_view text
         const bool blank2 = s.size() > 2 && (s[2] == ' ' || s[2] == '\t');
         if (s[0] == 'v' && blank1) {
             check_numbers(file, line, "v", s.substr(2), 3);
+            scan_vertex_colour(file, line, s.substr(2), table);
             ++table.v_count;
         } else if (s[0] == 'v' && s[1] == 'n' && blank2) {
             check_numbers(file, line, "vn", s.substr(3), 3);
@@ -578,6 +611,7 @@ std::vector<std::string> check_statements(const std::filesystem::path& file, con
 struct StreamedObj {
     std::vector<Vec3> positions, normals;
     std::vector<Vec2> texcoords;
+    std::vector<Vec3> colors;  ///< empty, or one per position (LineTable::v_colors)
     /// The kept faces' corners, 0-based as tinyobjloader resolves them (-1: absent), unchecked.
     std::vector<Corner> corners;
     /// Per kept face: face_start (into `corners`), face_material, smoothing_group, face_line.
@@ -853,6 +887,7 @@ PolygonMesh to_polygons(const std::filesystem::path& file, StreamedObj& obj,
                                                  : Vec3(0.0f));
             if (obj.has_uvs)
                 mesh.uvs.push_back(c.vt >= 0 ? obj.texcoords[static_cast<size_t>(c.vt)] : Vec2{});
+            if (!obj.colors.empty()) mesh.colors.push_back(obj.colors[static_cast<size_t>(c.v)]);
         }
         return found;
     };
@@ -925,14 +960,18 @@ MeshData load_obj(const std::filesystem::path& file, const MeshOptions& options)
     const size_t face_lines = count_face_lines(text);
     check_obj_memory(file, face_lines, 3 * face_lines, 0, 0);
     MtlReader mtl_reader(file.parent_path());
-    const LineTable lines = scan_obj_text(file, text, mtl_reader);
+    LineTable lines = scan_obj_text(file, text, mtl_reader);
     const bool corners_share_positions = lines.vt_count == 0 && lines.vn_count == 0;
     check_obj_memory(
-        file, lines.f.size(), lines.corner_count, lines.v_count + lines.vt_count + lines.vn_count,
+        file, lines.f.size(), lines.corner_count,
+        lines.v_count + lines.vt_count + lines.vn_count +
+            (lines.v_colors.empty() ? 0 : lines.v_count),
         corners_share_positions ? std::min(lines.v_count, lines.corner_count) : lines.corner_count);
     std::vector<std::string> warnings = check_statements(file, lines, mtl_reader);
 
     StreamedObj streamed = ObjStreamer(lines).run(text);
+    streamed.colors = std::move(lines.v_colors);
+    if (!streamed.colors.empty()) streamed.colors.resize(streamed.positions.size(), Vec3(1.0f));
     const std::vector<tinyobj::material_t>& materials = lines.materials;
     PolygonMesh mesh = to_polygons(file, streamed, materials.size());
     const size_t dropped = streamed.degenerate_dropped;
