@@ -361,7 +361,8 @@ void print_stats(const PhaseTimes& times, const RenderStats& g_stats, std::strin
         fmt::print(stderr, "; {} paths, {:.2f} Mpaths/s, {} NaN/Inf samples", paths,
                    1e-6 * double(paths) / times.render, g_stats.bad_samples.load());
     fmt::print(stderr, "\n");
-    if (const uint64_t in = g_stats.raster_triangles.load(); in > 0) {
+    const uint64_t exact_spheres = g_stats.raster_exact_spheres.load();
+    if (const uint64_t in = g_stats.raster_triangles.load(); in > 0 || exact_spheres > 0) {
         const uint64_t covered = g_stats.raster_covered_pixels.load();
         const uint64_t work = g_stats.raster_fragments.load();
         fmt::print(stderr,
@@ -369,6 +370,9 @@ void print_stats(const PhaseTimes& times, const RenderStats& g_stats, std::strin
                    "clipped away, {} cut by clipping; {} screen triangles\n",
                    in, g_stats.raster_culled.load(), g_stats.raster_clipped_away.load(),
                    g_stats.raster_cut.load(), g_stats.raster_screen_triangles.load());
+        if (exact_spheres > 0)
+            fmt::print(stderr, "hikari: stats: {} exact sphere(s) drawn per pixel\n",
+                       exact_spheres);
         fmt::print(stderr, "hikari: stats: hidden surfaces: {} pixels covered", covered);
         if (work > 0)
             fmt::print(stderr, "; {} {} ({:.2f} per covered pixel)", work, work_name,

@@ -66,6 +66,33 @@ TEST(SphereRaster, IdBufferEqualsTheRayTracersOnSphereScenes) {
     }
 }
 
+TEST(SphereRaster, EverySphereAPixelMeetsIsOneFragmentInTheStats) {
+    // Two overlapping spheres drawn together test as many fragments as each covers alone.
+    const std::string camera = k_cameras[0];
+    const std::string front = R"({"type": "sphere", "center": [0, 0, 0], "radius": 1,
+                                  "material": "red"})";
+    const std::string back = R"({"type": "sphere", "center": [0.8, 0.3, -2], "radius": 1.2,
+                                 "material": "grey"})";
+    const auto stats_of = [&](const std::string& objects, uint64_t& covered, uint64_t& spheres) {
+        const Scene scene = scene_with(camera, objects);
+        RenderStats stats;
+        RenderSettings settings;
+        settings.stats = &stats;
+        render_zbuffer(scene, Film(scene.camera), settings);
+        covered = stats.raster_covered_pixels.load();
+        spheres = stats.raster_exact_spheres.load();
+        return stats.raster_fragments.load();
+    };
+    uint64_t covered_front = 0, covered_back = 0, covered_both = 0, spheres = 0;
+    EXPECT_EQ(stats_of(front, covered_front, spheres), covered_front);
+    EXPECT_EQ(spheres, 1u);
+    EXPECT_EQ(stats_of(back, covered_back, spheres), covered_back);
+    const uint64_t both = stats_of(front + "," + back, covered_both, spheres);
+    EXPECT_EQ(spheres, 2u);
+    EXPECT_EQ(both, covered_front + covered_back);
+    EXPECT_LT(covered_both, both);  // they overlap on screen
+}
+
 TEST(SphereRaster, IdBufferEqualsTheRayTracersWithAFloor) {
     // Spheres resting just above a plane (tessellated, as triangles): where they do not meet
     // it, every pixel sees what the ray tracer sees.

@@ -34,6 +34,7 @@ struct RenderStats {
     std::atomic<uint64_t> raster_clipped_away{0};  ///< wholly outside the clip volume
     std::atomic<uint64_t> raster_cut{0};           ///< cut by a clip plane, kept in pieces
     std::atomic<uint64_t> raster_screen_triangles{0};  ///< after clipping
+    std::atomic<uint64_t> raster_exact_spheres{0};  ///< spheres drawn per pixel (sphere_raster.h)
     /// Z-buffer: fragments depth-tested; depth sort: pixels painted; scanline: sample spans.
     std::atomic<uint64_t> raster_fragments{0};
     std::atomic<uint64_t> raster_covered_pixels{0};  ///< pixels that show a triangle

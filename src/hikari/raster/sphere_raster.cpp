@@ -140,7 +140,7 @@ float pixel_sphere_hit(const PixelRays& rays, const Sphere& sphere, int x, int y
 }
 
 void draw_spheres_in_tile(const SphereRaster& raster, const Tile& tile, float* depth,
-                          uint32_t* nearest) {
+                          uint32_t* nearest, uint32_t* fragment_counts, int counts_width) {
     // The spheres that may show in this tile, in index order.
     const size_t bin = static_cast<size_t>(tile.y0 / k_tile_size) * raster.tiles_x +
                        static_cast<size_t>(tile.x0 / k_tile_size);
@@ -157,12 +157,18 @@ void draw_spheres_in_tile(const SphereRaster& raster, const Tile& tile, float* d
             const Ray ray = raster.rays.at(x, y);
             Interval range;
             int seen = -1;
+            uint32_t met = 0;  // every sphere the ray meets, for the fragment count
             for (const uint32_t k : here) {
                 if (!holds(raster.bounds[k], x, y)) continue;
                 const Sphere& s = raster.spheres[k];
+                if (fragment_counts) {
+                    const float t_any = intersect_sphere(ray, s.center, s.radius, Interval{});
+                    met += t_any == t_any ? 1 : 0;
+                }
                 const float t = intersect_sphere(ray, s.center, s.radius, range);
                 if (t == t) range.max = t, seen = static_cast<int>(k);
             }
+            if (fragment_counts) fragment_counts[static_cast<size_t>(y) * counts_width + x] += met;
             if (seen < 0) continue;
             // The depth key the triangles carry (ScreenVertex::inv_w inverted).
             const Vec4 clip = raster.clip_from_world * Vec4(ray.at(range.max), 1.0f);

@@ -84,8 +84,11 @@ float pixel_sphere_hit(const PixelRays& rays, const Sphere& sphere, int x, int y
 /// meets replaces what `depth` / `nearest` hold (row-major k_tile_size × k_tile_size, from the
 /// tile's corner) when its depth key is strictly smaller, as a later triangle would. The key is
 /// the one triangles interpolate: view depth (clip w) under perspective, 1 / (1.5 − 0.5 z_ndc)
-/// under a parallel projection.
+/// under a parallel projection. With `fragment_counts` (row-major, `counts_width` wide, the
+/// whole image), each sphere a pixel's ray meets adds one fragment to that pixel's count, as a
+/// triangle covering it would (`--stats`, the overdraw picture).
 void draw_spheres_in_tile(const SphereRaster& raster, const Tile& tile, float* depth,
-                          uint32_t* nearest);
+                          uint32_t* nearest, uint32_t* fragment_counts = nullptr,
+                          int counts_width = 0);
 
 }  // namespace hikari

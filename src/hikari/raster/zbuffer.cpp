@@ -21,6 +21,7 @@ namespace {
 struct NoFragmentObserver {
     static constexpr bool k_active = false;
     void fragment(int, int, uint32_t, float, float, bool) const {}
+    uint32_t* sphere_fragment_counts() const { return nullptr; }
 };
 
 /// Records the fragments of one pixel (explain).
@@ -31,6 +32,7 @@ struct PixelFragments {
     void fragment(int px, int py, uint32_t t, float z, float stored, bool won) const {
         if (px == x && py == y) out.push_back({t, z, stored, won});
     }
+    uint32_t* sphere_fragment_counts() const { return nullptr; }  // explain draws no exact sphere
 };
 
 /// Counts every pixel's fragments (each pixel belongs to one tile: no two threads share a count).
@@ -41,6 +43,7 @@ struct FragmentCounts {
     void fragment(int x, int y, uint32_t, float, float, bool) const {
         ++count[static_cast<size_t>(y) * width + x];
     }
+    uint32_t* sphere_fragment_counts() const { return count; }
 };
 
 /// Alg 4.2 over every tile of the image, into `nearest_out` and `depth_out` (row-major, either
@@ -93,7 +96,9 @@ void zbuffer_pass(const Triangles& triangles, int width, int height, ZBufferWork
                 kernel(ws.setup.data(), run, count, target);
             });
         }
-        if (spheres) draw_spheres_in_tile(*spheres, tile, depth.data(), nearest.data());
+        if (spheres)
+            draw_spheres_in_tile(*spheres, tile, depth.data(), nearest.data(),
+                                 observer.sphere_fragment_counts(), width);
         for (int y = tile.y0; y < tile.y1; ++y) {
             const size_t row = static_cast<size_t>(y) * width + tile.x0;
             const size_t local = static_cast<size_t>(y - tile.y0) * k_tile_size;
@@ -172,6 +177,7 @@ Framebuffer render_zbuffer(const Scene& scene, Film film, const RenderSettings& 
         uint64_t total = 0;
         for (const uint32_t f : fragments) total += f;
         settings.stats->raster_fragments += total;
+        settings.stats->raster_exact_spheres += spheres.spheres.size();
         report_raster_stats(ps, vis, *settings.stats);
     }
     return shade_visibility(scene, ps, vis, std::move(film), settings, raster);
