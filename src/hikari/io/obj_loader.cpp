@@ -164,10 +164,12 @@ size_t count_tokens(std::string_view rest) {
     return count;
 }
 
-/// Checks that the tokens of `rest` are at least `min_count` finite numbers.
-void check_numbers(const std::filesystem::path& file, size_t line, const char* statement,
-                   std::string_view rest, size_t min_count) {
-    if (const size_t count = count_tokens(rest); count < min_count) {
+/// Checks that the tokens of `rest` are at least `min_count` finite numbers; returns how many
+/// there are.
+size_t check_numbers(const std::filesystem::path& file, size_t line, const char* statement,
+                     std::string_view rest, size_t min_count) {
+    const size_t count = count_tokens(rest);
+    if (count < min_count) {
         fail(file, line,
              fmt::format("'{}' needs {} numbers, found {}", statement, min_count, count));
     }
@@ -176,26 +178,29 @@ void check_numbers(const std::filesystem::path& file, size_t line, const char* s
         std::string why;
         if (!parse_float_token(t, &why)) fail(file, line, fmt::format("'{}': {}", statement, why));
     });
+    return count;
 }
 
 /// Records the colour of a `v` statement (`v x y z r g b`, components from 0 to 1, taken as
 /// sRGB-encoded like the 8-bit colours they usually come from; a 7th number, alpha, is ignored).
-/// `v x y z` and `v x y z w` have none: white once an earlier vertex had one.
+/// `v x y z` and `v x y z w` have none: white once an earlier vertex had one. `count` is the
+/// statement's number of numbers (check_numbers has checked them all); only a coloured one is
+/// read again.
 void scan_vertex_colour(const std::filesystem::path& file, size_t line, std::string_view rest,
-                        LineTable& table) {
-    float numbers[6] = {};
-    size_t count = 0;
-    for_each_token(rest, [&](std::string_view t) {
-        if (count < 6) numbers[count] = parse_float_token(t).value_or(0.0f);
-        ++count;
-    });
+                        size_t count, LineTable& table) {
     if (count < 6) {
         if (!table.v_colors.empty()) table.v_colors.emplace_back(1.0f);
         return;
     }
+    float rgb[3] = {};
+    size_t index = 0;
+    for_each_token(rest, [&](std::string_view t) {
+        if (index >= 3 && index < 6) rgb[index - 3] = parse_float_token(t).value_or(0.0f);
+        ++index;
+    });
     Vec3 colour;
     for (int k = 0; k < 3; ++k) {
-        const float c = numbers[3 + k];
+        const float c = rgb[k];
         if (!(c >= 0.0f && c <= 1.0f)) {
             fail(file, line,
                  fmt::format("'v': colour component {} is outside 0..1 (v x y z r g b)", c));
@@ -438,8 +443,8 @@ LineTable scan_obj_text(const std::filesystem::path& file, std::string_view text
         const bool blank1 = s[1] == ' ' || s[1] == '\t';
         const bool blank2 = s.size() > 2 && (s[2] == ' ' || s[2] == '\t');
         if (s[0] == 'v' && blank1) {
-            check_numbers(file, line, "v", s.substr(2), 3);
-            scan_vertex_colour(file, line, s.substr(2), table);
+            const size_t count = check_numbers(file, line, "v", s.substr(2), 3);
+            scan_vertex_colour(file, line, s.substr(2), count, table);
             ++table.v_count;
         } else if (s[0] == 'v' && s[1] == 'n' && blank2) {
             check_numbers(file, line, "vn", s.substr(3), 3);
