@@ -18,13 +18,13 @@
 #include <vector>
 
 #include "hikari/core/error.h"
-#include "hikari/io/gltf_loader.h"
-#include "hikari/io/image_read.h"
-#include "hikari/io/material_rules.h"
-#include "hikari/io/mtl_scan.h"
-#include "hikari/io/obj_loader.h"
-#include "hikari/io/ply_loader.h"
-#include "hikari/io/scene_json.h"
+#include "hikari/io/images/image_read.h"
+#include "hikari/io/models/gltf_loader.h"
+#include "hikari/io/models/material_rules.h"
+#include "hikari/io/models/mtl_scan.h"
+#include "hikari/io/models/obj_loader.h"
+#include "hikari/io/models/ply_loader.h"
+#include "hikari/io/scene/scene_json.h"
 
 namespace hikari::fuzz {
 

@@ -18,11 +18,11 @@
 
 #include "hikari/core/aabb.h"
 #include "hikari/core/error.h"
-#include "hikari/io/atomic_file.h"
-#include "hikari/io/image_read.h"
-#include "hikari/io/image_write.h"
-#include "hikari/io/read_file.h"
-#include "hikari/io/scene_json.h"
+#include "hikari/io/files/atomic_file.h"
+#include "hikari/io/files/read_file.h"
+#include "hikari/io/images/image_read.h"
+#include "hikari/io/images/image_write.h"
+#include "hikari/io/scene/scene_json.h"
 
 extern char** environ;
 

@@ -8,8 +8,8 @@
 #include <variant>
 #include <vector>
 
-#include "hikari/io/model_file.h"
-#include "hikari/io/scene_json.h"
+#include "hikari/io/models/model_file.h"
+#include "hikari/io/scene/scene_json.h"
 
 namespace hikari {
 namespace {

@@ -19,7 +19,7 @@
 
 #include "../io/temp_dir.h"
 #include "hikari/core/image.h"
-#include "hikari/io/image_read.h"
+#include "hikari/io/images/image_read.h"
 
 #include "run_hikari.h"
 

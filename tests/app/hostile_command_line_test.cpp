@@ -22,7 +22,7 @@
 #include <gtest/gtest.h>
 
 #include "../io/temp_dir.h"
-#include "hikari/io/atomic_file.h"
+#include "hikari/io/files/atomic_file.h"
 
 namespace {
 

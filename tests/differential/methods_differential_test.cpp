@@ -17,7 +17,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "hikari/io/scene_json.h"
+#include "hikari/io/scene/scene_json.h"
 #include "hikari/methods/registry.h"
 
 namespace hikari {

@@ -7,7 +7,7 @@
 
 #include "../io/temp_dir.h"
 #include "hikari/core/srgb8_encoder.h"
-#include "hikari/io/image_write.h"
+#include "hikari/io/images/image_write.h"
 
 namespace hikari {
 namespace {

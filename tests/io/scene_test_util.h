@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "hikari/core/error.h"
-#include "hikari/io/scene_json.h"
+#include "hikari/io/scene/scene_json.h"
 
 namespace hikari::testing {
 

@@ -21,9 +21,9 @@
 #include "hikari/core/color.h"
 #include "hikari/core/srgb8_encoder.h"
 #include "hikari/frame/depth_cue.h"
-#include "hikari/io/scene_json.h"
-#include "hikari/io/svg_write.h"
-#include "hikari/raster/line_raster.h"
+#include "hikari/io/images/svg_write.h"
+#include "hikari/io/scene/scene_json.h"
+#include "hikari/raster/lines/line_raster.h"
 
 namespace hikari {
 namespace {

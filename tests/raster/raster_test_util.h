@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "hikari/frame/framebuffer.h"
-#include "hikari/io/scene_json.h"
+#include "hikari/io/scene/scene_json.h"
 
 namespace hikari::testing {
 

@@ -20,8 +20,8 @@
 #include <nlohmann/json.hpp>
 
 #include "hikari/frame/image_compare.h"
-#include "hikari/io/read_file.h"
-#include "hikari/io/scene_json.h"
+#include "hikari/io/files/read_file.h"
+#include "hikari/io/scene/scene_json.h"
 #include "hikari/methods/registry.h"
 
 namespace hikari {

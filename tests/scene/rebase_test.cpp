@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "hikari/io/scene_json.h"
+#include "hikari/io/scene/scene_json.h"
 #include "hikari/shading/textures/checker_texture.h"
 
 namespace hikari {

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <string>
 
-#include "hikari/io/obj_loader.h"
+#include "hikari/io/models/obj_loader.h"
 #include "input_error.h"
 
 namespace hikari::testing {

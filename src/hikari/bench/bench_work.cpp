@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "hikari/core/rng.h"
-#include "hikari/io/obj_loader.h"
+#include "hikari/io/models/obj_loader.h"
 
 namespace hikari {
 

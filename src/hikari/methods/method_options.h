@@ -12,7 +12,7 @@
 #include "hikari/core/vec.h"
 #include "hikari/integrators/path/path_tracer.h"
 #include "hikari/integrators/whitted/whitted.h"
-#include "hikari/raster/line_settings.h"
+#include "hikari/raster/lines/line_settings.h"
 #include "hikari/raster/raster_settings.h"
 
 namespace hikari {

@@ -10,9 +10,9 @@
 #include "hikari/frame/subpixel.h"
 #include "hikari/integrators/whitted/whitted.h"
 #include "hikari/raster/depth_sort.h"
-#include "hikari/raster/hidden_line.h"
+#include "hikari/raster/lines/hidden_line.h"
+#include "hikari/raster/lines/wireframe.h"
 #include "hikari/raster/scanline.h"
-#include "hikari/raster/wireframe.h"
 #include "hikari/raster/zbuffer.h"
 #include "hikari/scene/rebase.h"
 

@@ -16,7 +16,7 @@
 #include "hikari/core/rng.h"
 #include "hikari/geometry/ray_offset.h"
 #include "hikari/integrators/whitted/whitted.h"
-#include "hikari/io/scene_json.h"
+#include "hikari/io/scene/scene_json.h"
 #include "recursive_whitted.h"
 
 namespace hikari {

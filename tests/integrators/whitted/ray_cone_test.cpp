@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "hikari/integrators/whitted/whitted.h"
-#include "hikari/io/scene_json.h"
+#include "hikari/io/scene/scene_json.h"
 
 namespace hikari {
 namespace {

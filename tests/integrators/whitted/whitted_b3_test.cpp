@@ -3,7 +3,7 @@
 
 #include "../../io/scene_test_util.h"
 #include "hikari/integrators/whitted/whitted.h"
-#include "hikari/io/scene_json.h"
+#include "hikari/io/scene/scene_json.h"
 
 namespace hikari {
 namespace {

@@ -6,7 +6,7 @@
 #include <tbb/global_control.h>
 
 #include "../../io/scene_test_util.h"
-#include "hikari/io/scene_json.h"
+#include "hikari/io/scene/scene_json.h"
 
 namespace hikari {
 namespace {

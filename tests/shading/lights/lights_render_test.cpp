@@ -15,7 +15,7 @@
 
 #include "../../support/pi.h"
 #include "hikari/integrators/whitted/whitted.h"
-#include "hikari/io/image_write.h"
+#include "hikari/io/images/image_write.h"
 #include "hikari/raster/zbuffer.h"
 
 namespace hikari {

@@ -1,0 +1,61 @@
+#include "hikari/raster/lines/wireframe.h"
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "hikari/core/color.h"
+#include "hikari/core/parallel.h"
+#include "hikari/raster/lines/line_projection.h"
+#include "hikari/raster/lines/line_raster.h"
+
+namespace hikari {
+
+LineDrawing draw_wireframe(const Scene& scene, const LineSettings& lines) {
+    const LineScene ls = prepare_line_scene(scene, lines);
+    const TriangleSet& tris = ls.projected.scene.triangles;
+    std::vector<std::optional<LineSegment>> projected(ls.edges.size());
+    hikari::parallel_for(size_t{0}, ls.edges.size(), [&](size_t k) {
+        const ModelEdge& e = ls.edges[k];
+        if (!(e.own || lines.triangle_edges) ||
+            !edge_has_kept_face(e, ls.back_facing, lines.cull_back_faces))
+            return;
+        projected[k] = project_segment(ls.projected.view, tris.positions[e.v0],
+                                       tris.positions[e.v1], lines.width);
+        if (!projected[k]) return;
+        projected[k]->color = line_color(scene, tris.material[e.faces[0]], lines);
+        projected[k]->id = tris.id[e.faces[0]];
+    });
+    LineDrawing drawing = empty_drawing(scene, lines);
+    for (const std::optional<LineSegment>& s : projected)
+        if (s) drawing.segments.push_back(*s);
+    return drawing;
+}
+
+void overlay_wireframe(const Scene& scene, const LineSettings& lines, Vec3 colour,
+                       std::span<const float> depth, Image& image) {
+    // White lines on black composite to the lines' opacity α in encoded values (each segment
+    // does acc += c (1 − acc)); over the picture the same segments give p (1 − α) + colour α.
+    LineDrawing drawing = draw_wireframe(scene, lines);
+    drawing.background = Vec3(0.0f);
+    for (LineSegment& s : drawing.segments) s.color = Vec3(1.0f);
+    const Framebuffer alpha = rasterize_lines(
+        drawing, Film(image.width, image.height, FilmFormat::linear), !depth.empty());
+    const Image& a = alpha.film.linear();
+    const Vec3 line = encode_srgb(colour);
+    hikari::parallel_for(size_t{0}, image.pixels.size(), [&](size_t i) {
+        const float opacity = linear_to_srgb(a.pixels[i].x);
+        if (opacity <= 0.0f) return;
+        if (!depth.empty() && alpha.depth[i] > depth[i] * (1.0f + k_overlay_depth_tolerance))
+            return;
+        image.pixels[i] =
+            decode_srgb(encode_srgb(image.pixels[i]) * (1.0f - opacity) + line * opacity);
+    });
+}
+
+Framebuffer render_wireframe(const Scene& scene, Film film, const RenderSettings& settings,
+                             const LineSettings& lines) {
+    return rasterize_lines(draw_wireframe(scene, lines), std::move(film), settings.aov_buffers);
+}
+
+}  // namespace hikari
