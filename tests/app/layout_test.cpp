@@ -16,9 +16,9 @@ namespace fs = std::filesystem;
 /// Floors, ground up; folders on one floor may include each other.
 const std::map<std::string, int>& floors() {
     static const std::map<std::string, int> table = {
-        {"core", 0},        {"scene", 1},   {"shading", 2}, {"geometry", 2},
-        {"bvh", 2},         {"frame", 2},   {"io", 2},      {"raster", 3},
-        {"integrators", 3}, {"methods", 4}, {"bench", 4},   {"explain", 4},
+        {"core", 0},  {"scene", 1},   {"shading", 2}, {"geometry", 2},    {"bvh", 2},
+        {"frame", 2}, {"io", 2},      {"raster", 3},  {"integrators", 3}, {"methods", 4},
+        {"bench", 4}, {"explain", 4}, {"session", 5},
     };
     return table;
 }

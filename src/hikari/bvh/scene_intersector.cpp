@@ -150,13 +150,21 @@ bool SceneIntersector::occluded_by_spheres_and_planes(const Ray& ray, Interval r
     return false;
 }
 
-void report_bvh_stats(const SceneIntersector& intersector, RenderStats* stats) {
+std::shared_ptr<const SceneIntersector> scene_intersector(const Scene& scene, BuildCache* cache,
+                                                          bool* built) {
+    return cached_or_built<SceneIntersector>(
+        cache, &scene, "scene intersector", SceneParts::geometry,
+        [&] { return SceneIntersector(scene); }, built);
+}
+
+void report_bvh_stats(const SceneIntersector& intersector, RenderStats* stats, bool built) {
     if (!stats) return;
     const WideBvh& bvh = intersector.bvh();
     stats->bvh_triangles = bvh.triangle_count();
     stats->bvh_nodes = bvh.nodes.size();
     stats->bvh_bytes = bvh.memory_bytes();
-    stats->bvh_build_us = static_cast<uint64_t>(intersector.build_ms() * 1000.0);
+    stats->bvh_build_us = built ? static_cast<uint64_t>(intersector.build_ms() * 1000.0) : 0;
+    stats->bvh_reused = built ? 0 : 1;
     const SphereBvh& spheres = intersector.sphere_bvh();
     stats->bvh_spheres = spheres.sphere_count();
     stats->bvh_sphere_nodes = spheres.tree.nodes.size();

@@ -8,6 +8,7 @@
 #include "hikari/bvh/triangle_hit.h"
 #include "hikari/bvh/wide_bvh.h"
 #include "hikari/bvh/wide_bvh_packet.h"
+#include "hikari/core/build_cache.h"
 #include "hikari/core/ray.h"
 #include "hikari/frame/render_settings.h"
 #include "hikari/geometry/surface_uv.h"
@@ -89,7 +90,14 @@ class SceneIntersector {
     double m_build_ms = 0;
 };
 
-/// The BVH's figures of `intersector` for `--stats` (nothing when `stats` is null).
-void report_bvh_stats(const SceneIntersector& intersector, RenderStats* stats);
+/// The intersector of `scene`: kept in `cache` (built on the first render of a session, reused
+/// until the geometry changes), or built for this render alone (no cache, or another scene
+/// object). `built` says whether this call built it.
+std::shared_ptr<const SceneIntersector> scene_intersector(const Scene& scene, BuildCache* cache,
+                                                          bool* built = nullptr);
+
+/// The BVH's figures of `intersector` for `--stats` (nothing when `stats` is null); `built`
+/// false: it was kept from an earlier render (RenderStats::bvh_reused, no build time).
+void report_bvh_stats(const SceneIntersector& intersector, RenderStats* stats, bool built = true);
 
 }  // namespace hikari

@@ -8,6 +8,8 @@
 
 namespace hikari {
 
+class BuildCache;
+
 /// Progress and cancellation of one render, shared between the render and its caller.
 struct RenderControl {
     std::atomic<uint64_t> work_done{0};   ///< units (tiles, primitives) finished so far
@@ -25,6 +27,7 @@ struct RenderStats {
     std::atomic<uint64_t> bvh_nodes{0};         ///< wide BVH nodes
     std::atomic<uint64_t> bvh_bytes{0};         ///< BVH nodes + triangle data + ids
     std::atomic<uint64_t> bvh_build_us{0};      ///< BVH build wall time, microseconds
+    std::atomic<uint64_t> bvh_reused{0};  ///< 1: the BVH was kept from an earlier render
     std::atomic<uint64_t> bvh_spheres{0};       ///< spheres in the sphere BVH
     std::atomic<uint64_t> bvh_sphere_nodes{0};  ///< its wide nodes
     std::atomic<uint64_t> bvh_sphere_bytes{0};  ///< its nodes + sphere data + ids
@@ -63,6 +66,9 @@ struct RenderSettings {
     /// Fill the framebuffer's depth, id and normal buffers too. False: colour only (ray tracing
     /// then neither allocates nor writes them; raster methods, which need depth, keep them).
     bool aov_buffers = true;
+    /// What earlier renders of the same scene built and kept (core/build_cache.h; a render
+    /// session's); null: the render builds what it needs for itself.
+    BuildCache* cache = nullptr;
 };
 
 }  // namespace hikari

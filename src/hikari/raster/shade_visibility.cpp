@@ -509,10 +509,10 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
     // per light counted against the depth of each pixel's visible point.
     ShadowMaps maps;
     std::vector<std::vector<uint8_t>> in_volume;
-    std::optional<OccluderSet> occluders;
+    std::shared_ptr<const OccluderSet> occluders;
     if (ctx.shadows == ShadowMode::analytic) {
-        occluders.emplace(scene);
-        ctx.occluders = &*occluders;
+        occluders = shadow_occluders(scene, settings.cache);
+        ctx.occluders = occluders.get();
     } else if (ctx.shadows == ShadowMode::map || ctx.shadows == ShadowMode::pcf ||
                ctx.shadows == ShadowMode::pcss) {
         maps = build_shadow_maps(scene, ps.scene, shadow_casting_triangles(scene, ps.scene),

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include <fmt/format.h>
 
@@ -46,10 +47,11 @@ inline uint32_t pixel_seed(size_t pixel) {
 /// Everything a render's paths read.
 class PathIntegrator {
   public:
-    PathIntegrator(const Scene& scene, const PathSettings& settings)
+    PathIntegrator(const Scene& scene, const PathSettings& settings, BuildCache* cache)
         : m_scene(scene),
           m_settings(settings),
-          m_intersector(scene),
+          m_kept_intersector(scene_intersector(scene, cache, &m_built_intersector)),
+          m_intersector(*m_kept_intersector),
           m_emitters(scene),
           m_environment(find_environment(scene.lights)),
           m_has_area_lights(has_area_light(scene.lights)) {
@@ -58,6 +60,8 @@ class PathIntegrator {
     }
 
     const SceneIntersector& intersector() const { return m_intersector; }
+    /// Whether this render built the intersector (false: kept from an earlier render).
+    bool built_intersector() const { return m_built_intersector; }
 
     /// The radiance arriving along `ray`, from one path; `rays` counts the rays it traces.
     Vec3 radiance(Ray ray, SobolSampler& sampler, uint64_t& rays) const {
@@ -188,12 +192,19 @@ class PathIntegrator {
 
     const Scene& m_scene;
     const PathSettings& m_settings;
-    SceneIntersector m_intersector;
+    bool m_built_intersector = true;
+    std::shared_ptr<const SceneIntersector> m_kept_intersector;
+    const SceneIntersector& m_intersector;
     EmitterTable m_emitters;
     const EnvironmentLight* m_environment;
     bool m_has_area_lights;
     std::vector<float> m_scale;  ///< energy_scale per material
 };
+
+/// Whether the caller asked the render to stop.
+bool cancelled(const RenderControl* control) {
+    return control && control->cancel.load(std::memory_order_relaxed);
+}
 
 /// A render's sample sums and how they are scheduled.
 class PathRender {
@@ -202,13 +213,13 @@ class PathRender {
         : m_scene(scene),
           m_settings(settings),
           m_path(path),
-          m_integrator(scene, path),
+          m_integrator(scene, path, settings.cache),
           m_frame(make_camera_frame(scene.camera)),
           m_filter(path.filter, path.filter_width > 0.0f ? path.filter_width
                                                          : default_filter_width(path.filter)),
           m_sums(static_cast<size_t>(scene.camera.width) * scene.camera.height, Vec3(0.0f)) {}
 
-    const SceneIntersector& intersector() const { return m_integrator.intersector(); }
+    const PathIntegrator& integrator() const { return m_integrator; }
 
     /// Samples [first, first + count) of every pixel, added to the sums.
     void add_samples(int first, int count) {
@@ -223,6 +234,9 @@ class PathRender {
                         const size_t pixel = static_cast<size_t>(y) * width + x;
                         Vec3 sum(0.0f);
                         for (int s = first; s < first + count; ++s) {
+                            // A pass of many samples per pixel may outlast the tile's own
+                            // poll: a cancelled render stops within a few samples.
+                            if ((s & 15) == 15 && cancelled(control)) return;
                             const Vec3 value = sample(x, y, pixel, static_cast<uint32_t>(s), rays);
                             if (is_finite(value))
                                 sum += value;
@@ -263,7 +277,7 @@ class PathRender {
                         const Ray ray = camera_ray(m_frame, static_cast<float>(x) + 0.5f,
                                                    static_cast<float>(y) + 0.5f);
                         SurfaceHit hit;
-                        if (intersector().closest(ray, {0.0f, k_infinity}, hit))
+                        if (m_integrator.intersector().closest(ray, {0.0f, k_infinity}, hit))
                             store_hit_aovs(fb, static_cast<size_t>(y) * width + x, ray.direction,
                                            hit);
                     }
@@ -302,7 +316,8 @@ Framebuffer render_path(const Scene& scene, Film film, const RenderSettings& set
     const Camera& cam = scene.camera;
     Framebuffer fb(std::move(film), cam.width, cam.height, settings.aov_buffers);
     PathRender render(scene, settings, path);
-    report_bvh_stats(render.intersector(), settings.stats);
+    report_bvh_stats(render.integrator().intersector(), settings.stats,
+                     render.integrator().built_intersector());
     if (settings.aov_buffers) render.store_aovs(fb);
 
     const int target = std::max(1, path.samples_per_pixel);

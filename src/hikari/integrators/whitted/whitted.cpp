@@ -471,8 +471,11 @@ struct WhittedRender {
     const WhittedSettings& whitted;
     Framebuffer& fb;
     const CameraFrame frame;
-    const SceneIntersector intersector;
-    const std::optional<OccluderSet> occluders;  ///< for analytic area-light shadows
+    bool built_intersector = true;  ///< false: kept from an earlier render (settings.cache)
+    const std::shared_ptr<const SceneIntersector> kept_intersector;
+    const SceneIntersector& intersector;
+    /// For analytic area-light shadows; null without them.
+    const std::shared_ptr<const OccluderSet> occluders;
     const WhittedScene shading;
     const Emitters emitters;
     const PrimaryHitTracer primary;
@@ -484,10 +487,10 @@ struct WhittedRender {
           whitted(w),
           fb(f),
           frame(make_camera_frame(s.camera)),
-          intersector(s),
-          occluders(w.analytic_area_shadows ? std::optional<OccluderSet>(OccluderSet(s))
-                                            : std::nullopt),
-          shading(s, w.light_samples, occluders ? &*occluders : nullptr),
+          kept_intersector(scene_intersector(s, r.cache, &built_intersector)),
+          intersector(*kept_intersector),
+          occluders(w.analytic_area_shadows ? shadow_occluders(s, r.cache) : nullptr),
+          shading(s, w.light_samples, occluders.get()),
           emitters(s),
           primary(intersector, s, frame),
           shader(shading) {}
@@ -653,7 +656,7 @@ Framebuffer render_whitted(const Scene& scene, Film film, const RenderSettings& 
     // first touched by the tiles, in parallel.
     Framebuffer fb(std::move(film), cam.width, cam.height, settings.aov_buffers);
     const WhittedRender render(scene, settings, whitted, fb);
-    report_bvh_stats(render.intersector, settings.stats);
+    report_bvh_stats(render.intersector, settings.stats, render.built_intersector);
     static_assert(k_tile_size <= k_primary_block);
 
     for_each_tile(cam.width, cam.height, settings.control, [&](const Tile& tile) {

@@ -6,11 +6,13 @@
 // seen from the point, and its infinite planes, which clip the light exactly.
 
 #include <functional>
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "hikari/bvh/sphere_bvh.h"
 #include "hikari/bvh/wide_bvh.h"
+#include "hikari/core/build_cache.h"
 #include "hikari/scene/scene.h"
 
 namespace hikari {
@@ -56,5 +58,12 @@ class OccluderSet {
     SphereBvh m_sphere_bvh;         ///< over m_spheres
     std::vector<Plane> m_planes;
 };
+
+/// The shadow casters of `scene`: kept in `cache` until the geometry changes, or built for this
+/// render alone (no cache, or another scene object).
+inline std::shared_ptr<const OccluderSet> shadow_occluders(const Scene& scene, BuildCache* cache) {
+    return cached_or_built<OccluderSet>(cache, &scene, "shadow occluders", SceneParts::geometry,
+                                        [&] { return OccluderSet(scene); });
+}
 
 }  // namespace hikari

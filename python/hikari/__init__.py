@@ -1,0 +1,110 @@
+"""hikari from Python: every rendering method of the lecture, images as NumPy arrays.
+
+    import hikari
+    scene = hikari.Scene.load("scenes/teapot.json")
+    image = scene.render("zbuffer", width=320, shadows="pcf")   # float32 (H, W, 3), linear
+    hikari.write("teapot.png", image)
+
+A Scene is a render session: it is loaded once, and later renders reuse what does not depend
+on the camera (the BVH, ...). Bad input raises hikari.InputError (a ValueError) with the message
+the command line prints; Ctrl-C stops a render (KeyboardInterrupt). See docs/python.md.
+"""
+
+import json as _json
+
+import numpy as _np
+
+from . import _hikari
+from ._hikari import InputError, compare, methods, read, to_srgb8, write
+
+__version__ = _hikari.__version__
+__all__ = ["Scene", "Image", "InputError", "methods", "to_srgb8", "write", "read", "compare"]
+
+
+class Image(_np.ndarray):
+    """A rendered image: a NumPy array (float32, linear values) that shows itself in Jupyter."""
+
+    def _repr_png_(self):
+        import os
+        import tempfile
+
+        picture = self if self.ndim == 3 else _grey_picture(self)
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "image.png")
+            write(path, _np.asarray(picture))
+            with open(path, "rb") as f:
+                return f.read()
+
+
+def _grey_picture(values):
+    """A depth or id buffer as grey values 0..1 over its finite range (background black)."""
+    values = _np.asarray(values, dtype=_np.float32)
+    finite = _np.isfinite(values)
+    if not finite.any():
+        return _np.zeros(values.shape + (3,), _np.float32)
+    low, high = values[finite].min(), values[finite].max()
+    scaled = _np.where(finite, (values - low) / max(high - low, 1e-30), 0.0)
+    return _np.repeat(scaled[..., None], 3, axis=2).astype(_np.float32)
+
+
+class Scene:
+    """A scene loaded once and rendered many times (a render session)."""
+
+    def __init__(self, session):
+        self._session = session
+
+    @classmethod
+    def load(cls, path, **overrides):
+        """Loads a scene file (.json) or a model (.obj .ply .gltf .glb) as `hikari render` does.
+
+        Keywords as the command line's: set={"materials.clay.shininess": 5} (or a list of
+        "PATH=VALUE"), ground=True, crease_angle=30, camera_from=(x, y, z), look_at=(x, y, z).
+        """
+        return cls(_hikari.Scene.load(str(path), **overrides))
+
+    @classmethod
+    def from_dict(cls, scene, base_dir="."):
+        """A scene from the scene format as Python data (dicts and lists, docs/scene-format.md)."""
+        return cls(_hikari.Scene.from_json(_json.dumps(scene), str(base_dir), "scene"))
+
+    @classmethod
+    def default(cls):
+        """The lecture's assignment: a Phong-shaded sphere."""
+        return cls(_hikari.Scene.default())
+
+    def set(self, path, value):
+        """Changes one value by its JSON path, as --set does: set("materials.clay.shininess", 5)."""
+        self._session.set(path, value)
+
+    def render(self, method="raytrace", width=None, height=None, aov="color", camera=None,
+               threads=None, progress=None, **method_options):
+        """Renders with `method` (see hikari.methods()): an Image, float32 linear values,
+        (H, W, 3) for colour, normals and algorithm AOVs, (H, W) for depth and ids.
+
+        camera: a dict with any of eye, look_at, up, fov_y, projection, view_height, width,
+        height. progress: called with the fraction done. Method options as keywords:
+        spp=16, shadows="pcf", max_depth=3, line_color=(0.1, 0.1, 0.2), ...
+        """
+        array = self._session.render(method, width, height, aov, camera, threads, progress,
+                                     **method_options)
+        return array.view(Image)
+
+    @property
+    def camera(self):
+        """The scene's camera as a dict (eye, look_at, up, projection, fov_y, ...)."""
+        return self._session.camera
+
+    @property
+    def info(self):
+        """What the scene holds: triangles, spheres, planes, lights, materials."""
+        return self._session.info
+
+    @property
+    def warnings(self):
+        """What loading had to say, one line each."""
+        return self._session.warnings
+
+    @property
+    def kept_structures(self):
+        """How many camera-independent structures the session keeps built."""
+        return self._session.kept_structures

@@ -1,0 +1,276 @@
+// hikari.Scene: a render session (session/session.h) for Python. A render runs on its own
+// thread while the calling thread waits with the GIL released, so other Python threads run,
+// Ctrl-C (KeyboardInterrupt) stops it within a tenth of a second, and the progress callback is
+// called on the caller's thread.
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <future>
+#include <string>
+#include <thread>
+
+#include <pybind11/stl.h>
+#include <nlohmann/json.hpp>
+
+#include "bindings.h"
+#include "hikari/core/error.h"
+#include "hikari/methods/method_option_text.h"
+#include "hikari/session/session.h"
+#include "scene_words.h"
+
+namespace hikari::python {
+
+namespace {
+
+/// A Python value (number, string, bool, list, dict) as JSON, through Python's own json module.
+nlohmann::json json_value(const py::handle& value) {
+    const std::string text = py::module_::import("json").attr("dumps")(value).cast<std::string>();
+    return nlohmann::json::parse(text);
+}
+
+/// `--set PATH=VALUE` from a Python path and value.
+SceneOverride scene_edit(const std::string& path, const py::handle& value) {
+    SceneOverride edit{path + "=" + py::str(value).cast<std::string>(), path, json_value(value)};
+    if (path.empty()) throw InputError("set: the path is empty");
+    return edit;
+}
+
+/// A method option's value as the command line writes it: 16, 0.5, map, 0.1,0.2,0.3.
+std::string option_text(const py::handle& value) {
+    if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+    if (py::isinstance<py::bool_>(value)) throw InputError("a method option is not a bool");
+    if (py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value))
+        return py::repr(value).cast<std::string>();
+    if (py::isinstance<py::sequence>(value)) {
+        std::string text;
+        for (const py::handle item : value.cast<py::sequence>())
+            text += (text.empty() ? "" : ",") + option_text(item);
+        return text;
+    }
+    throw InputError("a method option takes a number, a word or a list of numbers");
+}
+
+Vec3 vec3_of(const py::handle& value, const char* what) {
+    const auto v = value.cast<std::vector<float>>();
+    if (v.size() != 3) throw InputError(std::string("camera.") + what + ": expected 3 numbers");
+    return {v[0], v[1], v[2]};
+}
+
+/// `camera` (a dict with any of eye, look_at, up, fov_y, projection, view_height, width, height)
+/// over `base`.
+Camera camera_of(const py::dict& camera, Camera base) {
+    for (const auto& [key_handle, value] : camera) {
+        const std::string key = py::str(key_handle);
+        if (key == "eye")
+            base.eye = vec3_of(value, "eye");
+        else if (key == "look_at")
+            base.look_at = vec3_of(value, "look_at");
+        else if (key == "up")
+            base.up = vec3_of(value, "up");
+        else if (key == "fov_y")
+            base.fov_y_degrees = value.cast<float>();
+        else if (key == "view_height")
+            base.view_height = value.cast<float>();
+        else if (key == "width")
+            base.width = value.cast<int>();
+        else if (key == "height")
+            base.height = value.cast<int>();
+        else if (key == "projection") {
+            const std::string p = py::str(value);
+            if (p != "perspective" && p != "orthographic")
+                throw InputError("camera.projection: expected perspective or orthographic");
+            base.projection =
+                p == "perspective" ? Projection::perspective : Projection::orthographic;
+        } else
+            throw InputError("camera: unknown key '" + key +
+                             "' (keys: eye, look_at, up, fov_y, projection, view_height, width, "
+                             "height)");
+    }
+    if (!(base.fov_y_degrees > 0.0f && base.fov_y_degrees < 180.0f))
+        throw InputError("camera.fov_y: expected degrees between 0 and 180");
+    if (!(base.view_height > 0.0f))
+        throw InputError("camera.view_height: expected a positive number");
+    if (base.width < 1 || base.height < 1 || base.width > 65536 || base.height > 65536)
+        throw InputError("camera: width and height must be 1 to 65536 pixels");
+    return base;
+}
+
+py::dict camera_dict(const Camera& c) {
+    py::dict d;
+    d["eye"] = py::make_tuple(c.eye.x, c.eye.y, c.eye.z);
+    d["look_at"] = py::make_tuple(c.look_at.x, c.look_at.y, c.look_at.z);
+    d["up"] = py::make_tuple(c.up.x, c.up.y, c.up.z);
+    d["projection"] = c.projection == Projection::perspective ? "perspective" : "orthographic";
+    d["fov_y"] = c.fov_y_degrees;
+    d["view_height"] = c.view_height;
+    d["width"] = c.width;
+    d["height"] = c.height;
+    return d;
+}
+
+/// Runs `work` on its own thread while this one waits without the GIL; every 20 ms it takes the
+/// GIL to let Python handle signals (Ctrl-C cancels `token`) and to report progress.
+template <class Work>
+auto run_interruptible(Work&& work, const CancelToken& token, const std::atomic<double>& fraction,
+                       const py::object& progress) {
+    auto future = std::async(std::launch::async, std::forward<Work>(work));
+    bool interrupted = false;
+    double reported = -1.0;
+    while (true) {
+        {
+            py::gil_scoped_release unlocked;
+            if (future.wait_for(std::chrono::milliseconds(20)) == std::future_status::ready) break;
+        }
+        if (!interrupted && PyErr_CheckSignals() != 0) {
+            interrupted = true;  // the pending exception (KeyboardInterrupt) is raised below
+            token.cancel();
+        }
+        if (!interrupted && !progress.is_none() && fraction.load() != reported) {
+            reported = fraction.load();
+            try {
+                progress(reported);
+            } catch (...) {
+                token.cancel();
+                py::gil_scoped_release unlocked;
+                future.wait();
+                throw;
+            }
+        }
+    }
+    if (interrupted) {
+        try {
+            future.get();
+        } catch (...) {  // the render's own report of the interruption
+        }
+        throw py::error_already_set();
+    }
+    return future.get();
+}
+
+py::object render(Session& session, const std::string& method, std::optional<int> width,
+                  std::optional<int> height, const std::string& aov, const py::object& camera,
+                  std::optional<int> threads, const py::object& progress,
+                  const py::kwargs& options) {
+    RenderRequest request;
+    request.method = method;
+    const Method& chosen = method_named(method);
+    const std::optional<Aov> buffer = aov_named(aov);
+    if (!buffer) throw InputError("aov: '" + aov + "' is not an AOV (see hikari.methods())");
+    request.aov = *buffer;
+    request.algorithm_counts = true;
+    if (!camera.is_none())
+        request.camera = camera_of(camera.cast<py::dict>(), session.scene().camera);
+    if (width && *width < 1) throw InputError("width: expected a positive number of pixels");
+    if (height && *height < 1) throw InputError("height: expected a positive number of pixels");
+    request.width = width.value_or(0);
+    request.height = height.value_or(0);
+    if (threads && *threads < 0) throw InputError("threads: expected 0 (every core) or more");
+    request.threads = threads.value_or(0);
+    for (const auto& [name, value] : options)
+        set_method_option(request.options, chosen, py::str(name).cast<std::string>(),
+                          option_text(value));
+    const CancelToken token;
+    request.cancel = token;
+    std::atomic<double> fraction{0.0};
+    request.progress = [&fraction](const RenderProgress& p) { fraction.store(p.fraction); };
+    RenderResult result =
+        run_interruptible([&] { return session.render(request); }, token, fraction, progress);
+    if (result.algorithm_picture) return image_array(std::move(*result.algorithm_picture));
+    return framebuffer_array(std::move(result.framebuffer), request.aov);
+}
+
+SceneSource file_source(const std::string& path, const py::object& set, bool ground,
+                        std::optional<float> crease_angle, const py::object& camera_from,
+                        const py::object& look_at) {
+    SceneSource source;
+    source.file = path;
+    source.ground = ground;
+    source.crease_angle = crease_angle;
+    if (py::isinstance<py::dict>(set))
+        for (const auto& [p, v] : set.cast<py::dict>())
+            source.overrides.push_back(scene_edit(py::str(p), v));
+    else if (!set.is_none())
+        for (const py::handle item : set.cast<py::sequence>())
+            source.overrides.push_back(parse_scene_override(py::str(item).cast<std::string>()));
+    if (!camera_from.is_none()) source.overrides.push_back(scene_edit("camera.eye", camera_from));
+    if (!look_at.is_none()) source.overrides.push_back(scene_edit("camera.look_at", look_at));
+    return source;
+}
+
+/// A session loaded with the GIL released (a large model takes a while).
+std::unique_ptr<Session> load_session(SceneSource source) {
+    py::gil_scoped_release unlocked;
+    return std::make_unique<Session>(std::move(source));
+}
+
+py::dict scene_info(const Session& session) {
+    const Scene& s = session.scene();
+    py::dict d;
+    d["triangles"] = s.triangles.size();
+    d["spheres"] = s.spheres.size();
+    d["planes"] = s.planes.size();
+    d["lights"] = s.lights.size();
+    py::list materials;
+    for (const Material& m : s.materials) materials.append(m.name);
+    d["materials"] = materials;
+    return d;
+}
+
+}  // namespace
+
+void bind_scene(py::module_& m) {
+    py::class_<Session>(m, "Scene",
+                        "A scene loaded once and rendered many times: later renders reuse its BVH "
+                        "and what else does not depend on the camera.")
+        .def_static(
+            "load",
+            [](const std::string& path, const py::object& set, bool ground,
+               std::optional<float> crease_angle, const py::object& camera_from,
+               const py::object& look_at) {
+                return load_session(
+                    file_source(path, set, ground, crease_angle, camera_from, look_at));
+            },
+            py::arg("path"), py::kw_only(), py::arg("set") = py::none(), py::arg("ground") = false,
+            py::arg("crease_angle") = py::none(), py::arg("camera_from") = py::none(),
+            py::arg("look_at") = py::none(),
+            "Loads a scene file (.json) or a model (.obj .ply .gltf .glb, framed with default "
+            "lights), as `hikari render` does; `set` takes {'path': value} or ['PATH=VALUE'].")
+        .def_static(
+            "from_json",
+            [](const std::string& text, const std::string& base_dir, const std::string& name) {
+                SceneSource source;
+                source.file = name;
+                source.json_text = text;
+                source.base_dir = base_dir;
+                return load_session(std::move(source));
+            },
+            py::arg("text"), py::arg("base_dir") = ".", py::arg("name") = "scene",
+            "A scene from scene-format JSON text (docs/scene-format.md); relative file paths are "
+            "read from base_dir.")
+        .def_static(
+            "default", [] { return load_session({}); },
+            "The default scene: the lecture's assignment, a Phong-shaded sphere.")
+        .def(
+            "set",
+            [](Session& s, const std::string& path, const py::object& value) {
+                const SceneOverride edit = scene_edit(path, value);
+                py::gil_scoped_release unlocked;
+                s.set(edit);
+            },
+            py::arg("path"), py::arg("value"),
+            "Changes one value by its JSON path, as --set does (`materials.clay.shininess`, 5).")
+        .def("render", &render, py::arg("method") = "raytrace", py::arg("width") = py::none(),
+             py::arg("height") = py::none(), py::arg("aov") = "color",
+             py::arg("camera") = py::none(), py::arg("threads") = py::none(),
+             py::arg("progress") = py::none(),
+             "Renders the scene: float32 linear values, (H, W, 3) for colour and normals, (H, W) "
+             "for depth and ids. Method options as keywords (spp=16, shadows='pcf').")
+        .def_property_readonly("camera",
+                               [](const Session& s) { return camera_dict(s.scene().camera); })
+        .def_property_readonly("warnings", &Session::load_warnings)
+        .def_property_readonly("load_seconds", &Session::load_seconds)
+        .def_property_readonly("kept_structures", &Session::kept_structures)
+        .def_property_readonly("info", &scene_info);
+}
+
+}  // namespace hikari::python
