@@ -27,7 +27,7 @@ struct RenderStats {
     std::atomic<uint64_t> bvh_nodes{0};         ///< wide BVH nodes
     std::atomic<uint64_t> bvh_bytes{0};         ///< BVH nodes + triangle data + ids
     std::atomic<uint64_t> bvh_build_us{0};      ///< BVH build wall time, microseconds
-    std::atomic<uint64_t> bvh_reused{0};  ///< 1: the BVH was kept from an earlier render
+    std::atomic<uint64_t> bvh_reused{0};        ///< 1: the BVH was kept from an earlier render
     std::atomic<uint64_t> bvh_spheres{0};       ///< spheres in the sphere BVH
     std::atomic<uint64_t> bvh_sphere_nodes{0};  ///< its wide nodes
     std::atomic<uint64_t> bvh_sphere_bytes{0};  ///< its nodes + sphere data + ids
