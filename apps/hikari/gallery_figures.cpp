@@ -93,8 +93,8 @@ void render_culling(const Gallery& g, Figure& f) {
     const double ms = stat_after(stats, R"(render ([0-9.]+) ms)");
     f.note = {fmt::format("--stats: {:.0f} of {:.0f} triangles culled; render {:.1f} ms (one run)",
                           culled, in, ms),
-              fmt::format("--stats：{:.0f} 枚中 {:.0f} 枚をカリング、描画 {:.1f} ms（1回の計測）", in,
-                          culled, ms)};
+              fmt::format("--stats：{:.0f} 枚中 {:.0f} 枚をカリング、描画 {:.1f} ms（1回の計測）",
+                          in, culled, ms)};
     if (f.image != "fig4-3-cull-none.png") return;
     const size_t differ = differing_pixels(g.dir / "fig4-3-cull-back.png", g.dir / f.image);
     f.note.en += fmt::format(
@@ -128,9 +128,9 @@ void render_zbuffer(const Gallery& g, Figure& f) {
     g.render(f.scene, {"-m", "scanline", "--aov", "id"}, "data/scanline-id.pfm");
     const double agree =
         100.0 * id_agreement(g.data() / "zbuffer-id.pfm", g.data() / "scanline-id.pfm");
-    f.note = {fmt::format("id buffers of scanline and zbuffer agree on {:.3f}% of pixels", agree),
-              fmt::format("スキャンライン法とZバッファ法のID バッファは {:.3f}% の画素で一致",
-                          agree)};
+    f.note = {
+        fmt::format("id buffers of scanline and zbuffer agree on {:.3f}% of pixels", agree),
+        fmt::format("スキャンライン法とZバッファ法のID バッファは {:.3f}% の画素で一致", agree)};
 }
 
 /// Fig 4.24b: every surface in its flat colour times the fraction of its diffuse light that
@@ -153,8 +153,7 @@ void render_shadows_only(const Gallery& g, Figure& f) {
     write_image(g.dir / f.image, picture);
     f.commands = {command_line("model-flat.json", flat, "flat.pfm"),
                   command_line(f.scene, lit, "lit.pfm"), command_line(f.scene, open, "open.pfm")};
-    f.note = {"the picture: flat × lit ÷ open, per pixel",
-              "画像 = flat × lit ÷ open（画素ごと）"};
+    f.note = {"the picture: flat × lit ÷ open, per pixel", "画像 = flat × lit ÷ open（画素ごと）"};
 }
 
 /// Fig 4.29d: the colour, and how closely the three term AOVs add up to it (float files).
@@ -207,31 +206,31 @@ void plan_fig41(Gallery& g, const Json& m) {
 void plan_culling(Gallery& g) {
     const Text s43 = {"Fig 4.3, 4.4: back-face culling (D = V·N) and its limit",
                       "図4.3, 4.4: バックフェースカリング（D = V·N）とその限界"};
-    g.add(s43, "Fig 4.3",
-          {"culling on: triangles facing away from the eye are dropped before rasterizing",
-           "カリングあり：視点に背を向けた三角形をラスタ化の前に捨てる"},
-          "fig4-3-cull-back.png", "model.json",
-          {"-m", "zbuffer", "--cull", "back", "--shadows", "none"})
-        .make = render_culling;
-    g.add(s43, "Fig 4.3",
-          {"culling off: every triangle is rasterized; the Z-buffer hides the back faces anyway",
-           "カリングなし：全三角形をラスタ化（裏向きの面はZバッファが隠す）"},
-          "fig4-3-cull-none.png", "model.json",
-          {"-m", "zbuffer", "--cull", "none", "--shadows", "none"})
-        .make = render_culling;
+    const std::vector<std::pair<std::string, Text>> culling = {
+        {"back",
+         {"culling on: triangles facing away from the eye are dropped before rasterizing",
+          "カリングあり：視点に背を向けた三角形をラスタ化の前に捨てる"}},
+        {"none",
+         {"culling off: every triangle is rasterized; the Z-buffer hides the back faces anyway",
+          "カリングなし：全三角形をラスタ化（裏向きの面はZバッファが隠す）"}}};
+    for (const auto& [mode, title] : culling)
+        g.add(s43, "Fig 4.3", title, "fig4-3-cull-" + mode + ".png", "model.json",
+              {"-m", "zbuffer", "--cull", mode, "--shadows", "none"})
+            .make = render_culling;
     g.files["u-block.obj"] = concave_block_obj();
     g.scene_files["u-block.json"] = concave_block_scene("u-block.obj", g.width);
     const std::vector<std::string> ink = {"--line-color", "0.1,0.12,0.2"};
-    g.add(s43, "Fig 4.4", {"a concave polyhedron (a U-shaped block), shaded", "凹多面体（U字形のブロック）"},
+    g.add(s43, "Fig 4.4",
+          {"a concave polyhedron (a U-shaped block), shaded", "凹多面体（U字形のブロック）"},
           "fig4-4-shaded.png", "u-block.json", {"-m", "zbuffer", "--shadows", "none"});
     g.add(s43, "Fig 4.4",
           {"back-face culling alone (wireframe --cull back): the edges of every front face are "
            "drawn, also where the U's right arm hides the left arm's inner face",
            "バックフェースカリングだけ：表向きの面の辺がすべて描かれ、右腕に隠れる左腕の内側の面"
            "の辺まで見えてしまう"},
-          "fig4-4-cull-only.png", "u-block.json", {"-m", "wireframe", "--cull", "back", ink[0], ink[1]});
-    g.add(s43, "Fig 4.4",
-          {"hidden-line removal: only what is seen", "隠線消去：見える線だけ"},
+          "fig4-4-cull-only.png", "u-block.json",
+          {"-m", "wireframe", "--cull", "back", ink[0], ink[1]});
+    g.add(s43, "Fig 4.4", {"hidden-line removal: only what is seen", "隠線消去：見える線だけ"},
           "fig4-4-hidden-line.png", "u-block.json", {"-m", "hiddenline", ink[0], ink[1]});
 }
 
@@ -239,7 +238,8 @@ void plan_depth_sort(Gallery& g) {
     const Text s = {"Fig 4.7, 4.9: the depth sort and where it fails",
                     "図4.7, 4.9: 奥行きソート法とその限界"};
     const std::vector<std::tuple<std::string, std::string, Text, Text>> sorts = {
-        {"Fig 4.7", "depth-sort-centroid.json",
+        {"Fig 4.7",
+         "depth-sort-centroid.json",
          {"depthsort-naive (centroid order): the small orange triangle's centroid is the nearer, "
           "so it is painted last, over the near end of the blue triangle that hides it",
           "重心で順位を決めた奥行きソート（depthsort-naive）：オレンジの三角形の重心の方が近いの"
@@ -248,13 +248,15 @@ void plan_depth_sort(Gallery& g) {
           "the two do not touch",
           "depthsort（Newellらの判定）：青い三角形の手前の端がオレンジの上部を隠す（2枚は交わら"
           "ない）"}},
-        {"Fig 4.9a", "depth-sort-cyclic.json",
+        {"Fig 4.9a",
+         "depth-sort-cyclic.json",
          {"depthsort-naive: three bars in cyclic overlap; any order of whole bars gets one "
           "crossing wrong",
           "三すくみの場合（depthsort-naive）：どの順に描いても1か所の重なりが誤る"},
          {"depthsort: one bar is split, which breaks the cycle",
           "depthsort：1本を分割して循環を断つ"}},
-        {"Fig 4.9b", "depth-sort-piercing.json",
+        {"Fig 4.9b",
+         "depth-sort-piercing.json",
          {"depthsort-naive: two triangles piercing each other; one is painted whole over the "
           "other",
           "貫通している場合（depthsort-naive）：一方が他方の上に丸ごと描かれる"},
@@ -382,8 +384,8 @@ void plan_lights(Gallery& g, const Json& m) {
 
 void plan_ray_tracing(Gallery& g) {
     const Text s = {"Fig 4.16, 4.43: ray tracing", "図4.16, 4.43: レイトレーシング法"};
-    g.scene_files["whitted.json"] = resized(repository_scene("whitted.json"), g.width,
-                                            g.width * 9 / 16);
+    g.scene_files["whitted.json"] =
+        resized(repository_scene("whitted.json"), g.width, g.width * 9 / 16);
     g.add(s, "Fig 4.16",
           {"ray tracing: reflection, refraction, shadows", "レイトレーシング法：反射・屈折・影"},
           "fig4-16-raytrace.png", "whitted.json", {"-m", "raytrace"});

@@ -45,7 +45,7 @@ struct Gallery {
     int threads = 0;
     bool japanese = false;
     std::vector<Figure> figures;
-    std::map<std::string, Json> scene_files;  ///< scenes/NAME → the scene
+    std::map<std::string, Json> scene_files;   ///< scenes/NAME → the scene
     std::map<std::string, std::string> files;  ///< scenes/NAME → other text (OBJ models)
 
     std::filesystem::path scenes() const { return dir / "scenes"; }
@@ -60,8 +60,8 @@ struct Gallery {
     double render(const std::string& scene, const std::vector<std::string>& args,
                   const std::string& output, const std::string& log = {}) const;
     /// Adds a figure rendered by `hikari render scenes/SCENE ARGS -o IMAGE`.
-    Figure& add(Text section, std::string figure, Text title, std::string image,
-                std::string scene, std::vector<std::string> args);
+    Figure& add(Text section, std::string figure, Text title, std::string image, std::string scene,
+                std::vector<std::string> args);
 };
 
 /// "hikari render scenes/SCENE ARGS -o OUTPUT", as printed under a figure.

@@ -37,17 +37,15 @@ Json camera(Json eye, Json at, float fov_y, int width, int height) {
 
 /// The U of Fig 4.9c and Fig 4.4 seen from +z, counter-clockwise: arms 0.8 wide, a notch 1.4
 /// wide and 2 deep, 3 × 3 in all.
-constexpr float k_u_outline[8][2] = {{-1.5f, -1.5f}, {1.5f, -1.5f}, {1.5f, 1.5f},
-                                     {0.7f, 1.5f},   {0.7f, -0.5f}, {-0.7f, -0.5f},
-                                     {-0.7f, 1.5f},  {-1.5f, 1.5f}};
+constexpr float k_u_outline[8][2] = {{-1.5f, -1.5f}, {1.5f, -1.5f},  {1.5f, 1.5f},  {0.7f, 1.5f},
+                                     {0.7f, -0.5f},  {-0.7f, -0.5f}, {-0.7f, 1.5f}, {-1.5f, 1.5f}};
 
 }  // namespace
 
 PlacedModel place_model(const std::filesystem::path& model, const std::string& file_in_scenes) {
     // The mesh loaded as a scene's one object, as every figure will load it.
     const std::string probe =
-        Json{{"objects",
-              {{{"type", "mesh"}, {"file", std::filesystem::absolute(model).string()}}}}}
+        Json{{"objects", {{{"type", "mesh"}, {"file", std::filesystem::absolute(model).string()}}}}}
             .dump();
     std::vector<std::string> warnings;
     const Scene scene =
@@ -210,13 +208,13 @@ Json concave_polygon_scene(const std::string& obj_file, int width) {
             {"objects",
              {{{"type", "mesh"}, {"file", obj_file}, {"material", "u"}},
               bar(vec(-2.5f, 0.2f, -10.3f), vec(2.5f, 0.2f, -10.3f), vec(2.5f, 0.8f, -10.3f)),
-              bar(vec(-2.5f, 0.2f, -10.3f), vec(2.5f, 0.8f, -10.3f),
-                  vec(-2.5f, 0.8f, -10.3f))}}};
+              bar(vec(-2.5f, 0.2f, -10.3f), vec(2.5f, 0.8f, -10.3f), vec(-2.5f, 0.8f, -10.3f))}}};
 }
 
 std::string concave_block_obj() {
     // The U extruded from z = 0.5 (front, vertices 1–8) to z = −0.5 (back, 9–16).
-    std::string obj = "# Fig 4.4: a U-shaped block, a concave polyhedron, written by hikari gallery\n";
+    std::string obj =
+        "# Fig 4.4: a U-shaped block, a concave polyhedron, written by hikari gallery\n";
     for (const float z : {0.5f, -0.5f})
         for (const auto& p : k_u_outline) obj += fmt::format("v {} {} {}\n", p[0], p[1], z);
     obj += "f 1 2 3 4 5 6 7 8\nf 16 15 14 13 12 11 10 9\n";
@@ -229,16 +227,17 @@ std::string concave_block_obj() {
 }
 
 Json concave_block_scene(const std::string& obj_file, int width) {
-    return {{"description", "Fig 4.4: a U-shaped block, a concave polyhedron"},
-            {"camera", camera(vec(5.5f, 1.2f, 3), vec(0, 0, 0), 40, width / 2, width / 2)},
-            {"background", vec(0.95f, 0.95f, 0.92f)},
-            {"ambient", vec(0.3f, 0.3f, 0.3f)},
-            {"materials", {{"block", {{"ka", vec(0.6f, 0.7f, 0.9f)}, {"kd", vec(0.6f, 0.7f, 0.9f)}}}}},
-            {"lights",
-             {{{"type", "directional"},
-               {"direction", vec(-0.4f, -1, -0.6f)},
-               {"intensity", vec(0.8f, 0.8f, 0.8f)}}}},
-            {"objects", {{{"type", "mesh"}, {"file", obj_file}, {"material", "block"}}}}};
+    return {
+        {"description", "Fig 4.4: a U-shaped block, a concave polyhedron"},
+        {"camera", camera(vec(5.5f, 1.2f, 3), vec(0, 0, 0), 40, width / 2, width / 2)},
+        {"background", vec(0.95f, 0.95f, 0.92f)},
+        {"ambient", vec(0.3f, 0.3f, 0.3f)},
+        {"materials", {{"block", {{"ka", vec(0.6f, 0.7f, 0.9f)}, {"kd", vec(0.6f, 0.7f, 0.9f)}}}}},
+        {"lights",
+         {{{"type", "directional"},
+           {"direction", vec(-0.4f, -1, -0.6f)},
+           {"intensity", vec(0.8f, 0.8f, 0.8f)}}}},
+        {"objects", {{{"type", "mesh"}, {"file", obj_file}, {"material", "block"}}}}};
 }
 
 }  // namespace hikari::gallery
