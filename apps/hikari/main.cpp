@@ -1315,6 +1315,15 @@ CLI::App* add_gallery_command(CLI::App& app, GalleryOptions& g) {
         ->capture_default_str();
     gallery->add_option("--threads", g.threads, "Render threads (default: all cores)")
         ->check(whole_in(1, 1024));
+    gallery
+        ->add_option("--lang", g.lang,
+                     "Language of the captions: en, or ja (the lecture's own terms)")
+        ->check(CLI::IsMember({"en", "ja"}))
+        ->capture_default_str();
+    gallery
+        ->add_option("--only", g.only,
+                     "Render only these figures, e.g. --only 4.7,4.9c (labels as captioned)")
+        ->delimiter(',');
     return gallery;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "hikari/raster/polygon_fill.h"
@@ -453,6 +454,28 @@ VisibilityBuffer empty_buffer(int width, int height) {
     return out;
 }
 
+/// Per triangle, the polygon (model face) it belongs to, named by one of its triangles: triangles
+/// sharing an edge that is not the face's own (a diagonal of its triangulation) are one polygon.
+std::vector<uint32_t> polygons_of(const TriangleSet& triangles) {
+    std::vector<uint32_t> parent(triangles.size());
+    for (uint32_t t = 0; t < parent.size(); ++t) parent[t] = t;
+    const auto root = [&](uint32_t t) {
+        while (parent[t] != t) t = parent[t] = parent[parent[t]];
+        return t;
+    };
+    std::unordered_map<uint64_t, uint32_t> diagonal;  // vertex pair -> first triangle on it
+    for (uint32_t t = 0; t < triangles.edge_flags.size(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            if ((triangles.edge_flags[t] >> k) & 1) continue;
+            const uint32_t a = triangles.indices[t][k], b = triangles.indices[t][(k + 1) % 3];
+            const uint64_t key = (uint64_t{std::min(a, b)} << 32) | std::max(a, b);
+            const auto [it, first] = diagonal.emplace(key, t);
+            if (!first) parent[root(t)] = root(it->second);
+        }
+    for (uint32_t t = 0; t < parent.size(); ++t) parent[t] = root(t);
+    return parent;
+}
+
 }  // namespace
 
 VisibilityBuffer depth_sort_visibility(std::span<const ScreenTriangle> triangles, int width,
@@ -488,17 +511,19 @@ VisibilityBuffer depth_sort_visibility_traced(std::span<const ScreenTriangle> tr
 }
 
 VisibilityBuffer depth_sort_naive_visibility(std::span<const ScreenTriangle> triangles, int width,
-                                             int height) {
+                                             int height, std::span<const double> polygon_depth) {
     VisibilityBuffer out = empty_buffer(width, height);
     if (out.triangle.empty()) return out;
-    // Fig 4.7: priority by centroid depth alone, farthest first
+    // Fig 4.7: priority by centroid depth alone, farthest first. Without polygon depths the
+    // screen z key (−near / w, larger for farther) of each triangle's corners stands in.
     std::vector<std::pair<double, uint32_t>> order;
     order.reserve(triangles.size());
     for (uint32_t t = 0; t < triangles.size(); ++t) {
         const auto& v = triangles[t].v;
-        const double centroid_z =
-            (double{v[0].position.z} + v[1].position.z + v[2].position.z) / 3.0;
-        if (std::isfinite(centroid_z)) order.emplace_back(centroid_z, t);
+        const double key = polygon_depth.empty()
+                               ? (double{v[0].position.z} + v[1].position.z + v[2].position.z) / 3.0
+                               : polygon_depth[triangles[t].source];
+        if (std::isfinite(key)) order.emplace_back(key, t);
     }
     std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
         return a.first != b.first ? a.first > b.first : a.second < b.second;
@@ -532,9 +557,43 @@ Framebuffer render_depth_sort(const Scene& scene, Film film, const RenderSetting
         });
 }
 
+std::vector<double> polygon_centroid_depths(const TriangleSet& triangles,
+                                            const Mat4& view_from_world) {
+    const size_t n = triangles.size();
+    const std::vector<uint32_t> polygon = polygons_of(triangles);
+    // Area-weighted sums of the triangles' centroid depths: depth is affine in view space, so
+    // the polygon centroid's depth is the area-weighted mean of its triangles'.
+    std::vector<double> area(n, 0.0), weighted(n, 0.0), plain(n, 0.0), count(n, 0.0);
+    std::vector<double> depth_of(n);
+    for (size_t t = 0; t < n; ++t) {
+        const auto& idx = triangles.indices[t];
+        const Vec3 a = triangles.positions[idx[0]], b = triangles.positions[idx[1]],
+                   c = triangles.positions[idx[2]];
+        // View space looks down −z: the eye-space depth of a point is −z_view.
+        const double d = -transform_point(view_from_world, (a + b + c) / 3.0f).z;
+        const double w = 0.5 * length(cross(b - a, c - a));
+        area[polygon[t]] += w;
+        weighted[polygon[t]] += w * d;
+        plain[polygon[t]] += d;
+        count[polygon[t]] += 1;
+    }
+    for (size_t t = 0; t < n; ++t) {
+        const uint32_t p = polygon[t];
+        depth_of[t] = area[p] > 0 ? weighted[p] / area[p] : plain[p] / count[p];
+    }
+    return depth_of;
+}
+
 Framebuffer render_depth_sort_naive(const Scene& scene, Film film, const RenderSettings& settings,
                                     const RasterSettings& raster) {
-    return render_raster(scene, std::move(film), settings, raster, depth_sort_naive_visibility);
+    const ProjectedScene ps = project_scene(scene, raster);
+    const std::vector<double> depths =
+        polygon_centroid_depths(ps.scene.triangles, ps.view.view_from_world);
+    const VisibilityBuffer vis =
+        depth_sort_naive_visibility(std::span<const ScreenTriangle>(ps.triangles),
+                                    scene.camera.width, scene.camera.height, depths);
+    if (settings.stats) report_raster_stats(ps, vis, *settings.stats);
+    return shade_visibility(scene, ps, vis, std::move(film), settings, raster);
 }
 
 }  // namespace hikari

@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "hikari/core/mat4.h"
 #include "hikari/frame/film.h"
 #include "hikari/frame/framebuffer.h"
 #include "hikari/frame/render_settings.h"
@@ -75,11 +76,23 @@ struct DepthSortTrace {
 VisibilityBuffer depth_sort_visibility_traced(std::span<const ScreenTriangle> triangles, int width,
                                               int height, DepthSortTrace& trace);
 
-/// The naive depth sort of Fig 4.7: order whole triangles by the depth of their centroids and paint
-/// back to front, with no overlap tests and no splitting. Wrong wherever that order is (Fig 4.7,
-/// cyclic overlap Fig 4.9a, interpenetration Fig 4.9b); kept to show those failures.
+/// The naive depth sort of Fig 4.7: order whole polygons by the depth of their centroids and
+/// paint back to front, with no overlap tests and no splitting. Wrong wherever that order is
+/// (Fig 4.7, cyclic overlap Fig 4.9a, interpenetration Fig 4.9b, a concave polygon Fig 4.9c);
+/// kept to show those failures. `polygon_depth[s]`, indexed by ScreenTriangle::source, is the
+/// eye-space depth of the centroid of the polygon that source triangle belongs to
+/// (polygon_centroid_depths); empty: each triangle is its own polygon, keyed by the mean of its
+/// corners' screen z.
 VisibilityBuffer depth_sort_naive_visibility(std::span<const ScreenTriangle> triangles, int width,
-                                             int height);
+                                             int height,
+                                             std::span<const double> polygon_depth = {});
+
+/// Per triangle of `scene`, the eye-space depth (distance along the view direction, from
+/// view_from_world) of the centroid (重心, area-weighted) of the polygon it belongs to: the
+/// triangles of one model face, joined across the diagonals its triangulation added (edges
+/// without TriangleSet::edge_flags), are one polygon, as the lecture's painter sorts them.
+std::vector<double> polygon_centroid_depths(const TriangleSet& triangles,
+                                            const Mat4& view_from_world);
 
 /// The `depthsort` method: vertex stage, depth_sort_visibility, shared shading pass.
 Framebuffer render_depth_sort(const Scene& scene, Film film, const RenderSettings& settings = {},

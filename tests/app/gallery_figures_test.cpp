@@ -1,0 +1,231 @@
+// Each figure of `hikari gallery` shows what its caption claims (ARCHITECTURE.md principle 6):
+// the naive and correct depth sorts differ where the caption says, the shading terms add up,
+// depth cueing darkens the far, the walls carry no speckles, and the commands under the
+// figures run as printed from a gallery moved elsewhere.
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "../io/temp_dir.h"
+#include "hikari/core/image.h"
+#include "hikari/io/images/image_read.h"
+#include "run_hikari.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using hikari::Image;
+using hikari::read_image;
+using hikari::Vec3;
+using hikari::testing::run_hikari;
+
+/// Renders the figures `only` names into `dir` (English captions, 200 pixels wide).
+void make_gallery(const fs::path& dir, const std::string& only, const std::string& lang = "en") {
+    const auto r = run_hikari("gallery --width 200 --threads 2 --lang " + lang + " --only " +
+                              "'" + only + "' -o " + dir.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+}
+
+float max_channel_difference(Vec3 a, Vec3 b) {
+    return std::max({std::abs(a.x - b.x), std::abs(a.y - b.y), std::abs(a.z - b.z)});
+}
+
+/// Blue (the bar, the big triangle) or orange (the U, the small triangle) in an 8-bit figure.
+bool bluish(Vec3 c) { return c.z > c.x + 0.2f; }
+bool orangish(Vec3 c) { return c.x > c.z + 0.2f; }
+
+/// Pixels where `naive` shows orange and `right` shows blue, counted in columns [x0, x1).
+size_t orange_over_blue(const Image& naive, const Image& right, int x0, int x1) {
+    size_t n = 0;
+    for (int y = 0; y < naive.height; ++y)
+        for (int x = x0; x < x1; ++x) {
+            const size_t i = static_cast<size_t>(y) * naive.width + x;
+            n += orangish(naive.pixels[i]) && bluish(right.pixels[i]);
+        }
+    return n;
+}
+
+TEST(GalleryFigures, Fig47CentroidOrderPaintsTheFarTriangleOverTheNear) {
+    const hikari::testing::TempDir dir;
+    make_gallery(dir.path(), "4.7");
+    const Image naive = read_image(dir / "depth-sort-centroid-naive.png");
+    const Image right = read_image(dir / "depth-sort-centroid.png");
+    // Where the blue triangle's near end hides the orange one, the naive sort shows orange.
+    EXPECT_GT(orange_over_blue(naive, right, 0, naive.width), 200u);
+    EXPECT_EQ(orange_over_blue(right, naive, 0, naive.width), 0u);
+}
+
+TEST(GalleryFigures, Fig49cConcavePolygonHidesTheBarBehindItsRightArm) {
+    const hikari::testing::TempDir dir;
+    make_gallery(dir.path(), "4.9c");
+    const Image naive = read_image(dir / "depth-sort-concave-naive.png");
+    const Image right = read_image(dir / "depth-sort-concave.png");
+    const int half = naive.width / 2;
+    // The right arm: the naive sort paints the U over the bar there; the left arm: both agree.
+    EXPECT_GT(orange_over_blue(naive, right, half, naive.width), 100u);
+    EXPECT_EQ(orange_over_blue(naive, right, 0, half), 0u);
+    EXPECT_EQ(orange_over_blue(right, naive, 0, naive.width), 0u);
+}
+
+TEST(GalleryFigures, Fig44CullingAloneDrawsHiddenEdges) {
+    const hikari::testing::TempDir dir;
+    make_gallery(dir.path(), "4.4");
+    const Image culled = read_image(dir / "fig4-4-cull-only.png");
+    const Image hidden = read_image(dir / "fig4-4-hidden-line.png");
+    size_t extra_ink = 0, missing_ink = 0;
+    for (size_t i = 0; i < culled.pixels.size(); ++i) {
+        const bool a = culled.pixels[i].x < 0.5f, b = hidden.pixels[i].x < 0.5f;
+        extra_ink += a && !b;
+        missing_ink += b && !a;
+    }
+    EXPECT_GT(extra_ink, 60u);  // the hidden face's edges
+    EXPECT_LT(missing_ink, extra_ink / 4);
+}
+
+TEST(GalleryFigures, Fig41bFarIsDarkNearIsUnchanged) {
+    const hikari::testing::TempDir dir;
+    make_gallery(dir.path(), "4.1b");
+    const std::string scenes = (dir / "scenes/").string();
+    for (const std::string& render :
+         {"model.json -o " + (dir / "plain.pfm").string(),
+          "model.json --aov depth -o " + (dir / "depth.pfm").string(),
+          "model-depth-cue.json -o " + (dir / "cued.pfm").string()}) {
+        const auto r = run_hikari("render " + scenes + render + " -m zbuffer --width 200 -q");
+        ASSERT_EQ(r.status, 0) << r.output;
+    }
+    const Image plain = read_image(dir / "plain.pfm"), depth = read_image(dir / "depth.pfm"),
+                cue = read_image(dir / "cued.pfm");
+    size_t far = 0, near = 0;
+    for (size_t i = 0; i < plain.pixels.size(); ++i) {
+        const float d = depth.pixels[i].x;
+        if (d > 6.5f) {  // beyond `far` (and a blur radius): black
+            ++far;
+            EXPECT_LT(cue.pixels[i].x + cue.pixels[i].y + cue.pixels[i].z, 0.05f) << i;
+        } else if (d < 2.5f && d > 0) {
+            ++near;
+        }
+    }
+    EXPECT_GT(far, 500u);
+    EXPECT_GT(near, 0u);
+}
+
+TEST(GalleryFigures, Fig424bShadowsOnlyIsFlatColourWithCastShadows) {
+    const hikari::testing::TempDir dir;
+    make_gallery(dir.path(), "4.24");
+    const Image shadows = read_image(dir / "fig4-24-shadows.png");
+    const auto flat = run_hikari("render " + (dir / "scenes/model-flat.json").string() +
+                                 " -m raytrace --shadows none -q -o " + (dir / "flat.png").string());
+    ASSERT_EQ(flat.status, 0) << flat.output;
+    const Image colour = read_image(dir / "flat.png");
+    size_t shadowed = 0, coloured = 0, unchanged = 0;
+    for (size_t i = 0; i < shadows.pixels.size(); ++i) {
+        const Vec3 s = shadows.pixels[i], c = colour.pixels[i];
+        shadowed += s.x + s.y + s.z < 0.6f * (c.x + c.y + c.z);
+        unchanged += max_channel_difference(s, c) < 0.01f;
+        coloured += s.x > s.z + 0.15f;  // the model's orange, not white on white
+    }
+    const size_t n = shadows.pixels.size();
+    EXPECT_GT(shadowed, n / 200);
+    EXPECT_GT(unchanged, n / 2);
+    EXPECT_GT(coloured, n / 50);
+}
+
+TEST(GalleryFigures, Fig429TermsFromOneSceneSumToTheColour) {
+    const hikari::testing::TempDir dir;
+    make_gallery(dir.path(), "4.29");
+    const std::string scene = (dir / "scenes/model.json").string();
+    Image sum;
+    for (const char* aov : {"color", "ambient", "diffuse", "specular"}) {
+        const fs::path out = dir / (std::string(aov) + ".pfm");
+        ASSERT_EQ(run_hikari("render " + scene + " -m raytrace --shadows none --width 120 -q " +
+                             "--aov " + aov + " -o " + out.string())
+                      .status,
+                  0);
+        const Image term = read_image(out);
+        if (sum.pixels.empty()) {
+            sum = term;
+            continue;
+        }
+        for (size_t i = 0; i < sum.pixels.size(); ++i) sum.pixels[i] -= term.pixels[i];
+    }
+    for (const Vec3& d : sum.pixels) ASSERT_LT(max_channel_difference(d, Vec3(0.0f)), 1e-4f);
+    // Every figure of Fig 4.29 renders scenes/model.json: one scene.
+    const std::string index = hikari::testing::read_text(dir / "index.html");
+    const std::regex model_scene("render scenes/model\\.json");
+    EXPECT_EQ(std::distance(std::sregex_iterator(index.begin(), index.end(), model_scene),
+                            std::sregex_iterator()),
+              4);
+}
+
+TEST(GalleryFigures, Fig443WallLiesMidCellOfItsSolidChecker) {
+    // On a cell boundary of the solid checker (z a multiple of its size), rounding of each
+    // refracted ray's hit picks either cell's colour: wrong-colour speckles on the ball's rim.
+    const hikari::testing::TempDir dir;
+    make_gallery(dir.path(), "4.43");
+    for (const char* ior : {"1", "1.33", "1.5", "2.4"}) {
+        const std::string text = hikari::testing::read_text(
+            dir / (std::string("scenes/refraction-") + ior + ".json"));
+        const auto scene = nlohmann::json::parse(text);
+        const float size = scene["materials"]["wall"]["texture"]["size"].get<float>();
+        const float z = scene["objects"][1]["point"][2].get<float>();
+        const float cells = z / size;
+        EXPECT_NEAR(cells - std::floor(cells), 0.5f, 0.1f) << ior;
+    }
+}
+
+TEST(GalleryFigures, Fig43CaptionsCountCulledTrianglesAndChangedPixels) {
+    const hikari::testing::TempDir dir;
+    make_gallery(dir.path(), "4.3");
+    const std::string index = hikari::testing::read_text(dir / "index.html");
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(index, m, std::regex("([0-9]+) of ([0-9]+) triangles culled")));
+    EXPECT_GT(std::stoi(m[1].str()), 0);
+    ASSERT_TRUE(std::regex_search(index, m, std::regex("([0-9]+) pixels differ from culling on")));
+    const Image a = read_image(dir / "fig4-3-cull-back.png"),
+                b = read_image(dir / "fig4-3-cull-none.png");
+    size_t differ = 0;
+    for (size_t i = 0; i < a.pixels.size(); ++i) differ += a.pixels[i] != b.pixels[i];
+    EXPECT_EQ(std::to_string(differ), m[1].str());
+}
+
+TEST(GalleryFigures, CaptionsInJapaneseUseTheLecturesTermsAndNeverRepeatTheirNumber) {
+    const hikari::testing::TempDir dir;
+    make_gallery(dir.path(), "4.1a,4.1b,4.1c,4.1d,4.1e,4.1f,4.7,Alg 4.1,Alg 4.2,4.24", "ja");
+    const std::string index = hikari::testing::read_text(dir / "index.html");
+    for (const char* term : {"ワイヤフレーム", "デプスキューイング", "隠線消去", "陰影の付加",
+                             "影付け", "模様の付加", "奥行きソート法", "スキャンライン法",
+                             "Zバッファ法", "シャドウマッピング", "図4.7"})
+        EXPECT_NE(index.find(term), std::string::npos) << term;
+    EXPECT_FALSE(std::regex_search(index, std::regex("<b>([^<]+)</b>: \\1")));
+    EXPECT_FALSE(std::regex_search(index, std::regex("Fig [0-9.a-z]+: Fig")));
+}
+
+TEST(GalleryFigures, CommandsRunAsPrintedFromAMovedGallery) {
+    const hikari::testing::TempDir dir;
+    make_gallery(dir.path() / "made", "4.9c,4.24,4.1a");
+    fs::rename(dir / "made", dir / "moved");  // nothing may point back into the first folder
+    const std::string index = hikari::testing::read_text(dir / "moved/index.html");
+    const std::regex code("<code>hikari (render [^<]+)</code>");
+    size_t ran = 0;
+    for (auto it = std::sregex_iterator(index.begin(), index.end(), code);
+         it != std::sregex_iterator(); ++it, ++ran) {
+        const std::string command = "cd '" + (dir / "moved").string() + "' && " +
+                                    HIKARI_CLI_PATH + " " + (*it)[1].str() + " -q";
+        const int status = std::system(command.c_str());
+        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << command;
+    }
+    EXPECT_GE(ran, 7u);
+}
+
+}  // namespace
