@@ -45,10 +45,16 @@ void note_stdout_failure(int error) noexcept {
 
 int finish_standard_output(int status) noexcept {
     errno = 0;
-    if (std::fflush(stdout) != 0 || std::ferror(stdout)) note_stdout_failure(errno != 0 ? errno : EIO);
+    // A write that failed inside a stream flush (std::cout's, CLI11's --help) leaves the stream's
+    // error flag but not its reason.
+    if (std::fflush(stdout) != 0 || std::ferror(stdout))
+        note_stdout_failure(errno != 0 ? errno : -1);
     if (g_stdout_error == 0 || status != 0) return status;
-    print_err("hikari: error: cannot write to standard output: {}\n",
-              std::strerror(g_stdout_error));
+    if (g_stdout_error < 0)
+        print_err("hikari: error: cannot write to standard output\n");
+    else
+        print_err("hikari: error: cannot write to standard output: {}\n",
+                  std::strerror(g_stdout_error));
     return 1;
 }
 

@@ -24,7 +24,7 @@ void write_err(std::string_view text) noexcept;
 /// Writes `text` to stdout; a failed write is remembered for finish_standard_output.
 void write_out(std::string_view text) noexcept;
 
-/// Remembers a write to stdout that failed before reaching it (`error`: an errno value).
+/// Remembers a failed write to stdout (`error`: an errno value, or -1 when the reason is lost).
 void note_stdout_failure(int error) noexcept;
 
 /// fmt::print(stderr, ...) that never throws.
@@ -48,7 +48,7 @@ void print_out(fmt::format_string<Args...> format, Args&&... args) noexcept {
 
 /// Flushes stdout and returns the command's exit status: `status`, or 1 when a command that
 /// otherwise succeeded could not write all it printed there (with `hikari: error: cannot write
-/// to standard output: <reason>` on stderr).
+/// to standard output: <reason>` on stderr, the reason where it is known).
 int finish_standard_output(int status) noexcept;
 
 }  // namespace hikari::cli

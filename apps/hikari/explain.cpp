@@ -1,12 +1,46 @@
 #include "explain.h"
 
+#include <string_view>
+
+#include <fmt/format.h>
+
 #include "cli_options.h"
 #include "console.h"
 #include "hikari/core/error.h"
-#include "hikari/explain/explain.h"
+#include "hikari/methods/registry.h"
 #include "load_scene.h"
 
 namespace hikari::cli {
+
+namespace {
+
+/// The methods that have an explain view, e.g. "zbuffer, raytrace" for --pixel; `separator`
+/// between them.
+template <class View>
+std::string methods_with(View ExplainViews::*view, std::string_view separator) {
+    std::string list;
+    for (const Method& m : methods())
+        if (m.explain.*view) list += fmt::format("{}{}", list.empty() ? "" : separator, m.name);
+    return list;
+}
+
+/// -m's help: which method takes --pixel, which --row, which explains the whole scene.
+std::string method_help() {
+    return fmt::format("{} (with --pixel), {} (with --row), or {} (the whole sort)",
+                       methods_with(&ExplainViews::pixel, " or "),
+                       methods_with(&ExplainViews::row, " or "),
+                       methods_with(&ExplainViews::whole, " or "));
+}
+
+/// The methods `hikari explain` takes: those whose registry entry has a view.
+std::vector<std::string> explained_methods() {
+    std::vector<std::string> names;
+    for (const Method& m : methods())
+        if (has_explain_view(m)) names.emplace_back(m.name);
+    return names;
+}
+
+}  // namespace
 
 CLI::App* add_explain_command(CLI::App& app, ExplainOptions& e) {
     CLI::App* explain = app.add_subcommand(
@@ -18,16 +52,17 @@ CLI::App* add_explain_command(CLI::App& app, ExplainOptions& e) {
         "(Alg 4.3).");
     explain->add_option("scene", e.scene.scene_file,
                         "Scene file (default: the lecture's assignment)");
-    explain
-        ->add_option("-m,--method", e.method,
-                     "zbuffer or raytrace (with --pixel), scanline (with --row), or depthsort "
-                     "(the whole sort)")
+    explain->add_option("-m,--method", e.method, method_help())
         ->required()
-        ->check(CLI::IsMember({"zbuffer", "scanline", "depthsort", "raytrace"}));
-    explain->add_option("--row", e.row, "scanline: the row (0 at the top)")
+        ->check(CLI::IsMember(explained_methods()));
+    explain
+        ->add_option("--row", e.row,
+                     methods_with(&ExplainViews::row, ", ") + ": the row (0 at the top)")
         ->check(whole_in(0, 65535));
     explain
-        ->add_option("--pixel", e.pixel, "zbuffer, raytrace: the pixel X,Y (0,0 at the top left)")
+        ->add_option(
+            "--pixel", e.pixel,
+            methods_with(&ExplainViews::pixel, ", ") + ": the pixel X,Y (0,0 at the top left)")
         ->delimiter(',')
         ->expected(2)
         ->type_name("X,Y")
@@ -46,21 +81,19 @@ CLI::App* add_explain_command(CLI::App& app, ExplainOptions& e) {
 }
 
 int run_explain(const ExplainOptions& e) {
+    const ExplainViews& views = find_method(e.method)->explain;  // checked by the parser
     const Scene scene = load_render_scene(e.scene);
-    const RasterSettings raster = e.scene.own.raster;
-    if (e.method == "zbuffer") {
-        if (e.pixel.empty()) throw InputError("explain -m zbuffer needs --pixel X,Y");
-        print_out("{}", explain_zbuffer_pixel(scene, raster, e.pixel[0], e.pixel[1]));
-    } else if (e.method == "raytrace") {
-        if (e.pixel.empty()) throw InputError("explain -m raytrace needs --pixel X,Y");
-        WhittedSettings whitted = e.scene.own.whitted;
-        if (e.scene.own.max_depth) whitted.max_depth = *e.scene.own.max_depth;
-        print_out("{}", explain_raytrace_pixel(scene, whitted, e.pixel[0], e.pixel[1]));
-    } else if (e.method == "depthsort") {
-        print_out("{}", explain_depth_sort(scene, raster));
+    const MethodSettings& own = e.scene.own;
+    // A method's view takes the step the command line chose: a pixel, a row, or the whole run.
+    if (views.pixel && (!e.pixel.empty() || !views.row)) {
+        if (e.pixel.empty())
+            throw InputError(fmt::format("explain -m {} needs --pixel X,Y", e.method));
+        print_out("{}", views.pixel(scene, own, e.pixel[0], e.pixel[1]));
+    } else if (views.row && (e.row || !views.whole)) {
+        if (!e.row) throw InputError(fmt::format("explain -m {} needs --row Y", e.method));
+        print_out("{}", views.row(scene, own, *e.row));
     } else {
-        if (!e.row) throw InputError("explain -m scanline needs --row Y");
-        print_out("{}", explain_scanline_row(scene, raster, *e.row));
+        print_out("{}", views.whole(scene, own));
     }
     return 0;
 }

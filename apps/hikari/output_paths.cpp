@@ -54,9 +54,9 @@ void check_output_directory(const fs::path& output) {
     std::error_code ec;
     const fs::path dir = output.has_parent_path() ? output.parent_path() : ".";
     if (!fs::is_directory(dir, ec))
-        throw UsageError(fmt::format(
-            "{}: cannot write: the directory {} {}", output.string(), dir.string(),
-            fs::exists(dir, ec) ? "is not a directory" : "does not exist"));
+        throw UsageError(
+            fmt::format("{}: cannot write: the directory {} {}", output.string(), dir.string(),
+                        fs::exists(dir, ec) ? "is not a directory" : "does not exist"));
     if (::access(dir.c_str(), W_OK) != 0)
         throw UsageError(fmt::format("{}: cannot write: the directory {} is not writable",
                                      output.string(), dir.string()));
@@ -95,8 +95,7 @@ std::string output_for(const RenderOptions& o, std::string_view method) {
         o.scene_file.empty() ? "assignment" : fs::path(o.scene_file).stem().string();
     const std::string suffix =
         !several && method == methods().front().name ? "" : "-" + std::string(method);
-    return stem + suffix + (o.aov == Aov::color ? "" : "-" + std::string(aov_name(o.aov))) +
-           ".png";
+    return stem + suffix + (o.aov == Aov::color ? "" : "-" + std::string(aov_name(o.aov))) + ".png";
 }
 
 std::vector<RenderInput> render_inputs(const std::string& scene_file) {

@@ -21,7 +21,8 @@ using Clock = std::chrono::steady_clock;
 std::string progress_line(const std::string& stage, double pixels, double elapsed) {
     const RenderControl& control = render_control();
     const uint64_t total = control.work_total.load();
-    if (pixels <= 0.0 || total == 0) return fmt::format("\rhikari: {} ... {:.1f} s ", stage, elapsed);
+    if (pixels <= 0.0 || total == 0)
+        return fmt::format("\rhikari: {} ... {:.1f} s ", stage, elapsed);
     const double done = static_cast<double>(control.work_done.load()) / total;
     const double eta = done > 0 ? elapsed * (1.0 - done) / done : 0.0;
     constexpr int k_bar = 24;

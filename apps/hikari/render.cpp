@@ -64,9 +64,8 @@ void check_svg_output(const std::string& output, const Method& method, Aov aov) 
     if (!is_svg_path(output)) return;
     if (!method.draw)
         throw UsageError(
-            fmt::format("{}: SVG output is for the line methods (wireframe, "
-                        "hiddenline); method {} draws no lines",
-                        output, method.name));
+            fmt::format("{}: SVG output is for the line methods ({}); method {} draws no lines",
+                        output, drawing_methods(), method.name));
     if (aov != Aov::color)
         throw UsageError(
             fmt::format("{}: SVG output holds the lines' colours; --aov {} needs an "

@@ -9,7 +9,6 @@
 #include <fmt/ranges.h>
 
 #include "cli_options.h"
-#include "hikari/explain/algorithm_aovs.h"
 
 namespace hikari::cli {
 
@@ -82,9 +81,9 @@ std::string option_list(const Method& method) {
 /// A usage error (CLI::ValidationError) when an option's value is one `method` cannot take (a
 /// shadow mode it cannot do, no camera ray).
 void check_method_values(const Method& method, const MethodSettings& own) {
-    if (method.name == "raytrace" && own.max_depth == 0)
-        throw CLI::ValidationError(
-            "--max-depth 0: raytrace needs at least 1 ray segment (the camera ray)");
+    if (method.refuse_values)
+        if (const std::string refusal = method.refuse_values(own); !refusal.empty())
+            throw CLI::ValidationError(refusal);
     if (own.shadows && takes_option(method, "--shadows") && !does_shadows(method, *own.shadows))
         throw CLI::ValidationError(
             fmt::format("--shadows {}: method {} cannot draw shadows that way (it can: {})",
@@ -109,7 +108,7 @@ void check_method_options(const CLI::App& render, const Method& method, const Me
 /// shading term of a method whose colour is not the lecture's sum of terms (path tracing, the
 /// line drawings).
 void check_aov_method(const Method& method, Aov aov) {
-    if (is_algorithm_aov(aov) && !has_algorithm_aov(method.name, aov))
+    if (is_algorithm_aov(aov) && !has_algorithm_aov(method, aov))
         throw CLI::ValidationError(fmt::format("--aov {} shows the work of {}, not of method {}",
                                                aov_name(aov), methods_with_algorithm_aov(aov),
                                                method.name));

@@ -38,11 +38,11 @@ struct RenderOptions {
     std::vector<float> camera_from;        ///< --camera-from X,Y,Z; empty: the scene's or framing
     std::vector<float> look_at;            ///< --look-at X,Y,Z
     float crease_angle = -1;               ///< --crease-angle DEG; negative: each mesh's own
-    MethodSettings own;                    ///< every method option; the chosen method reads its part
-    std::vector<std::string> notes;        ///< warnings found while checking the command line
-    float exposure = 0.0f;                 ///< --exposure EV: colour × 2^EV in every format
-    ToneMap tone_map = ToneMap::clamp;     ///< --tonemap: for the formats of display values
-    int bit_depth = 8;                     ///< --bit-depth: 16 for .png and .ppm
+    MethodSettings own;                 ///< every method option; the chosen method reads its part
+    std::vector<std::string> notes;     ///< warnings found while checking the command line
+    float exposure = 0.0f;              ///< --exposure EV: colour × 2^EV in every format
+    ToneMap tone_map = ToneMap::clamp;  ///< --tonemap: for the formats of display values
+    int bit_depth = 8;                  ///< --bit-depth: 16 for .png and .ppm
 };
 
 /// `--tonemap`'s words.

@@ -11,8 +11,9 @@ namespace {
 
 /// The first --stats line: phase times, rays and paths per second.
 void print_phase_stats(const PhaseTimes& times, const RenderStats& stats) {
-    std::string text = fmt::format("hikari: stats: load {:.1f} ms, render {:.1f} ms, write {:.1f} ms",
-                                   1e3 * times.load, 1e3 * times.render, 1e3 * times.write);
+    std::string text =
+        fmt::format("hikari: stats: load {:.1f} ms, render {:.1f} ms, write {:.1f} ms",
+                    1e3 * times.load, 1e3 * times.render, 1e3 * times.write);
     if (const uint64_t rays = stats.rays_traced.load(); rays > 0)
         text += fmt::format("; {} rays, {:.2f} Mrays/s", rays, 1e-6 * double(rays) / times.render);
     if (const uint64_t paths = stats.paths_traced.load(); paths > 0)
@@ -36,16 +37,10 @@ void print_raster_stats(const RenderStats& stats, const Method& method) {
     const uint64_t covered = stats.raster_covered_pixels.load();
     const uint64_t work = stats.raster_fragments.load();
     std::string text = fmt::format("hikari: stats: hidden surfaces: {} pixels covered", covered);
-    // What raster_fragments counts for each method.
-    const std::string_view work_name = method.name == "zbuffer"     ? "fragments depth-tested"
-                                       : method.name == "scanline"  ? "sample spans"
-                                       : method.name == "depthsort" ? "pixel paints"
-                                                                    : "pixel paints (naive)";
     if (work > 0)
-        text += fmt::format("; {} {} ({:.2f} per covered pixel)", work, work_name,
+        text += fmt::format("; {} {} ({:.2f} per covered pixel)", work, method.stats.work,
                             covered ? double(work) / double(covered) : 0.0);
-    if (const uint64_t splits = stats.depth_sort_splits.load();
-        splits > 0 || work_name == "pixel paints")
+    if (const uint64_t splits = stats.depth_sort_splits.load(); splits > 0 || method.stats.splits)
         text += fmt::format("; {} depth-sort splits", splits);
     print_err("{}\n", text);
 }
