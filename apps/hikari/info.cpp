@@ -8,6 +8,7 @@
 #include <variant>
 #include <vector>
 
+#include "console.h"
 #include "hikari/io/models/model_file.h"
 #include "hikari/io/scene/scene_json.h"
 
@@ -108,5 +109,24 @@ std::string info_report(const std::filesystem::path& file) {
     for (const std::string& w : warnings) text += fmt::format("  warning: {}\n", w);
     return text;
 }
+
+namespace cli {
+
+CLI::App* add_info_command(CLI::App& app, std::string& file) {
+    CLI::App* info = app.add_subcommand(
+        "info",
+        "Print what a model or scene file holds: triangles, vertices, bounds, materials, "
+        "textures, lights, cameras, and the load time.");
+    info->add_option("file", file, "Model (.obj, .ply, .gltf, .glb) or scene (.json) file")
+        ->required();
+    return info;
+}
+
+int run_info(const std::string& file) {
+    print_out("{}", info_report(file));
+    return 0;
+}
+
+}  // namespace cli
 
 }  // namespace hikari

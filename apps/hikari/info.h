@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <string>
 
+#include <CLI/CLI.hpp>
+
 namespace hikari {
 
 /// The report `hikari info` prints for a model file (.obj, .ply, .gltf, .glb: triangles,
@@ -11,5 +13,15 @@ namespace hikari {
 /// whole scene, plus its spheres and planes), with the load time. Throws InputError as loading
 /// does.
 std::string info_report(const std::filesystem::path& file);
+
+namespace cli {
+
+/// `hikari info FILE` and its argument.
+CLI::App* add_info_command(CLI::App& app, std::string& file);
+
+/// Prints info_report(file) on stdout; returns the exit status (0).
+int run_info(const std::string& file);
+
+}  // namespace cli
 
 }  // namespace hikari

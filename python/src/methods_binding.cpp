@@ -52,7 +52,7 @@ py::dict method_data(const Method& method) {
     for (const AovWord& a : k_aov_words) {
         const bool term = a.aov == Aov::ambient || a.aov == Aov::diffuse || a.aov == Aov::specular;
         if ((term && !method.shading_terms) ||
-            (is_algorithm_aov(a.aov) && !has_algorithm_aov(method.name, a.aov)))
+            (is_algorithm_aov(a.aov) && !has_algorithm_aov(method, a.aov)))
             continue;
         aovs.append(std::string(a.word));
     }

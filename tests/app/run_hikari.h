@@ -13,9 +13,10 @@ struct RunResult {
     std::string output;  ///< stdout and stderr together
 };
 
-/// Runs `hikari ARGS` (a shell command line) and waits for it.
-inline RunResult run_hikari(const std::string& args) {
-    const std::string command = std::string(HIKARI_CLI_PATH) + " " + args + " 2>&1";
+/// Runs `hikari ARGS REDIRECTIONS` (a shell command line) and waits for it; `output` is what
+/// reached the pipe that stdout starts on (redirections "2>&1 >/dev/full": stderr alone).
+inline RunResult run_hikari_redirected(const std::string& args, const std::string& redirections) {
+    const std::string command = std::string(HIKARI_CLI_PATH) + " " + args + " " + redirections;
     FILE* pipe = popen(command.c_str(), "r");
     std::string output;
     char buffer[4096];
@@ -23,5 +24,8 @@ inline RunResult run_hikari(const std::string& args) {
     const int raw = pclose(pipe);
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), output};
 }
+
+/// Runs `hikari ARGS` (a shell command line) and waits for it.
+inline RunResult run_hikari(const std::string& args) { return run_hikari_redirected(args, "2>&1"); }
 
 }  // namespace hikari::testing

@@ -88,11 +88,11 @@ TEST(AlgorithmAovs, CulledShowsOnlyTheBackFaceThatWouldBeSeen) {
 }
 
 TEST(AlgorithmAovs, EachMethodOffersItsOwn) {
-    EXPECT_TRUE(has_algorithm_aov("zbuffer", Aov::overdraw));
-    EXPECT_TRUE(has_algorithm_aov("depthsort", Aov::paint_order));
-    EXPECT_FALSE(has_algorithm_aov("zbuffer", Aov::paint_order));
-    EXPECT_TRUE(has_algorithm_aov("scanline", Aov::spans));
-    EXPECT_FALSE(has_algorithm_aov("raytrace", Aov::culled));
+    EXPECT_TRUE(has_algorithm_aov(*find_method("zbuffer"), Aov::overdraw));
+    EXPECT_TRUE(has_algorithm_aov(*find_method("depthsort"), Aov::paint_order));
+    EXPECT_FALSE(has_algorithm_aov(*find_method("zbuffer"), Aov::paint_order));
+    EXPECT_TRUE(has_algorithm_aov(*find_method("scanline"), Aov::spans));
+    EXPECT_FALSE(has_algorithm_aov(*find_method("raytrace"), Aov::culled));
     EXPECT_EQ(methods_with_algorithm_aov(Aov::overdraw), "zbuffer, depthsort");
 }
 

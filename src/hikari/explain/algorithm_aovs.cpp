@@ -17,17 +17,6 @@ namespace hikari {
 
 namespace {
 
-struct Offer {
-    Aov aov;
-    std::string_view method;
-};
-
-constexpr Offer k_offers[] = {
-    {Aov::overdraw, "zbuffer"}, {Aov::overdraw, "depthsort"}, {Aov::paint_order, "depthsort"},
-    {Aov::spans, "scanline"},   {Aov::culled, "zbuffer"},     {Aov::culled, "scanline"},
-    {Aov::culled, "depthsort"},
-};
-
 constexpr Vec3 k_culled_colour{1.0f, 0.0f, 1.0f};  ///< magenta: no shading model gives it
 
 /// Counts per pixel as an image: the ramp (or the numbers, `raw`), background black.
@@ -55,23 +44,21 @@ std::string overdraw_summary(const std::vector<uint32_t>& count, std::string_vie
         total, what, covered ? double(total) / double(covered) : 0.0, most, most);
 }
 
-AlgorithmAov overdraw(const ProjectedScene& ps, const Method& method, int width, int height,
-                      bool raw) {
+/// The Z-buffer's overdraw: fragments depth-tested per pixel.
+AlgorithmAov zbuffer_overdraw(const ProjectedScene& ps, int width, int height, bool raw) {
     std::vector<uint32_t> count;
-    if (method.name == "zbuffer") {
-        zbuffer_visibility_counted(ps.triangles, width, height, count);
-        return {count_image(count, width, height, raw),
-                overdraw_summary(count, "fragments depth-tested")};
-    }
-    DepthSortTrace trace;
-    depth_sort_visibility_traced(ps.triangles, width, height, trace);
+    zbuffer_visibility_counted(ps.triangles, width, height, count);
+    return {count_image(count, width, height, raw),
+            overdraw_summary(count, "fragments depth-tested")};
+}
+
+/// The depth sort's overdraw: polygons painted per pixel.
+AlgorithmAov depth_sort_overdraw(const DepthSortTrace& trace, int width, int height, bool raw) {
     return {count_image(trace.paint_count, width, height, raw),
             overdraw_summary(trace.paint_count, "polygon paints")};
 }
 
-AlgorithmAov paint_order(const ProjectedScene& ps, int width, int height, bool raw) {
-    DepthSortTrace trace;
-    depth_sort_visibility_traced(ps.triangles, width, height, trace);
+AlgorithmAov paint_order(const DepthSortTrace& trace, int width, int height, bool raw) {
     Image out(width, height);
     const size_t n = trace.painted.size();
     size_t pieces_seen = 0;
@@ -100,7 +87,9 @@ AlgorithmAov paint_order(const ProjectedScene& ps, int width, int height, bool r
                         n, splits, pieces_seen)};
 }
 
-AlgorithmAov spans(const ProjectedScene& ps, int width, int height) {
+AlgorithmAov spans(const Scene& scene, const MethodSettings& own) {
+    const int width = scene.camera.width, height = scene.camera.height;
+    const ProjectedScene ps = project_scene(scene, own.raster);
     std::vector<uint8_t> starts;
     const VisibilityBuffer vis = scanline_visibility_spans(ps.triangles, width, height, starts);
     Image out(width, height);
@@ -154,31 +143,33 @@ AlgorithmAov culled(const Scene& scene, const Method& method, const MethodSettin
 
 }  // namespace
 
-bool has_algorithm_aov(std::string_view method, Aov aov) {
-    return std::any_of(std::begin(k_offers), std::end(k_offers),
-                       [&](const Offer& o) { return o.aov == aov && o.method == method; });
-}
-
-std::string methods_with_algorithm_aov(Aov aov) {
-    std::string list;
-    for (const Offer& o : k_offers)
-        if (o.aov == aov) list += fmt::format("{}{}", list.empty() ? "" : ", ", o.method);
-    return list;
-}
-
 AlgorithmAov algorithm_aov(const Scene& scene, const Method& method, Aov aov,
                            const MethodSettings& own, bool raw) {
-    const int width = scene.camera.width, height = scene.camera.height;
+    return method.algorithm_aovs.draw(scene, method, aov, own, raw);
+}
+
+AlgorithmAov zbuffer_algorithm_aov(const Scene& scene, const Method& method, Aov aov,
+                                   const MethodSettings& own, bool raw) {
     if (aov == Aov::culled) return culled(scene, method, own);
+    return zbuffer_overdraw(project_scene(scene, own.raster), scene.camera.width,
+                            scene.camera.height, raw);
+}
+
+AlgorithmAov scanline_algorithm_aov(const Scene& scene, const Method& method, Aov aov,
+                                    const MethodSettings& own, bool) {
+    if (aov == Aov::culled) return culled(scene, method, own);
+    return spans(scene, own);
+}
+
+AlgorithmAov depth_sort_algorithm_aov(const Scene& scene, const Method& method, Aov aov,
+                                      const MethodSettings& own, bool raw) {
+    if (aov == Aov::culled) return culled(scene, method, own);
+    const int width = scene.camera.width, height = scene.camera.height;
     const ProjectedScene ps = project_scene(scene, own.raster);
-    switch (aov) {
-        case Aov::overdraw:
-            return overdraw(ps, method, width, height, raw);
-        case Aov::paint_order:
-            return paint_order(ps, width, height, raw);
-        default:
-            return spans(ps, width, height);
-    }
+    DepthSortTrace trace;
+    depth_sort_visibility_traced(ps.triangles, width, height, trace);
+    if (aov == Aov::paint_order) return paint_order(trace, width, height, raw);
+    return depth_sort_overdraw(trace, width, height, raw);
 }
 
 }  // namespace hikari

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "hikari/explain/algorithm_aovs.h"
+#include "hikari/explain/explain.h"
 #include "hikari/frame/depth_cue.h"
 #include "hikari/frame/subpixel.h"
 #include "hikari/integrators/whitted/whitted.h"
@@ -261,47 +263,113 @@ std::vector<std::string> raster_scene_warnings(const Scene& scene) {
     return warnings;
 }
 
+/// raytrace's values: its paths start with the camera ray, so --max-depth 0 leaves nothing.
+std::string ray_trace_refusals(const MethodSettings& own) {
+    if (own.max_depth == 0)
+        return "--max-depth 0: raytrace needs at least 1 ray segment (the camera ray)";
+    return "";
+}
+
+/// `explain -m zbuffer --pixel X,Y`: Alg 4.2's fragments at the pixel.
+std::string explain_zbuffer(const Scene& scene, const MethodSettings& own, int x, int y) {
+    return explain_zbuffer_pixel(scene, own.raster, x, y);
+}
+
+/// `explain -m raytrace --pixel X,Y`: the ray tree of the pixel's centre ray (Alg 4.3).
+std::string explain_raytrace(const Scene& scene, const MethodSettings& own, int x, int y) {
+    WhittedSettings whitted = own.whitted;
+    if (own.max_depth) whitted.max_depth = *own.max_depth;
+    return explain_raytrace_pixel(scene, whitted, x, y);
+}
+
+/// `explain -m scanline --row Y`: Alg 4.1's edge table, active edges and spans on the row.
+std::string explain_scanline(const Scene& scene, const MethodSettings& own, int row) {
+    return explain_scanline_row(scene, own.raster, row);
+}
+
+/// `explain -m depthsort`: the whole sort, its tests, reorderings and splits (Fig 4.6-4.9).
+std::string explain_depth_sort_run(const Scene& scene, const MethodSettings& own) {
+    return explain_depth_sort(scene, own.raster);
+}
+
+constexpr Aov k_zbuffer_aovs[] = {Aov::overdraw, Aov::culled};
+constexpr Aov k_scanline_aovs[] = {Aov::spans, Aov::culled};
+constexpr Aov k_depth_sort_aovs[] = {Aov::overdraw, Aov::paint_order, Aov::culled};
+
 constexpr auto k_whitted = &ray_trace;
 template <auto render>
 constexpr auto k_raster = &rasterize<render>;
 
+/// A hidden-surface method of the raster pipeline: the raster options, shadow modes and scene
+/// warnings, colour as the sum of shading terms, and what it shows of its own work.
+constexpr Method raster_method(std::string_view name, std::string_view summary,
+                               RenderFunction render, AlgorithmAovs algorithm_aovs,
+                               ExplainViews explain, StatsWords stats) {
+    return Method{.name = name,
+                  .summary = summary,
+                  .render = render,
+                  .options = k_raster_options,
+                  .shadow_modes = k_raster_shadow_modes,
+                  .warnings = &raster_scene_warnings,
+                  .shading_terms = true,
+                  .algorithm_aovs = algorithm_aovs,
+                  .explain = explain,
+                  .stats = stats};
+}
+
 constexpr std::array k_methods = {
-    Method{"raytrace",
-           "Whitted ray tracing (Alg 4.3): nearest hit, shadow rays, reflection, refraction",
-           k_whitted, k_ray_tracing_options, nullptr, k_ray_shadow_modes, &whitted_scene_warnings,
-           true},
-    Method{"path",
-           "path tracing (Kajiya 1986): global illumination, light sampling and BSDF sampling "
-           "combined by MIS",
-           &path_trace,
-           k_path_options,
-           nullptr,
-           {},
-           &path_scene_warnings},
-    Method{"zbuffer", "Z-buffer (Alg 4.2): rasterize every triangle, keep the nearest per pixel",
-           k_raster<&render_zbuffer>, k_raster_options, nullptr, k_raster_shadow_modes,
-           &raster_scene_warnings, true},
-    Method{"scanline",
-           "scanline (Alg 4.1): edge table, active edges, nearest segment per sample span",
-           k_raster<&render_scanline>, k_raster_options, nullptr, k_raster_shadow_modes,
-           &raster_scene_warnings, true},
-    Method{"depthsort",
-           "depth sort (Newell et al. 1972): sort, overlap tests, reorder, split cycles",
-           k_raster<&render_depth_sort>, k_raster_options, nullptr, k_raster_shadow_modes,
-           &raster_scene_warnings, true},
-    Method{"depthsort-naive",
-           "painter's algorithm by centroid depth (Fig 4.7): fails on overlap cycles",
-           k_raster<&render_depth_sort_naive>, k_raster_options, nullptr, k_raster_shadow_modes,
-           &raster_scene_warnings, true},
-    Method{"wireframe", "wireframe (Fig 4.1a): every edge of every face, anti-aliased lines",
-           &with_line_settings<&render_wireframe>, k_line_options,
-           &drawing_with_line_settings<&draw_wireframe>},
-    Method{"hiddenline",
-           "hidden-line removal (Fig 4.1c, Appel 1967): visible parts of edges, exact in object "
-           "space",
-           &with_line_settings<&render_hidden_lines>, k_line_options,
-           &drawing_with_line_settings<&draw_hidden_lines>},
+    Method{.name = "raytrace",
+           .summary =
+               "Whitted ray tracing (Alg 4.3): nearest hit, shadow rays, reflection, refraction",
+           .render = k_whitted,
+           .options = k_ray_tracing_options,
+           .shadow_modes = k_ray_shadow_modes,
+           .warnings = &whitted_scene_warnings,
+           .shading_terms = true,
+           .explain = {.pixel = &explain_raytrace},
+           .refuse_values = &ray_trace_refusals},
+    Method{.name = "path",
+           .summary = "path tracing (Kajiya 1986): global illumination, light sampling and BSDF "
+                      "sampling combined by MIS",
+           .render = &path_trace,
+           .options = k_path_options,
+           .warnings = &path_scene_warnings},
+    raster_method("zbuffer",
+                  "Z-buffer (Alg 4.2): rasterize every triangle, keep the nearest per pixel",
+                  k_raster<&render_zbuffer>, {k_zbuffer_aovs, &zbuffer_algorithm_aov},
+                  {.pixel = &explain_zbuffer}, {.work = "fragments depth-tested"}),
+    raster_method("scanline",
+                  "scanline (Alg 4.1): edge table, active edges, nearest segment per sample span",
+                  k_raster<&render_scanline>, {k_scanline_aovs, &scanline_algorithm_aov},
+                  {.row = &explain_scanline}, {.work = "sample spans"}),
+    raster_method("depthsort",
+                  "depth sort (Newell et al. 1972): sort, overlap tests, reorder, split cycles",
+                  k_raster<&render_depth_sort>, {k_depth_sort_aovs, &depth_sort_algorithm_aov},
+                  {.whole = &explain_depth_sort_run}, {.work = "pixel paints", .splits = true}),
+    raster_method("depthsort-naive",
+                  "painter's algorithm by centroid depth (Fig 4.7): fails on overlap cycles",
+                  k_raster<&render_depth_sort_naive>, {}, {}, {.work = "pixel paints (naive)"}),
+    Method{.name = "wireframe",
+           .summary = "wireframe (Fig 4.1a): every edge of every face, anti-aliased lines",
+           .render = &with_line_settings<&render_wireframe>,
+           .options = k_line_options,
+           .draw = &drawing_with_line_settings<&draw_wireframe>},
+    Method{.name = "hiddenline",
+           .summary = "hidden-line removal (Fig 4.1c, Appel 1967): visible parts of edges, exact "
+                      "in object space",
+           .render = &with_line_settings<&render_hidden_lines>,
+           .options = k_line_options,
+           .draw = &drawing_with_line_settings<&draw_hidden_lines>},
 };
+
+/// The names of the methods for which `has` holds, e.g. "zbuffer, depthsort".
+template <class Predicate>
+std::string names_where(Predicate&& has) {
+    std::string list;
+    for (const Method& m : k_methods)
+        if (has(m)) list += fmt::format("{}{}", list.empty() ? "" : ", ", m.name);
+    return list;
+}
 
 }  // namespace
 
@@ -334,10 +402,24 @@ LineDrawing draw_scene(const Method& method, const Scene& scene, const MethodSet
 }
 
 std::string shading_term_methods() {
-    std::string list;
-    for (const Method& m : k_methods)
-        if (m.shading_terms) list += fmt::format("{}{}", list.empty() ? "" : ", ", m.name);
-    return list;
+    return names_where([](const Method& m) { return m.shading_terms; });
+}
+
+std::string drawing_methods() {
+    return names_where([](const Method& m) { return m.draw != nullptr; });
+}
+
+bool has_algorithm_aov(const Method& method, Aov aov) {
+    const std::span<const Aov> aovs = method.algorithm_aovs.aovs;
+    return std::find(aovs.begin(), aovs.end(), aov) != aovs.end();
+}
+
+std::string methods_with_algorithm_aov(Aov aov) {
+    return names_where([aov](const Method& m) { return has_algorithm_aov(m, aov); });
+}
+
+bool has_explain_view(const Method& method) {
+    return method.explain.pixel || method.explain.row || method.explain.whole;
 }
 
 bool does_shadows(const Method& method, ShadowMode mode) {

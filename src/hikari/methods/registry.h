@@ -1,6 +1,8 @@
 #pragma once
-// The registry of rendering methods: adding a method is one file and one entry in registry.cpp,
-// which also lists the options the method understands.
+// The registry of rendering methods: adding a method is one file and one entry in registry.cpp.
+// The entry says all the method offers — its options, shadow modes, algorithm AOVs, `explain`
+// views, `--stats` words, SVG drawing — so that no code outside the registry compares a
+// method's name (tests/methods/method_names_test.cpp holds it).
 
 #include <span>
 #include <string>
@@ -27,6 +29,37 @@ using DrawFunction = LineDrawing (*)(const Scene& scene, const MethodSettings& o
 /// What a method has to say about a scene before it renders it (one line per warning).
 using SceneWarnings = std::vector<std::string> (*)(const Scene& scene);
 
+/// What a method can print of its work for `hikari explain -m METHOD` (explain/explain.h), one
+/// view per way of choosing the step; null where it has none.
+struct ExplainViews {
+    /// One pixel's story, for `--pixel X,Y` (the Z-buffer's fragments, the ray tracer's ray tree).
+    std::string (*pixel)(const Scene& scene, const MethodSettings& own, int x, int y) = nullptr;
+    /// One scan line's, for `--row Y` (the scanline method's edge table, active edges, spans).
+    std::string (*row)(const Scene& scene, const MethodSettings& own, int row) = nullptr;
+    /// The whole scene's at once (the depth sort's comparisons and painting order).
+    std::string (*whole)(const Scene& scene, const MethodSettings& own) = nullptr;
+};
+
+struct AlgorithmAov;  // explain/algorithm_aovs.h
+struct Method;
+
+/// The pictures of a method's algorithm at work (`--aov overdraw | paint-order | spans |
+/// culled`, explain/algorithm_aovs.h).
+struct AlgorithmAovs {
+    std::span<const Aov> aovs;  ///< the ones it has; empty: none
+    /// Draws one of `aovs` for a scene (`raw`: the counts as numbers, for float files).
+    AlgorithmAov (*draw)(const Scene& scene, const Method& method, Aov aov,
+                         const MethodSettings& own, bool raw) = nullptr;
+};
+
+/// What `--stats` says of a raster method's hidden-surface work.
+struct StatsWords {
+    /// What RenderStats::raster_fragments counts for it, e.g. "sample spans".
+    std::string_view work = {};
+    /// Whether it splits polygons (the depth sort): the split count is printed even when 0.
+    bool splits = false;
+};
+
 /// A named rendering method selectable with `--method`.
 struct Method {
     std::string_view name;                  ///< as given to --method
@@ -42,6 +75,15 @@ struct Method {
     /// the lights and the mirror and refracted rays), so that `--aov ambient|diffuse|specular`
     /// shows one term (shading/shading_terms.h).
     bool shading_terms = false;
+    /// Its algorithm AOVs.
+    AlgorithmAovs algorithm_aovs = {};
+    /// Its `hikari explain` views.
+    ExplainViews explain = {};
+    /// Its `--stats` words.
+    StatsWords stats = {};
+    /// The usage error of an option value it cannot take (e.g. `--max-depth 0` for a method
+    /// that needs the camera ray), or empty; null: it takes every value the options allow.
+    std::string (*refuse_values)(const MethodSettings& own) = nullptr;
 };
 
 /// Every registered method, the default (raytrace) first.
@@ -66,6 +108,18 @@ LineDrawing draw_scene(const Method& method, const Scene& scene, const MethodSet
 
 /// The methods whose colour is a sum of shading terms, e.g. "raytrace, zbuffer".
 std::string shading_term_methods();
+
+/// The methods that draw lines as segments (method.draw set), e.g. "wireframe, hiddenline".
+std::string drawing_methods();
+
+/// Whether `method` has the algorithm AOV `aov`.
+bool has_algorithm_aov(const Method& method, Aov aov);
+
+/// The methods that have the algorithm AOV `aov`, e.g. "zbuffer, depthsort".
+std::string methods_with_algorithm_aov(Aov aov);
+
+/// Whether `method` has any `hikari explain` view.
+bool has_explain_view(const Method& method);
 
 /// Whether `method` can draw shadows by `mode`.
 bool does_shadows(const Method& method, ShadowMode mode);

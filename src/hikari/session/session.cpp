@@ -31,8 +31,9 @@ using Clock = std::chrono::steady_clock;
 /// `--wireframe-overlay`'s line colour: near black, a figure's ink.
 constexpr Vec3 k_overlay_colour{0.02f, 0.02f, 0.02f};
 
-/// Loads what `source` names, appending the loaders' warnings.
-Scene load_source(const SceneSource& source, std::vector<std::string>& warnings) {
+}  // namespace
+
+Scene load_scene_source(const SceneSource& source, std::vector<std::string>& warnings) {
     SceneLoadOptions load(source.overrides);
     load.crease_angle = source.crease_angle;
     const bool model = !source.json_text && is_model_file(source.file);
@@ -46,6 +47,8 @@ Scene load_source(const SceneSource& source, std::vector<std::string>& warnings)
         return load_model_scene(source.file, {.ground = source.ground, .mesh = {}}, warnings, load);
     return load_scene_file(source.file, warnings, load);
 }
+
+namespace {
 
 /// Whether two scenes hold the same geometry, value for value: what a BVH is built from.
 bool same_geometry(const Scene& a, const Scene& b) {
@@ -70,14 +73,6 @@ bool same_geometry(const Scene& a, const Scene& b) {
            a.primitive_count == b.primitive_count;
 }
 
-/// Refuses an image whose buffers would not fit in the memory limit, before allocating any.
-void check_image_memory(const Camera& camera) {
-    const double pixels = static_cast<double>(camera.width) * camera.height;
-    // colour + depth + id + normal in the framebuffer, one more image for the output.
-    check_memory_need(pixels * (sizeof(Vec3) * 3 + sizeof(float) + sizeof(uint32_t)),
-                      fmt::format("a {}x{} image", camera.width, camera.height));
-}
-
 /// The shading term an AOV names, if it names one.
 std::optional<ShadingTerm> shading_term_of(Aov aov) {
     if (aov == Aov::ambient) return ShadingTerm::ambient;
@@ -89,7 +84,7 @@ std::optional<ShadingTerm> shading_term_of(Aov aov) {
 /// Refuses a buffer `method` has no picture of (the command line refuses it before any work;
 /// other front ends meet it here).
 void check_aov(const Method& method, Aov aov) {
-    if (is_algorithm_aov(aov) && !has_algorithm_aov(method.name, aov))
+    if (is_algorithm_aov(aov) && !has_algorithm_aov(method, aov))
         throw InputError(fmt::format("this AOV shows the work of {}, not of method {}",
                                      methods_with_algorithm_aov(aov), method.name));
     if (shading_term_of(aov) && !method.shading_terms)
@@ -140,6 +135,13 @@ const Method& method_named(std::string_view name) {
     throw InputError(fmt::format("unknown method '{}' (methods: {})", name, names));
 }
 
+void check_image_memory(const Camera& camera) {
+    const double pixels = static_cast<double>(camera.width) * camera.height;
+    // colour + depth + id + normal in the framebuffer, one more image for the output.
+    check_memory_need(pixels * (sizeof(Vec3) * 3 + sizeof(float) + sizeof(uint32_t)),
+                      fmt::format("a {}x{} image", camera.width, camera.height));
+}
+
 Camera resized_camera(Camera camera, int width, int height) {
     if (width > 0 && height == 0)
         height = std::max(1, static_cast<int>(std::lround(static_cast<double>(width) *
@@ -155,7 +157,7 @@ Camera resized_camera(Camera camera, int width, int height) {
 Session::Session(SceneSource source)
     : m_source(std::move(source)), m_cache(std::make_unique<BuildCache>()) {
     const auto start = Clock::now();
-    Scene scene = load_source(m_source, m_warnings);
+    Scene scene = load_scene_source(m_source, m_warnings);
     m_load_seconds = std::chrono::duration<double>(Clock::now() - start).count();
     adopt(std::move(scene));
 }
@@ -189,7 +191,7 @@ void Session::set(const SceneOverride& edit) {
     source.overrides.push_back(edit);
     std::vector<std::string> warnings;
     const auto start = Clock::now();
-    Scene scene = load_source(source, warnings);
+    Scene scene = load_scene_source(source, warnings);
     m_load_seconds = std::chrono::duration<double>(Clock::now() - start).count();
     m_source = std::move(source);
     m_warnings = std::move(warnings);
@@ -219,6 +221,12 @@ const Scene& Session::scene_for(const RenderRequest& request, std::optional<Scen
         for (Sphere& s : changed->spheres) s.segments = static_cast<uint32_t>(request.tessellation);
     if (term) changed = isolate_shading_term(std::move(*changed), *term);
     return *changed;
+}
+
+Scene Session::scene_as_rendered(const RenderRequest& request) {
+    std::optional<Scene> changed;
+    const Scene& scene = scene_for(request, changed);
+    return changed ? std::move(*changed) : scene;
 }
 
 RenderResult Session::render(const RenderRequest& request) {
@@ -267,14 +275,9 @@ RenderResult Session::render(const RenderRequest& request) {
 
 LineDrawing Session::draw(const RenderRequest& request) {
     const Method& method = method_named(request.method);
-    if (!method.draw) {
-        std::string line_methods;
-        for (const Method& m : methods())
-            if (m.draw)
-                line_methods += fmt::format("{}{}", line_methods.empty() ? "" : ", ", m.name);
+    if (!method.draw)
         throw InputError(fmt::format("method {} draws no lines (methods that do: {})", method.name,
-                                     line_methods));
-    }
+                                     drawing_methods()));
     std::optional<Scene> changed;
     const Scene& scene = scene_for(request, changed);
     std::optional<tbb::global_control> thread_limit;

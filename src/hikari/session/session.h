@@ -118,6 +118,9 @@ class Session {
     /// Replaces the scene; what was built from parts equal in both is kept.
     void replace_scene(Scene scene);
 
+    /// A copy of the scene as `request` renders it: its camera and size, depth cue,
+    /// tessellation and shading term (for views of the scene such as `hikari explain`).
+    Scene scene_as_rendered(const RenderRequest& request);
     /// The camera `request` renders with: its own or the scene's, at its image size.
     Camera camera_for(const RenderRequest& request) const;
     /// Renders the scene as `request` asks. Throws InputError for an unknown method, a buffer
@@ -145,8 +148,16 @@ class Session {
     double m_load_seconds = 0;
 };
 
+/// The scene `source` names, loaded as a session loads it, appending the loaders' warnings (for
+/// front ends that need the scene alone, such as `hikari explain`).
+Scene load_scene_source(const SceneSource& source, std::vector<std::string>& warnings);
+
 /// The method called `name`, or InputError listing the methods.
 const Method& method_named(std::string_view name);
+
+/// Refuses (InputError) an image whose buffers would not fit in the memory limit
+/// (core/memory_budget.h), before any is allocated. Session::render checks it first.
+void check_image_memory(const Camera& camera);
 
 /// `camera` at `width` × `height`; one of them 0 keeps the aspect ratio, both 0 keep the size.
 Camera resized_camera(Camera camera, int width, int height);

@@ -1,0 +1,179 @@
+#include "render.h"
+
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "cli_options.h"
+#include "console.h"
+#include "hikari/core/error.h"
+#include "hikari/explain/explain.h"
+#include "hikari/io/images/image_write.h"
+#include "hikari/io/images/svg_write.h"
+#include "hikari/methods/registry.h"
+#include "load_scene.h"
+#include "output_paths.h"
+#include "progress.h"
+#include "render_output.h"
+#include "render_report.h"
+#include "signals.h"
+
+namespace hikari::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// A method and the file its render goes to.
+struct Run {
+    const Method* method;
+    std::string output;
+};
+
+/// Seconds since `start`.
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// Refuses, before any work is done, an SVG output that the method or --aov cannot give: a
+/// command-line mistake (exit 2), like any other -o mistake.
+void check_svg_output(const std::string& output, const Method& method, Aov aov) {
+    if (!is_svg_path(output)) return;
+    if (!method.draw)
+        throw UsageError(
+            fmt::format("{}: SVG output is for the line methods ({}); method {} draws no lines",
+                        output, drawing_methods(), method.name));
+    if (aov != Aov::color)
+        throw UsageError(
+            fmt::format("{}: SVG output holds the lines' colours; --aov {} needs an "
+                        "image format",
+                        output, aov_name(aov)));
+}
+
+/// Every method asked for with its output, each output checked.
+std::vector<Run> planned_runs(const RenderOptions& o) {
+    std::vector<Run> runs;
+    const std::vector<RenderInput> inputs = render_inputs(o.scene_file);
+    for (const std::string& name : o.methods) {
+        const Method& method = *find_method(name);  // checked by the parser
+        const std::string output = output_for(o, name);
+        check_output_path(output, inputs);
+        check_svg_output(output, method, o.aov);
+        runs.push_back({&method, output});
+    }
+    return runs;
+}
+
+/// The line method's drawing written as SVG (`-o drawing.svg`).
+void run_drawing(const RenderOptions& o, Session& session, const Method& method,
+                 const std::string& output) {
+    RenderRequest request = render_request(o);
+    request.method = method.name;
+    const auto start = Clock::now();
+    const LineDrawing drawing = session.draw(request);
+    const double seconds = seconds_since(start);
+    if (render_control().cancel.load()) throw Interrupted();
+    write_svg(output, drawing);
+    if (!o.quiet)
+        print_err("hikari: wrote {} ({}x{}, {}, {} segments, {:.3f} s)\n", output, drawing.width,
+                  drawing.height, method.name, drawing.segments.size(), seconds);
+}
+
+/// The request for `run`: the options' own, the film its output needs, progress mirrored into
+/// the counters the progress line reads, and a progressive path render's snapshots.
+RenderRequest run_request(const RenderOptions& o, const Session& session, const Run& run) {
+    RenderRequest request = render_request(o);
+    request.method = run.method->name;
+    request.film = output_film(session.camera_for(request), run.output, o).format();
+    request.algorithm_counts = !is_picture_file(run.output);
+    if (request.options.path.progressive_seconds > 0.0f && o.aov == Aov::color)
+        request.options.path.snapshot = [output = run.output, &o](const Image& mean, int) {
+            write_progressive_snapshot(output, mean, o);
+        };
+    RenderControl& control = render_control();
+    control.work_done = 0;
+    control.work_total = 0;
+    request.progress = [&control](const RenderProgress& p) {
+        constexpr double k_units = 1e9;
+        control.work_total = static_cast<uint64_t>(k_units);
+        control.work_done = static_cast<uint64_t>(p.fraction * k_units);
+    };
+    return request;
+}
+
+/// An algorithm AOV (`--aov overdraw | paint-order | spans | culled`) of the method at work.
+void write_algorithm_aov(const RenderOptions& o, const Run& run, const RenderResult& result) {
+    write_image(run.output, *result.algorithm_picture, ImageWriteSettings{o.bit_depth});
+    if (!o.quiet)
+        print_err("hikari: wrote {} ({}x{}, {}, {:.3f} s)\nhikari: {}\n", run.output,
+                  result.algorithm_picture->width, result.algorithm_picture->height,
+                  run.method->name, result.seconds, result.algorithm_summary);
+}
+
+/// What follows a written render on stderr: the summary, NaN samples left out, --stats.
+void report_render(const RenderOptions& o, const Run& run, const Scene& scene, int width,
+                   int height, const PhaseTimes& times, const RenderStats& stats) {
+    if (!o.quiet) print_summary(run.output, width, height, *run.method, scene, times, stats);
+    if (const uint64_t bad = stats.bad_samples.load(); bad > 0)
+        print_err(
+            "hikari: warning: {} samples were NaN or infinite and were left out of the image "
+            "(their pixels average the other samples as if these were black)\n",
+            bad);
+    if (o.stats) print_stats(times, stats, *run.method);
+}
+
+/// One method's render of the session's scene into its output. `load_seconds`: the time spent
+/// loading, for --stats (0 after the first render: the session loaded once).
+void render_with(const RenderOptions& o, Session& session, const Run& run, double load_seconds) {
+    const RenderRequest request = run_request(o, session, run);
+    RenderResult result;
+    {
+        const Camera camera = session.camera_for(request);
+        ProgressReporter progress(!o.quiet && !is_algorithm_aov(o.aov), "rendering",
+                                  double(camera.width) * camera.height);
+        result = session.render(request);
+    }
+    if (result.algorithm_picture) return write_algorithm_aov(o, run, result);
+    for (const std::string& w : result.warnings) print_err("hikari: warning: {}\n", w);
+    PhaseTimes times;
+    times.load = load_seconds;
+    times.render = result.seconds;
+    const auto rendered = Clock::now();
+    const int width = result.framebuffer.width(), height = result.framebuffer.height();
+    write_output(run.output, std::move(result.framebuffer), o);
+    times.write = seconds_since(rendered);
+    report_render(o, run, session.scene(), width, height, times, *result.stats);
+}
+
+}  // namespace
+
+int run_render(const RenderOptions& o) {
+    const auto load_start = Clock::now();
+    const std::vector<Run> runs = planned_runs(o);
+    if (!is_svg_path(runs.front().output))
+        for (const std::string& note : o.notes) print_err("hikari: warning: {}\n", note);
+    const std::unique_ptr<Session> session = load_render_session(o);
+    const Camera camera = session->camera_for(render_request(o));
+    check_image_memory(camera);
+    if (is_svg_path(runs.front().output)) {
+        for (const Run& run : runs) run_drawing(o, *session, *run.method, run.output);
+        return 0;
+    }
+    for (const Run& run : runs) check_spreadsheet_size(run.output, camera);
+    if (o.print_matrices)
+        print_out("{}",
+                  explain_matrices(session->scene_as_rendered(render_request(o)), o.own.raster));
+    double load_seconds = seconds_since(load_start);
+    for (const Run& run : runs) {
+        render_with(o, *session, run, load_seconds);
+        load_seconds = 0;
+    }
+    return 0;
+}
+
+}  // namespace hikari::cli

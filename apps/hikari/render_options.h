@@ -1,0 +1,70 @@
+#pragma once
+// The options of `hikari render` (and the scene options `explain` shares with it).
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hikari/frame/framebuffer.h"
+#include "hikari/frame/tone_map.h"
+#include "hikari/io/scene/scene_overrides.h"
+#include "hikari/methods/method_options.h"
+#include "hikari/methods/registry.h"
+#include "hikari/shading/shading_terms.h"
+
+namespace hikari::cli {
+
+/// Everything `hikari render` was asked; the load, render and write steps read their parts.
+struct RenderOptions {
+    std::string scene_file;  ///< empty: the built-in assignment scene
+    std::string output;
+    /// -m a,b,c: each in turn, one scene load; default: the registry's first (raytrace).
+    std::vector<std::string> methods{std::string(hikari::methods().front().name)};
+    Aov aov = Aov::color;
+    int width = 0, height = 0;
+    int threads = 0;
+    double max_memory_gib = 0;
+    double max_input_gib = 0;  ///< --max-input-size; 0 = each kind's default
+    bool quiet = false;
+    bool stats = false;
+    bool print_matrices = false;
+    bool wireframe_overlay = false;
+    int tessellation = 0;            ///< --tessellation N: every sphere's segments; 0: the scene's
+    std::vector<float> depth_cue;    ///< --depth-cue NEAR,FAR; empty: the scene's own, if any
+    std::vector<float> depth_range;  ///< --depth-range NEAR,FAR; empty: the visible range
+    std::vector<SceneOverride> overrides;  ///< --set PATH=VALUE, in order
+    bool ground = false;                   ///< --ground: a plane under a model file
+    std::vector<float> camera_from;        ///< --camera-from X,Y,Z; empty: the scene's or framing
+    std::vector<float> look_at;            ///< --look-at X,Y,Z
+    float crease_angle = -1;               ///< --crease-angle DEG; negative: each mesh's own
+    MethodSettings own;                 ///< every method option; the chosen method reads its part
+    std::vector<std::string> notes;     ///< warnings found while checking the command line
+    float exposure = 0.0f;              ///< --exposure EV: colour × 2^EV in every format
+    ToneMap tone_map = ToneMap::clamp;  ///< --tonemap: for the formats of display values
+    int bit_depth = 8;                  ///< --bit-depth: 16 for .png and .ppm
+};
+
+/// `--tonemap`'s words.
+constexpr Choice<ToneMap> k_tone_map_choices[] = {
+    {"clamp", ToneMap::clamp}, {"reinhard", ToneMap::reinhard}, {"aces", ToneMap::aces}};
+
+/// `--aov`'s words.
+constexpr Choice<Aov> k_aov_choices[] = {
+    {"color", Aov::color},       {"depth", Aov::depth},       {"id", Aov::id},
+    {"normal", Aov::normal},     {"ambient", Aov::ambient},   {"diffuse", Aov::diffuse},
+    {"specular", Aov::specular}, {"overdraw", Aov::overdraw}, {"paint-order", Aov::paint_order},
+    {"spans", Aov::spans},       {"culled", Aov::culled}};
+
+/// The word of `aov` ("paint-order").
+inline std::string_view aov_name(Aov aov) { return choice_name<Aov>(k_aov_choices, aov); }
+
+/// The shading term an --aov word names, if it names one.
+inline std::optional<ShadingTerm> shading_term_of(Aov aov) {
+    if (aov == Aov::ambient) return ShadingTerm::ambient;
+    if (aov == Aov::diffuse) return ShadingTerm::diffuse;
+    if (aov == Aov::specular) return ShadingTerm::specular;
+    return std::nullopt;
+}
+
+}  // namespace hikari::cli

@@ -1,0 +1,30 @@
+#pragma once
+// The write step of `hikari render`: the film a render fills for its output file, and the
+// finished framebuffer written there as the options ask (buffer, exposure, tone map, bits).
+
+#include <string>
+
+#include "hikari/core/image.h"
+#include "hikari/frame/film.h"
+#include "hikari/frame/framebuffer.h"
+#include "render_options.h"
+
+namespace hikari::cli {
+
+/// The film for `output`: 8-bit sRGB where the file keeps only that (the colour, neither exposed
+/// nor tone mapped, in an 8-bit PNG, JPEG, PPM or spreadsheet), else linear floats.
+Film output_film(const Camera& camera, const std::string& output, const RenderOptions& o);
+
+/// Writes the buffer --aov of a finished render to `output` (unless the render was interrupted:
+/// throws Interrupted): an AOV buffer as a picture (frame/aov_picture.h) where the file holds
+/// display values, else as its values; a colour render developed as --exposure and --tonemap ask
+/// (the tone map only where the file holds display values; float files keep radiance), at
+/// --bit-depth.
+void write_output(const std::string& output, Framebuffer&& fb, const RenderOptions& o);
+
+/// `--progressive`: the image so far written over `output` (atomically, as every image is: a
+/// viewer watching the file sees the old image or the new one, never half of one).
+void write_progressive_snapshot(const std::string& output, const Image& mean,
+                                const RenderOptions& o);
+
+}  // namespace hikari::cli

@@ -1,0 +1,90 @@
+#include "render_report.h"
+
+#include <fmt/format.h>
+
+#include "console.h"
+#include "hikari/core/simd_level.h"
+
+namespace hikari::cli {
+
+namespace {
+
+/// The first --stats line: phase times, rays and paths per second.
+void print_phase_stats(const PhaseTimes& times, const RenderStats& stats) {
+    std::string text =
+        fmt::format("hikari: stats: load {:.1f} ms, render {:.1f} ms, write {:.1f} ms",
+                    1e3 * times.load, 1e3 * times.render, 1e3 * times.write);
+    if (const uint64_t rays = stats.rays_traced.load(); rays > 0)
+        text += fmt::format("; {} rays, {:.2f} Mrays/s", rays, 1e-6 * double(rays) / times.render);
+    if (const uint64_t paths = stats.paths_traced.load(); paths > 0)
+        text += fmt::format("; {} paths, {:.2f} Mpaths/s, {} NaN/Inf samples", paths,
+                            1e-6 * double(paths) / times.render, stats.bad_samples.load());
+    print_err("{}\n", text);
+}
+
+/// The raster methods' lines: the vertex stage (Fig 4.2-4.3) and the hidden-surface work.
+void print_raster_stats(const RenderStats& stats, const Method& method) {
+    const uint64_t exact_spheres = stats.raster_exact_spheres.load();
+    const uint64_t in = stats.raster_triangles.load();
+    if (in == 0 && exact_spheres == 0) return;
+    print_err(
+        "hikari: stats: vertex stage: {} triangles in, {} culled (back faces), {} clipped away, "
+        "{} cut by clipping; {} screen triangles\n",
+        in, stats.raster_culled.load(), stats.raster_clipped_away.load(), stats.raster_cut.load(),
+        stats.raster_screen_triangles.load());
+    if (exact_spheres > 0)
+        print_err("hikari: stats: {} exact sphere(s) drawn per pixel\n", exact_spheres);
+    const uint64_t covered = stats.raster_covered_pixels.load();
+    const uint64_t work = stats.raster_fragments.load();
+    std::string text = fmt::format("hikari: stats: hidden surfaces: {} pixels covered", covered);
+    if (work > 0)
+        text += fmt::format("; {} {} ({:.2f} per covered pixel)", work, method.stats.work,
+                            covered ? double(work) / double(covered) : 0.0);
+    if (const uint64_t splits = stats.depth_sort_splits.load(); splits > 0 || method.stats.splits)
+        text += fmt::format("; {} depth-sort splits", splits);
+    print_err("{}\n", text);
+}
+
+/// The BVH lines: triangles and spheres, nodes, bytes, build time and kernels.
+void print_bvh_stats(const RenderStats& stats) {
+    if (const uint64_t triangles = stats.bvh_triangles.load(); triangles > 0)
+        print_err(
+            "hikari: stats: BVH {} triangles, {} nodes (8-wide), {:.1f} bytes/triangle, {}, {} "
+            "kernels\n",
+            triangles, stats.bvh_nodes.load(), double(stats.bvh_bytes.load()) / double(triangles),
+            stats.bvh_reused.load()
+                ? std::string("kept from the session's first render")
+                : fmt::format("built in {:.1f} ms", 1e-3 * double(stats.bvh_build_us.load())),
+            simd_level_name(best_simd_level()));
+    if (const uint64_t spheres = stats.bvh_spheres.load(); spheres > 0)
+        print_err("hikari: stats: sphere BVH {} spheres, {} nodes (8-wide), {:.1f} bytes/sphere\n",
+                  spheres, stats.bvh_sphere_nodes.load(),
+                  double(stats.bvh_sphere_bytes.load()) / double(spheres));
+}
+
+}  // namespace
+
+void print_summary(const std::string& output, int width, int height, const Method& method,
+                   const Scene& scene, const PhaseTimes& times, const RenderStats& stats) {
+    std::string text =
+        fmt::format("hikari: wrote {} ({}x{}, {}; ", output, width, height, method.name);
+    const size_t triangles = scene.triangles.indices.size();
+    text += fmt::format("{} triangle{}", triangles, triangles == 1 ? "" : "s");
+    if (const size_t spheres = scene.spheres.size(); spheres > 0)
+        text += fmt::format(", {} sphere{}", spheres, spheres == 1 ? "" : "s");
+    text += fmt::format("; load {:.3f} s", times.load);
+    if (const uint64_t us = stats.bvh_build_us.load(); us > 0)
+        text += fmt::format(", BVH {:.1f} ms", 1e-3 * double(us));
+    else if (stats.bvh_reused.load())
+        text += ", BVH kept";
+    text += fmt::format(", render {:.3f} s)", times.render);
+    print_err("{}\n", text);
+}
+
+void print_stats(const PhaseTimes& times, const RenderStats& stats, const Method& method) {
+    print_phase_stats(times, stats);
+    print_raster_stats(stats, method);
+    print_bvh_stats(stats);
+}
+
+}  // namespace hikari::cli
