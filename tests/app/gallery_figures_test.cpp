@@ -32,8 +32,8 @@ using hikari::testing::run_hikari;
 
 /// Renders the figures `only` names into `dir` (English captions, 200 pixels wide).
 void make_gallery(const fs::path& dir, const std::string& only, const std::string& lang = "en") {
-    const auto r = run_hikari("gallery --width 200 --threads 2 --lang " + lang + " --only " +
-                              "'" + only + "' -o " + dir.string());
+    const auto r = run_hikari("gallery --width 200 --threads 2 --lang " + lang + " --only " + "'" +
+                              only + "' -o " + dir.string());
     ASSERT_EQ(r.status, 0) << r.output;
 }
 
@@ -97,10 +97,9 @@ TEST(GalleryFigures, Fig41bFarIsDarkNearIsUnchanged) {
     const hikari::testing::TempDir dir;
     make_gallery(dir.path(), "4.1b");
     const std::string scenes = (dir / "scenes/").string();
-    for (const std::string& render :
-         {"model.json -o " + (dir / "plain.pfm").string(),
-          "model.json --aov depth -o " + (dir / "depth.pfm").string(),
-          "model-depth-cue.json -o " + (dir / "cued.pfm").string()}) {
+    for (const std::string& render : {"model.json -o " + (dir / "plain.pfm").string(),
+                                      "model.json --aov depth -o " + (dir / "depth.pfm").string(),
+                                      "model-depth-cue.json -o " + (dir / "cued.pfm").string()}) {
         const auto r = run_hikari("render " + scenes + render + " -m zbuffer --width 200 -q");
         ASSERT_EQ(r.status, 0) << r.output;
     }
@@ -124,8 +123,9 @@ TEST(GalleryFigures, Fig424bShadowsOnlyIsFlatColourWithCastShadows) {
     const hikari::testing::TempDir dir;
     make_gallery(dir.path(), "4.24");
     const Image shadows = read_image(dir / "fig4-24-shadows.png");
-    const auto flat = run_hikari("render " + (dir / "scenes/model-flat.json").string() +
-                                 " -m raytrace --shadows none -q -o " + (dir / "flat.png").string());
+    const auto flat =
+        run_hikari("render " + (dir / "scenes/model-flat.json").string() +
+                   " -m raytrace --shadows none -q -o " + (dir / "flat.png").string());
     ASSERT_EQ(flat.status, 0) << flat.output;
     const Image colour = read_image(dir / "flat.png");
     size_t shadowed = 0, coloured = 0, unchanged = 0;
@@ -174,8 +174,8 @@ TEST(GalleryFigures, Fig443WallLiesMidCellOfItsSolidChecker) {
     const hikari::testing::TempDir dir;
     make_gallery(dir.path(), "4.43");
     for (const char* ior : {"1", "1.33", "1.5", "2.4"}) {
-        const std::string text = hikari::testing::read_text(
-            dir / (std::string("scenes/refraction-") + ior + ".json"));
+        const std::string text =
+            hikari::testing::read_text(dir / (std::string("scenes/refraction-") + ior + ".json"));
         const auto scene = nlohmann::json::parse(text);
         const float size = scene["materials"]["wall"]["texture"]["size"].get<float>();
         const float z = scene["objects"][1]["point"][2].get<float>();
@@ -203,9 +203,9 @@ TEST(GalleryFigures, CaptionsInJapaneseUseTheLecturesTermsAndNeverRepeatTheirNum
     const hikari::testing::TempDir dir;
     make_gallery(dir.path(), "4.1a,4.1b,4.1c,4.1d,4.1e,4.1f,4.7,Alg 4.1,Alg 4.2,4.24", "ja");
     const std::string index = hikari::testing::read_text(dir / "index.html");
-    for (const char* term : {"ワイヤフレーム", "デプスキューイング", "隠線消去", "陰影の付加",
-                             "影付け", "模様の付加", "奥行きソート法", "スキャンライン法",
-                             "Zバッファ法", "シャドウマッピング", "図4.7"})
+    for (const char* term :
+         {"ワイヤフレーム", "デプスキューイング", "隠線消去", "陰影の付加", "影付け", "模様の付加",
+          "奥行きソート法", "スキャンライン法", "Zバッファ法", "シャドウマッピング", "図4.7"})
         EXPECT_NE(index.find(term), std::string::npos) << term;
     EXPECT_FALSE(std::regex_search(index, std::regex("<b>([^<]+)</b>: \\1")));
     EXPECT_FALSE(std::regex_search(index, std::regex("Fig [0-9.a-z]+: Fig")));
@@ -220,8 +220,8 @@ TEST(GalleryFigures, CommandsRunAsPrintedFromAMovedGallery) {
     size_t ran = 0;
     for (auto it = std::sregex_iterator(index.begin(), index.end(), code);
          it != std::sregex_iterator(); ++it, ++ran) {
-        const std::string command = "cd '" + (dir / "moved").string() + "' && " +
-                                    HIKARI_CLI_PATH + " " + (*it)[1].str() + " -q";
+        const std::string command = "cd '" + (dir / "moved").string() + "' && " + HIKARI_CLI_PATH +
+                                    " " + (*it)[1].str() + " -q";
         const int status = std::system(command.c_str());
         EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << command;
     }

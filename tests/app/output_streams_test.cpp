@@ -27,7 +27,9 @@ class OutputStreams : public ::testing::Test {
     std::string path(const std::string& name) const { return (m_dir / name).string(); }
 
     /// The lecture's assignment scene of the repository.
-    static std::string scene() { return std::string(HIKARI_SOURCE_DIR) + "/scenes/assignment.json"; }
+    static std::string scene() {
+        return std::string(HIKARI_SOURCE_DIR) + "/scenes/assignment.json";
+    }
 
     /// `hikari ARGS` with stdout on /dev/full: its status and what it said on stderr.
     static RunResult with_full_stdout(const std::string& args) {
@@ -42,8 +44,8 @@ class OutputStreams : public ::testing::Test {
 };
 
 TEST_F(OutputStreams, FullStderrDoesNotStopARender) {
-    const RunResult r = run_hikari_redirected("render -o " + path("x.png") + " --width 8 --stats",
-                                              "2>/dev/full");
+    const RunResult r =
+        run_hikari_redirected("render -o " + path("x.png") + " --width 8 --stats", "2>/dev/full");
     EXPECT_EQ(r.status, 0);
     EXPECT_TRUE(fs::exists(path("x.png")));
 }
@@ -54,8 +56,8 @@ TEST_F(OutputStreams, ClosedStderrDoesNotStopARenderNorReceiveItsFile) {
     EXPECT_EQ(r.status, 0);
     ASSERT_TRUE(fs::exists(path("x.png")));
     // Had a file the render writes taken descriptor 2, the lines for stderr would be in it.
-    const RunResult cmp = run_hikari_redirected(
-        "compare " + path("x.png") + " " + path("x.png") + " --psnr", "2>&1");
+    const RunResult cmp =
+        run_hikari_redirected("compare " + path("x.png") + " " + path("x.png") + " --psnr", "2>&1");
     EXPECT_EQ(cmp.status, 0) << cmp.output;
 }
 

@@ -22,7 +22,8 @@ namespace fs = std::filesystem;
 
 /// Files where a method's name is data, not a comparison: the gallery's figures are command
 /// lines (`{"-m", "zbuffer"}`) run by `hikari render`.
-const std::set<std::string> k_names_as_arguments = {"apps/hikari/gallery.cpp"};
+const std::set<std::string> k_names_as_arguments = {"apps/hikari/gallery.cpp",
+                                                    "apps/hikari/gallery_figures.cpp"};
 
 /// Whether `line` (code, not a comment) holds `name` as a whole string literal other than the
 /// argument of find_method.

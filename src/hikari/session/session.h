@@ -61,11 +61,11 @@ struct RenderProgress {
 
 /// One render of a session's scene. Everything left unset is the scene's own.
 struct RenderRequest {
-    std::string method = "raytrace";  ///< a name of methods()
-    std::optional<Camera> camera;     ///< another camera (its width and height included)
-    int width = 0, height = 0;        ///< image size; one alone keeps the camera's aspect ratio
-    Aov aov = Aov::color;             ///< the buffer asked for (frame/framebuffer.h)
-    MethodSettings options;           ///< the method's own settings (`--spp`, `--shadows`, ...)
+    std::string method{methods().front().name};  ///< a name of methods(); the default first
+    std::optional<Camera> camera;                ///< another camera (its width and height included)
+    int width = 0, height = 0;  ///< image size; one alone keeps the camera's aspect ratio
+    Aov aov = Aov::color;       ///< the buffer asked for (frame/framebuffer.h)
+    MethodSettings options;     ///< the method's own settings (`--spp`, `--shadows`, ...)
     /// FilmFormat::srgb8: the colour developed to 8-bit sRGB as it is rendered (what an 8-bit
     /// picture file keeps, at a quarter of the memory); linear otherwise.
     FilmFormat film = FilmFormat::linear;
