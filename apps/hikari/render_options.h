@@ -45,26 +45,4 @@ struct RenderOptions {
     int bit_depth = 8;                  ///< --bit-depth: 16 for .png and .ppm
 };
 
-/// `--tonemap`'s words.
-constexpr Choice<ToneMap> k_tone_map_choices[] = {
-    {"clamp", ToneMap::clamp}, {"reinhard", ToneMap::reinhard}, {"aces", ToneMap::aces}};
-
-/// `--aov`'s words.
-constexpr Choice<Aov> k_aov_choices[] = {
-    {"color", Aov::color},       {"depth", Aov::depth},       {"id", Aov::id},
-    {"normal", Aov::normal},     {"ambient", Aov::ambient},   {"diffuse", Aov::diffuse},
-    {"specular", Aov::specular}, {"overdraw", Aov::overdraw}, {"paint-order", Aov::paint_order},
-    {"spans", Aov::spans},       {"culled", Aov::culled}};
-
-/// The word of `aov` ("paint-order").
-inline std::string_view aov_name(Aov aov) { return choice_name<Aov>(k_aov_choices, aov); }
-
-/// The shading term an --aov word names, if it names one.
-inline std::optional<ShadingTerm> shading_term_of(Aov aov) {
-    if (aov == Aov::ambient) return ShadingTerm::ambient;
-    if (aov == Aov::diffuse) return ShadingTerm::diffuse;
-    if (aov == Aov::specular) return ShadingTerm::specular;
-    return std::nullopt;
-}
-
 }  // namespace hikari::cli

@@ -29,12 +29,8 @@ py::array owned_array(Vector&& values, std::vector<py::ssize_t> shape) {
     return py::array_t<float>(shape, reinterpret_cast<const float*>(kept->data()), free_when_done);
 }
 
-/// `--tonemap`'s words.
-constexpr Choice<ToneMap> k_tone_maps[] = {
-    {"clamp", ToneMap::clamp}, {"reinhard", ToneMap::reinhard}, {"aces", ToneMap::aces}};
-
 py::array to_srgb8(const py::array& array, float exposure, const std::string& tonemap) {
-    const std::optional<ToneMap> op = choice_value<ToneMap>(k_tone_maps, tonemap);
+    const std::optional<ToneMap> op = choice_value<ToneMap>(k_tone_map_choices, tonemap);
     if (!op) throw InputError("tonemap: '" + tonemap + "' is not one of clamp, reinhard, aces");
     Image image = array_image(array);
     expose_and_tone_map(image, exposure, *op);

@@ -3,10 +3,9 @@
 #include <string>
 
 #include "bindings.h"
-#include "hikari/explain/algorithm_aovs.h"
 #include "hikari/methods/method_option_text.h"
 #include "hikari/methods/registry.h"
-#include "scene_words.h"
+#include "hikari/shading/shading_terms.h"
 
 namespace hikari::python {
 
@@ -49,12 +48,11 @@ py::dict method_data(const Method& method) {
     }
     out["options"] = options;
     py::list aovs;
-    for (const AovWord& a : k_aov_words) {
-        const bool term = a.aov == Aov::ambient || a.aov == Aov::diffuse || a.aov == Aov::specular;
-        if ((term && !method.shading_terms) ||
-            (is_algorithm_aov(a.aov) && !has_algorithm_aov(method, a.aov)))
+    for (const Choice<Aov>& a : k_aov_choices) {
+        if ((shading_term_of(a.value) && !method.shading_terms) ||
+            (is_algorithm_aov(a.value) && !has_algorithm_aov(method, a.value)))
             continue;
-        aovs.append(std::string(a.word));
+        aovs.append(std::string(a.name));
     }
     out["aovs"] = aovs;
     out["draws_lines"] = method.draw != nullptr;

@@ -1,32 +1,18 @@
 #pragma once
-// The words Python callers use for AOVs, as the command line's --aov takes them.
+// The words Python callers use for AOVs: the command line's --aov words (methods/
+// method_options.h), with "paint_order" taken for "paint-order" as a keyword would spell it.
 
 #include <optional>
 #include <string_view>
 
-#include "hikari/frame/framebuffer.h"
+#include "hikari/methods/method_options.h"
 
 namespace hikari::python {
 
-/// An AOV and its word.
-struct AovWord {
-    std::string_view word;
-    Aov aov;
-};
-
-inline constexpr AovWord k_aov_words[] = {
-    {"color", Aov::color},       {"depth", Aov::depth},       {"id", Aov::id},
-    {"normal", Aov::normal},     {"ambient", Aov::ambient},   {"diffuse", Aov::diffuse},
-    {"specular", Aov::specular}, {"overdraw", Aov::overdraw}, {"paint-order", Aov::paint_order},
-    {"spans", Aov::spans},       {"culled", Aov::culled}};
-
-/// The AOV `word` names ("paint_order" as well as "paint-order"), or nullopt.
+/// The AOV `word` names, or nullopt.
 inline std::optional<Aov> aov_named(std::string_view word) {
-    for (const AovWord& a : k_aov_words) {
-        if (a.word == word) return a.aov;
-        if (a.word == "paint-order" && word == "paint_order") return a.aov;
-    }
-    return std::nullopt;
+    if (word == "paint_order") return Aov::paint_order;
+    return choice_value<Aov>(k_aov_choices, word);
 }
 
 }  // namespace hikari::python

@@ -10,6 +10,8 @@
 #include <variant>
 
 #include "hikari/core/vec.h"
+#include "hikari/frame/framebuffer.h"
+#include "hikari/frame/tone_map.h"
 #include "hikari/integrators/path/path_tracer.h"
 #include "hikari/integrators/whitted/whitted.h"
 #include "hikari/raster/lines/line_settings.h"
@@ -58,6 +60,20 @@ std::string_view choice_name(std::span<const Choice<T>> choices, T value) {
         if (c.value == value) return c.name;
     return {};
 }
+
+/// `--aov`'s words (every front end names buffers by them).
+inline constexpr Choice<Aov> k_aov_choices[] = {
+    {"color", Aov::color},       {"depth", Aov::depth},       {"id", Aov::id},
+    {"normal", Aov::normal},     {"ambient", Aov::ambient},   {"diffuse", Aov::diffuse},
+    {"specular", Aov::specular}, {"overdraw", Aov::overdraw}, {"paint-order", Aov::paint_order},
+    {"spans", Aov::spans},       {"culled", Aov::culled}};
+
+/// The word of `aov` ("paint-order").
+inline std::string_view aov_name(Aov aov) { return choice_name<Aov>(k_aov_choices, aov); }
+
+/// `--tonemap`'s words.
+inline constexpr Choice<ToneMap> k_tone_map_choices[] = {
+    {"clamp", ToneMap::clamp}, {"reinhard", ToneMap::reinhard}, {"aces", ToneMap::aces}};
 
 /// `--interp`: the lecture's three ways to shade a polygon.
 inline constexpr Choice<Interpolation> k_interpolation_choices[] = {

@@ -73,14 +73,6 @@ bool same_geometry(const Scene& a, const Scene& b) {
            a.primitive_count == b.primitive_count;
 }
 
-/// The shading term an AOV names, if it names one.
-std::optional<ShadingTerm> shading_term_of(Aov aov) {
-    if (aov == Aov::ambient) return ShadingTerm::ambient;
-    if (aov == Aov::diffuse) return ShadingTerm::diffuse;
-    if (aov == Aov::specular) return ShadingTerm::specular;
-    return std::nullopt;
-}
-
 /// Refuses a buffer `method` has no picture of (the command line refuses it before any work;
 /// other front ends meet it here).
 void check_aov(const Method& method, Aov aov) {
@@ -93,6 +85,19 @@ void check_aov(const Method& method, Aov aov) {
             "such term (methods that do: {})",
             method.name, shading_term_methods()));
 }
+
+/// RenderRequest::threads, for as long as it lives (0: every core).
+class ThreadLimit {
+  public:
+    explicit ThreadLimit(int threads) {
+        if (threads > 0)
+            m_limit.emplace(tbb::global_control::max_allowed_parallelism,
+                            static_cast<size_t>(threads));
+    }
+
+  private:
+    std::optional<tbb::global_control> m_limit;
+};
 
 /// Watches a running render for its caller: reports progress about ten times a second and
 /// passes a cancellation on to the method. No thread when there is nothing to watch.
@@ -235,10 +240,7 @@ RenderResult Session::render(const RenderRequest& request) {
     check_image_memory(camera_for(request));
     std::optional<Scene> changed;
     const Scene& scene = scene_for(request, changed);
-    std::optional<tbb::global_control> thread_limit;
-    if (request.threads > 0)
-        thread_limit.emplace(tbb::global_control::max_allowed_parallelism,
-                             static_cast<size_t>(request.threads));
+    const ThreadLimit thread_limit(request.threads);
     RenderResult result;
     RenderControl control;
     const auto start = Clock::now();
@@ -280,10 +282,7 @@ LineDrawing Session::draw(const RenderRequest& request) {
                                      drawing_methods()));
     std::optional<Scene> changed;
     const Scene& scene = scene_for(request, changed);
-    std::optional<tbb::global_control> thread_limit;
-    if (request.threads > 0)
-        thread_limit.emplace(tbb::global_control::max_allowed_parallelism,
-                             static_cast<size_t>(request.threads));
+    const ThreadLimit thread_limit(request.threads);
     return draw_scene(method, scene, request.options);
 }
 

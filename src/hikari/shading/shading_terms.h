@@ -4,12 +4,23 @@
 // (`--aov ambient|diffuse|specular`). The code that renders it is the code that renders the
 // full colour, so the three images add up to the colour image.
 
+#include <optional>
+
+#include "hikari/frame/framebuffer.h"
 #include "hikari/scene/scene.h"
 
 namespace hikari {
 
 /// A term of ka Ia + Σ I (kd cos α + ks cos^n γ).
 enum class ShadingTerm { ambient, diffuse, specular };
+
+/// The shading term an AOV names (`--aov ambient|diffuse|specular`), if it names one.
+inline std::optional<ShadingTerm> shading_term_of(Aov aov) {
+    if (aov == Aov::ambient) return ShadingTerm::ambient;
+    if (aov == Aov::diffuse) return ShadingTerm::diffuse;
+    if (aov == Aov::specular) return ShadingTerm::specular;
+    return std::nullopt;
+}
 
 /// `scene` with every material's other two terms set to zero. The ambient term also keeps what
 /// rays that meet no surface see (background, sky, environment, the faces of area lights) and
