@@ -181,16 +181,16 @@ TEST(FunctionLength, MeasuresLinesBetweenTheBraces) {
 }
 
 TEST(FunctionLength, LambdasLiteralsAndCommentsBelongToTheirFunction) {
-    const std::string text = "namespace a { namespace {\n" +
-                             function_of("with_lambdas", 3,
-                                         "auto f = [&](int y) { if (y) { return y; } return 0; };") +
-                             "void g(std::string s = {}) {\n"
-                             "    const char* t = \"}{\"; char u = '{';  // }\n"
-                             "    const char* v = R\"x(}})x\"; /* { */\n"
-                             "#define BRACE {\n"
-                             "    call([] { return 1; }, {1, 2});\n"
-                             "}\n"
-                             "}}\n";
+    const std::string text =
+        "namespace a { namespace {\n" +
+        function_of("with_lambdas", 3, "auto f = [&](int y) { if (y) { return y; } return 0; };") +
+        "void g(std::string s = {}) {\n"
+        "    const char* t = \"}{\"; char u = '{';  // }\n"
+        "    const char* v = R\"x(}})x\"; /* { */\n"
+        "#define BRACE {\n"
+        "    call([] { return 1; }, {1, 2});\n"
+        "}\n"
+        "}}\n";
     EXPECT_EQ(lengths(text), (std::map<std::string, int>{{"with_lambdas", 3}, {"g", 4}}));
 }
 
@@ -200,8 +200,7 @@ TEST(FunctionLength, MemberFunctionsCountAndTablesDoNot) {
         "struct S : Base {\n  int m() const {\n    return 1;\n  }\n  int n = 0;\n};\n"
         "const auto lambda = [](int x) {\n  return x;\n};\n"
         "extern \"C\" void handler(int) {\n  stop();\n}\n";
-    EXPECT_EQ(lengths(text),
-              (std::map<std::string, int>{{"m", 1}, {"lambda", 1}, {"handler", 1}}));
+    EXPECT_EQ(lengths(text), (std::map<std::string, int>{{"m", 1}, {"lambda", 1}, {"handler", 1}}));
 }
 
 TEST(FunctionLength, NoFunctionInAppsIsLongerThanSixtyLines) {
