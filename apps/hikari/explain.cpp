@@ -8,6 +8,7 @@
 #include "console.h"
 #include "hikari/core/error.h"
 #include "hikari/methods/registry.h"
+#include "hikari/session/session.h"
 #include "load_scene.h"
 
 namespace hikari::cli {
@@ -81,20 +82,13 @@ CLI::App* add_explain_command(CLI::App& app, ExplainOptions& e) {
 }
 
 int run_explain(const ExplainOptions& e) {
-    const ExplainViews& views = find_method(e.method)->explain;  // checked by the parser
-    const Scene scene = load_render_scene(e.scene);
-    const MethodSettings& own = e.scene.own;
-    // A method's view takes the step the command line chose: a pixel, a row, or the whole run.
-    if (views.pixel && (!e.pixel.empty() || !views.row)) {
-        if (e.pixel.empty())
-            throw InputError(fmt::format("explain -m {} needs --pixel X,Y", e.method));
-        print_out("{}", views.pixel(scene, own, e.pixel[0], e.pixel[1]));
-    } else if (views.row && (e.row || !views.whole)) {
-        if (!e.row) throw InputError(fmt::format("explain -m {} needs --row Y", e.method));
-        print_out("{}", views.row(scene, own, *e.row));
-    } else {
-        print_out("{}", views.whole(scene, own));
-    }
+    const std::unique_ptr<Session> session = load_render_session(e.scene);
+    ExplainStep step;
+    if (!e.pixel.empty()) step.pixel = std::pair{e.pixel[0], e.pixel[1]};
+    step.row = e.row;
+    RenderRequest request = render_request(e.scene);
+    request.method = e.method;
+    print_out("{}", session->explain(request, step));
     return 0;
 }
 

@@ -64,13 +64,6 @@ RenderRequest render_request(const RenderOptions& o) {
     return request;
 }
 
-Scene load_render_scene(const RenderOptions& o) {
-    const std::unique_ptr<Session> session = load_render_session(o);
-    Scene scene = session->scene_as_rendered(render_request(o));
-    check_image_memory(scene.camera);
-    return scene;
-}
-
 std::unique_ptr<Session> load_render_session(const RenderOptions& o) {
     set_limits(o);
     std::unique_ptr<Session> session;

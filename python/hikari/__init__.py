@@ -18,7 +18,8 @@ from . import _hikari
 from ._hikari import InputError, compare, methods, read, to_srgb8, write
 
 __version__ = _hikari.__version__
-__all__ = ["Scene", "Image", "InputError", "methods", "to_srgb8", "write", "read", "compare"]
+__all__ = ["Scene", "Image", "Explanation", "InputError", "methods", "explain", "to_srgb8",
+           "write", "read", "compare"]
 
 
 class Image(_np.ndarray):
@@ -45,6 +46,42 @@ def _grey_picture(values):
     low, high = values[finite].min(), values[finite].max()
     scaled = _np.where(finite, (values - low) / max(high - low, 1e-30), 0.0)
     return _np.repeat(scaled[..., None], 3, axis=2).astype(_np.float32)
+
+
+class Explanation(str):
+    """What `hikari explain` prints for one step of an algorithm: the text itself (print it), and
+    the same text as data: `title` (its first line) and `steps`, a list of
+    {"text": line, "steps": [...]} nested as the text indents them (the Z-buffer's fragments,
+    the ray tree's rays with their shadow rays, the scanline's edge-table entries, ...)."""
+
+    @property
+    def title(self):
+        return self.split("\n", 1)[0]
+
+    @property
+    def steps(self):
+        root = {"text": self.title, "steps": []}
+        open_steps = [(-1, root)]  # (indent, step) from the root down to the last line
+        for line in self.splitlines()[1:]:
+            if not line.strip():
+                continue
+            indent = len(line) - len(line.lstrip(" "))
+            while open_steps[-1][0] >= indent:
+                open_steps.pop()
+            step = {"text": line.strip(), "steps": []}
+            open_steps[-1][1]["steps"].append(step)
+            open_steps.append((indent, step))
+        return root["steps"]
+
+
+def explain(scene, method, pixel=None, row=None, width=None, height=None, camera=None,
+            **method_options):
+    """One step of `method`'s algorithm on `scene`, as `hikari explain` prints it: pixel=(x, y)
+    for zbuffer (the fragments tested there, Alg 4.2) and raytrace (the ray tree, Alg 4.3),
+    row=y for scanline (edge table, active edges and spans, Alg 4.1), neither for depthsort
+    (Newell's comparisons and the painting order). An Explanation: print it, or read .steps."""
+    return Explanation(scene._session.explain(method, pixel, row, width, height, camera,
+                                              **method_options))
 
 
 class Scene:

@@ -8,7 +8,9 @@
 #include <future>
 #include <string>
 #include <thread>
+#include <type_traits>
 
+#include <fmt/format.h>
 #include <pybind11/stl.h>
 #include <nlohmann/json.hpp>
 
@@ -50,9 +52,25 @@ std::string option_text(const py::handle& value) {
     throw InputError("a method option takes a number, a word or a list of numbers");
 }
 
+/// `count` numbers from a Python sequence, or InputError naming `what`.
+template <class Number>
+std::vector<Number> numbers_of(const py::handle& value, size_t count, const std::string& what) {
+    std::vector<Number> numbers;
+    if (py::isinstance<py::sequence>(value) && !py::isinstance<py::str>(value))
+        for (const py::handle item : value.cast<py::sequence>()) {
+            const bool integral = py::isinstance<py::int_>(item) && !py::isinstance<py::bool_>(item);
+            if (!integral && !(std::is_floating_point_v<Number> && py::isinstance<py::float_>(item)))
+                break;
+            numbers.push_back(item.cast<Number>());
+        }
+    if (numbers.size() != count || py::len(value) != count)
+        throw InputError(fmt::format("{}: expected {} {}", what, count,
+                                     std::is_floating_point_v<Number> ? "numbers" : "whole numbers"));
+    return numbers;
+}
+
 Vec3 vec3_of(const py::handle& value, const char* what) {
-    const auto v = value.cast<std::vector<float>>();
-    if (v.size() != 3) throw InputError(std::string("camera.") + what + ": expected 3 numbers");
+    const auto v = numbers_of<float>(value, 3, std::string("camera.") + what);
     return {v[0], v[1], v[2]};
 }
 
@@ -147,28 +165,36 @@ auto run_interruptible(Work&& work, const CancelToken& token, const std::atomic<
     return future.get();
 }
 
-py::object render(Session& session, const std::string& method, std::optional<int> width,
-                  std::optional<int> height, const std::string& aov, const py::object& camera,
-                  std::optional<int> threads, const py::object& progress,
-                  const py::kwargs& options) {
+/// What render() and explain() ask of the session: method, size, camera and method options.
+RenderRequest request_of(const Session& session, const std::string& method,
+                         std::optional<int> width, std::optional<int> height,
+                         const py::object& camera, const py::kwargs& options) {
     RenderRequest request;
     request.method = method;
     const Method& chosen = method_named(method);
-    const std::optional<Aov> buffer = aov_named(aov);
-    if (!buffer) throw InputError("aov: '" + aov + "' is not an AOV (see hikari.methods())");
-    request.aov = *buffer;
-    request.algorithm_counts = true;
     if (!camera.is_none())
         request.camera = camera_of(camera.cast<py::dict>(), session.scene().camera);
     if (width && *width < 1) throw InputError("width: expected a positive number of pixels");
     if (height && *height < 1) throw InputError("height: expected a positive number of pixels");
     request.width = width.value_or(0);
     request.height = height.value_or(0);
-    if (threads && *threads < 0) throw InputError("threads: expected 0 (every core) or more");
-    request.threads = threads.value_or(0);
     for (const auto& [name, value] : options)
         set_method_option(request.options, chosen, py::str(name).cast<std::string>(),
                           option_text(value));
+    return request;
+}
+
+py::object render(Session& session, const std::string& method, std::optional<int> width,
+                  std::optional<int> height, const std::string& aov, const py::object& camera,
+                  std::optional<int> threads, const py::object& progress,
+                  const py::kwargs& options) {
+    RenderRequest request = request_of(session, method, width, height, camera, options);
+    const std::optional<Aov> buffer = aov_named(aov);
+    if (!buffer) throw InputError("aov: '" + aov + "' is not an AOV (see hikari.methods())");
+    request.aov = *buffer;
+    request.algorithm_counts = true;
+    if (threads && *threads < 0) throw InputError("threads: expected 0 (every core) or more");
+    request.threads = threads.value_or(0);
     const CancelToken token;
     request.cancel = token;
     std::atomic<double> fraction{0.0};
@@ -177,6 +203,21 @@ py::object render(Session& session, const std::string& method, std::optional<int
         run_interruptible([&] { return session.render(request); }, token, fraction, progress);
     if (result.algorithm_picture) return image_array(std::move(*result.algorithm_picture));
     return framebuffer_array(std::move(result.framebuffer), request.aov);
+}
+
+/// `hikari explain`'s text for one step of a method's algorithm (Session::explain).
+std::string explain(Session& session, const std::string& method, const py::object& pixel,
+                    std::optional<int> row, std::optional<int> width, std::optional<int> height,
+                    const py::object& camera, const py::kwargs& options) {
+    const RenderRequest request = request_of(session, method, width, height, camera, options);
+    ExplainStep step;
+    if (!pixel.is_none()) {
+        const auto xy = numbers_of<int>(pixel, 2, "pixel");
+        step.pixel = std::pair{xy[0], xy[1]};
+    }
+    step.row = row;
+    py::gil_scoped_release unlocked;
+    return session.explain(request, step);
 }
 
 SceneSource file_source(const std::string& path, const py::object& set, bool ground,
@@ -265,6 +306,11 @@ void bind_scene(py::module_& m) {
              py::arg("progress") = py::none(),
              "Renders the scene: float32 linear values, (H, W, 3) for colour and normals, (H, W) "
              "for depth and ids. Method options as keywords (spp=16, shadows='pcf').")
+        .def("explain", &explain, py::arg("method"), py::arg("pixel") = py::none(),
+             py::arg("row") = py::none(), py::arg("width") = py::none(),
+             py::arg("height") = py::none(), py::arg("camera") = py::none(),
+             "One step of a method's algorithm as `hikari explain` prints it: pixel=(x, y) for "
+             "zbuffer and raytrace, row=y for scanline, neither for the depth sort.")
         .def_property_readonly("camera",
                                [](const Session& s) { return camera_dict(s.scene().camera); })
         .def_property_readonly("warnings", &Session::load_warnings)

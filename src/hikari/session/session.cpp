@@ -234,6 +234,27 @@ Scene Session::scene_as_rendered(const RenderRequest& request) {
     return changed ? std::move(*changed) : scene;
 }
 
+std::string Session::explain(const RenderRequest& request, const ExplainStep& step) {
+    const Method& method = method_named(request.method);
+    const ExplainViews& views = method.explain;
+    if (!has_explain_view(method))
+        throw InputError(fmt::format("explain: {} has no explain view", method.name));
+    const Scene scene = scene_as_rendered(request);
+    check_image_memory(scene.camera);
+    const MethodSettings& own = request.options;
+    // A method's view takes the step asked for: a pixel, a row, or the whole run.
+    if (views.pixel && (step.pixel || !views.row)) {
+        if (!step.pixel)
+            throw InputError(fmt::format("explain -m {} needs --pixel X,Y", method.name));
+        return views.pixel(scene, own, step.pixel->first, step.pixel->second);
+    }
+    if (views.row && (step.row || !views.whole)) {
+        if (!step.row) throw InputError(fmt::format("explain -m {} needs --row Y", method.name));
+        return views.row(scene, own, *step.row);
+    }
+    return views.whole(scene, own);
+}
+
 RenderResult Session::render(const RenderRequest& request) {
     const Method& method = method_named(request.method);
     check_aov(method, request.aov);

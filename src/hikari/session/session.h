@@ -81,6 +81,14 @@ struct RenderRequest {
     std::optional<CancelToken> cancel;  ///< stops the render early: render() throws Interrupted
 };
 
+/// The step of an algorithm `hikari explain` prints: a pixel (the Z-buffer's fragments, the ray
+/// tracer's ray tree), a row (the scanline method's lists) or, with neither, the whole run (the
+/// depth sort).
+struct ExplainStep {
+    std::optional<std::pair<int, int>> pixel;  ///< x, y (0, 0 at the top left)
+    std::optional<int> row;                    ///< 0 at the top
+};
+
 /// What a render gives back.
 struct RenderResult {
     /// Colour (RenderRequest::film) and the AOV buffers; empty for an algorithm AOV.
@@ -129,6 +137,10 @@ class Session {
     RenderResult render(const RenderRequest& request);
     /// The line segments a line method draws (what `-o drawing.svg` writes).
     LineDrawing draw(const RenderRequest& request);
+    /// One step of `request.method`'s algorithm as `hikari explain` prints it (explain/explain.h),
+    /// on the scene as `request` renders it. Throws InputError for a method without that view,
+    /// a missing --pixel/--row it needs, or a pixel or row outside the image.
+    std::string explain(const RenderRequest& request, const ExplainStep& step);
 
     /// How many structures the session keeps built (for tests and `--stats`).
     size_t kept_structures() const { return m_cache->size(); }
