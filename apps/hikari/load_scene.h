@@ -11,7 +11,8 @@ namespace hikari::cli {
 
 /// The render session of the scene the options name (the built-in assignment when none; loaded
 /// with --set, --camera-from, --look-at, --crease-angle and --ground), its load warnings printed
-/// on stderr; sets the --max-memory and --max-input-size limits first. Image size and the other per-render edits are the requests' (render.cpp).
+/// on stderr; sets the --max-memory and --max-input-size limits first. Image size and the other
+/// per-render edits are the requests' (render.cpp).
 std::unique_ptr<Session> load_render_session(const RenderOptions& o);
 
 /// What the options ask of every render: image size, AOV, method options, tessellation, depth

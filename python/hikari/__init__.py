@@ -116,7 +116,9 @@ class Scene:
     def render(self, method="raytrace", width=None, height=None, aov="color", camera=None,
                threads=None, progress=None, **method_options):
         """Renders with `method` (see hikari.methods()): an Image, float32 linear values,
-        (H, W, 3) for colour, normals and algorithm AOVs, (H, W) for depth and ids.
+        (H, W, 3) for colour, normals and the spans and culled pictures; (H, W) for depth, ids
+        and the counts of overdraw (fragments per pixel) and paint-order (1 + painting position;
+        0 for the background).
 
         camera: a dict with any of eye, look_at, up, fov_y, projection, view_height, width,
         height. progress: called with the fraction done. Method options as keywords:

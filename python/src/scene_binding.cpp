@@ -58,14 +58,17 @@ std::vector<Number> numbers_of(const py::handle& value, size_t count, const std:
     std::vector<Number> numbers;
     if (py::isinstance<py::sequence>(value) && !py::isinstance<py::str>(value))
         for (const py::handle item : value.cast<py::sequence>()) {
-            const bool integral = py::isinstance<py::int_>(item) && !py::isinstance<py::bool_>(item);
-            if (!integral && !(std::is_floating_point_v<Number> && py::isinstance<py::float_>(item)))
+            const bool integral =
+                py::isinstance<py::int_>(item) && !py::isinstance<py::bool_>(item);
+            if (!integral &&
+                !(std::is_floating_point_v<Number> && py::isinstance<py::float_>(item)))
                 break;
             numbers.push_back(item.cast<Number>());
         }
     if (numbers.size() != count || py::len(value) != count)
-        throw InputError(fmt::format("{}: expected {} {}", what, count,
-                                     std::is_floating_point_v<Number> ? "numbers" : "whole numbers"));
+        throw InputError(
+            fmt::format("{}: expected {} {}", what, count,
+                        std::is_floating_point_v<Number> ? "numbers" : "whole numbers"));
     return numbers;
 }
 
@@ -165,6 +168,15 @@ auto run_interruptible(Work&& work, const CancelToken& token, const std::atomic<
     return future.get();
 }
 
+/// A count AOV (overdraw, paint-order) as one float per pixel, (H, W), as ids are.
+py::array count_array(const Image& counts) {
+    py::array_t<float> out(
+        {static_cast<py::ssize_t>(counts.height), static_cast<py::ssize_t>(counts.width)});
+    float* values = out.mutable_data();
+    for (size_t i = 0; i < counts.pixels.size(); ++i) values[i] = counts.pixels[i].x;
+    return out;
+}
+
 /// What render() and explain() ask of the session: method, size, camera and method options.
 RenderRequest request_of(const Session& session, const std::string& method,
                          std::optional<int> width, std::optional<int> height,
@@ -201,6 +213,8 @@ py::object render(Session& session, const std::string& method, std::optional<int
     request.progress = [&fraction](const RenderProgress& p) { fraction.store(p.fraction); };
     RenderResult result =
         run_interruptible([&] { return session.render(request); }, token, fraction, progress);
+    if (result.algorithm_picture && is_count_aov(request.aov))
+        return count_array(*result.algorithm_picture);
     if (result.algorithm_picture) return image_array(std::move(*result.algorithm_picture));
     return framebuffer_array(std::move(result.framebuffer), request.aov);
 }
@@ -304,8 +318,9 @@ void bind_scene(py::module_& m) {
              py::arg("height") = py::none(), py::arg("aov") = "color",
              py::arg("camera") = py::none(), py::arg("threads") = py::none(),
              py::arg("progress") = py::none(),
-             "Renders the scene: float32 linear values, (H, W, 3) for colour and normals, (H, W) "
-             "for depth and ids. Method options as keywords (spp=16, shadows='pcf').")
+             "Renders the scene: float32 linear values, (H, W, 3) for colour, normals, spans and "
+             "culled, (H, W) for depth, ids, overdraw and paint-order. Method options as keywords "
+             "(spp=16, shadows='pcf').")
         .def("explain", &explain, py::arg("method"), py::arg("pixel") = py::none(),
              py::arg("row") = py::none(), py::arg("width") = py::none(),
              py::arg("height") = py::none(), py::arg("camera") = py::none(),

@@ -35,6 +35,18 @@ def test_aovs_are_the_command_lines(cli_render, aov, shape):
     assert np.array_equal(image, expected.reshape(shape))
 
 
+@pytest.mark.parametrize("method,aov", [("zbuffer", "overdraw"), ("depthsort", "overdraw"),
+                                        ("depthsort", "paint-order")])
+def test_counts_are_the_command_lines_numbers(cli_render, method, aov):
+    scene = hikari.Scene.load(scene_path("teapot.json"))
+    counts = scene.render(method, width=32, height=24, aov=aov)
+    assert counts.shape == (24, 32)
+    expected = cli_render(scene_path("teapot.json"), "-m", method, "--width", "32",
+                          "--height", "24", "--aov", aov)
+    assert np.array_equal(counts, expected[..., 0])
+    assert counts.max() >= 2  # the teapot over the floor: more than one paint somewhere
+
+
 def test_method_options_and_camera():
     scene = hikari.Scene.load(scene_path("teapot.json"))
     lit = scene.render("zbuffer", width=40, shadows="none")

@@ -69,6 +69,10 @@ constexpr bool is_algorithm_aov(Aov aov) {
            aov == Aov::culled;
 }
 
+/// Whether `aov`'s raw values are one number per pixel (a count or a painting position), held
+/// in every channel of an algorithm AOV image.
+constexpr bool is_count_aov(Aov aov) { return aov == Aov::overdraw || aov == Aov::paint_order; }
+
 /// Whether `aov` is a colour render (the full colour or one shading term), not an AOV buffer.
 constexpr bool is_colour_aov(Aov aov) {
     return aov == Aov::color || aov == Aov::ambient || aov == Aov::diffuse || aov == Aov::specular;
