@@ -6,6 +6,7 @@ packages=(
     cmake ninja-build g++ pkg-config
     nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libfmt-dev libtbb-dev
     libstb-dev libtinyexr-dev libtinygltf-dev zlib1g-dev libgtest-dev libxlsxwriter-dev
+    libcpp-httplib-dev
     # The Python module (python/) and its tests.
     pybind11-dev python3-dev python3-numpy python3-pytest
 )

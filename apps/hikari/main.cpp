@@ -1,8 +1,9 @@
 // The hikari command line: `hikari render [SCENE] [options]`, `hikari bench B1|B2 --mesh FILE`,
 // `hikari bench B5`, `hikari gallery`, `hikari compare A B`, `hikari explain SCENE -m METHOD`,
-// `hikari info FILE`. Each subcommand lives in its own file (render.cpp, bench.cpp, gallery.cpp,
-// compare.cpp, explain.cpp, info.cpp); this one only wires them: it parses, runs the one asked
-// for, and turns what goes wrong into one line on stderr and an exit status (signals.h).
+// `hikari info FILE`, `hikari serve [SCENE]`. Each subcommand lives in its own file (render.cpp,
+// bench.cpp, gallery.cpp, compare.cpp, explain.cpp, info.cpp, serve.cpp); this one only wires them:
+// it parses, runs the one asked for, and turns what goes wrong into one line on stderr and an exit
+// status (signals.h).
 
 #include <cstdio>
 #include <cstdlib>
@@ -33,6 +34,7 @@
 #include "info.h"
 #include "render.h"
 #include "render_command.h"
+#include "serve.h"
 #include "signals.h"
 
 namespace {
@@ -48,6 +50,7 @@ struct CommandLine {
     CompareOptions compare;
     ExplainOptions explain;
     std::string info_file;
+    ServeOptions serve;
 };
 
 /// A subcommand: its parser, its usage checks once parsed (none: empty), and what runs it.
@@ -99,6 +102,7 @@ std::vector<Subcommand> add_subcommands(CLI::App& app, CommandLine& c, std::stri
         {add_compare_command(app, c.compare), {}, [&c] { return run_compare(c.compare); }},
         {add_explain_command(app, c.explain), {}, [&c] { return run_explain(c.explain); }},
         {add_info_command(app, c.info_file), {}, [&c] { return run_info(c.info_file); }},
+        {add_serve_command(app, c.serve), {}, [&c] { return run_serve(c.serve); }},
     };
 }
 

@@ -198,10 +198,10 @@ Bytes encode(const std::filesystem::path& path, const Image& image, ImageFormat 
     throw InputError("cannot write " + path.string() + ": unsupported image format");
 }
 
-/// write_image's checks, then the file; `pixels`: how many pixels the image holds.
+/// write_image's checks, then the bytes; `pixels`: how many pixels the image holds.
 template <class AnyImage>
-void write_any_image(const std::filesystem::path& path, const AnyImage& image, size_t pixels,
-                     const ImageWriteSettings& settings) {
+Bytes encode_any_image(const std::filesystem::path& path, const AnyImage& image, size_t pixels,
+                       const ImageWriteSettings& settings) {
     if (!is_supported_image_extension(path)) {
         throw InputError("cannot write " + path.string() + ": unknown image extension '" +
                          path.extension().string() +
@@ -218,12 +218,10 @@ void write_any_image(const std::filesystem::path& path, const AnyImage& image, s
     }
     throw_if_cancelled();  // SIGINT / SIGTERM: nothing to encode for a stopped render
     const ImageFormat format = *image_format_from_extension(path);
-    Bytes bytes;
     if constexpr (std::is_same_v<AnyImage, Image>)
-        bytes = encode(path, image, format, settings);
+        return encode(path, image, format, settings);
     else
-        bytes = encode(path, image, format);
-    write_file_atomically(path, bytes);
+        return encode(path, image, format);
 }
 
 }  // namespace
@@ -238,14 +236,24 @@ bool supports_bit_depth(const std::filesystem::path& path, int bit_depth) {
     return bit_depth == 16 && (format == ImageFormat::Png || format == ImageFormat::Ppm);
 }
 
+std::vector<uint8_t> encode_image(const std::filesystem::path& path, const Image& image,
+                                  const ImageWriteSettings& settings) {
+    return encode_any_image(path, image, image.pixels.size(), settings);
+}
+
+std::vector<uint8_t> encode_image(const std::filesystem::path& path, const Srgb8Image& image) {
+    const bool whole_pixels = image.bytes.size() % 3 == 0;
+    return encode_any_image(path, image, whole_pixels ? image.bytes.size() / 3 : 0,
+                            ImageWriteSettings{});
+}
+
 void write_image(const std::filesystem::path& path, const Image& image,
                  const ImageWriteSettings& settings) {
-    write_any_image(path, image, image.pixels.size(), settings);
+    write_file_atomically(path, encode_image(path, image, settings));
 }
 
 void write_image(const std::filesystem::path& path, const Srgb8Image& image) {
-    const bool whole_pixels = image.bytes.size() % 3 == 0;
-    write_any_image(path, image, whole_pixels ? image.bytes.size() / 3 : 0, ImageWriteSettings{});
+    write_file_atomically(path, encode_image(path, image));
 }
 
 }  // namespace hikari

@@ -2,7 +2,9 @@
 // Writing rendered images: sRGB for viewing (.png .ppm .jpg .xlsx; 8-bit, or 16-bit PNG and
 // PPM), linear float for analysis (.pfm .exr .hdr).
 
+#include <cstdint>
 #include <filesystem>
+#include <vector>
 
 #include "hikari/core/image.h"
 
@@ -41,6 +43,12 @@ bool supports_bit_depth(const std::filesystem::path& path, int bit_depth);
 /// extension, a bit depth the format cannot hold, an empty image, or any OS error.
 void write_image(const std::filesystem::path& path, const Image& image,
                  const ImageWriteSettings& settings = {});
+
+/// The bytes write_image would write to `path` (its extension picks the format), for a front end
+/// that sends them elsewhere (`hikari serve`'s frames). Throws InputError as write_image does.
+std::vector<uint8_t> encode_image(const std::filesystem::path& path, const Image& image,
+                                  const ImageWriteSettings& settings = {});
+std::vector<uint8_t> encode_image(const std::filesystem::path& path, const Srgb8Image& image);
 
 /// Writes the 8-bit sRGB `image` to `path`, which must name a `.png`, `.ppm`, `.jpg`/`.jpeg` or
 /// `.xlsx` file (the same bytes as write_image of the linear image it encodes, at 8 bits).

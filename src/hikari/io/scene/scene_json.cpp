@@ -25,9 +25,6 @@ namespace hikari {
 
 namespace {
 
-/// Largest image side accepted; bigger is surely a typo (the memory check comes later).
-constexpr int k_max_image_side = 65536;
-
 /// State while a scene is being built: material names, where mesh and texture files are found,
 /// and the texture images read so far.
 struct SceneBuilder {
@@ -76,6 +73,8 @@ constexpr std::array<Choice<Projection>, 2> k_projections = {{
     {"orthographic", Projection::orthographic},
 }};
 
+}  // namespace
+
 Camera parse_camera(const JsonNode& node) {
     node.expect_object(
         {"eye", "look_at", "up", "projection", "fov_y", "view_height", "width", "height"});
@@ -108,6 +107,8 @@ Camera parse_camera(const JsonNode& node) {
     if (dot(side, side) < 1e-10f) node.at("up").fail("up is parallel to the view direction");
     return c;
 }
+
+namespace {
 
 constexpr std::array<Choice<TextureWrap>, 2> k_texture_wraps = {{
     {"repeat", TextureWrap::repeat},

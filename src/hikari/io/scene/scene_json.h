@@ -38,6 +38,12 @@ Scene parse_scene(std::string_view text, const std::string& file,
                   const std::filesystem::path& base_dir, std::vector<std::string>& warnings,
                   const SceneLoadOptions& options = {});
 
+class JsonNode;  // io/scene/json_reader.h
+
+/// A scene file's "camera" object (docs/scene-format.md): what it leaves out takes the defaults.
+/// Fails (InputError naming the JSON path) on unknown keys and on values no camera can have.
+Camera parse_camera(const JsonNode& node);
+
 /// Reads and parses a scene file.
 Scene load_scene_file(const std::filesystem::path& path, std::vector<std::string>& warnings,
                       const SceneLoadOptions& options = {});
