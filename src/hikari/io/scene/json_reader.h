@@ -67,4 +67,8 @@ std::string_view json_type_name(const nlohmann::json& v);
 /// Parses JSON text; a syntax error becomes InputError "<file>:<line>:<column>: <reason>".
 nlohmann::json parse_json(std::string_view text, const std::string& file);
 
+/// nlohmann's parse-error reason with the token it quotes ("last read: '...'") cut by quote_token():
+/// a 200 MB number would otherwise make a 200 MB message.
+std::string bounded_parse_reason(std::string_view reason);
+
 }  // namespace hikari
