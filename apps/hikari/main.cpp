@@ -141,7 +141,8 @@ int run_command(std::span<const Subcommand> subcommands) {
             return interrupted_status();
         }
         const bool out_of_memory = dynamic_cast<const std::bad_alloc*>(&e) != nullptr;
-        print_err("hikari: error: {}\n", out_of_memory ? "out of memory" : printable_text(e.what()));
+        print_err("hikari: error: {}\n",
+                  out_of_memory ? "out of memory" : printable_text(e.what()));
         return k_exit_input_error;
     }
     return 0;

@@ -102,7 +102,7 @@ void check_jpeg_data(const std::filesystem::path& path, std::string_view bytes) 
             continue;
         }
         pos += 2;
-        if (marker == 0xd9) break;                                      // EOI
+        if (marker == 0xd9) break;                                           // EOI
         if (marker == 0x01 || (marker >= 0xd0 && marker <= 0xd8)) continue;  // no length
         if (pos + 2 > bytes.size()) fail(path, "truncated JPEG: a segment ends the file");
         const size_t length = byte_at(bytes, pos) << 8 | byte_at(bytes, pos + 1);

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cctype>
@@ -48,9 +49,9 @@ void check_size(const std::filesystem::path& path, long long width, long long he
     }
     // The image's RGB floats (12 bytes a pixel) and the decoder's own buffers (by default 16
     // bytes a pixel: tinyexr's float RGBA planes).
-    check_memory_need((12.0 + decoder_bytes_per_pixel) * static_cast<double>(width) *
-                          static_cast<double>(height),
-                      fmt::format("{}: decoding a {}x{} image", path.string(), width, height));
+    check_memory_need(
+        (12.0 + decoder_bytes_per_pixel) * static_cast<double>(width) * static_cast<double>(height),
+        fmt::format("{}: decoding a {}x{} image", path.string(), width, height));
 }
 
 /// Linear values of the 256 8-bit sRGB codes, so decoding is a table look-up per sample.
@@ -241,8 +242,7 @@ Image read_ppm(const std::filesystem::path& path, std::string_view bytes) {
     HeaderReader header(path, bytes);
     const std::string_view magic = header.token("magic number");
     if (magic != "P6" && magic != "P3") {
-        fail(path, "not a PPM file (expected magic P6 or P3, found " +
-                       quote_token(magic) + ")");
+        fail(path, "not a PPM file (expected magic P6 or P3, found " + quote_token(magic) + ")");
     }
     const long long w = header.integer("width");
     const long long h = header.integer("height");
@@ -301,8 +301,7 @@ Image read_pfm(const std::filesystem::path& path, std::string_view bytes) {
     HeaderReader header(path, bytes);
     const std::string_view magic = header.token("magic number");
     if (magic != "PF" && magic != "Pf") {
-        fail(path, "not a PFM file (expected magic PF or Pf, found " +
-                       quote_token(magic) + ")");
+        fail(path, "not a PFM file (expected magic PF or Pf, found " + quote_token(magic) + ")");
     }
     const int channels = magic == "PF" ? 3 : 1;
     const long long w = header.integer("width");
@@ -442,6 +441,31 @@ void check_exr_attributes(const std::filesystem::path& path, std::string_view by
     }
 }
 
+/// Refuses an OpenEXR file too short for the table of chunk offsets its header implies (one
+/// 8-byte offset a chunk after the header, OpenEXR "File Layout"), before tinyexr allocates the
+/// image: a 300-byte file cannot hold a 60000-line picture.
+void check_exr_offset_table(const std::filesystem::path& path, const EXRHeader& header,
+                            long long width, long long height, size_t file_bytes) {
+    double chunks = 0;
+    if (header.tiled) {
+        const double tx = std::max(1, header.tile_size_x), ty = std::max(1, header.tile_size_y);
+        chunks = std::ceil(double(width) / tx) * std::ceil(double(height) / ty);
+    } else {
+        // Scanlines a chunk holds, by compression (tinyexr's, as in OpenEXR).
+        const int lines = header.compression_type == TINYEXR_COMPRESSIONTYPE_ZIP   ? 16
+                          : header.compression_type == TINYEXR_COMPRESSIONTYPE_PIZ ? 32
+                          : header.compression_type == TINYEXR_COMPRESSIONTYPE_ZFP ? 16
+                                                                                   : 1;
+        chunks = std::ceil(double(height) / lines);
+    }
+    const double needed = double(header.header_len) + 8.0 * chunks;
+    if (double(file_bytes) < needed) {
+        fail(path, fmt::format("truncated file: its {}x{} image needs {:.0f} chunk offsets, the "
+                               "file ends first ({} bytes)",
+                               width, height, chunks, file_bytes));
+    }
+}
+
 Image read_exr(const std::filesystem::path& path, const std::string& bytes) {
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
     EXRVersion version;
@@ -457,8 +481,11 @@ Image read_exr(const std::filesystem::path& path, const std::string& bytes) {
     if (code != TINYEXR_SUCCESS) fail(path, "invalid OpenEXR header: " + take_exr_error(err, code));
     // Size check before tinyexr allocates the pixels.
     const EXRBox2i& window = exr.header.data_window;
-    check_size(path, static_cast<long long>(window.max_x) - window.min_x + 1,
-               static_cast<long long>(window.max_y) - window.min_y + 1);
+    const long long width = static_cast<long long>(window.max_x) - window.min_x + 1;
+    const long long height = static_cast<long long>(window.max_y) - window.min_y + 1;
+    if (width > 0 && height > 0)
+        check_exr_offset_table(path, exr.header, width, height, bytes.size());
+    check_size(path, width, height);
     const std::array<int, 3> plane_of = exr_rgb_channels(path, exr.header);
     for (int c = 0; c < exr.header.num_channels; ++c) {
         if (exr.header.pixel_types[c] == TINYEXR_PIXELTYPE_HALF) {

@@ -157,7 +157,8 @@ uint64_t json_unsigned(const fs::path& file, const nlohmann::json& object, const
     const auto it = object.find(key);
     if (it == object.end() && fallback) return *fallback;
     if (it == object.end() || !it->is_number_unsigned())
-        fail(file, fmt::format("{}{} must be a non-negative integer", where, quote_token(key, '"')));
+        fail(file,
+             fmt::format("{}{} must be a non-negative integer", where, quote_token(key, '"')));
     return it->get<uint64_t>();
 }
 

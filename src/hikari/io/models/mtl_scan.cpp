@@ -38,9 +38,10 @@ void check_floats(const std::filesystem::path& file, uint32_t line,
     if (count < count_min || count > count_max)
         fail(file, line,
              count_min == count_max
-                 ? fmt::format("{} needs {} number, found {}", quote_token(words[0]), count_min, count)
-                 : fmt::format("{} needs {} to {} numbers, found {}", quote_token(words[0]), count_min,
-                               count_max, count));
+                 ? fmt::format("{} needs {} number, found {}", quote_token(words[0]), count_min,
+                               count)
+                 : fmt::format("{} needs {} to {} numbers, found {}", quote_token(words[0]),
+                               count_min, count_max, count));
     for (size_t k = 1; k < words.size(); ++k) {
         std::string why;
         if (!parse_float_token(words[k], &why))

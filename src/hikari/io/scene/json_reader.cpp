@@ -143,7 +143,13 @@ Vec3 JsonNode::as_vec3() const {
 Vec3 JsonNode::as_direction() const {
     const Vec3 v = as_vec3();
     if (v == Vec3(0.0f)) fail("expected a non-zero direction");
-    return v;
+    // [0, -1e-30, 0] squares to 0 in float and [0, -1e30, 0] to infinity, so normalize() would
+    // give NaN or 0. Scaling by a power of two keeps the direction exactly (and changes nothing
+    // for ordinary values, whose squared length is a normal float).
+    const float d = dot(v, v);
+    if (d >= std::numeric_limits<float>::min() && std::isfinite(d)) return v;
+    const float largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    return v * std::ldexp(1.0f, -std::ilogb(largest));
 }
 
 Vec3 JsonNode::as_colour() const {
@@ -216,19 +222,18 @@ nlohmann::json parse_json(std::string_view text, const std::string& file) {
         // Drop nlohmann's "[json.exception.parse_error.101] parse error at line 3, column 5: ".
         if (const size_t colon = reason.find(": "); colon != std::string_view::npos)
             reason.remove_prefix(colon + 2);
-        throw InputError(
-            printable_text(fmt::format("{}: {}", text_position(text, file, e.byte),
-                                       bounded_parse_reason(reason))));
+        throw InputError(printable_text(fmt::format("{}: {}", text_position(text, file, e.byte),
+                                                    bounded_parse_reason(reason))));
     } catch (const nlohmann::json::out_of_range& e) {
         // Error 406, "number overflow": a number beyond a double's range, so beyond a float's.
         // The SAX position is that of the number's last character.
         ErrorPosition where;
         nlohmann::json::sax_parse(text, &where);
         if (e.id == 406 && where.byte > 0)
-            throw InputError(printable_text(fmt::format(
-                "{}: {} is too large for a 32-bit float",
-                text_position(text, file, where.byte + 1 - where.token.size()),
-                quote_token(where.token))));
+            throw InputError(printable_text(
+                fmt::format("{}: {} is too large for a 32-bit float",
+                            text_position(text, file, where.byte + 1 - where.token.size()),
+                            quote_token(where.token, '\0'))));
         throw InputError(printable_text(
             fmt::format("{}: invalid JSON: {}", file, bounded_parse_reason(e.what()))));
     } catch (const nlohmann::json::exception& e) {
