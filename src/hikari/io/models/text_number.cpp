@@ -28,8 +28,9 @@ std::optional<float> parse_float_token(std::string_view token, std::string* why)
     if (why) {
         const bool too_large = number && (ec == std::errc::result_out_of_range ||
                                           (std::isfinite(value) && ec == std::errc()));
-        *why = too_large ? fmt::format("{} is too large for a 32-bit float", quote_token(token, '\0'))
-                         : fmt::format("{} is not a finite number", quote_token(token));
+        *why = too_large
+                   ? fmt::format("{} is too large for a 32-bit float", quote_token(token, '\0'))
+                   : fmt::format("{} is not a finite number", quote_token(token));
     }
     return std::nullopt;
 }
