@@ -164,4 +164,78 @@ inline void gltf_input(const uint8_t* data, size_t size) {
     load(write_input(reinterpret_cast<const uint8_t*>(glb.data()), glb.size(), "wrapped.glb"));
 }
 
+/// The directory write_input() writes into.
+inline std::filesystem::path input_dir() {
+    const uint8_t none = 0;
+    return write_input(&none, 0, "empty").parent_path();
+}
+
+/// The three functions below return whether the input loaded (true) or was refused.
+
+/// An image through the scene loader: the first byte picks the format and whether the scene
+/// names it as a material's image texture or as an environment map (which checks its shape and
+/// texels and builds its sampling tables); the rest is the file.
+inline bool scene_texture_input(const uint8_t* data, size_t size) {
+    if (size == 0) return false;
+    static constexpr std::array<const char*, 6> k_names = {"t.png", "t.jpg", "t.ppm",
+                                                           "t.pfm", "t.exr", "t.hdr"};
+    const std::string name = k_names[data[0] % 6];
+    write_input(data + 1, size - 1, name);
+    const bool environment = (data[0] / 6) % 2 == 1;
+    const std::string json =
+        environment
+            ? R"({"lights": [{"type": "environment", "file": ")" + name +
+                  R"("}], "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1}]})"
+            : R"({"materials": {"m": {"texture": {"type": "image", "file": ")" + name +
+                  R"("}}}, "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1,
+                  "material": "m"}]})";
+    std::vector<std::string> warnings;
+    try {
+        parse_scene(json, "fuzz.json", input_dir(), warnings);
+        return true;
+    } catch (const InputError&) {
+        return false;
+    }
+}
+
+/// A JPEG (progressive ones in the seed corpus): its markers and scans checked, then decoded.
+inline bool jpeg_input(const uint8_t* data, size_t size) {
+    try {
+        const Image image = read_image(write_input(data, size, "in.jpg"));
+        if (image.pixels.size() != static_cast<size_t>(image.width) * image.height) std::abort();
+        return true;
+    } catch (const InputError&) {
+        return false;
+    }
+}
+
+/// An image a glTF model names by URI: the first byte picks PNG or JPEG, the rest is the file,
+/// the base-colour texture of a textured triangle whose buffer is an external .bin as well.
+inline bool gltf_image_input(const uint8_t* data, size_t size) {
+    if (size == 0) return false;
+    const std::string image = data[0] % 2 == 0 ? "tex.png" : "tex.jpg";
+    write_input(data + 1, size - 1, image);
+    // Three positions (x, y, z) and three uvs (u, v) as little-endian floats.
+    const std::array<float, 15> floats = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1};
+    write_input(reinterpret_cast<const uint8_t*>(floats.data()), sizeof floats, "tri.bin");
+    const std::string gltf =
+        R"({"asset": {"version": "2.0"}, "meshes": [{"primitives": [{"attributes":
+        {"POSITION": 0, "TEXCOORD_0": 1}, "material": 0}]}], "nodes": [{"mesh": 0}],
+        "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
+        "textures": [{"source": 0}], "images": [{"uri": ")" +
+        image + R"("}], "buffers": [{"byteLength": 60, "uri": "tri.bin"}], "bufferViews":
+        [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 24}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+        "min": [0, 0, 0], "max": [1, 1, 0]}, {"bufferView": 1, "componentType": 5126, "count": 3,
+        "type": "VEC2"}]})";
+    try {
+        const MeshData mesh = load_gltf(
+            write_input(reinterpret_cast<const uint8_t*>(gltf.data()), gltf.size(), "tex.gltf"));
+        check_mesh(mesh);
+        return true;
+    } catch (const InputError&) {
+        return false;
+    }
+}
+
 }  // namespace hikari::fuzz

@@ -18,7 +18,7 @@ fi
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(scene_json obj mtl ply gltf image)
+[ ${#targets[@]} -eq 0 ] && targets=(scene_json obj mtl ply gltf image scene_texture jpeg gltf_image)
 
 cmake --build "$build" --target "${targets[@]/#/fuzz_}"
 

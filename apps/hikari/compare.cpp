@@ -9,6 +9,7 @@
 #include "cli_options.h"
 #include "console.h"
 #include "hikari/core/error.h"
+#include "hikari/core/memory_budget.h"
 #include "hikari/frame/image_compare.h"
 #include "hikari/io/images/image_format.h"
 #include "hikari/io/images/image_read.h"
@@ -36,6 +37,9 @@ void print_difference(const ImageDifference& d, bool psnr_only) {
               255.0 * d.max_difference, d.max_x, d.max_y);
     print_out("differing pixels {} of {} ({:.2f} %)\n", d.differing, d.pixels,
               100.0 * static_cast<double>(d.differing) / static_cast<double>(d.pixels));
+    if (d.not_a_number_a > 0 || d.not_a_number_b > 0)
+        print_out("not-a-number pixels {} in the first image, {} in the second (NaN equals NaN)\n",
+                  d.not_a_number_a, d.not_a_number_b);
 }
 
 }  // namespace
@@ -62,7 +66,10 @@ int run_compare(const CompareOptions& o) {
     if (!o.output.empty())
         check_output_path(o.output, std::vector<RenderInput>{{o.a, "the first image"},
                                                              {o.b, "the second image"}});
-    const Image a = read_image(o.a), b = read_image(o.b);
+    const Image a = read_image(o.a);
+    // The first image is kept while the second is decoded: both count against --max-memory.
+    const MemoryHeld first(static_cast<double>(a.pixels.size() * sizeof(Vec3)));
+    const Image b = read_image(o.b);
     if (a.width != b.width || a.height != b.height)
         throw InputError(fmt::format("{} is {}x{} but {} is {}x{}: only images of one size compare",
                                      o.a, a.width, a.height, o.b, b.width, b.height));

@@ -30,6 +30,7 @@
 #include "gallery_command.h"
 #include "hikari/core/cancel.h"
 #include "hikari/core/error.h"
+#include "hikari/io/files/printable_text.h"
 #include "hikari/version.h"
 #include "info.h"
 #include "render.h"
@@ -122,7 +123,7 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv,
     } catch (const CLI::CallForVersion& e) {
         return finish_standard_output(app.exit(e));
     } catch (const CLI::ParseError& e) {
-        print_err("hikari: error: {}\nRun `hikari --help` for usage.\n", e.what());
+        print_err("hikari: error: {}\nRun `hikari --help` for usage.\n", printable_text(e.what()));
         return k_exit_usage_error;
     }
 }
@@ -133,7 +134,8 @@ int run_command(std::span<const Subcommand> subcommands) {
         for (const Subcommand& s : subcommands)
             if (s.app->parsed()) return finish_standard_output(s.run());
     } catch (const UsageError& e) {
-        print_err("hikari: error: {}\n", e.what());
+        // Escaped here once more, so no message, whatever it quotes, writes control characters.
+        print_err("hikari: error: {}\n", printable_text(e.what()));
         return k_exit_usage_error;
     } catch (const std::exception& e) {
         // After SIGINT / SIGTERM, whatever unwound the stage (Interrupted, or a read cut short
@@ -143,7 +145,8 @@ int run_command(std::span<const Subcommand> subcommands) {
             return interrupted_status();
         }
         const bool out_of_memory = dynamic_cast<const std::bad_alloc*>(&e) != nullptr;
-        print_err("hikari: error: {}\n", out_of_memory ? "out of memory" : e.what());
+        print_err("hikari: error: {}\n",
+                  out_of_memory ? "out of memory" : printable_text(e.what()));
         return k_exit_input_error;
     }
     return 0;

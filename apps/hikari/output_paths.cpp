@@ -8,6 +8,7 @@
 #include "cli_options.h"
 #include "hikari/core/error.h"
 #include "hikari/io/files/atomic_file.h"
+#include "hikari/io/files/printable_text.h"
 #include "hikari/io/files/read_file.h"
 #include "hikari/io/images/image_format.h"
 #include "hikari/io/images/image_write.h"
@@ -39,12 +40,12 @@ void collect_named_files(const nlohmann::json& v, const fs::path& base_dir,
 void check_output_format(const fs::path& output) {
     std::error_code ec;
     if (fs::is_directory(output, ec))
-        throw UsageError(
-            fmt::format("{}: is a directory; name an image file to write", output.string()));
+        throw UsageError(fmt::format("{}: is a directory; name an image file to write",
+                                     quote_token(output.string(), '\0', k_quoted_path_bytes)));
     if (!is_supported_image_extension(output) && !is_svg_path(output))
         throw UsageError(fmt::format(
             "{}: unknown output format {} (supported: {}, and .svg for wireframe and hiddenline)",
-            output.string(),
+            quote_token(output.string(), '\0', k_quoted_path_bytes),
             output.has_extension() ? "'" + output.extension().string() + "'" : "(no extension)",
             k_writable_image_extensions));
 }
@@ -55,18 +56,21 @@ void check_output_directory(const fs::path& output) {
     const fs::path dir = output.has_parent_path() ? output.parent_path() : ".";
     if (!fs::is_directory(dir, ec))
         throw UsageError(
-            fmt::format("{}: cannot write: the directory {} {}", output.string(), dir.string(),
+            fmt::format("{}: cannot write: the directory {} {}",
+                        quote_token(output.string(), '\0', k_quoted_path_bytes),
+                        quote_token(dir.string(), '\0', k_quoted_path_bytes),
                         fs::exists(dir, ec) ? "is not a directory" : "does not exist"));
     if (::access(dir.c_str(), W_OK) != 0)
         throw UsageError(fmt::format("{}: cannot write: the directory {} is not writable",
-                                     output.string(), dir.string()));
+                                     quote_token(output.string(), '\0', k_quoted_path_bytes),
+                                     quote_token(dir.string(), '\0', k_quoted_path_bytes)));
     const long name_max = ::pathconf(dir.c_str(), _PC_NAME_MAX);
     if (const size_t length = output.filename().string().size();
         name_max > 0 && length > static_cast<size_t>(name_max))
         throw UsageError(
             fmt::format("{}: cannot write: the file name is {} bytes long; the "
                         "file system allows {}",
-                        output.string(), length, name_max));
+                        quote_token(output.string(), '\0', k_quoted_path_bytes), length, name_max));
 }
 
 /// An output that is one of the files the render reads.
@@ -75,7 +79,8 @@ void check_not_an_input(const fs::path& output, std::span<const RenderInput> inp
     for (const RenderInput& input : inputs) {
         if (fs::equivalent(output, input.file, ec))
             throw UsageError(fmt::format(
-                "{}: refusing to overwrite {}{} with the render", output.string(), input.role,
+                "{}: refusing to overwrite {}{} with the render",
+                quote_token(output.string(), '\0', k_quoted_path_bytes), input.role,
                 input.role.starts_with("the ") ? "" : " (" + input.file.string() + ")"));
     }
 }
@@ -123,7 +128,8 @@ void check_spreadsheet_size(const fs::path& output, const Camera& camera) {
     if (camera.width > k_xlsx_max_columns || camera.height > k_xlsx_max_rows)
         throw InputError(fmt::format(
             "{}: a {}x{} image does not fit a spreadsheet (at most {} columns and {} rows)",
-            output.string(), camera.width, camera.height, k_xlsx_max_columns, k_xlsx_max_rows));
+            quote_token(output.string(), '\0', k_quoted_path_bytes), camera.width, camera.height,
+            k_xlsx_max_columns, k_xlsx_max_rows));
 }
 
 bool is_picture_file(const std::string& output) {

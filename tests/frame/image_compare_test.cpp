@@ -53,5 +53,31 @@ TEST(ImageCompare, DifferenceImageIsBlackWhereEqualAndBrightestAtTheMost) {
     EXPECT_GT(diff.pixels[3].x, 0.5f);
 }
 
+TEST(ImageCompare, NaNEqualsNaNAndIsCounted) {
+    Image a = grey(4, 2, 100);
+    a.pixels[1].y = std::nanf("");
+    a.pixels[6] = Vec3(std::nanf(""));
+    const ImageDifference same = compare_images(a, a);
+    EXPECT_EQ(same.differing, 0U);
+    EXPECT_EQ(same.max_difference, 0.0);
+    EXPECT_TRUE(std::isinf(same.psnr_db));
+    EXPECT_EQ(same.not_a_number_a, 2U);
+    EXPECT_EQ(same.not_a_number_b, 2U);
+}
+
+TEST(ImageCompare, NaNAgainstANumberDiffersByTheMost) {
+    Image a = grey(4, 2, 100);
+    const Image b = a;
+    a.pixels[5].z = std::nanf("");
+    const ImageDifference d = compare_images(a, b);
+    EXPECT_EQ(d.differing, 1U);
+    EXPECT_EQ(d.max_difference, 1.0);
+    EXPECT_EQ(d.max_x, 1);
+    EXPECT_EQ(d.max_y, 1);
+    EXPECT_NEAR(d.psnr_db, 10.0 * std::log10(3.0 * 8.0), 1e-9);  // MSE = 1 / 24
+    EXPECT_EQ(d.not_a_number_a, 1U);
+    EXPECT_EQ(d.not_a_number_b, 0U);
+}
+
 }  // namespace
 }  // namespace hikari

@@ -21,6 +21,11 @@ std::atomic<double>& limit() {
     return bytes;
 }
 
+std::atomic<double>& held() {
+    static std::atomic<double> bytes{0.0};
+    return bytes;
+}
+
 }  // namespace
 
 std::string memory_size_text(double bytes) {
@@ -37,11 +42,18 @@ void set_memory_limit(double bytes) {
 
 void check_memory_need(double bytes, std::string_view what) {
     const double cap = memory_limit();
-    if (!(bytes > cap)) return;
+    const double kept = held().load();
+    if (!(bytes + kept > cap)) return;
+    const std::string besides =
+        kept > 0 ? fmt::format(" besides the {} already held", memory_size_text(kept)) : "";
     throw InputError(
-        fmt::format("{} needs about {}, more than the limit of {} (raise it with "
+        fmt::format("{} needs about {}{}, more than the limit of {} (raise it with "
                     "--max-memory)",
-                    what, memory_size_text(bytes), memory_size_text(cap)));
+                    what, memory_size_text(bytes), besides, memory_size_text(cap)));
 }
+
+MemoryHeld::MemoryHeld(double bytes) : m_bytes(bytes) { held().fetch_add(bytes); }
+
+MemoryHeld::~MemoryHeld() { held().fetch_sub(m_bytes); }
 
 }  // namespace hikari

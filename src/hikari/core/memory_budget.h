@@ -24,4 +24,18 @@ void set_memory_limit(double bytes);
 /// take, computed from the counts that decide it (in double, so it cannot overflow).
 void check_memory_need(double bytes, std::string_view what);
 
+/// While alive, `bytes` count as held: check_memory_need() adds them to every need it checks,
+/// so a step that keeps one large result while it makes the next (`compare` decoding its second
+/// image) stays under the limit in all.
+class MemoryHeld {
+  public:
+    explicit MemoryHeld(double bytes);
+    ~MemoryHeld();
+    MemoryHeld(const MemoryHeld&) = delete;
+    MemoryHeld& operator=(const MemoryHeld&) = delete;
+
+  private:
+    double m_bytes;
+};
+
 }  // namespace hikari

@@ -17,12 +17,15 @@ struct ImageDifference {
     int max_x = 0, max_y = 0;   ///< the pixel where it is (the first, row by row)
     size_t differing = 0;       ///< pixels where a channel's linear values differ by > tolerance
     size_t pixels = 0;
+    size_t not_a_number_a = 0;  ///< pixels of `a` with a NaN channel
+    size_t not_a_number_b = 0;  ///< pixels of `b` with a NaN channel
 };
 
 /// Compares `a` and `b` (the same size). `eight_bit`: the encoded values are rounded to
 /// multiples of 1/255 first, as 8-bit files store them (so the float round trip of decoding
 /// adds nothing). Pixels differ where some channel's linear values differ by more than
-/// `tolerance`.
+/// `tolerance`. NaN is one value: a channel NaN in both images is equal, NaN in one only differs
+/// by the most an encoded value can (1), in PSNR, the largest difference and the count alike.
 ImageDifference compare_images(const Image& a, const Image& b, bool eight_bit = false,
                                float tolerance = 0.0f);
 

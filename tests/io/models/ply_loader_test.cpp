@@ -348,7 +348,7 @@ TEST(PlyLoader, MalformedAsciiBodiesNameTheLineAndItem) {
         {ascii_triangle("0 0 0\n1 0 0\n0 1 -1e400\n"),
          "bad.ply:13: vertex 2: -1e400 is too large for a 32-bit float"},
         {ascii_triangle(vertices + "3 0 1 2\n2 0 1\n", 2),
-         "bad.ply:15: face 1: it has 2 corners; a face needs at least 3"},
+         "bad.ply:15: face 1: it has 2 corners; a face needs 3 to 255"},
         {ascii_triangle(vertices + "3 0 1 3\n"),
          "bad.ply:14: face 0: corner index 3 is out of range (the file has 3 vertices)"},
         {ascii_triangle(vertices + "3 0 -1 2\n"), "bad.ply:14: face 0: corner index -1"},

@@ -52,4 +52,14 @@ std::string printable_text(std::string_view text) {
     return out;
 }
 
+std::string quote_token(std::string_view token, char quote, size_t max_bytes) {
+    const std::string q = quote == '\0' ? std::string() : std::string(1, quote);
+    if (token.size() <= max_bytes) return q + printable_text(token) + q;
+    size_t cut = max_bytes;
+    // Back to the start of a UTF-8 character (continuation bytes are 10xxxxxx).
+    while (cut > 0 && (static_cast<unsigned char>(token[cut]) & 0xc0) == 0x80) --cut;
+    return fmt::format("{}{}\u2026{} ({} bytes)", q, printable_text(token.substr(0, cut)), q,
+                       token.size());
+}
+
 }  // namespace hikari

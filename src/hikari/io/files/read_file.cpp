@@ -40,7 +40,7 @@ const char* kind_of(std::filesystem::file_type type) {
 
 /// read_file_bytes() with `too_large` as the end of the message for a file over `max_bytes`.
 std::string read_bounded(const std::filesystem::path& path, std::uintmax_t max_bytes,
-                         const std::string& too_large_reason);
+                         const std::string& too_large_reason, const FileFormatCheck& check = {});
 
 }  // namespace
 
@@ -50,6 +50,11 @@ std::string read_file_bytes(const std::filesystem::path& path, std::uintmax_t ma
 }
 
 std::string read_file_bytes(const std::filesystem::path& path, InputKind kind) {
+    return read_file_bytes(path, kind, FileFormatCheck{});
+}
+
+std::string read_file_bytes(const std::filesystem::path& path, InputKind kind,
+                            const FileFormatCheck& check) {
     const std::uintmax_t max_bytes = input_limit(kind);
     const auto size = static_cast<double>(max_bytes);
     const std::string limit = max_bytes >= (1u << 30) ? fmt::format("{:.3g} GiB", size / (1 << 30))
@@ -60,13 +65,14 @@ std::string read_file_bytes(const std::filesystem::path& path, InputKind kind) {
         path, max_bytes,
         fmt::format("larger than the limit of {} for {} {} file (raise it with "
                     "--max-input-size)",
-                    limit, kind == InputKind::image ? "an" : "a", input_kind_name(kind)));
+                    limit, kind == InputKind::image ? "an" : "a", input_kind_name(kind)),
+        check);
 }
 
 namespace {
 
 std::string read_bounded(const std::filesystem::path& path, std::uintmax_t max_bytes,
-                         const std::string& too_large_reason) {
+                         const std::string& too_large_reason, const FileFormatCheck& check) {
     // Refused before opening: fopen blocks on a FIFO until a writer comes, and a device such as
     // /dev/zero never ends.
     std::error_code status_error;
@@ -91,7 +97,19 @@ std::string read_bounded(const std::filesystem::path& path, std::uintmax_t max_b
             printable_text(fmt::format("{}: cannot read: {}", path.string(), too_large_reason)));
     };
     if (!size_error && size > max_bytes) too_large();
-    if (!size_error) check_memory_need(static_cast<double>(size), "reading " + path.string());
+    if (!size_error) {
+        check_memory_need(check.memory_per_byte * static_cast<double>(size),
+                          fmt::format("{} {} ({})", check.what, path.string(),
+                                      memory_size_text(static_cast<double>(size))));
+    }
+    if (check.check_head) {
+        char head[k_file_head_bytes];
+        const size_t n = std::fread(head, 1, sizeof head, file.get());
+        if (std::ferror(file.get())) throw_read_error(path, errno != 0 ? errno : EIO);
+        check.check_head(std::string_view(head, n), size_error ? n : size);
+        bytes.append(head, n);
+        if (n < sizeof head) return bytes;
+    }
     if (!size_error && size < bytes.max_size()) {
         bytes.reserve(static_cast<size_t>(size));
         populate_pages(bytes.data(), static_cast<size_t>(size));

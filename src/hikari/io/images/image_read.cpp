@@ -1,10 +1,10 @@
 #include "hikari/io/images/image_read.h"
 
-#include <stb_image.h>
 #include <tinyexr.h>
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cctype>
@@ -15,13 +15,16 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <type_traits>
 
 #include "hikari/core/color.h"
 #include "hikari/core/error.h"
 #include "hikari/core/memory_budget.h"
 #include "hikari/io/files/printable_text.h"
 #include "hikari/io/files/read_file.h"
+#include "hikari/io/images/image_data_checks.h"
 #include "hikari/io/images/image_format.h"
+#include "hikari/io/images/stb_image_bounded.h"
 
 namespace hikari {
 
@@ -31,8 +34,10 @@ namespace {
     throw InputError(printable_text(path.string() + ": " + reason));
 }
 
-/// Refuses sizes that are not positive or exceed the limits, before anything is allocated.
-void check_size(const std::filesystem::path& path, long long width, long long height) {
+/// Refuses sizes that are not positive or exceed the limits, before anything is allocated;
+/// `decoder_bytes_per_pixel` is what the decoder holds besides the image's RGB floats.
+void check_size(const std::filesystem::path& path, long long width, long long height,
+                double decoder_bytes_per_pixel = 16) {
     if (width <= 0 || height <= 0) {
         fail(path, "invalid image size " + std::to_string(width) + "x" + std::to_string(height));
     }
@@ -42,10 +47,11 @@ void check_size(const std::filesystem::path& path, long long width, long long he
         fail(path, "image size " + std::to_string(width) + "x" + std::to_string(height) +
                        " exceeds the limit (65536 per side, 2^28 pixels)");
     }
-    // The image's RGB floats (12 bytes a pixel) and the decoder's own buffer (up to 16 bytes a
-    // pixel: tinyexr's float RGBA planes).
-    check_memory_need(28.0 * static_cast<double>(width) * static_cast<double>(height),
-                      fmt::format("{}: decoding a {}x{} image", path.string(), width, height));
+    // The image's RGB floats (12 bytes a pixel) and the decoder's own buffers (by default 16
+    // bytes a pixel: tinyexr's float RGBA planes).
+    check_memory_need(
+        (12.0 + decoder_bytes_per_pixel) * static_cast<double>(width) * static_cast<double>(height),
+        fmt::format("{}: decoding a {}x{} image", path.string(), width, height));
 }
 
 /// Linear values of the 256 8-bit sRGB codes, so decoding is a table look-up per sample.
@@ -58,34 +64,62 @@ const std::array<float, 256>& srgb8_to_linear_table() {
     return table;
 }
 
-// --- PNG / JPEG through stb_image --------------------------------------------------------------
+// --- PNG / JPEG / HDR through stb_image --------------------------------------------------------
 
-/// The file's bytes as stb_image takes them, after checking that stb_image reads a header of a
-/// size within the limits.
+/// The file's bytes as stb_image takes them, with the image's size from its header.
 struct StbInput {
-    const stbi_uc* data;
+    const unsigned char* data;
     int size;
+    int width, height;
 };
 
+/// Reads the header (PNG: IHDR; JPEG: SOF; HDR: resolution line).
 StbInput stb_input(const std::filesystem::path& path, const std::string& bytes) {
     if (bytes.size() > static_cast<size_t>(INT32_MAX)) fail(path, "file too large");
-    const StbInput in{reinterpret_cast<const stbi_uc*>(bytes.data()),
-                      static_cast<int>(bytes.size())};
-    int w = 0, h = 0, channels = 0;
-    if (!stbi_info_from_memory(in.data, in.size, &w, &h, &channels)) {
-        fail(path, std::string("cannot decode image: ") + stbi_failure_reason());
+    StbInput in{reinterpret_cast<const unsigned char*>(bytes.data()),
+                static_cast<int>(bytes.size()), 0, 0};
+    int channels = 0;
+    if (!stb::info(in.data, in.size, &in.width, &in.height, &channels)) {
+        fail(path, std::string("cannot decode image: ") + stb::failure_reason());
     }
-    check_size(path, w, h);
     return in;
 }
 
-/// The RGB samples stb_image `decoded` (null when it failed) of a `w` × `h` image, each turned
-/// into linear light by `to_linear`. `w` and `h` are read after the decoder has set them.
-template <class Sample, class ToLinear>
-Image image_from_stb(const std::filesystem::path& path, Sample* decoded, const int& w, const int& h,
+/// Refuses, before decoding, a size beyond the limits or the memory budget: besides our floats,
+/// stb_image holds 16 bytes a pixel at once (PNG: the inflated rows, its output and the RGB
+/// copy), 24 for 16-bit samples.
+void check_stb_size(const std::filesystem::path& path, const StbInput& in) {
+    check_size(path, in.width, in.height, stb::is_16_bit(in.data, in.size) ? 24 : 16);
+}
+
+/// The largest single allocation stb_image needs for a `width` × `height` image: 16 bytes a
+/// pixel covers PNG's inflated rows (at most 8 bytes a pixel, 16-bit RGBA, doubled as its
+/// inflater grows), a JPEG's coefficients and planes padded to whole MCUs (up to 32 pixels
+/// each way), and HDR's floats. A PNG whose data inflates past it is a decompression bomb.
+size_t stb_allocation_cap(int width, int height) {
+    return 16 * (static_cast<size_t>(width) + 32) * (static_cast<size_t>(height) + 32) +
+           (size_t{1} << 20);
+}
+
+/// The RGB samples `decode` returns (null when it failed) of a `w` × `h` image, each turned
+/// into linear light by `to_linear`, decoded under the allocation cap for the header's size.
+template <class Decode, class ToLinear>
+Image image_from_stb(const std::filesystem::path& path, const StbInput& in, Decode decode,
                      ToLinear to_linear) {
-    std::unique_ptr<Sample, void (*)(void*)> pixels(decoded, &stbi_image_free);
-    if (!pixels) fail(path, std::string("cannot decode image: ") + stbi_failure_reason());
+    int w = 0, h = 0, channels = 0;
+    const stb::AllocationCap cap(stb_allocation_cap(in.width, in.height));
+    using Sample = std::remove_pointer_t<decltype(decode(in.data, in.size, &w, &h, &channels, 3))>;
+    std::unique_ptr<Sample, void (*)(void*)> pixels(decode(in.data, in.size, &w, &h, &channels, 3),
+                                                    &stb::image_free);
+    if (!pixels && cap.exceeded()) {
+        fail(path, fmt::format("cannot decode image: its data needs more than the {} its {}x{} "
+                               "size allows (a decompression bomb?)",
+                               memory_size_text(double(stb_allocation_cap(in.width, in.height))),
+                               in.width, in.height));
+    }
+    if (!pixels) fail(path, std::string("cannot decode image: ") + stb::failure_reason());
+    // Size the image from what the decoder returns, not from the header: the two can disagree
+    // on malformed files (found by fuzz/image_fuzz.cpp).
     check_size(path, w, h);
     Image image(w, h);
     for (size_t i = 0; i < image.pixels.size(); ++i) {
@@ -101,27 +135,25 @@ Image read_stb(const std::filesystem::path& path, const std::string& bytes) {
     const bool png = bytes.starts_with("\x89PNG\r\n\x1a\n");
     const bool jpeg = bytes.starts_with("\xFF\xD8\xFF");
     if (!png && !jpeg) fail(path, "not a PNG or JPEG file (wrong signature)");
-    const auto [data, size] = stb_input(path, bytes);
-    int w = 0, h = 0, channels = 0;
-    // Size the image from what the decoder returns, not from stbi_info: the two can disagree
-    // on malformed files (found by fuzz/image_fuzz.cpp).
-    if (stbi_is_16_bit_from_memory(data, size)) {
-        return image_from_stb(path, stbi_load_16_from_memory(data, size, &w, &h, &channels, 3), w,
-                              h, [](stbi_us c) { return srgb_to_linear(c / 65535.0f); });
+    const StbInput in = stb_input(path, bytes);
+    if (jpeg) check_jpeg_data(path, bytes);  // truncation is said first, whatever the size
+    check_stb_size(path, in);
+    if (stb::is_16_bit(in.data, in.size)) {
+        return image_from_stb(path, in, stb::load_16,
+                              [](unsigned short c) { return srgb_to_linear(c / 65535.0f); });
     }
     const auto& lut = srgb8_to_linear_table();
-    return image_from_stb(path, stbi_load_from_memory(data, size, &w, &h, &channels, 3), w, h,
-                          [&](stbi_uc c) { return lut[c]; });
+    return image_from_stb(path, in, stb::load_8, [&](unsigned char c) { return lut[c]; });
 }
 
 /// A Radiance RGBE (.hdr) file through stb_image, which decodes it to linear floats.
 Image read_hdr(const std::filesystem::path& path, const std::string& bytes) {
     if (!bytes.starts_with("#?RADIANCE") && !bytes.starts_with("#?RGBE"))
         fail(path, "not a Radiance HDR file (wrong signature)");
-    const auto [data, size] = stb_input(path, bytes);
-    int w = 0, h = 0, channels = 0;
-    return image_from_stb(path, stbi_loadf_from_memory(data, size, &w, &h, &channels, 3), w, h,
-                          [](float c) { return c; });
+    const StbInput in = stb_input(path, bytes);
+    check_hdr_data(path, bytes, in.width, in.height);
+    check_stb_size(path, in);
+    return image_from_stb(path, in, stb::load_float, [](float c) { return c; });
 }
 
 // --- Netpbm and PFM headers --------------------------------------------------------------------
@@ -148,7 +180,7 @@ class HeaderReader {
         long long value = 0;
         const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
         if (ec != std::errc() || end != t.data() + t.size() || value < 0) {
-            fail(m_path, std::string("invalid ") + what + " '" + std::string(t) + "'");
+            fail(m_path, std::string("invalid ") + what + " " + quote_token(t));
         }
         return value;
     }
@@ -159,7 +191,7 @@ class HeaderReader {
         char* end = nullptr;
         const float value = std::strtof(text.c_str(), &end);
         if (end != text.c_str() + text.size() || !std::isfinite(value)) {
-            fail(m_path, std::string("invalid ") + what + " '" + text + "'");
+            fail(m_path, std::string("invalid ") + what + " " + quote_token(text));
         }
         return value;
     }
@@ -210,8 +242,7 @@ Image read_ppm(const std::filesystem::path& path, std::string_view bytes) {
     HeaderReader header(path, bytes);
     const std::string_view magic = header.token("magic number");
     if (magic != "P6" && magic != "P3") {
-        fail(path, "not a PPM file (expected magic P6 or P3, found '" +
-                       std::string(magic.substr(0, 8)) + "')");
+        fail(path, "not a PPM file (expected magic P6 or P3, found " + quote_token(magic) + ")");
     }
     const long long w = header.integer("width");
     const long long h = header.integer("height");
@@ -270,8 +301,7 @@ Image read_pfm(const std::filesystem::path& path, std::string_view bytes) {
     HeaderReader header(path, bytes);
     const std::string_view magic = header.token("magic number");
     if (magic != "PF" && magic != "Pf") {
-        fail(path, "not a PFM file (expected magic PF or Pf, found '" +
-                       std::string(magic.substr(0, 8)) + "')");
+        fail(path, "not a PFM file (expected magic PF or Pf, found " + quote_token(magic) + ")");
     }
     const int channels = magic == "PF" ? 3 : 1;
     const long long w = header.integer("width");
@@ -411,6 +441,31 @@ void check_exr_attributes(const std::filesystem::path& path, std::string_view by
     }
 }
 
+/// Refuses an OpenEXR file too short for the table of chunk offsets its header implies (one
+/// 8-byte offset a chunk after the header, OpenEXR "File Layout"), before tinyexr allocates the
+/// image: a 300-byte file cannot hold a 60000-line picture.
+void check_exr_offset_table(const std::filesystem::path& path, const EXRHeader& header,
+                            long long width, long long height, size_t file_bytes) {
+    double chunks = 0;
+    if (header.tiled) {
+        const double tx = std::max(1, header.tile_size_x), ty = std::max(1, header.tile_size_y);
+        chunks = std::ceil(double(width) / tx) * std::ceil(double(height) / ty);
+    } else {
+        // Scanlines a chunk holds, by compression (tinyexr's, as in OpenEXR).
+        const int lines = header.compression_type == TINYEXR_COMPRESSIONTYPE_ZIP   ? 16
+                          : header.compression_type == TINYEXR_COMPRESSIONTYPE_PIZ ? 32
+                          : header.compression_type == TINYEXR_COMPRESSIONTYPE_ZFP ? 16
+                                                                                   : 1;
+        chunks = std::ceil(double(height) / lines);
+    }
+    const double needed = double(header.header_len) + 8.0 * chunks;
+    if (double(file_bytes) < needed) {
+        fail(path, fmt::format("truncated file: its {}x{} image needs {:.0f} chunk offsets, the "
+                               "file ends first ({} bytes)",
+                               width, height, chunks, file_bytes));
+    }
+}
+
 Image read_exr(const std::filesystem::path& path, const std::string& bytes) {
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
     EXRVersion version;
@@ -426,8 +481,11 @@ Image read_exr(const std::filesystem::path& path, const std::string& bytes) {
     if (code != TINYEXR_SUCCESS) fail(path, "invalid OpenEXR header: " + take_exr_error(err, code));
     // Size check before tinyexr allocates the pixels.
     const EXRBox2i& window = exr.header.data_window;
-    check_size(path, static_cast<long long>(window.max_x) - window.min_x + 1,
-               static_cast<long long>(window.max_y) - window.min_y + 1);
+    const long long width = static_cast<long long>(window.max_x) - window.min_x + 1;
+    const long long height = static_cast<long long>(window.max_y) - window.min_y + 1;
+    if (width > 0 && height > 0)
+        check_exr_offset_table(path, exr.header, width, height, bytes.size());
+    check_size(path, width, height);
     const std::array<int, 3> plane_of = exr_rgb_channels(path, exr.header);
     for (int c = 0; c < exr.header.num_channels; ++c) {
         if (exr.header.pixel_types[c] == TINYEXR_PIXELTYPE_HALF) {

@@ -87,6 +87,21 @@ uint32_t u32_at(std::string_view bytes, size_t pos) {
 
 bool is_glb(std::string_view bytes) { return bytes.size() >= 4 && u32_at(bytes, 0) == k_glb_magic; }
 
+/// Refuses, from the first bytes and the file's size, a glTF or GLB file tinygltf cannot take
+/// (4 GiB or more) and a GLB whose header is not version 2 or claims more bytes than the file has.
+void check_gltf_head(const fs::path& file, std::string_view head, uint64_t size) {
+    if (size > UINT32_MAX) fail(file, "a glTF or GLB file must be smaller than 4 GiB");
+    if (!is_glb(head)) return;
+    if (head.size() < 20 || size < 20)
+        fail(file, fmt::format("truncated GLB: {} bytes, the header alone takes 20", size));
+    if (const uint32_t version = u32_at(head, 4); version != 2)
+        fail(file, fmt::format("GLB version {} (only version 2 is read)", version));
+    if (const uint64_t length = u32_at(head, 8); length > size) {
+        fail(file,
+             fmt::format("truncated GLB: the header says {} bytes, the file has {}", length, size));
+    }
+}
+
 /// The JSON chunk of a GLB file (glTF 2.0 §4.4: a 12-byte header, then chunks of length, type
 /// and data), after checking that every chunk lies inside the file.
 std::string_view glb_json_chunk(const fs::path& file, std::string_view bytes) {
@@ -142,7 +157,8 @@ uint64_t json_unsigned(const fs::path& file, const nlohmann::json& object, const
     const auto it = object.find(key);
     if (it == object.end() && fallback) return *fallback;
     if (it == object.end() || !it->is_number_unsigned())
-        fail(file, fmt::format("{}\"{}\" must be a non-negative integer", where, key));
+        fail(file,
+             fmt::format("{}{} must be a non-negative integer", where, quote_token(key, '"')));
     return it->get<uint64_t>();
 }
 
@@ -449,7 +465,7 @@ class GltfReader {
     // --- Materials (docs/scene-format.md, "glTF models", states the mapping) ---
 
     Material to_material(const tinygltf::Material& m, size_t index) {
-        const std::string at = fmt::format("material {} \"{}\": ", index, m.name);
+        const std::string at = fmt::format("material {} {}: ", index, quote_token(m.name, '"'));
         const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
         const std::vector<double>& base = pbr.baseColorFactor;
         if (base.size() != 4 ||
@@ -838,7 +854,7 @@ class GltfReader {
         }
         const std::string camera_at = fmt::format("{}camera {}: ", at, node.camera);
         if (c.type != "perspective")
-            fail(m_file, fmt::format("{}unknown type \"{}\"", camera_at, c.type));
+            fail(m_file, fmt::format("{}unknown type {}", camera_at, quote_token(c.type, '"')));
         const double yfov = c.perspective.yfov;
         if (!(yfov > 0.0 && yfov < std::numbers::pi))
             fail(m_file, fmt::format("{}yfov {} is not between 0 and π", camera_at, yfov));
@@ -892,7 +908,7 @@ class GltfReader {
                 fail(m_file, light_at + "its node's transform is singular");
             m_out.lights.emplace_back(DirectionalLight{d / len, intensity});
         } else {
-            fail(m_file, fmt::format("{}unknown type \"{}\"", light_at, light.type));
+            fail(m_file, fmt::format("{}unknown type {}", light_at, quote_token(light.type, '"')));
         }
     }
 
@@ -927,7 +943,11 @@ class GltfReader {
 }  // namespace
 
 GltfContent read_gltf(const std::filesystem::path& file) {
-    const std::string bytes = read_file_bytes(file, InputKind::mesh);
+    FileFormatCheck check;
+    check.check_head = [&](std::string_view head, std::uintmax_t size) {
+        check_gltf_head(file, head, size);
+    };
+    const std::string bytes = read_file_bytes(file, InputKind::mesh, check);
     if (bytes.empty()) fail(file, "the file is empty");
     std::vector<std::string> warnings;
     const tinygltf::Model model = parse_with_tinygltf(file, bytes, warnings);

@@ -52,10 +52,10 @@ std::vector<PendingTriangle> triangulate_faces(const std::filesystem::path& file
         if (f % 65536 == 0) throw_if_cancelled();  // SIGINT / SIGTERM
         const uint32_t begin = mesh.face_start[f], end = mesh.face_start[f + 1];
         const uint32_t n = end - begin;
-        if (n < 3)
+        if (n < 3 || n > k_max_face_corners)
             throw InputError(face_where(file, mesh, f) +
-                             fmt::format("face {} has {} corner{}; a face needs at least 3", f + 1,
-                                         n, n == 1 ? "" : "s"));
+                             fmt::format("face {} has {} corner{}; a face needs 3 to {}", f + 1, n,
+                                         n == 1 ? "" : "s", k_max_face_corners));
         for (uint32_t k = begin; k < end; ++k) {
             if (mesh.corners[k] >= vertex_count)
                 throw InputError(face_where(file, mesh, f) +

@@ -16,6 +16,10 @@
 
 namespace hikari {
 
+/// The most corners a face may have in any format (OBJ's long-standing limit): ear clipping takes
+/// time quadratic in the corners, so a face of 200,000 corners would take minutes.
+inline constexpr uint32_t k_max_face_corners = 255;
+
 /// A mesh as a file describes it, before triangulation and normals: vertices with their
 /// attributes, and faces as polygons of any number of corners. Every loader fills one and hands
 /// it to build_mesh(), so triangulation (ear clipping) and normals (crease angle, smoothing

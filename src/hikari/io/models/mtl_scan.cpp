@@ -38,13 +38,14 @@ void check_floats(const std::filesystem::path& file, uint32_t line,
     if (count < count_min || count > count_max)
         fail(file, line,
              count_min == count_max
-                 ? fmt::format("'{}' needs {} number, found {}", words[0], count_min, count)
-                 : fmt::format("'{}' needs {} to {} numbers, found {}", words[0], count_min,
-                               count_max, count));
+                 ? fmt::format("{} needs {} number, found {}", quote_token(words[0]), count_min,
+                               count)
+                 : fmt::format("{} needs {} to {} numbers, found {}", quote_token(words[0]),
+                               count_min, count_max, count));
     for (size_t k = 1; k < words.size(); ++k) {
         std::string why;
         if (!parse_float_token(words[k], &why))
-            fail(file, line, fmt::format("'{}': {}", words[0], why));
+            fail(file, line, fmt::format("{}: {}", quote_token(words[0]), why));
     }
 }
 
@@ -56,8 +57,8 @@ void check_illum(const std::filesystem::path& file, uint32_t line,
     if (word.empty() || ec != std::errc() || stop != word.data() + word.size() || value < 0 ||
         value > 10)
         fail(file, line,
-             fmt::format("'illum' needs one integer from 0 to 10, found '{}'",
-                         words.size() > 1 ? words[1] : std::string_view{}));
+             fmt::format("'illum' needs one integer from 0 to 10, found {}",
+                         quote_token(words.size() > 1 ? words[1] : std::string_view{})));
 }
 
 }  // namespace

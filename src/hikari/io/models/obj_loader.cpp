@@ -170,13 +170,15 @@ size_t check_numbers(const std::filesystem::path& file, size_t line, const char*
                      std::string_view rest, size_t min_count) {
     const size_t count = count_tokens(rest);
     if (count < min_count) {
-        fail(file, line,
-             fmt::format("'{}' needs {} numbers, found {}", statement, min_count, count));
+        fail(
+            file, line,
+            fmt::format("{} needs {} numbers, found {}", quote_token(statement), min_count, count));
     }
     for_each_token(rest, [&](std::string_view t) {
         // tinyobjloader stores floats: a finite double beyond FLT_MAX would become infinite.
         std::string why;
-        if (!parse_float_token(t, &why)) fail(file, line, fmt::format("'{}': {}", statement, why));
+        if (!parse_float_token(t, &why))
+            fail(file, line, fmt::format("{}: {}", quote_token(statement), why));
     });
     return count;
 }
@@ -244,9 +246,9 @@ void check_face_corners(const std::filesystem::path& file, size_t line, std::str
                            !(count == 2 && parts[1].empty());
         if (!valid)
             fail(file, line,
-                 fmt::format("'f': '{}' is not a corner (v, v/vt, v//vn or v/vt/vn, each a "
+                 fmt::format("'f': {} is not a corner (v, v/vt, v//vn or v/vt/vn, each a "
                              "nonzero index of at most 10 digits that fits in 32 bits)",
-                             corner));
+                             quote_token(corner)));
     });
 }
 
@@ -454,9 +456,10 @@ LineTable scan_obj_text(const std::filesystem::path& file, std::string_view text
             ++table.vt_count;
         } else if (s[0] == 'f' && blank1) {
             const size_t corners = count_tokens(s.substr(2));
-            if (corners < 3 || corners > 255) {
+            if (corners < 3 || corners > k_max_face_corners) {
                 fail(file, line,
-                     "a face needs 3 to 255 corners, this one has " + std::to_string(corners));
+                     fmt::format("a face needs 3 to {} corners, this one has {}",
+                                 k_max_face_corners, corners));
             }
             check_face_corners(file, line, s.substr(2));
             table.f.push_back(line);
@@ -770,8 +773,9 @@ ImageTexture mtl_texture(const std::filesystem::path& library, size_t line,
         t.pyramid = textures.pyramid(library.parent_path() / texture_name);
     } catch (const InputError& e) {
         fail(library, line,
-             fmt::format("{} of material '{}': cannot use texture \"{}\": {}", keyword, material,
-                         texture_name, e.what()));
+             fmt::format("{} of material {}: cannot use texture {}: {}", keyword,
+                         quote_token(material), quote_token(texture_name, '"', k_quoted_path_bytes),
+                         e.what()));
     }
     return t;
 }
@@ -818,7 +822,7 @@ Material to_material(const tinyobj::material_t& m, const std::filesystem::path& 
     if (const auto problem = find_material_problem(out)) {
         const std::string_view keyword = mtl_keyword(problem->field, lines);
         fail(library, lines.line_of(keyword),
-             fmt::format("material '{}', {}: {}", m.name, keyword, problem->message));
+             fmt::format("material {}, {}: {}", quote_token(m.name), keyword, problem->message));
     }
     // map_Kd colours ka and kd alike, as a scene material's texture does; map_Ka, when present,
     // takes over ka.
@@ -961,7 +965,11 @@ std::vector<std::array<uint32_t, 3>> triangle_positions(const std::filesystem::p
 }  // namespace
 
 MeshData load_obj(const std::filesystem::path& file, const MeshOptions& options) {
-    const std::string text = read_file_bytes(file, InputKind::mesh);
+    // The text and its line table (an offset a line, as long as the shortest lines) are held
+    // together: twice the file, checked against --max-memory before a byte is read.
+    const std::string text =
+        read_file_bytes(file, InputKind::mesh,
+                        {.memory_per_byte = 2, .what = "reading the OBJ file", .check_head = {}});
     const size_t face_lines = count_face_lines(text);
     check_obj_memory(file, face_lines, 3 * face_lines, 0, 0);
     MtlReader mtl_reader(file.parent_path());

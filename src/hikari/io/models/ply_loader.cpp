@@ -169,7 +169,8 @@ PlyProperty parse_property(const fs::path& file, uint32_t line,
                            const std::vector<std::string_view>& words) {
     const auto type_of = [&](std::string_view word) {
         const auto type = parse_type(word);
-        if (!type) fail_at_line(file, line, fmt::format("unknown property type '{}'", word));
+        if (!type)
+            fail_at_line(file, line, fmt::format("unknown property type {}", quote_token(word)));
         return *type;
     };
     PlyProperty property;
@@ -236,18 +237,19 @@ PlyHeader parse_header(const fs::path& file, std::string_view bytes,
             } else if (words[1] == "binary_big_endian") {
                 header.format = PlyFormat::binary_big_endian;
             } else {
-                fail_at_line(file, line, fmt::format("unknown format '{}'", words[1]));
+                fail_at_line(file, line, fmt::format("unknown format {}", quote_token(words[1])));
             }
             have_format = true;
         } else if (keyword == "element") {
             if (!have_format) fail_at_line(file, line, "'element' before the 'format' line");
             if (words.size() != 3) fail_at_line(file, line, "expected 'element NAME COUNT'");
             if (!element_names.insert(words[1]).second)
-                fail_at_line(file, line, fmt::format("a second element '{}'", words[1]));
+                fail_at_line(file, line, fmt::format("a second element {}", quote_token(words[1])));
             const auto count = parse_count(words[2]);
             if (!count)
-                fail_at_line(file, line,
-                             fmt::format("element count '{}' is not a whole number", words[2]));
+                fail_at_line(
+                    file, line,
+                    fmt::format("element count {} is not a whole number", quote_token(words[2])));
             header.elements.push_back({std::string(words[1]), *count, {}, line});
             property_names.clear();
         } else if (keyword == "property") {
@@ -256,14 +258,14 @@ PlyHeader parse_header(const fs::path& file, std::string_view bytes,
             PlyProperty property = parse_property(file, line, words);
             if (!property_names.insert(words.back()).second)
                 fail_at_line(file, line,
-                             fmt::format("a second property '{}' in element '{}'", property.name,
-                                         element.name));
+                             fmt::format("a second property {} in element {}",
+                                         quote_token(property.name), quote_token(element.name)));
             element.properties.push_back(std::move(property));
         } else if (keyword != "comment" && keyword != "obj_info" && !words.empty()) {
             // Some exporters (Blender 2.4) write a free-text line without `comment`.
             if (++unknown_lines == 1)
-                warnings.push_back(fmt::format("{}:{}: unknown header line ignored: '{}'",
-                                               file.string(), line, text.substr(0, 80)));
+                warnings.push_back(fmt::format("{}:{}: unknown header line ignored: {}",
+                                               file.string(), line, quote_token(text)));
         }
     }
     if (unknown_lines > 1)
@@ -285,9 +287,9 @@ void check_counts_fit(const fs::path& file, const PlyHeader& header, size_t body
         if (min_size == 0) continue;
         if (e.count > remaining / min_size)
             fail_at_line(file, e.line,
-                         fmt::format("element '{}' declares {} items, more than the {} bytes "
+                         fmt::format("element {} declares {} items, more than the {} bytes "
                                      "after the header can hold",
-                                     e.name, e.count, body_bytes));
+                                     quote_token(e.name), e.count, body_bytes));
         remaining -= e.count * min_size;
     }
 }
@@ -318,8 +320,9 @@ std::array<int, N> find_slots(const fs::path& file, const PlyElement& vertex,
         if (slots[i] < 0) continue;
         ++found;
         if (vertex.properties[slots[i]].is_list())
-            fail_at_line(file, vertex.line,
-                         fmt::format("vertex property '{}' is a list, not a number", names[i]));
+            fail_at_line(
+                file, vertex.line,
+                fmt::format("vertex property {} is a list, not a number", quote_token(names[i])));
     }
     if (found == N) return slots;
     if (found > 0)
@@ -357,14 +360,14 @@ int find_index_list(const fs::path& file, const PlyElement& element) {
     int slot = element.find("vertex_indices");
     if (slot < 0) slot = element.find("vertex_index");
     if (slot < 0)
-        fail_at_line(
-            file, element.line,
-            fmt::format("element '{}' has no list property 'vertex_indices'", element.name));
+        fail_at_line(file, element.line,
+                     fmt::format("element {} has no list property 'vertex_indices'",
+                                 quote_token(element.name)));
     const PlyProperty& p = element.properties[slot];
     if (!p.is_list() || !is_integer(p.type))
-        fail_at_line(
-            file, element.line,
-            fmt::format("'{}' of element '{}' must be a list of integers", p.name, element.name));
+        fail_at_line(file, element.line,
+                     fmt::format("{} of element {} must be a list of integers", quote_token(p.name),
+                                 quote_token(element.name)));
     return slot;
 }
 
@@ -448,10 +451,11 @@ class BinaryBody {
     uint64_t list_length(const PlyProperty& list) {
         const int64_t length = integer(*list.count_type);
         const uint64_t room = (m_bytes.size() - m_pos) / size_of(list.type);
-        if (length < 0) fail(fmt::format("list '{}' has a negative length {}", list.name, length));
+        if (length < 0)
+            fail(fmt::format("list {} has a negative length {}", quote_token(list.name), length));
         if (static_cast<uint64_t>(length) > room)
-            fail(fmt::format("list '{}' has length {}, more than the {} bytes left can hold",
-                             list.name, length, m_bytes.size() - m_pos));
+            fail(fmt::format("list {} has length {}, more than the {} bytes left can hold",
+                             quote_token(list.name), length, m_bytes.size() - m_pos));
         return static_cast<uint64_t>(length);
     }
     void skip(const PlyProperty& p) {
@@ -497,7 +501,8 @@ class AsciiBody {
             const auto [stop, ec] = std::from_chars(digits.data(), end, value);
             if (digits.empty() || ec != std::errc() || stop != end || value < min_of(type) ||
                 value > max_of(type))
-                fail(fmt::format("'{}' is not a whole number of type {}", word, type_name(type)));
+                fail(fmt::format("{} is not a whole number of type {}", quote_token(word),
+                                 type_name(type)));
             return static_cast<double>(value);
         }
         double value = 0;
@@ -513,17 +518,18 @@ class AsciiBody {
             }
         }
         if (digits.empty() || ec != std::errc() || stop != end)
-            fail(fmt::format("'{}' is not a number", word));
+            fail(fmt::format("{} is not a number", quote_token(word)));
         return value;
     }
     int64_t integer(PlyType type) { return static_cast<int64_t>(scalar(type)); }
     uint64_t list_length(const PlyProperty& list) {
         const int64_t length = integer(*list.count_type);
         // Each item takes at least a character and a separator.
-        if (length < 0) fail(fmt::format("list '{}' has a negative length {}", list.name, length));
+        if (length < 0)
+            fail(fmt::format("list {} has a negative length {}", quote_token(list.name), length));
         if (static_cast<uint64_t>(length) > (m_bytes.size() - m_pos + 1) / 2)
-            fail(fmt::format("list '{}' has length {}, more than the rest of the file holds",
-                             list.name, length));
+            fail(fmt::format("list {} has length {}, more than the rest of the file holds",
+                             quote_token(list.name), length));
         return static_cast<uint64_t>(length);
     }
     void skip(const PlyProperty& p) {
@@ -700,7 +706,9 @@ void read_faces(Body& body, const PlyElement& e, int list, uint64_t vertex_count
                 continue;
             }
             const uint64_t n = body.list_length(p);
-            if (n < 3) body.fail(fmt::format("it has {} corners; a face needs at least 3", n));
+            if (n < 3 || n > k_max_face_corners)
+                body.fail(
+                    fmt::format("it has {} corners; a face needs 3 to {}", n, k_max_face_corners));
             for (uint64_t j = 0; j < n; ++j)
                 mesh.corners.push_back(read_index(body, p.type, vertex_count));
         }
@@ -899,7 +907,14 @@ PolygonMesh read_ply(const fs::path& file, std::string_view bytes) {
 }
 
 MeshData load_ply(const fs::path& file, const MeshOptions& options) {
-    const std::string bytes = read_file_bytes(file, InputKind::mesh);
+    // The magic line is checked from the first bytes: a 4 GiB file that is not a PLY is refused
+    // before it is read.
+    FileFormatCheck check;
+    check.check_head = [&](std::string_view head, std::uintmax_t) {
+        if (!head.starts_with("ply\n") && !head.starts_with("ply\r\n") && head != "ply")
+            fail_at_line(file, 1, "not a PLY file (the first line is not 'ply')");
+    };
+    const std::string bytes = read_file_bytes(file, InputKind::mesh, check);
     return build_mesh(file, read_ply(file, bytes), options);
 }
 

@@ -1,4 +1,5 @@
 #include "hikari/io/models/text_number.h"
+#include "hikari/io/files/printable_text.h"
 
 #include <charconv>
 #include <cmath>
@@ -27,8 +28,9 @@ std::optional<float> parse_float_token(std::string_view token, std::string* why)
     if (why) {
         const bool too_large = number && (ec == std::errc::result_out_of_range ||
                                           (std::isfinite(value) && ec == std::errc()));
-        *why = too_large ? fmt::format("{} is too large for a 32-bit float", token)
-                         : fmt::format("'{}' is not a finite number", token);
+        *why = too_large
+                   ? fmt::format("{} is too large for a 32-bit float", quote_token(token, '\0'))
+                   : fmt::format("{} is not a finite number", quote_token(token));
     }
     return std::nullopt;
 }

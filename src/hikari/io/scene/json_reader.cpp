@@ -38,6 +38,11 @@ size_t edit_distance(std::string_view a, std::string_view b) {
     return row[b.size()];
 }
 
+/// A key as a step of a JSON path: itself, or quote_token() and cut when it is too long to read.
+std::string path_key(std::string_view key) {
+    return key.size() > k_quoted_token_bytes ? quote_token(key, '"') : std::string(key);
+}
+
 }  // namespace
 
 void JsonNode::fail(std::string_view message) const {
@@ -52,7 +57,8 @@ bool JsonNode::has(std::string_view key) const {
 JsonNode JsonNode::at(std::string_view key) const {
     if (!m_value.is_object())
         fail(fmt::format("expected an object, got {}", json_type_name(m_value)));
-    const std::string child = m_path.empty() ? std::string(key) : fmt::format("{}.{}", m_path, key);
+    const std::string child =
+        m_path.empty() ? path_key(key) : fmt::format("{}.{}", m_path, path_key(key));
     if (!has(key)) JsonNode(m_value, m_file, child).fail("missing (this key is required)");
     return JsonNode(m_value.find(key).value(), m_file, child);
 }
@@ -72,7 +78,8 @@ void JsonNode::expect_object(std::initializer_list<std::string_view> allowed) co
             const size_t d = edit_distance(key, a);
             if (d < best) best = d, closest = a;
         }
-        const std::string child = m_path.empty() ? key : fmt::format("{}.{}", m_path, key);
+        const std::string child =
+            m_path.empty() ? path_key(key) : fmt::format("{}.{}", m_path, path_key(key));
         std::string message = "unknown key";
         if (best <= 2) message += fmt::format(" (did you mean \"{}\"?)", closest);
         JsonNode(value, m_file, child).fail(message);
@@ -136,7 +143,13 @@ Vec3 JsonNode::as_vec3() const {
 Vec3 JsonNode::as_direction() const {
     const Vec3 v = as_vec3();
     if (v == Vec3(0.0f)) fail("expected a non-zero direction");
-    return v;
+    // [0, -1e-30, 0] squares to 0 in float and [0, -1e30, 0] to infinity, so normalize() would
+    // give NaN or 0. Scaling by a power of two keeps the direction exactly (and changes nothing
+    // for ordinary values, whose squared length is a normal float).
+    const float d = dot(v, v);
+    if (d >= std::numeric_limits<float>::min() && std::isfinite(d)) return v;
+    const float largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    return v * std::ldexp(1.0f, -std::ilogb(largest));
 }
 
 Vec3 JsonNode::as_colour() const {
@@ -190,6 +203,17 @@ struct ErrorPosition final : nlohmann::json_sax<nlohmann::json> {
 
 }  // namespace
 
+std::string bounded_parse_reason(std::string_view reason) {
+    constexpr std::string_view k_last_read = "last read: '";
+    const size_t begin = reason.find(k_last_read);
+    const size_t end = reason.rfind('\'');
+    if (begin == std::string_view::npos || end < begin + k_last_read.size())
+        return std::string(reason);
+    const size_t token = begin + k_last_read.size();
+    return fmt::format("{}last read: {}{}", reason.substr(0, begin),
+                       quote_token(reason.substr(token, end - token)), reason.substr(end + 1));
+}
+
 nlohmann::json parse_json(std::string_view text, const std::string& file) {
     try {
         return nlohmann::json::parse(text);
@@ -198,20 +222,23 @@ nlohmann::json parse_json(std::string_view text, const std::string& file) {
         // Drop nlohmann's "[json.exception.parse_error.101] parse error at line 3, column 5: ".
         if (const size_t colon = reason.find(": "); colon != std::string_view::npos)
             reason.remove_prefix(colon + 2);
-        throw InputError(
-            printable_text(fmt::format("{}: {}", text_position(text, file, e.byte), reason)));
+        throw InputError(printable_text(fmt::format("{}: {}", text_position(text, file, e.byte),
+                                                    bounded_parse_reason(reason))));
     } catch (const nlohmann::json::out_of_range& e) {
         // Error 406, "number overflow": a number beyond a double's range, so beyond a float's.
         // The SAX position is that of the number's last character.
         ErrorPosition where;
         nlohmann::json::sax_parse(text, &where);
         if (e.id == 406 && where.byte > 0)
-            throw InputError(printable_text(fmt::format(
-                "{}: {} is too large for a 32-bit float",
-                text_position(text, file, where.byte + 1 - where.token.size()), where.token)));
-        throw InputError(printable_text(fmt::format("{}: invalid JSON: {}", file, e.what())));
+            throw InputError(printable_text(
+                fmt::format("{}: {} is too large for a 32-bit float",
+                            text_position(text, file, where.byte + 1 - where.token.size()),
+                            quote_token(where.token, '\0'))));
+        throw InputError(printable_text(
+            fmt::format("{}: invalid JSON: {}", file, bounded_parse_reason(e.what()))));
     } catch (const nlohmann::json::exception& e) {
-        throw InputError(printable_text(fmt::format("{}: invalid JSON: {}", file, e.what())));
+        throw InputError(printable_text(
+            fmt::format("{}: invalid JSON: {}", file, bounded_parse_reason(e.what()))));
     }
 }
 

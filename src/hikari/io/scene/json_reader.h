@@ -50,7 +50,8 @@ class JsonNode {
     int as_int(int lo, int hi) const;
     /// Three finite numbers.
     Vec3 as_vec3() const;
-    /// Three finite numbers, not all zero.
+    /// Three finite numbers, not all zero; scaled by a power of two when their squared length
+    /// is not a normal float, so that normalize() gives the direction for any such input.
     Vec3 as_direction() const;
     /// An RGB colour: three numbers >= 0, or one number for grey.
     Vec3 as_colour() const;
@@ -66,5 +67,9 @@ std::string_view json_type_name(const nlohmann::json& v);
 
 /// Parses JSON text; a syntax error becomes InputError "<file>:<line>:<column>: <reason>".
 nlohmann::json parse_json(std::string_view text, const std::string& file);
+
+/// nlohmann's parse-error reason with the token it quotes ("last read: '...'") cut by
+/// quote_token(): a 200 MB number would otherwise make a 200 MB message.
+std::string bounded_parse_reason(std::string_view reason);
 
 }  // namespace hikari

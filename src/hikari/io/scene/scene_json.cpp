@@ -12,6 +12,7 @@
 
 #include "hikari/core/error.h"
 #include "hikari/core/mat4.h"
+#include "hikari/io/files/printable_text.h"
 #include "hikari/io/files/read_file.h"
 #include "hikari/io/images/image_read.h"
 #include "hikari/io/images/texture_files.h"
@@ -65,7 +66,7 @@ Value parse_choice(const JsonNode& node, std::string_view what,
         if (choices[k].name == word) return choices[k].value;
         known += fmt::format("{}\"{}\"", k == 0 ? "" : k + 1 == N ? " or " : ", ", choices[k].name);
     }
-    node.fail(fmt::format("unknown {} \"{}\" (expected {})", what, word, known));
+    node.fail(fmt::format("unknown {} {} (expected {})", what, quote_token(word, '"'), known));
 }
 
 constexpr std::array<Choice<Projection>, 2> k_projections = {{
@@ -131,7 +132,8 @@ ImageTexture parse_image_texture(const JsonNode& node, SceneBuilder& b) {
     try {
         t.pyramid = b.textures.pyramid(b.base_dir / t.file);
     } catch (const InputError& e) {
-        file_node.fail(fmt::format("cannot use texture \"{}\": {}", t.file, e.what()));
+        file_node.fail(fmt::format("cannot use texture {}: {}",
+                                   quote_token(t.file, '"', k_quoted_path_bytes), e.what()));
     }
     if (node.has("wrap")) t.wrap = parse_choice(node.at("wrap"), "wrap", k_texture_wraps);
     if (node.has("filter")) t.filter = parse_choice(node.at("filter"), "filter", k_texture_filters);
@@ -157,7 +159,8 @@ Kind parse_kind(const JsonNode& node, std::string_view what,
         if (p.type == type) return p.parse(node, context...);
         known += fmt::format("{}\"{}\"", known.empty() ? "" : " or ", p.type);
     }
-    node.at("type").fail(fmt::format("unknown {} type \"{}\" (expected {})", what, type, known));
+    node.at("type").fail(
+        fmt::format("unknown {} type {} (expected {})", what, quote_token(type, '"'), known));
 }
 
 /// Every texture kind's parser (scene/texture.h): one line per kind.
@@ -171,7 +174,8 @@ constexpr std::array<KindParser<Texture, SceneBuilder>, 2> k_texture_parsers = {
 Sky parse_sky(const JsonNode& node) {
     const std::string type = node.at("type").as_string();
     if (type != "gradient")
-        node.at("type").fail(fmt::format("unknown sky type \"{}\" (expected \"gradient\")", type));
+        node.at("type").fail(
+            fmt::format("unknown sky type {} (expected \"gradient\")", quote_token(type, '"')));
     node.expect_object({"type", "horizon", "zenith"});
     return {true, node.at("horizon").as_colour(), node.at("zenith").as_colour()};
 }
@@ -222,7 +226,8 @@ PointLight parse_point_light(const JsonNode& node) {
         const std::string f = node.at("falloff").as_string();
         if (f != "inverse_square" && f != "none")
             node.at("falloff").fail(
-                fmt::format("unknown falloff \"{}\" (expected \"inverse_square\" or \"none\")", f));
+                fmt::format("unknown falloff {} (expected \"inverse_square\" or \"none\")",
+                            quote_token(f, '"')));
         inverse_square = f == "inverse_square";
     }
     return {node.at("position").as_vec3(), node.at("intensity").as_colour(), inverse_square};
@@ -270,16 +275,17 @@ EnvironmentLight parse_environment_light(const JsonNode& node, SceneBuilder& b) 
     try {
         image = read_image(b.base_dir / file);
     } catch (const InputError& e) {
-        file_node.fail(fmt::format("cannot read environment map \"{}\": {}", file, e.what()));
+        file_node.fail(fmt::format("cannot read environment map {}: {}",
+                                   quote_token(file, '"', k_quoted_path_bytes), e.what()));
     }
     if (image.width != 2 * image.height)
         file_node.fail(fmt::format(
-            "environment map \"{}\" is {}x{}: a latitude-longitude map is twice as wide as high",
-            file, image.width, image.height));
+            "environment map {} is {}x{}: a latitude-longitude map is twice as wide as high",
+            quote_token(file, '"', k_quoted_path_bytes), image.width, image.height));
     for (const Vec3& texel : image.pixels)
         if (!is_finite(texel) || min_component(texel) < 0.0f)
-            file_node.fail(
-                fmt::format("environment map \"{}\" has a negative or non-finite texel", file));
+            file_node.fail(fmt::format("environment map {} has a negative or non-finite texel",
+                                       quote_token(file, '"', k_quoted_path_bytes)));
     light.map = std::make_shared<const EnvironmentMap>(std::move(image), rotation);
     return light;
 }
@@ -301,7 +307,8 @@ uint32_t resolve_material(SceneBuilder& b, const JsonNode& object) {
         const std::string name = node.as_string();
         const auto it = b.material_index.find(name);
         if (it == b.material_index.end())
-            node.fail(fmt::format("unknown material \"{}\" (not in \"materials\")", name));
+            node.fail(
+                fmt::format("unknown material {} (not in \"materials\")", quote_token(name, '"')));
         return it->second;
     }
     constexpr std::string_view k_default = "(default)";
@@ -546,8 +553,8 @@ void parse_object(SceneBuilder& b, const JsonNode& node) {
         parse_mesh(b, node);
     } else {
         node.at("type").fail(fmt::format(
-            "unknown object type \"{}\" (expected \"sphere\", \"plane\", \"triangle\" or \"mesh\")",
-            type));
+            "unknown object type {} (expected \"sphere\", \"plane\", \"triangle\" or \"mesh\")",
+            quote_token(type, '"')));
     }
 }
 

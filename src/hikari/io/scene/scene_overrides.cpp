@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "hikari/core/error.h"
+#include "hikari/io/files/printable_text.h"
 #include "hikari/io/scene/json_reader.h"
 
 namespace hikari {
@@ -19,8 +20,8 @@ namespace {
 using PathStep = std::variant<std::string, size_t>;
 
 [[noreturn]] void fail(const SceneOverride& o, std::string_view where, std::string_view message) {
-    throw InputError(
-        fmt::format("--set {}: {}{}{}", o.argument, where, where.empty() ? "" : ": ", message));
+    throw InputError(printable_text(fmt::format("--set {}: {}{}{}", quote_token(o.argument, '\0'),
+                                                where, where.empty() ? "" : ": ", message)));
 }
 
 bool is_bare_word(std::string_view v) {
@@ -52,14 +53,19 @@ std::vector<PathStep> split_path(const SceneOverride& o) {
             const std::optional<size_t> index = close == std::string_view::npos
                                                     ? std::nullopt
                                                     : parse_index(p.substr(i + 1, close - i - 1));
-            if (!index) fail(o, "", fmt::format("{}: expected [index] at character {}", p, i + 1));
+            if (!index)
+                fail(o, "",
+                     fmt::format("{}: expected [index] at character {}", quote_token(p, '\0'),
+                                 i + 1));
             steps.emplace_back(*index);
             i = close + 1;
         } else {
             const size_t end = p.find_first_of(".[", i);
             const std::string_view key =
                 p.substr(i, end == std::string_view::npos ? std::string_view::npos : end - i);
-            if (key.empty()) fail(o, "", fmt::format("{}: empty key at character {}", p, i + 1));
+            if (key.empty())
+                fail(o, "",
+                     fmt::format("{}: empty key at character {}", quote_token(p, '\0'), i + 1));
             if (const std::optional<size_t> index = parse_index(key))
                 steps.emplace_back(*index);
             else
@@ -68,7 +74,7 @@ std::vector<PathStep> split_path(const SceneOverride& o) {
         }
         if (i < p.size() && p[i] == '.') {
             ++i;
-            if (i == p.size()) fail(o, "", fmt::format("{}: ends with '.'", p));
+            if (i == p.size()) fail(o, "", fmt::format("{}: ends with '.'", quote_token(p, '\0')));
         }
     }
     return steps;
@@ -76,7 +82,8 @@ std::vector<PathStep> split_path(const SceneOverride& o) {
 
 std::string step_text(const std::string& path_so_far, const PathStep& step) {
     if (const auto* key = std::get_if<std::string>(&step))
-        return path_so_far.empty() ? *key : path_so_far + "." + *key;
+        return path_so_far.empty() ? quote_token(*key, '\0')
+                                   : path_so_far + "." + quote_token(*key, '\0');
     return fmt::format("{}[{}]", path_so_far, std::get<size_t>(step));
 }
 
@@ -89,7 +96,8 @@ void apply_one(nlohmann::json& doc, const SceneOverride& o) {
             if (node->is_null()) *node = nlohmann::json::object();
             if (!node->is_object())
                 fail(o, where.empty() ? "(top level)" : where,
-                     fmt::format("is {}, so it has no key \"{}\"", json_type_name(*node), *key));
+                     fmt::format("is {}, so it has no key {}", json_type_name(*node),
+                                 quote_token(*key, '"')));
             // A missing key is added, but not a new material: a misspelt material name would
             // otherwise define an unused one and change nothing.
             if (where == "materials" && !node->contains(*key)) {
@@ -97,8 +105,8 @@ void apply_one(nlohmann::json& doc, const SceneOverride& o) {
                 for (const auto& [name, value] : node->items())
                     names += fmt::format("{}\"{}\"", names.empty() ? "" : ", ", name);
                 fail(o, where,
-                     fmt::format("the scene has no material \"{}\" (it has: {})", *key,
-                                 names.empty() ? "none" : names));
+                     fmt::format("the scene has no material {} (it has: {})",
+                                 quote_token(*key, '"'), names.empty() ? "none" : names));
             }
             node = &(*node)[*key];  // added (null) when missing
         } else {
@@ -139,7 +147,9 @@ SceneOverride parse_scene_override(std::string_view argument) {
         std::string_view reason = e.what();
         if (const size_t colon = reason.find(": "); colon != std::string_view::npos)
             reason.remove_prefix(colon + 2);
-        fail(o, "", fmt::format("VALUE is not JSON ({}); quote a string as '\"text\"'", reason));
+        fail(o, "",
+             fmt::format("VALUE is not JSON ({}); quote a string as '\"text\"'",
+                         bounded_parse_reason(reason)));
     }
     return o;
 }

@@ -1,0 +1,8 @@
+// libFuzzer target: see fuzz_inputs.h for what one input goes through.
+
+#include "fuzz_inputs.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    (void)hikari::fuzz::gltf_image_input(data, size);
+    return 0;
+}
