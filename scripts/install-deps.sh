@@ -12,6 +12,8 @@ packages=(
 # CI also checks formatting, runs clang-tidy and builds with sanitizers.
 if [ "${1:-}" = "--ci" ]; then
     packages+=(clang clang-format clang-tidy libclang-rt-14-dev git)
+    # LibreOffice recalculates the --formulas workbook in tests/python/test_xlsx_formulas.py.
+    packages+=(libreoffice-calc-nogui)
 fi
 
 missing=()

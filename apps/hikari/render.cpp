@@ -166,8 +166,8 @@ int run_render(const RenderOptions& o) {
     }
     for (const Run& run : runs) check_spreadsheet_size(run.output, camera);
     if (o.formulas) {
-        write_formula_workbook(runs.front().output,
-                               session->scene_as_rendered(render_request(o)), o);
+        write_formula_workbook(runs.front().output, session->scene_as_rendered(render_request(o)),
+                               o);
         if (!o.quiet) print_err("hikari: wrote {} (formulas)\n", runs.front().output);
         return 0;
     }

@@ -33,8 +33,8 @@ std::optional<DepthRange> depth_range(const RenderOptions& o) {
 
 Film output_film(const Camera& camera, const std::string& output, const RenderOptions& o) {
     const bool srgb8 = is_colour_aov(o.aov) && is_picture_file(output) && o.bit_depth == 8 &&
-                       o.encoding == SampleEncoding::srgb &&
-                       o.exposure == 0.0f && o.tone_map == ToneMap::clamp;
+                       o.encoding == SampleEncoding::srgb && o.exposure == 0.0f &&
+                       o.tone_map == ToneMap::clamp;
     return Film(camera, srgb8 ? FilmFormat::srgb8 : FilmFormat::linear);
 }
 

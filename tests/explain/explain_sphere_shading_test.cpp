@@ -33,7 +33,9 @@ D3 operator+(D3 a, D3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 D3 operator-(D3 a, D3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 D3 operator*(double s, D3 a) { return {s * a.x, s * a.y, s * a.z}; }
 double dot(D3 a, D3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-D3 cross(D3 a, D3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+D3 cross(D3 a, D3 b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
 D3 unit(D3 a) { return (1.0 / std::sqrt(dot(a, a))) * a; }
 
 /// The lecture's quantities at pixel (x, y) of k_scene, by hand.
@@ -64,7 +66,8 @@ Expected lecture(int px, int py) {
     const D3 reflected = l + (2 * out.cos_alpha) * normal;
     out.cos_gamma = dot(reflected, -1.0 * e);
     out.power = std::pow(std::max(out.cos_gamma, 0.0), n);
-    const D3 ka{0.7, 0.4, 0.3}, kd{0.6, 0.5, 0.2}, ia{0.2, 0.15, 0.1}, i0{0.9, 1, 0.8}, ks{0.5, 0.5, 0.4};
+    const D3 ka{0.7, 0.4, 0.3}, kd{0.6, 0.5, 0.2}, ia{0.2, 0.15, 0.1}, i0{0.9, 1, 0.8},
+        ks{0.5, 0.5, 0.4};
     out.sum = {ia.x * ka.x, ia.y * ka.y, ia.z * ka.z};
     if (out.cos_alpha > 0)
         out.sum = out.sum + D3{i0.x * (kd.x * out.cos_alpha + ks.x * out.power),

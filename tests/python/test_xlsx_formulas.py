@@ -68,10 +68,37 @@ def recalculated_sheets(tmp_path, workbook):
     return sheets
 
 
+def read_workbook(path):
+    with zipfile.ZipFile(path) as z:
+        return {name: z.read(name) for name in z.namelist()}
+
+
+def write_workbook(path, files):
+    with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as z:
+        for name, data in files.items():
+            z.writestr(name, data)
+
+
+def without_stored_results(source, target):
+    """A copy of the workbook `source` whose formulas' stored results are all 0: whatever
+    LibreOffice then shows, it computed."""
+    files = read_workbook(source)
+    for name in files:
+        if name.startswith("xl/worksheets/sheet"):
+            files[name] = re.sub(rb"(</f>)<v>[^<]*</v>", rb"\g<1><v>0</v>", files[name])
+    write_workbook(target, files)
+
+
+def stored_results(path, sheet_number, shape):
+    """The results stored with the formulas of a sheet (sheetN.xml), row by row."""
+    xml = read_workbook(path)[f"xl/worksheets/sheet{sheet_number}.xml"].decode()
+    values = [float(v) for v in re.findall(r"</f><v>([^<]*)</v>", xml)]
+    return np.array(values).reshape(shape)
+
+
 def with_exponent(source, target, n):
     """A copy of the workbook `source` whose Phong exponent cell (the name shininess_n) holds n."""
-    with zipfile.ZipFile(source) as z:
-        files = {name: z.read(name) for name in z.namelist()}
+    files = read_workbook(source)
     book = files["xl/workbook.xml"].decode()
     cell = re.search(r'<definedName name="shininess_n">parameters!\$([A-Z]+)\$(\d+)<', book)
     assert cell, "the workbook names its exponent cell shininess_n"
@@ -81,9 +108,7 @@ def with_exponent(source, target, n):
     edited, count = re.subn(rf'(<c r="{ref}"[^>]*><v>)[^<]*(</v>)', rf"\g<1>{n}\g<2>", xml)
     assert count == 1
     files[sheet_name] = edited.encode()
-    with zipfile.ZipFile(target, "w", zipfile.ZIP_DEFLATED) as z:
-        for name, data in files.items():
-            z.writestr(name, data)
+    write_workbook(target, files)
 
 
 @needs_soffice
@@ -92,7 +117,9 @@ def test_recalculated_cells_are_the_render(tmp_path, encoding):
     workbook = tmp_path / "sphere.xlsx"
     subprocess.run([CLI, "render", scene_path("assignment.json"), *SIZE, "--formulas",
                     "--encoding", encoding, "-o", str(workbook), "-q"], check=True)
-    sheets = recalculated_sheets(tmp_path, workbook)
+    computed = tmp_path / "computed.xlsx"
+    without_stored_results(workbook, computed)
+    sheets = recalculated_sheets(tmp_path, computed)
     expected = render_ppm(tmp_path, "--encoding", encoding)
     cells = np.stack([sheets["red"], sheets["green"], sheets["blue"]], axis=-1)
     assert cells.shape == expected.shape
@@ -119,6 +146,19 @@ def test_changing_n_in_the_workbook_changes_the_picture(tmp_path):
     cells = np.stack([sheets["red"], sheets["green"], sheets["blue"]], axis=-1)
     assert np.abs(cells - expected).max() <= 1
     assert np.abs(cells - render_ppm(tmp_path, "--encoding", "linear")).max() > 10
+
+
+def test_stored_results_are_the_render(tmp_path):
+    """What a spreadsheet shows before it recalculates (LibreOffice's default) is the picture."""
+    workbook = tmp_path / "sphere.xlsx"
+    subprocess.run([CLI, "render", scene_path("assignment.json"), *SIZE, "--formulas",
+                    "--encoding", "linear", "-o", str(workbook), "-q"], check=True)
+    expected = render_ppm(tmp_path, "--encoding", "linear")
+    shape = expected.shape[:2]
+    # Sheets 13, 14, 15: red, green, blue (after image, parameters, E_x..z, D, t, N_x..z,
+    # cos_alpha, cos_gamma).
+    stored = np.stack([stored_results(workbook, n, shape) for n in (13, 14, 15)], axis=-1)
+    assert np.abs(stored - expected).max() <= 1
 
 
 def test_scenes_it_cannot_express_are_refused(tmp_path):

@@ -1,7 +1,8 @@
-// The lecture's assignment (課題：球体をレンダリングする) at one pixel, in the lecture's own notation:
-// the ray P_E + tÊ, the sphere test ||P_E + tÊ − S|| = r as At² + Bt + C = 0 with D = B² − 4AC,
-// the visible point P and normal N, then Lambert I_d = I₀ k_d cos α and Phong I_s = I₀ k_s cosⁿγ
-// with R = L + 2aN, a = −L·N (Fig 4.29, 4.39), and the 8-bit value the pixel gets in the file.
+// The lecture's assignment (課題：球体をレンダリングする) at one pixel, in the lecture's own
+// notation: the ray P_E + tÊ, the sphere test ||P_E + tÊ − S|| = r as At² + Bt + C = 0 with D = B²
+// − 4AC, the visible point P and normal N, then Lambert I_d = I₀ k_d cos α and Phong I_s = I₀ k_s
+// cosⁿγ with R = L + 2aN, a = −L·N (Fig 4.29, 4.39), and the 8-bit value the pixel gets in the
+// file.
 
 #include <cmath>
 #include <optional>
@@ -34,8 +35,8 @@ std::optional<LectureLight> lecture_light(const Light& light, Vec3 p) {
     if (const auto* pl = std::get_if<PointLight>(&light)) {
         const Vec3 to_p = p - pl->position;
         const float d2 = dot(to_p, to_p);
-        return LectureLight{normalize(to_p), pl->inverse_square ? pl->intensity / d2 : pl->intensity,
-                            "point"};
+        return LectureLight{normalize(to_p),
+                            pl->inverse_square ? pl->intensity / d2 : pl->intensity, "point"};
     }
     return std::nullopt;  // area and environment lights are sums of many such lights
 }
@@ -63,8 +64,9 @@ void append_sphere_test(std::string& out, const SphereTest& q) {
                        q.d >= 0 ? " (≥ 0: the ray meets the sphere)" : " (< 0: no intersection)");
     if (q.d < 0) return;
     const double root = std::sqrt(q.d);
-    out += fmt::format("  t = (−B − √D) / 2A = {} (the nearer root; the other, (−B + √D) / 2A = {})\n",
-                       num((-q.b - root) / (2 * q.a)), num((-q.b + root) / (2 * q.a)));
+    out +=
+        fmt::format("  t = (−B − √D) / 2A = {} (the nearer root; the other, (−B + √D) / 2A = {})\n",
+                    num((-q.b - root) / (2 * q.a)), num((-q.b + root) / (2 * q.a)));
 }
 
 /// The ray and the sphere, as the lecture writes them.
@@ -112,8 +114,8 @@ std::string encoded(Vec3 c) {
     return fmt::format(
         "  written to the file (8 bits): sRGB ({}, {}, {}) (the default); --encoding linear, "
         "round(255·I): ({}, {}, {})\n",
-        linear_to_srgb8(c.x), linear_to_srgb8(c.y), linear_to_srgb8(c.z), linear(c.x),
-        linear(c.y), linear(c.z));
+        linear_to_srgb8(c.x), linear_to_srgb8(c.y), linear_to_srgb8(c.z), linear(c.x), linear(c.y),
+        linear(c.z));
 }
 
 const Sphere* sphere_with_id(const Scene& scene, PrimitiveId id) {
@@ -156,14 +158,16 @@ std::string explain_sphere_shading(const Scene& scene, int x, int y, const RayTr
     append_sphere_test(out, sphere_test(node.ray, *sphere));
     const Vec3 p = node.ray.origin + node.surface.t * node.ray.direction;
     const Vec3 n = (p - sphere->center) / sphere->radius, v = -node.ray.direction;
-    out += fmt::format("  P = P_E + tÊ = {}\n  N = (P − S) / r = {}\n  V = −Ê = {} (toward the eye)\n",
-                       vec(p), vec(n), vec(v));
+    out +=
+        fmt::format("  P = P_E + tÊ = {}\n  N = (P − S) / r = {}\n  V = −Ê = {} (toward the eye)\n",
+                    vec(p), vec(n), vec(v));
     Vec3 sum = scene.ambient * m.ka;
     out += fmt::format("  ambient I_a k_a = {}\n", vec(sum));
     for (uint32_t l = 0; l < scene.lights.size(); ++l) {
         const std::optional<LectureLight> light = lecture_light(scene.lights[l], p);
         if (!light) {
-            out += fmt::format("  light {}: an area or environment light, sampled (see above)\n", l);
+            out +=
+                fmt::format("  light {}: an area or environment light, sampled (see above)\n", l);
             continue;
         }
         bool blocked = false;

@@ -41,7 +41,8 @@ Srgb8Image encode_linear8(const Image& image);
 bool supports_bit_depth(const std::filesystem::path& path, int bit_depth);
 
 /// Writes the linear-RGB `image` to `path` in the format its extension names:
-/// - `.png`: RGB, sRGB-encoded (or linear, settings.encoding), values clamped to [0, 1]; 8 bits per sample, or 16
+/// - `.png`: RGB, sRGB-encoded (or linear, settings.encoding), values clamped to [0, 1]; 8 bits per
+/// sample, or 16
 ///   (round(65535 · sRGB(v)), settings.bit_depth = 16);
 /// - `.ppm`: binary P6, sRGB-encoded and clamped like PNG; maxval 255, or 65535 (big-endian
 ///   samples) for 16 bits;

@@ -1,7 +1,10 @@
 #include "hikari/io/images/xlsx_formulas_write.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
+#include <numbers>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -16,17 +19,22 @@ namespace hikari {
 
 namespace {
 
-/// Picture cells: 12 pixels, one character of the default font, as in the plain workbook.
-constexpr uint32_t k_picture_cell_pixels = 12;
+/// Picture cells: 20 pixels, 15 points, square in Excel and in LibreOffice. The two turn a
+/// column width (in characters, w) into different sizes: Excel into 7w + 5 pixels, LibreOffice
+/// into about 7w points; rows are points in both. The two agree with the row at w = 15/7, 20
+/// pixels (0.2081 in and 0.2083 in measured in LibreOffice 7.4; at 12 pixels its columns are a
+/// third wider than the rows).
+constexpr uint32_t k_picture_cell_pixels = 20;
 
 /// One labelled row of the parameter sheet: up to three values, each a defined name the
 /// formulas read (`eye_x`, `kd_red`, `shininess_n`), given as numbers or derived by formulas.
 struct ParameterRow {
     std::string_view label;
-    std::string_view name;                ///< the names' stem: `eye` gives eye_x, eye_y, eye_z
+    std::string_view name;  ///< the names' stem: `eye` gives eye_x, eye_y, eye_z
     std::array<std::string_view, 3> suffixes;
-    std::array<std::string, 3> values;    ///< numbers, or formulas starting with '='
+    std::array<std::string, 3> values;  ///< numbers, or formulas starting with '='
     int count = 3;
+    std::array<double, 3> cached{};  ///< a formula's result, stored with it
 };
 
 constexpr std::array<std::string_view, 3> k_xyz{"_x", "_y", "_z"};
@@ -46,6 +54,92 @@ ParameterRow colour_row(std::string_view label, std::string_view name, Vec3 v) {
 
 ParameterRow scalar_row(std::string_view label, std::string_view name, std::string value) {
     return {label, name, {""}, {std::move(value), "", ""}, 1};
+}
+
+using D3 = std::array<double, 3>;
+
+D3 d3(Vec3 v) { return {v.x, v.y, v.z}; }
+double dot(const D3& a, const D3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+D3 axpy(double s, const D3& a, const D3& b) {
+    return {s * a[0] + b[0], s * a[1] + b[1], s * a[2] + b[2]};
+}
+D3 unit(const D3& a) { return axpy(1.0 / std::sqrt(dot(a, a)) - 1.0, a, a); }
+
+/// The parameter sheet's derived cells, worked out as its formulas do.
+struct DerivedParameters {
+    D3 fwd, right, upv, l;
+    double tan_half = 0, c = 0;
+};
+
+DerivedParameters derived_parameters(const Scene& scene) {
+    const Camera& cam = scene.camera;
+    DerivedParameters p;
+    p.fwd = unit(axpy(-1.0, d3(cam.eye), d3(cam.look_at)));
+    const D3 up = d3(cam.up), f = p.fwd;
+    p.right = unit(
+        {f[1] * up[2] - f[2] * up[1], f[2] * up[0] - f[0] * up[2], f[0] * up[1] - f[1] * up[0]});
+    const D3 r = p.right;
+    p.upv = {r[1] * f[2] - r[2] * f[1], r[2] * f[0] - r[0] * f[2], r[0] * f[1] - r[1] * f[0]};
+    p.tan_half = std::tan(double(cam.fov_y_degrees) * std::numbers::pi / 360.0);
+    p.l = unit(d3(std::get<DirectionalLight>(scene.lights.front()).direction));
+    const Sphere& s = scene.spheres.front();
+    const D3 m = axpy(-1.0, d3(s.center), d3(cam.eye));
+    p.c = dot(m, m) - double(s.radius) * s.radius;
+    return p;
+}
+
+/// One pixel's quantities as the pixel sheets' formulas compute them, in double precision: the
+/// results stored with the formulas, so a spreadsheet that keeps stored results on opening
+/// (LibreOffice's default for .xlsx) shows the picture, and one that recalculates (Excel) finds
+/// the same.
+struct PixelQuantities {
+    D3 e{}, n{};
+    double d = 0, t = -1, cos_alpha = 0, cos_gamma = 0, image = -1;
+    D3 code{};
+};
+
+double file_code(double v, SampleEncoding encoding) {
+    v = std::clamp(v, 0.0, 1.0);
+    if (encoding == SampleEncoding::srgb)
+        v = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1 / 2.4) - 0.055;
+    return std::round(255 * v);  // the spreadsheets' ROUND: halves away from zero
+}
+
+PixelQuantities pixel_quantities(const Scene& scene, const DerivedParameters& p, int x, int y,
+                                 SampleEncoding encoding) {
+    const Camera& cam = scene.camera;
+    const Sphere& s = scene.spheres.front();
+    const Material& m = scene.materials[s.material];
+    const double w = cam.width, h = cam.height;
+    const double xs = (2 * (x + 0.5) / w - 1) * p.tan_half * w / h;
+    const double ys = (1 - 2 * (y + 0.5) / h) * p.tan_half;
+    PixelQuantities q;
+    q.e = unit(axpy(ys, p.upv, axpy(xs, p.right, p.fwd)));
+    const double a = dot(q.e, q.e), b = 2 * dot(q.e, axpy(-1.0, d3(s.center), d3(cam.eye)));
+    q.d = b * b - 4 * a * p.c;
+    const double root = q.d < 0 ? -1 : (-b - std::sqrt(q.d)) / (2 * a);
+    q.t = root > 0 ? root : -1;
+    double specular = 0;
+    if (q.t > 0) {
+        const D3 point = axpy(q.t, q.e, d3(cam.eye));
+        q.n = axpy(1.0 / s.radius - 1.0, axpy(-1.0, d3(s.center), point),
+                   axpy(-1.0, d3(s.center), point));
+        q.cos_alpha = -dot(p.l, q.n);
+        q.cos_gamma = -dot(axpy(2 * q.cos_alpha, q.n, p.l), q.e);
+        specular = m.shininess == 0 ? 1 : std::pow(std::max(0.0, q.cos_gamma), double(m.shininess));
+        q.image = std::max(0.0, q.cos_alpha) + (q.cos_alpha > 0 ? specular : 0);
+    }
+    const Vec3 i0 = std::get<DirectionalLight>(scene.lights.front()).intensity;
+    for (int c = 0; c < 3; ++c) {
+        double v = scene.background[c];
+        if (q.t > 0) {
+            v = double(scene.ambient[c]) * m.ka[c];
+            if (q.cos_alpha > 0)
+                v += double(i0[c]) * (double(m.kd[c]) * q.cos_alpha + double(m.ks[c]) * specular);
+        }
+        q.code[static_cast<size_t>(c)] = file_code(v, encoding);
+    }
+    return q;
 }
 
 /// The rows the user edits, then the camera frame, L and C derived from them by formulas.
@@ -72,9 +166,10 @@ std::vector<ParameterRow> parameter_rows(const Scene& scene) {
         colour_row("ambient light I_a", "Ia", scene.ambient),
         colour_row("background", "bg", scene.background),
     };
+    const DerivedParameters d = derived_parameters(scene);
     const auto derived = [](std::string_view label, std::string_view name,
-                            std::array<std::string, 3> f) {
-        return ParameterRow{label, name, k_xyz, std::move(f), 3};
+                            std::array<std::string, 3> f, D3 cached) {
+        return ParameterRow{label, name, k_xyz, std::move(f), 3, cached};
     };
     const std::string to_look = "(look{0}-eye{0})", side = "(fwd{1}*upin{2}-fwd{2}*upin{1})";
     const auto norm = [](std::string_view term) {
@@ -89,22 +184,27 @@ std::vector<ParameterRow> parameter_rows(const Scene& scene) {
                     fmt::format(fmt::runtime(side), "", "_x", "_y"));
     rows.push_back(derived("forward = (look at − eye) / |…|", "fwd",
                            {"=(look_x-eye_x)/" + look_norm, "=(look_y-eye_y)/" + look_norm,
-                            "=(look_z-eye_z)/" + look_norm}));
+                            "=(look_z-eye_z)/" + look_norm},
+                           d.fwd));
     rows.push_back(derived(
         "right = forward × up / |…|", "right",
         {"=(fwd_y*upin_z-fwd_z*upin_y)/" + side_norm, "=(fwd_z*upin_x-fwd_x*upin_z)/" + side_norm,
-         "=(fwd_x*upin_y-fwd_y*upin_x)/" + side_norm}));
+         "=(fwd_x*upin_y-fwd_y*upin_x)/" + side_norm},
+        d.right));
     rows.push_back(derived("camera up = right × forward", "upv",
                            {"=right_y*fwd_z-right_z*fwd_y", "=right_z*fwd_x-right_x*fwd_z",
-                            "=right_x*fwd_y-right_y*fwd_x"}));
+                            "=right_x*fwd_y-right_y*fwd_x"},
+                           d.upv));
     rows.push_back(scalar_row("tan(fov_y / 2)", "tan_half", "=TAN(RADIANS(fov_y)/2)"));
+    rows.back().cached[0] = d.tan_half;
     const std::string light_norm = "SQRT(light_x^2+light_y^2+light_z^2)";
-    rows.push_back(derived("L = light direction / |…|", "L",
-                           {"=light_x/" + light_norm, "=light_y/" + light_norm,
-                            "=light_z/" + light_norm}));
-    rows.push_back(scalar_row(
-        "C = ||P_E − S||² − r²", "C_coef",
-        "=(eye_x-centre_x)^2+(eye_y-centre_y)^2+(eye_z-centre_z)^2-radius^2"));
+    rows.push_back(derived(
+        "L = light direction / |…|", "L",
+        {"=light_x/" + light_norm, "=light_y/" + light_norm, "=light_z/" + light_norm}, d.l));
+    rows.push_back(
+        scalar_row("C = ||P_E − S||² − r²", "C_coef",
+                   "=(eye_x-centre_x)^2+(eye_y-centre_y)^2+(eye_z-centre_z)^2-radius^2"));
+    rows.back().cached[0] = d.c;
     return rows;
 }
 
@@ -128,6 +228,7 @@ std::string at_cell(std::string_view formula, const std::string& cell) {
 /// quantities, Fig 4.16 and 4.29).
 struct PixelFormulas {
     std::string name, formula;
+    std::function<double(const PixelQuantities&)> value;  ///< its stored result
 };
 
 std::string ray_component(std::string_view c) {
@@ -148,27 +249,37 @@ std::vector<PixelFormulas> pixel_formulas(SampleEncoding encoding) {
     std::vector<PixelFormulas> sheets;
     const std::string norm = fmt::format("SQRT({}^2+{}^2+{}^2)", ray_component("_x"),
                                          ray_component("_y"), ray_component("_z"));
-    for (const std::string_view c : k_xyz)
-        sheets.push_back({fmt::format("E{}", c), fmt::format("={}/{}", ray_component(c), norm)});
+    for (size_t i = 0; i < 3; ++i)
+        sheets.push_back({fmt::format("E{}", k_xyz[i]),
+                          fmt::format("={}/{}", ray_component(k_xyz[i]), norm),
+                          [i](const PixelQuantities& q) { return q.e[i]; }});
     const std::string a = "(E_x!@^2+E_y!@^2+E_z!@^2)";
     const std::string b =
         "2*(E_x!@*(eye_x-centre_x)+E_y!@*(eye_y-centre_y)+E_z!@*(eye_z-centre_z))";
-    sheets.push_back({"D", fmt::format("=({})^2-4*{}*C_coef", b, a)});
+    sheets.push_back({"D", fmt::format("=({})^2-4*{}*C_coef", b, a),
+                      [](const PixelQuantities& q) { return q.d; }});
     const std::string root = fmt::format("(-({})-SQRT(D!@))/(2*{})", b, a);
-    sheets.push_back({"t", fmt::format("=IF(D!@<0,-1,IF({0}>0,{0},-1))", root)});
-    for (const std::string_view c : k_xyz)
-        sheets.push_back({fmt::format("N{}", c),
-                          fmt::format("=IF(t!@>0,(eye{0}+t!@*E{0}!@-centre{0})/radius,0)", c)});
-    sheets.push_back({"cos_alpha", "=IF(t!@>0,-(L_x*N_x!@+L_y*N_y!@+L_z*N_z!@),0)"});
+    sheets.push_back({"t", fmt::format("=IF(D!@<0,-1,IF({0}>0,{0},-1))", root),
+                      [](const PixelQuantities& q) { return q.t; }});
+    for (size_t i = 0; i < 3; ++i)
+        sheets.push_back(
+            {fmt::format("N{}", k_xyz[i]),
+             fmt::format("=IF(t!@>0,(eye{0}+t!@*E{0}!@-centre{0})/radius,0)", k_xyz[i]),
+             [i](const PixelQuantities& q) { return q.n[i]; }});
+    sheets.push_back({"cos_alpha", "=IF(t!@>0,-(L_x*N_x!@+L_y*N_y!@+L_z*N_z!@),0)",
+                      [](const PixelQuantities& q) { return q.cos_alpha; }});
     sheets.push_back({"cos_gamma",
                       "=IF(t!@>0,-((L_x+2*cos_alpha!@*N_x!@)*E_x!@+(L_y+2*cos_alpha!@*N_y!@)*"
-                      "E_y!@+(L_z+2*cos_alpha!@*N_z!@)*E_z!@),0)"});
-    for (const std::string_view ch : k_rgb) {
+                      "E_y!@+(L_z+2*cos_alpha!@*N_z!@)*E_z!@),0)",
+                      [](const PixelQuantities& q) { return q.cos_gamma; }});
+    for (size_t i = 0; i < 3; ++i) {
+        const std::string_view ch = k_rgb[i];
         const std::string intensity = fmt::format(
             "IF(t!@>0,Ia{0}*ka{0}+IF(cos_alpha!@>0,I0{0}*(kd{0}*cos_alpha!@+ks{0}*{1}),0),bg{0})",
             ch, k_specular);
-        sheets.push_back(
-            {std::string(ch.substr(1)), code_formula("MIN(1,MAX(0," + intensity + "))", encoding)});
+        sheets.push_back({std::string(ch.substr(1)),
+                          code_formula("MIN(1,MAX(0," + intensity + "))", encoding),
+                          [i](const PixelQuantities& q) { return q.code[i]; }});
     }
     return sheets;
 }
@@ -178,8 +289,8 @@ uint32_t file_colour(Vec3 v, SampleEncoding encoding) {
     uint32_t rgb = 0;
     for (int c = 0; c < 3; ++c) {
         const float x = std::clamp(v[c], 0.0f, 1.0f);
-        const long code = encoding == SampleEncoding::linear ? std::lround(255.0f * x)
-                                                             : long{linear_to_srgb8(x)};
+        const long code =
+            encoding == SampleEncoding::linear ? std::lround(255.0f * x) : long{linear_to_srgb8(x)};
         rgb = (rgb << 8) | static_cast<uint32_t>(code);
     }
     return rgb;
@@ -208,10 +319,12 @@ void write_parameters(lxw_workbook* book, const Scene& scene, const std::filesys
             const auto column = static_cast<lxw_col_t>(1 + i);
             const std::string& v = p.values[static_cast<size_t>(i)];
             check_workbook(v.starts_with('=')
-                               ? worksheet_write_formula(sheet, row, column, v.c_str(), nullptr)
+                               ? worksheet_write_formula_num(sheet, row, column, v.c_str(), nullptr,
+                                                             p.cached[static_cast<size_t>(i)])
                                : worksheet_write_number(sheet, row, column, std::stod(v), nullptr),
                            path);
-            const std::string name = fmt::format("{}{}", p.name, p.suffixes[static_cast<size_t>(i)]);
+            const std::string name =
+                fmt::format("{}{}", p.name, p.suffixes[static_cast<size_t>(i)]);
             check_workbook(workbook_define_name(book, name.c_str(),
                                                 ("=parameters!$" + std::string(1, char('B' + i)) +
                                                  "$" + std::to_string(row + 1))
@@ -223,14 +336,16 @@ void write_parameters(lxw_workbook* book, const Scene& scene, const std::filesys
 }
 
 /// `f.formula` in every pixel cell of `sheet`, row by row (the constant-memory mode's order).
-void fill_pixel_sheet(lxw_worksheet* sheet, const PixelFormulas& f, const Camera& camera,
+/// `pixels`: each pixel's quantities, row by row.
+void fill_pixel_sheet(lxw_worksheet* sheet, const PixelFormulas& f,
+                      const std::vector<PixelQuantities>& pixels, const Camera& camera,
                       const std::filesystem::path& path) {
     for (int y = 0; y < camera.height; ++y)
         for (int x = 0; x < camera.width; ++x)
-            check_workbook(worksheet_write_formula(sheet, static_cast<lxw_row_t>(y),
-                                                   static_cast<lxw_col_t>(x),
-                                                   at_cell(f.formula, cell_name(y, x)).c_str(),
-                                                   nullptr),
+            check_workbook(worksheet_write_formula_num(
+                               sheet, static_cast<lxw_row_t>(y), static_cast<lxw_col_t>(x),
+                               at_cell(f.formula, cell_name(y, x)).c_str(), nullptr,
+                               f.value(pixels[static_cast<size_t>(y) * camera.width + x])),
                            path);
 }
 
@@ -270,7 +385,14 @@ void write_workbook(lxw_workbook* book, const Scene& scene, SampleEncoding encod
                     const std::filesystem::path& path) {
     const Camera& camera = scene.camera;
     const PixelFormulas picture{
-        "image", "=IF(t!@>0,MAX(0,cos_alpha!@)+IF(cos_alpha!@>0," + k_specular + ",0),-1)"};
+        "image", "=IF(t!@>0,MAX(0,cos_alpha!@)+IF(cos_alpha!@>0," + k_specular + ",0),-1)",
+        [](const PixelQuantities& q) { return q.image; }};
+    const DerivedParameters derived = derived_parameters(scene);
+    std::vector<PixelQuantities> pixels;
+    pixels.reserve(static_cast<size_t>(camera.width) * camera.height);
+    for (int y = 0; y < camera.height; ++y)
+        for (int x = 0; x < camera.width; ++x)
+            pixels.push_back(pixel_quantities(scene, derived, x, y, encoding));
     lxw_worksheet* image = add_sheet(book, picture.name, path);
     check_workbook(worksheet_set_column_pixels(image, 0, static_cast<lxw_col_t>(camera.width - 1),
                                                k_picture_cell_pixels, nullptr),
@@ -278,10 +400,10 @@ void write_workbook(lxw_workbook* book, const Scene& scene, SampleEncoding encod
     worksheet_set_default_row(image, 0.75 * k_picture_cell_pixels, LXW_FALSE);  // points
     worksheet_gridlines(image, LXW_HIDE_ALL_GRIDLINES);
     colour_picture(book, image, scene, encoding, path);
-    fill_pixel_sheet(image, picture, camera, path);
+    fill_pixel_sheet(image, picture, pixels, camera, path);
     write_parameters(book, scene, path);
     for (const PixelFormulas& f : pixel_formulas(encoding))
-        fill_pixel_sheet(add_sheet(book, f.name, path), f, camera, path);
+        fill_pixel_sheet(add_sheet(book, f.name, path), f, pixels, camera, path);
 }
 
 }  // namespace
@@ -298,7 +420,8 @@ std::string formula_workbook_obstacle(const Scene& scene) {
         return "it computes a plain Phong material (no texture, mirror, glass or emission)";
     if (scene.camera.projection != Projection::perspective)
         return "it computes a perspective camera";
-    if (length(scene.camera.eye - s.center) <= s.radius) return "the eye must be outside the sphere";
+    if (length(scene.camera.eye - s.center) <= s.radius)
+        return "the eye must be outside the sphere";
     if (scene.sky.gradient || !scene.show_background || scene.depth_cue)
         return "it computes a plain background without depth cueing";
     if (scene.camera.width > k_xlsx_max_columns || scene.camera.height > k_xlsx_max_rows)

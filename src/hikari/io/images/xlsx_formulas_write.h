@@ -19,7 +19,8 @@ namespace hikari {
 std::string formula_workbook_obstacle(const Scene& scene);
 
 /// The workbook (libxlsxwriter) for `scene`, whose formula_workbook_obstacle must be empty:
-/// - sheet "image": one square cell per pixel, its value the shading I_d/(I₀k_d) + I_s/(I₀k_s)
+/// - sheet "image": one square cell per pixel (square in Excel and LibreOffice), its value the
+/// shading I_d/(I₀k_d) + I_s/(I₀k_s)
 ///   (cos α + cosⁿγ, −1 off the sphere), coloured by a three-colour scale from the unlit to the
 ///   fully lit colour to the highlight, and the background colour off the sphere;
 /// - sheet "parameters": eye, look-at, up, fov_y, W, H, sphere centre S and radius r, the light
@@ -28,9 +29,10 @@ std::string formula_workbook_obstacle(const Scene& scene);
 /// - one sheet per quantity of the lecture, a cell per pixel: "E_x" "E_y" "E_z" (the ray
 ///   direction Ê), "D" (B² − 4AC), "t", "N_x" "N_y" "N_z", "cos_alpha", "cos_gamma", and
 ///   "red" "green" "blue", the 8-bit values a render writes with `encoding`.
-/// Cached values are left out, so the spreadsheet computes every number on opening; changing a
-/// parameter (n) changes the picture. Throws InputError naming `path` when the image is larger
-/// than a sheet or the write fails.
+/// Each formula is stored with its result worked out in double precision, so a spreadsheet that
+/// keeps stored results (LibreOffice) shows the picture at once; changing a parameter (n)
+/// recomputes the cells that depend on it and changes the picture. Throws InputError naming `path`
+/// when the image is larger than a sheet or the write fails.
 std::vector<uint8_t> encode_xlsx_formulas(const std::filesystem::path& path, const Scene& scene,
                                           SampleEncoding encoding);
 
