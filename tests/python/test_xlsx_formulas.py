@@ -49,23 +49,29 @@ def render_ppm(tmp_path, *args):
     return read_ppm(out)
 
 
-def recalculated_sheets(tmp_path, workbook):
-    """Every sheet of `workbook` after LibreOffice recalculated it, as arrays of numbers."""
+def recalculated_sheets(tmp_path, workbooks):
+    """Every sheet of each workbook after LibreOffice recalculated it (one LibreOffice run for
+    all), as arrays of numbers: {workbook stem: {sheet: array}}."""
     profile = tmp_path / "profile"
     (profile / "user").mkdir(parents=True, exist_ok=True)
     (profile / "user" / "registrymodifications.xcu").write_text(ALWAYS_RECALCULATE)
-    out = tmp_path / ("csv-" + workbook.stem)
+    out = tmp_path / "csv"
     csv_all_sheets = "csv:Text - txt - csv (StarCalc):44,34,76,1,,0,false,true,false,false,false,-1"
     subprocess.run([SOFFICE, f"-env:UserInstallation={profile.as_uri()}", "--headless",
-                    "--convert-to", csv_all_sheets, "--outdir", str(out), str(workbook)],
-                   check=True, capture_output=True, timeout=240)
-    sheets = {}
-    for name in os.listdir(out):
-        sheet = name[len(workbook.stem) + 1:-4]
-        rows = [line.split(",") for line in (out / name).read_text().splitlines()]
-        if sheet != "parameters":
-            sheets[sheet] = np.array([[float(v) for v in row] for row in rows])
-    return sheets
+                    "--convert-to", csv_all_sheets, "--outdir", str(out),
+                    *[str(w) for w in workbooks]],
+                   check=True, capture_output=True, timeout=280)
+    books = {}
+    for workbook in workbooks:
+        sheets = books.setdefault(workbook.stem, {})
+        for name in os.listdir(out):
+            if not name.startswith(workbook.stem + "-"):
+                continue
+            sheet = name[len(workbook.stem) + 1:-4]
+            rows = [line.split(",") for line in (out / name).read_text().splitlines()]
+            if sheet != "parameters":
+                sheets[sheet] = np.array([[float(v) for v in row] for row in rows])
+    return books
 
 
 def read_workbook(path):
@@ -111,48 +117,50 @@ def with_exponent(source, target, n):
     write_workbook(target, files)
 
 
-@needs_soffice
-@pytest.mark.parametrize("encoding", ["linear", "srgb"])
-def test_recalculated_cells_are_the_render(tmp_path, encoding):
-    workbook = tmp_path / "sphere.xlsx"
+def formula_workbook(tmp_path, encoding, *args):
+    workbook = tmp_path / f"sphere-{encoding}.xlsx"
     subprocess.run([CLI, "render", scene_path("assignment.json"), *SIZE, "--formulas",
-                    "--encoding", encoding, "-o", str(workbook), "-q"], check=True)
-    computed = tmp_path / "computed.xlsx"
-    without_stored_results(workbook, computed)
-    sheets = recalculated_sheets(tmp_path, computed)
-    expected = render_ppm(tmp_path, "--encoding", encoding)
-    cells = np.stack([sheets["red"], sheets["green"], sheets["blue"]], axis=-1)
-    assert cells.shape == expected.shape
-    # Doubles in the spreadsheet, floats in hikari: a code may round the other way.
-    assert np.abs(cells - expected).max() <= 1
-    assert (cells != expected).mean() < 0.02
-    # The picture covers the sphere exactly where the render does (not the background).
-    on_sphere = sheets["image"] >= 0
-    background = render_ppm(tmp_path, "--encoding", encoding)[0, 0]
-    assert on_sphere.sum() > 20
-    assert np.all(np.any(expected[on_sphere] != background, axis=-1))
+                    "--encoding", encoding, *args, "-o", str(workbook), "-q"], check=True)
+    return workbook
+
+
+def pixel_codes(sheets):
+    return np.stack([sheets["red"], sheets["green"], sheets["blue"]], axis=-1)
 
 
 @needs_soffice
-def test_changing_n_in_the_workbook_changes_the_picture(tmp_path):
-    workbook = tmp_path / "sphere.xlsx"
-    subprocess.run([CLI, "render", scene_path("assignment.json"), *SIZE, "--formulas",
-                    "--encoding", "linear", "-o", str(workbook), "-q"], check=True)
-    edited = tmp_path / "n5.xlsx"
-    with_exponent(workbook, edited, 5)
-    sheets = recalculated_sheets(tmp_path, edited)
-    expected = render_ppm(tmp_path, "--encoding", "linear", "--set",
-                          "materials.clay.shininess=5")
-    cells = np.stack([sheets["red"], sheets["green"], sheets["blue"]], axis=-1)
+def test_recalculated_cells_are_the_render_and_follow_n(tmp_path):
+    # Both encodings with their stored results zeroed (whatever LibreOffice shows, it computed),
+    # and the linear one with n changed from 40 to 5 in its parameter cell.
+    books = []
+    for encoding in ("linear", "srgb"):
+        computed = tmp_path / f"computed-{encoding}.xlsx"
+        without_stored_results(formula_workbook(tmp_path, encoding), computed)
+        books.append(computed)
+    n5 = tmp_path / "n5.xlsx"
+    with_exponent(formula_workbook(tmp_path, "linear"), n5, 5)
+    books.append(n5)
+    sheets = recalculated_sheets(tmp_path, books)
+    for encoding in ("linear", "srgb"):
+        cells = pixel_codes(sheets[f"computed-{encoding}"])
+        expected = render_ppm(tmp_path, "--encoding", encoding)
+        assert cells.shape == expected.shape
+        # Doubles in the spreadsheet, floats in hikari: a code may round the other way.
+        assert np.abs(cells - expected).max() <= 1, encoding
+        assert (cells != expected).mean() < 0.02, encoding
+        # The picture covers the sphere exactly where the render does (not the background).
+        on_sphere = sheets[f"computed-{encoding}"]["image"] >= 0
+        assert on_sphere.sum() > 20
+        assert np.all(np.any(expected[on_sphere] != expected[0, 0], axis=-1))
+    cells = pixel_codes(sheets["n5"])
+    expected = render_ppm(tmp_path, "--encoding", "linear", "--set", "materials.clay.shininess=5")
     assert np.abs(cells - expected).max() <= 1
     assert np.abs(cells - render_ppm(tmp_path, "--encoding", "linear")).max() > 10
 
 
 def test_stored_results_are_the_render(tmp_path):
     """What a spreadsheet shows before it recalculates (LibreOffice's default) is the picture."""
-    workbook = tmp_path / "sphere.xlsx"
-    subprocess.run([CLI, "render", scene_path("assignment.json"), *SIZE, "--formulas",
-                    "--encoding", "linear", "-o", str(workbook), "-q"], check=True)
+    workbook = formula_workbook(tmp_path, "linear")
     expected = render_ppm(tmp_path, "--encoding", "linear")
     shape = expected.shape[:2]
     # Sheets 13, 14, 15: red, green, blue (after image, parameters, E_x..z, D, t, N_x..z,
