@@ -197,8 +197,10 @@ void check_formulas(const CLI::App& render, const RenderOptions& o) {
     const auto refuse = [](std::string_view why) {
         throw CLI::ValidationError("--formulas: " + std::string(why));
     };
-    if (o.methods.size() != 1 || o.methods.front() != "raytrace")
-        refuse("the workbook computes the ray tracer's picture (-m raytrace)");
+    // The registry's first method is Whitted ray tracing, the assignment's (and the default).
+    const std::string_view ray_tracer = methods().front().name;
+    if (o.methods.size() != 1 || o.methods.front() != ray_tracer)
+        refuse(fmt::format("the workbook computes the ray tracer's picture (-m {})", ray_tracer));
     if (image_format_from_extension(output_for(o, o.methods.front())) != ImageFormat::Xlsx)
         refuse("the output must be a spreadsheet (-o NAME.xlsx)");
     if (o.aov != Aov::color) refuse("the workbook computes the colour (--aov color)");
