@@ -32,6 +32,8 @@ fi
 # CI also checks formatting, runs clang-tidy and builds with sanitizers.
 if $ci; then
     packages+=(clang clang-format clang-tidy libclang-rt-14-dev git)
+    # LibreOffice recalculates the --formulas workbook in tests/python/test_xlsx_formulas.py.
+    packages+=(libreoffice-calc-nogui)
 fi
 
 missing=()

@@ -303,9 +303,9 @@ void plan_shading(Gallery& g) {
     const Text s = {"Fig 4.29, 4.39: the shading model", "図4.29, 4.39: 陰影付けのモデル"};
     const std::vector<std::tuple<std::string, Text>> terms = {
         {"ambient", {"(a) ambient only: ka·Ia (--aov ambient)", "(a) 環境光による反射 ka·Ia"}},
-        {"diffuse", {"(b) diffuse only: I·kd·cos α (--aov diffuse)", "(b) 拡散反射 I·kd·cos α"}},
+        {"diffuse", {"(b) diffuse only: I·kd·cos α (--aov diffuse)", "(b) 拡散反射光 I·kd·cos α"}},
         {"specular",
-         {"(c) specular only: I·ks·cos^n γ (--aov specular)", "(c) 鏡面反射 I·ks·cos^n γ"}}};
+         {"(c) specular only: I·ks·cos^n γ (--aov specular)", "(c) 鏡面反射光 I·ks·cos^n γ"}}};
     const std::vector<std::string> base = {"-m", "raytrace", "--shadows", "none"};
     for (const auto& [term, title] : terms) {
         std::vector<std::string> args = base;
@@ -327,7 +327,7 @@ void plan_shading(Gallery& g) {
 void plan_shadows(Gallery& g, const Json& m) {
     const Text s = {"Fig 4.24: shading and shadows", "図4.24: シェーディングと影付け"};
     g.scene_files["model-flat.json"] = flat_colour(m);
-    g.add(s, "Fig 4.24", {"(a) shading only", "(a) 陰影付けのみ"}, "fig4-24-shading.png",
+    g.add(s, "Fig 4.24", {"(a) shading only", "(a) シェーディングのみ"}, "fig4-24-shading.png",
           "model.json", {"-m", "raytrace", "--shadows", "none"});
     g.add(s, "Fig 4.24",
           {"(b) shadows only: every surface in its flat colour, darkened where its light is "
@@ -335,8 +335,8 @@ void plan_shadows(Gallery& g, const Json& m) {
            "(b) 影付けのみ：各面を一様な色で塗り、光がさえぎられる所だけ暗くする"},
           "fig4-24-shadows.png", "model.json", {})
         .make = render_shadows_only;
-    g.add(s, "Fig 4.24", {"(c) both", "(c) 両方"}, "fig4-24-both.png", "model.json",
-          {"-m", "raytrace"});
+    g.add(s, "Fig 4.24", {"(c) both", "(c) シェーディングと影付けの両方"}, "fig4-24-both.png",
+          "model.json", {"-m", "raytrace"});
 }
 
 void plan_lights(Gallery& g, const Json& m) {
@@ -394,7 +394,7 @@ void plan_ray_tracing(Gallery& g) {
         g.scene_files[file] = refraction_scene(ior, g.width);
         g.add(s, "Fig 4.43",
               {fmt::format("refraction, index of refraction {}", ior),
-               fmt::format("屈折を考慮したレイトレーシング、屈折率 {}", ior)},
+               fmt::format("屈折を考慮したレイトレーシング法、屈折率 {}", ior)},
               fmt::format("fig4-43-ior-{}.png", ior), file, {"-m", "raytrace"});
     }
 }

@@ -108,7 +108,7 @@ RenderRequest run_request(const RenderOptions& o, const Session& session, const 
 
 /// An algorithm AOV (`--aov overdraw | paint-order | spans | culled`) of the method at work.
 void write_algorithm_aov(const RenderOptions& o, const Run& run, const RenderResult& result) {
-    write_image(run.output, *result.algorithm_picture, ImageWriteSettings{o.bit_depth});
+    write_image(run.output, *result.algorithm_picture, image_write_settings(o));
     if (!o.quiet)
         print_err("hikari: wrote {} ({}x{}, {}, {:.3f} s)\nhikari: {}\n", run.output,
                   result.algorithm_picture->width, result.algorithm_picture->height,
@@ -165,6 +165,12 @@ int run_render(const RenderOptions& o) {
         return 0;
     }
     for (const Run& run : runs) check_spreadsheet_size(run.output, camera);
+    if (o.formulas) {
+        write_formula_workbook(runs.front().output, session->scene_as_rendered(render_request(o)),
+                               o);
+        if (!o.quiet) print_err("hikari: wrote {} (formulas)\n", runs.front().output);
+        return 0;
+    }
     if (o.print_matrices)
         print_out("{}",
                   explain_matrices(session->scene_as_rendered(render_request(o)), o.own.raster));

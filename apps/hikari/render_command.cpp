@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "cli_options.h"
+#include "hikari/io/images/image_format.h"
 #include "hikari/io/images/image_write.h"
 #include "hikari/io/images/svg_write.h"
 #include "hikari/scene/scene.h"
@@ -112,6 +113,11 @@ void add_output_development_options(CLI::App& render, RenderOptions& o) {
             },
             "8|16"))
         ->capture_default_str();
+    add_choice_option<SampleEncoding>(
+        render, "--encoding",
+        "How .png, .ppm, .jpg and .xlsx hold linear values: srgb (the sRGB curve, what screens "
+        "expect) or linear (round(255 v), as the lecture's sample code writes; looks darker)",
+        k_sample_encoding_choices, o.encoding);
 }
 
 /// The options for rendering a model file (.obj, .ply, .gltf, .glb) as a scene of its own, and
@@ -151,6 +157,10 @@ void add_extra_options(CLI::App& render, RenderOptions& o) {
     render.add_flag("--wireframe-overlay", o.wireframe_overlay,
                     "Draw every triangle's edges over the image: the triangles the raster "
                     "methods fill (spheres and planes tessellated as they tessellate them)");
+    render.add_flag("--formulas", o.formulas,
+                    "With -o FILE.xlsx: a workbook whose cells compute the picture with "
+                    "spreadsheet formulas (ray-sphere, Lambert, Phong) from parameter cells, "
+                    "instead of holding rendered pixels (one sphere, one directional light)");
     render.add_flag("-q,--quiet", o.quiet, "No progress or summary on stderr");
     render.add_flag(
         "--stats", o.stats,
@@ -180,6 +190,26 @@ void check_output_development(const CLI::App& render, RenderOptions& o) {
     }
 }
 
+/// --formulas: a workbook that computes the ray tracer's colour, so an .xlsx output, raytrace,
+/// the colour at one sample, nothing developed.
+void check_formulas(const CLI::App& render, const RenderOptions& o) {
+    if (!o.formulas) return;
+    const auto refuse = [](std::string_view why) {
+        throw CLI::ValidationError("--formulas: " + std::string(why));
+    };
+    // The registry's first method is Whitted ray tracing, the assignment's (and the default).
+    const std::string_view ray_tracer = methods().front().name;
+    if (o.methods.size() != 1 || o.methods.front() != ray_tracer)
+        refuse(fmt::format("the workbook computes the ray tracer's picture (-m {})", ray_tracer));
+    if (image_format_from_extension(output_for(o, o.methods.front())) != ImageFormat::Xlsx)
+        refuse("the output must be a spreadsheet (-o NAME.xlsx)");
+    if (o.aov != Aov::color) refuse("the workbook computes the colour (--aov color)");
+    for (const char* flag : {"--spp", "--exposure", "--tonemap", "--bit-depth", "--depth-cue",
+                             "--wireframe-overlay", "--max-depth", "--light-samples", "--shadows"})
+        if (render.count(flag) > 0)
+            refuse(fmt::format("{} is not computed by the workbook's formulas", flag));
+}
+
 }  // namespace
 
 CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
@@ -207,6 +237,7 @@ void check_render_command(const CLI::App& render, RenderOptions& o) {
     if (!o.depth_range.empty() && o.aov != Aov::depth)
         throw CLI::ValidationError("--depth-range is for --aov depth");
     check_output_development(render, o);
+    check_formulas(render, o);
 }
 
 }  // namespace hikari::cli

@@ -43,6 +43,13 @@ struct RenderOptions {
     float exposure = 0.0f;              ///< --exposure EV: colour × 2^EV in every format
     ToneMap tone_map = ToneMap::clamp;  ///< --tonemap: for the formats of display values
     int bit_depth = 8;                  ///< --bit-depth: 16 for .png and .ppm
+    SampleEncoding encoding = SampleEncoding::srgb;  ///< --encoding of the integer formats
+    bool formulas = false;  ///< --formulas: an .xlsx that computes the picture itself
 };
+
+/// --bit-depth and --encoding, as the image writer takes them.
+inline ImageWriteSettings image_write_settings(const RenderOptions& o) {
+    return ImageWriteSettings{o.bit_depth, o.encoding};
+}
 
 }  // namespace hikari::cli

@@ -2,10 +2,14 @@
 
 #include <optional>
 
+#include <fmt/format.h>
+
 #include "hikari/core/error.h"
 #include "hikari/frame/aov_picture.h"
 #include "hikari/frame/tone_map.h"
+#include "hikari/io/files/atomic_file.h"
 #include "hikari/io/images/image_write.h"
+#include "hikari/io/images/xlsx_formulas_write.h"
 #include "output_paths.h"
 #include "signals.h"
 
@@ -16,7 +20,7 @@ namespace {
 /// Writes a colour render to `output` developed as --exposure and --tonemap ask, at --bit-depth.
 void write_colour(const std::string& output, Image colour, const RenderOptions& o) {
     expose_and_tone_map(colour, o.exposure, is_picture_file(output) ? o.tone_map : ToneMap::clamp);
-    write_image(output, colour, ImageWriteSettings{o.bit_depth});
+    write_image(output, colour, image_write_settings(o));
 }
 
 /// --depth-range, when given.
@@ -29,13 +33,14 @@ std::optional<DepthRange> depth_range(const RenderOptions& o) {
 
 Film output_film(const Camera& camera, const std::string& output, const RenderOptions& o) {
     const bool srgb8 = is_colour_aov(o.aov) && is_picture_file(output) && o.bit_depth == 8 &&
-                       o.exposure == 0.0f && o.tone_map == ToneMap::clamp;
+                       o.encoding == SampleEncoding::srgb && o.exposure == 0.0f &&
+                       o.tone_map == ToneMap::clamp;
     return Film(camera, srgb8 ? FilmFormat::srgb8 : FilmFormat::linear);
 }
 
 void write_output(const std::string& output, Framebuffer&& fb, const RenderOptions& o) {
     if (render_control().cancel.load()) throw Interrupted();
-    const ImageWriteSettings settings{o.bit_depth};
+    const ImageWriteSettings settings = image_write_settings(o);
     if (fb.film.format() == FilmFormat::srgb8)
         write_image(output, fb.film.srgb8());
     else if (is_colour_aov(o.aov))
@@ -44,6 +49,15 @@ void write_output(const std::string& output, Framebuffer&& fb, const RenderOptio
         write_image(output, aov_picture(fb, o.aov, depth_range(o)), settings);
     else
         write_image(output, aov_image(std::move(fb), o.aov), settings);
+}
+
+void write_formula_workbook(const std::string& output, const Scene& scene, const RenderOptions& o) {
+    if (const std::string why = formula_workbook_obstacle(scene); !why.empty())
+        throw InputError(fmt::format(
+            "--formulas cannot express this scene: {} (the workbook computes the lecture's "
+            "assignment: one sphere, one directional light)",
+            why));
+    write_file_atomically(output, encode_xlsx_formulas(output, scene, o.encoding));
 }
 
 void write_progressive_snapshot(const std::string& output, const Image& mean,

@@ -7,6 +7,7 @@
 #include "hikari/core/image.h"
 #include "hikari/frame/film.h"
 #include "hikari/frame/framebuffer.h"
+#include "hikari/scene/scene.h"
 #include "render_options.h"
 
 namespace hikari::cli {
@@ -21,6 +22,11 @@ Film output_film(const Camera& camera, const std::string& output, const RenderOp
 /// (the tone map only where the file holds display values; float files keep radiance), at
 /// --bit-depth.
 void write_output(const std::string& output, Framebuffer&& fb, const RenderOptions& o);
+
+/// `--formulas`: the workbook of io/images/xlsx_formulas_write.h for `scene` (the scene as the
+/// render would see it) written to `output`. Throws InputError naming what the formulas cannot
+/// express.
+void write_formula_workbook(const std::string& output, const Scene& scene, const RenderOptions& o);
 
 /// `--progressive`: the image so far written over `output` (atomically, as every image is: a
 /// viewer watching the file sees the old image or the new one, never half of one).

@@ -40,7 +40,11 @@ py::array to_srgb8(const py::array& array, float exposure, const std::string& to
     return out;
 }
 
-void write(const std::string& path, const py::array& array, int bit_depth) {
+void write(const std::string& path, const py::array& array, int bit_depth,
+           const std::string& encoding) {
+    const std::optional<SampleEncoding> samples =
+        choice_value<SampleEncoding>(k_sample_encoding_choices, encoding);
+    if (!samples) throw InputError("encoding: '" + encoding + "' is not one of srgb, linear");
     if (!is_supported_image_extension(path))
         throw InputError(path + ": unknown image format (supported: " +
                          std::string(k_writable_image_extensions) + ")");
@@ -49,7 +53,7 @@ void write(const std::string& path, const py::array& array, int bit_depth) {
                          "-bit samples (16 bits: .png and .ppm)");
     const Image image = array_image(array);
     py::gil_scoped_release unlocked;
-    write_image(path, image, ImageWriteSettings{bit_depth});
+    write_image(path, image, ImageWriteSettings{bit_depth, *samples});
 }
 
 py::dict compare(const py::array& a, const py::array& b, double scale) {
@@ -111,8 +115,10 @@ void bind_images(py::module_& m) {
           "The 8-bit sRGB values a PNG of `image` (linear RGB) holds: uint8 (H, W, 3), after "
           "exposure (×2^EV) and the tone map (clamp, reinhard, aces).");
     m.def("write", &write, py::arg("path"), py::arg("image"), py::arg("bit_depth") = 8,
+          py::arg("encoding") = "srgb",
           "Writes a linear RGB image in the format its extension names, as `hikari render -o` "
-          "does (.png .ppm .jpg sRGB; .pfm .exr .hdr linear; .xlsx a spreadsheet).");
+          "does (.png .ppm .jpg sRGB, or encoding='linear' for round(255 v) as the lecture's "
+          "sample code writes; .pfm .exr .hdr linear; .xlsx a spreadsheet).");
     m.def(
         "read",
         [](const std::string& path) {

@@ -55,3 +55,14 @@ def test_methods_come_from_the_registry():
     shadows = next(o for o in methods["zbuffer"]["options"] if o["name"] == "shadows")
     assert "pcf" in shadows["choices"]
     assert "spans" in methods["scanline"]["aovs"] and "spans" not in methods["zbuffer"]["aovs"]
+
+
+def test_write_linear_encoding_is_255_times_the_value(tmp_path):
+    image = np.array([[[0.8, 0.3, 0.2], [1.5, -0.2, 0.5]]], np.float32)
+    hikari.write(str(tmp_path / "linear.ppm"), image, encoding="linear")
+    hikari.write(str(tmp_path / "srgb.ppm"), image)
+    linear = (tmp_path / "linear.ppm").read_bytes()[-6:]
+    assert list(linear) == [204, 77, 51, 255, 0, 128]
+    assert list((tmp_path / "srgb.ppm").read_bytes()[-6:-3]) == [231, 149, 124]
+    with pytest.raises(hikari.InputError):
+        hikari.write(str(tmp_path / "a.png"), image, encoding="gamma")

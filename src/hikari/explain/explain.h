@@ -34,6 +34,13 @@ std::string explain_depth_sort(const Scene& scene, const RasterSettings& raster,
 std::string explain_raytrace_pixel(const Scene& scene, const WhittedSettings& whitted, int x,
                                    int y);
 
+/// The assignment (課題) at pixel (x, y) in the lecture's notation, for the ray tree's camera ray
+/// `node`: the pixel's screen point, the ray P_E + tÊ, A, B, C and D = B² − 4AC of the sphere it
+/// meets, t, P, N, then per point or directional light L, cos α, R = L + 2aN (a = −L·N), cos γ,
+/// cosⁿγ, I_d = I₀k_d cos α and I_s = I₀k_s cosⁿγ, their sum with the ambient term, and the 8-bit
+/// values the file gets (sRGB, and --encoding linear). Part of explain_raytrace_pixel.
+std::string explain_sphere_shading(const Scene& scene, int x, int y, const RayTreeNode& node);
+
 /// The lecture's p_s = V P M p_w for the scene's camera (`--print-matrices`): M the model-view
 /// matrix (world to camera coordinates; scene objects are given in world coordinates, so M is the
 /// camera's), P the projection, V the viewport, then one vertex of each object (up to a few)

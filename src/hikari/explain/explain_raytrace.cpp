@@ -86,6 +86,7 @@ std::string explain_raytrace_pixel(const Scene& scene, const WhittedSettings& wh
     if (!tree.empty()) print(0);
     out += fmt::format("\nPixel colour (linear RGB): {}\n",
                        tree.empty() ? "none" : vec_text(tree.front().total));
+    if (!tree.empty()) out += explain_sphere_shading(scene, x, y, tree.front());
     return out;
 }
 

@@ -14,6 +14,7 @@
 #include "hikari/frame/tone_map.h"
 #include "hikari/integrators/path/path_tracer.h"
 #include "hikari/integrators/whitted/whitted.h"
+#include "hikari/io/images/image_write.h"
 #include "hikari/raster/lines/line_settings.h"
 #include "hikari/raster/raster_settings.h"
 
@@ -74,6 +75,10 @@ inline std::string_view aov_name(Aov aov) { return choice_name<Aov>(k_aov_choice
 /// `--tonemap`'s words.
 inline constexpr Choice<ToneMap> k_tone_map_choices[] = {
     {"clamp", ToneMap::clamp}, {"reinhard", ToneMap::reinhard}, {"aces", ToneMap::aces}};
+
+/// `--encoding`'s words: how 8- and 16-bit files hold linear values.
+inline constexpr Choice<SampleEncoding> k_sample_encoding_choices[] = {
+    {"srgb", SampleEncoding::srgb}, {"linear", SampleEncoding::linear}};
 
 /// `--interp`: the lecture's three ways to shade a polygon.
 inline constexpr Choice<Interpolation> k_interpolation_choices[] = {

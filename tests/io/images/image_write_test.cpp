@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <stb/stb_image.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -91,6 +92,34 @@ TEST(ImageWrite, PpmIsBinaryP6Srgb) {
     EXPECT_EQ(static_cast<uint8_t>(bytes[header.size() + 1]), 255);
     EXPECT_EQ(static_cast<uint8_t>(bytes[header.size() + 2]), 255);
     EXPECT_EQ(static_cast<uint8_t>(bytes[header.size() + 3]), 188);
+}
+
+TEST(ImageWrite, LinearEncodingIs255TimesTheValueAsTheLecturesCode) {
+    TempDir dir;
+    Image image(3, 1);
+    image.at(0, 0) = {0.8f, 0.3f, 0.2f};  // the stage-1 sphere: (204, 77, 51), sRGB (231, 149, 124)
+    image.at(1, 0) = {0.5f, 2.0f, -1.0f};   // clamped to [0, 1]
+    image.at(2, 0) = {NAN, 1e-3f, 0.998f};  // NaN as 0
+    for (const int bits : {8, 16}) {
+        SCOPED_TRACE(bits);
+        write_image(dir / "a.ppm", image, ImageWriteSettings{bits, SampleEncoding::linear});
+        const std::string bytes = read_text(dir / "a.ppm");
+        const float max_code = bits == 8 ? 255.0f : 65535.0f;
+        const size_t body = bytes.size() - image.pixels.size() * 3 * (bits / 8);
+        for (size_t i = 0; i < 9; ++i) {
+            const float v = image.pixels[i / 3][static_cast<int>(i % 3)];
+            const long expected =
+                std::isnan(v) ? 0 : std::lround(std::clamp(v, 0.0f, 1.0f) * max_code);
+            const auto* b = reinterpret_cast<const uint8_t*>(bytes.data() + body);
+            const long got = bits == 8 ? b[i] : (long{b[2 * i]} << 8) | b[2 * i + 1];
+            EXPECT_EQ(got, expected) << "sample " << i;
+        }
+    }
+    const Srgb8Image linear = encode_linear8(image);
+    EXPECT_EQ(linear.bytes[0], 204);
+    EXPECT_EQ(linear.bytes[1], 77);
+    EXPECT_EQ(linear.bytes[2], 51);
+    EXPECT_EQ(linear_to_srgb8(0.8f), 231);  // what the default writes for the same value
 }
 
 TEST(ImageWrite, PngAndExrHaveTheirMagicNumbers) {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -157,6 +158,26 @@ Bytes encode_exr(const std::filesystem::path& path, const Image& image) {
     return out;
 }
 
+/// One linear value as an integer sample of `max_code` steps: round(max_code · clamp(v, 0, 1)),
+/// NaN as 0 (`!(v > 0)` holds for it).
+uint32_t linear_code(float v, float max_code) {
+    if (!(v > 0.0f)) return 0;
+    return static_cast<uint32_t>(std::lround(std::min(v, 1.0f) * max_code));
+}
+
+/// `image` as 16-bit linear samples, big-endian like encode_srgb16's.
+Srgb16Image encode_linear16(const Image& image) {
+    Srgb16Image out{image.width, image.height, {}};
+    out.bytes.resize(image.pixels.size() * 6);
+    for (size_t i = 0; i < image.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            const uint32_t code = linear_code(image.pixels[i][c], 65535.0f);
+            out.bytes[6 * i + 2 * c] = static_cast<uint8_t>(code >> 8);
+            out.bytes[6 * i + 2 * c + 1] = static_cast<uint8_t>(code);
+        }
+    return out;
+}
+
 /// The 8-bit formats.
 Bytes encode(const std::filesystem::path& path, const Srgb8Image& image, ImageFormat format) {
     switch (format) {
@@ -177,17 +198,18 @@ Bytes encode(const std::filesystem::path& path, const Srgb8Image& image, ImageFo
 
 Bytes encode(const std::filesystem::path& path, const Image& image, ImageFormat format,
              const ImageWriteSettings& settings) {
+    const bool linear = settings.encoding == SampleEncoding::linear;
     if (settings.bit_depth == 16) {
         // supports_bit_depth has let only PNG and PPM through.
-        const Srgb16Image srgb16 = encode_srgb16(image);
-        return format == ImageFormat::Png ? encode_png(srgb16) : encode_ppm(srgb16);
+        const Srgb16Image samples = linear ? encode_linear16(image) : encode_srgb16(image);
+        return format == ImageFormat::Png ? encode_png(samples) : encode_ppm(samples);
     }
     switch (format) {
         case ImageFormat::Png:
         case ImageFormat::Ppm:
         case ImageFormat::Jpeg:
         case ImageFormat::Xlsx:
-            return encode(path, encode_srgb8(image), format);
+            return encode(path, linear ? encode_linear8(image) : encode_srgb8(image), format);
         case ImageFormat::Pfm:
             return encode_pfm(image);
         case ImageFormat::Exr:
@@ -225,6 +247,15 @@ Bytes encode_any_image(const std::filesystem::path& path, const AnyImage& image,
 }
 
 }  // namespace
+
+Srgb8Image encode_linear8(const Image& image) {
+    Srgb8Image out(image.width, image.height);
+    for (size_t i = 0; i < image.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c)
+            out.bytes[3 * i + static_cast<size_t>(c)] =
+                static_cast<uint8_t>(linear_code(image.pixels[i][c], 255.0f));
+    return out;
+}
 
 bool is_supported_image_extension(const std::filesystem::path& path) {
     return image_format_from_extension(path).has_value();

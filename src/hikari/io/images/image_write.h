@@ -18,17 +18,33 @@ inline constexpr const char* k_writable_image_extensions =
 /// Lets the command line reject `-o picture.bmp` before spending time on a render.
 bool is_supported_image_extension(const std::filesystem::path& path);
 
+/// How the integer samples of .png, .ppm, .jpg and .xlsx hold linear values in [0, 1].
+enum class SampleEncoding {
+    /// The sRGB curve (IEC 61966-2-1, core/color.h): what screens and viewers expect, so the
+    /// picture looks as the light computed it. The default.
+    srgb,
+    /// round(255 · v) (65535 · v at 16 bits), no curve: what the lecture's sample code writes, so
+    /// a student's file can be compared byte for byte (the stage-1 sphere's kd (0.8, 0.3, 0.2)
+    /// is (204, 77, 51) here, (231, 149, 124) in sRGB). Looks darker on screen.
+    linear,
+};
+
 /// What write_image() leaves to the caller.
 struct ImageWriteSettings {
-    int bit_depth = 8;  ///< bits per sRGB sample: 8, or 16 for .png and .ppm only
+    int bit_depth = 8;  ///< bits per integer sample: 8, or 16 for .png and .ppm only
+    SampleEncoding encoding = SampleEncoding::srgb;  ///< of the integer formats; floats stay linear
 };
+
+/// `image` as 8-bit samples round(255 · clamp(v, 0, 1)) (NaN as 0): SampleEncoding::linear.
+Srgb8Image encode_linear8(const Image& image);
 
 /// True when `path`'s format can hold sRGB samples of `bit_depth` bits: 8 for every format
 /// (the float ones ignore it), 16 for .png and .ppm; false for any other depth.
 bool supports_bit_depth(const std::filesystem::path& path, int bit_depth);
 
 /// Writes the linear-RGB `image` to `path` in the format its extension names:
-/// - `.png`: RGB, sRGB-encoded, values clamped to [0, 1]; 8 bits per sample, or 16
+/// - `.png`: RGB, sRGB-encoded (or linear, settings.encoding), values clamped to [0, 1]; 8 bits per
+/// sample, or 16
 ///   (round(65535 · sRGB(v)), settings.bit_depth = 16);
 /// - `.ppm`: binary P6, sRGB-encoded and clamped like PNG; maxval 255, or 65535 (big-endian
 ///   samples) for 16 bits;

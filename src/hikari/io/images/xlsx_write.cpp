@@ -1,9 +1,5 @@
 #include "hikari/io/images/xlsx_write.h"
 
-#include <unistd.h>
-#include <xlsxwriter.h>
-
-#include <atomic>
 #include <string>
 
 #include <fmt/format.h>
@@ -11,6 +7,7 @@
 #include "hikari/core/error.h"
 #include "hikari/io/files/read_file.h"
 #include "hikari/io/images/colour_palette.h"
+#include "hikari/io/images/xlsx_workbook.h"
 
 namespace hikari {
 
@@ -23,34 +20,11 @@ constexpr uint32_t k_cell_pixels = 12;
 /// Cell size of the channel sheets: wide enough for "255".
 constexpr uint32_t k_number_width_pixels = 30, k_number_height_pixels = 16;
 
-/// A workbook file in the temporary directory, removed when this goes out of scope (libxlsxwriter
-/// writes only to files; the bytes are then written atomically to the real output).
-class TemporaryWorkbook {
-  public:
-    TemporaryWorkbook() {
-        static std::atomic<unsigned> counter{0};
-        m_path = std::filesystem::temp_directory_path() /
-                 fmt::format("hikari-{}-{}.xlsx", ::getpid(), counter++);
-    }
-    ~TemporaryWorkbook() {
-        std::error_code ignored;
-        std::filesystem::remove(m_path, ignored);
-    }
-    TemporaryWorkbook(const TemporaryWorkbook&) = delete;
-    TemporaryWorkbook& operator=(const TemporaryWorkbook&) = delete;
-    const std::filesystem::path& path() const { return m_path; }
-
-  private:
-    std::filesystem::path m_path;
-};
-
 [[noreturn]] void fail(const std::filesystem::path& path, const std::string& why) {
-    throw InputError(fmt::format("cannot write {}: {}", path.string(), why));
+    fail_workbook(path, why);
 }
 
-void check(lxw_error error, const std::filesystem::path& path) {
-    if (error != LXW_NO_ERROR) fail(path, lxw_strerror(error));
-}
+void check(lxw_error error, const std::filesystem::path& path) { check_workbook(error, path); }
 
 /// A sheet of `width` × `height` cells of the given size in pixels, printed without gridlines
 /// on one page (its print area set: a sheet of blank filled cells is otherwise not printed).
