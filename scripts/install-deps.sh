@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages hikari builds with; does nothing when they are all present.
-#   --tests  also what the browser test needs: chromium, node and npm, and playwright-core
-#            (npm ci in tests/browser, from its lock file)
+#   --tests  also what the browser and spreadsheet tests need: chromium, node and npm,
+#            playwright-core (npm ci in tests/browser, from its lock file), LibreOffice Calc
 #   --ci     also CI's tools (clang, clang-format, clang-tidy, the sanitizer runtimes); implies --tests
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -23,17 +23,16 @@ packages=(
     # The Python module (python/) and its tests.
     pybind11-dev python3-dev python3-numpy python3-pytest
 )
-# The browser test drives hikari serve's page in Debian's chromium.
+# The browser test drives hikari serve's page in Debian's chromium; LibreOffice recalculates the
+# --formulas workbook in tests/python/test_xlsx_formulas.py.
 if $tests; then
-    packages+=(chromium)
+    packages+=(chromium libreoffice-calc-nogui)
     # A node with its npm from elsewhere (NodeSource, nvm) will do; Debian's otherwise.
     command -v npm > /dev/null || packages+=(nodejs npm)
 fi
 # CI also checks formatting, runs clang-tidy and builds with sanitizers.
 if $ci; then
     packages+=(clang clang-format clang-tidy libclang-rt-14-dev git)
-    # LibreOffice recalculates the --formulas workbook in tests/python/test_xlsx_formulas.py.
-    packages+=(libreoffice-calc-nogui)
 fi
 
 missing=()
