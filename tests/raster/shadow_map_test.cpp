@@ -134,7 +134,8 @@ TEST(ShadowMap, PlanesBlockExactlyTheOtherSide) {
     for (const Light& light : scene.lights) {
         EXPECT_FALSE(plane_blocks_light(scene, shadow_view(light), {0, 1, 0}));
         EXPECT_TRUE(plane_blocks_light(scene, shadow_view(light), {3, -1, 0}));
-        EXPECT_FALSE(plane_blocks_light(scene, shadow_view(light), {3, 0, 0}));  // on the plane itself
+        EXPECT_FALSE(
+            plane_blocks_light(scene, shadow_view(light), {3, 0, 0}));  // on the plane itself
     }
 }
 

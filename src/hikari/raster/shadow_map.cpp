@@ -244,8 +244,8 @@ std::optional<LightShadowMap> cone_map(const LightShadowView& light, const Raste
     const auto [nearest, far_dist] = caster_distances(map.origin, casters);
     // A point at distance d has depth at least d · cos of the face's corner angle, whose tangent
     // is √2 · tan(half).
-    const float near_plane = std::max(0.5f * nearest, 1e-5f * far_dist) /
-                             std::sqrt(1.0f + 2.0f * tan_half * tan_half);
+    const float near_plane =
+        std::max(0.5f * nearest, 1e-5f * far_dist) / std::sqrt(1.0f + 2.0f * tan_half * tan_half);
     const Vec3 up = std::abs(map.direction.y) < 0.9f ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
     map.faces.push_back(perspective_face(casters, map.origin, map.direction, up, 2.0f * half,
                                          near_plane, far_dist, size));
@@ -330,8 +330,8 @@ MapLookup map_lookup(const LightShadowMap& map, Vec3 p, Vec3 n) {
 /// The caster depth the map holds in the direction of world point `x` (seen from the light),
 /// or +infinity outside the map.
 float caster_depth(const LightShadowMap& map, Vec3 x) {
-    const ShadowMapFace& face = map.directional || map.cone ? map.faces.front()
-                                                            : map.faces[cube_face(x - map.origin)];
+    const ShadowMapFace& face =
+        map.directional || map.cone ? map.faces.front() : map.faces[cube_face(x - map.origin)];
     const Vec4 clip = face.view.clip_from_world * Vec4(x, 1.0f);
     if (!(clip.w > 0.0f)) return k_no_caster;
     const Vec3 screen = transform_point(face.view.screen_from_clip, clip.xyz() / clip.w);

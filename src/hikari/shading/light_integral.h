@@ -80,7 +80,8 @@ struct SampledLights {
             pending = 0;
         };
         for (int k = 0; k < samples; ++k) {
-            const LightSample sample = sample_light_at(light, s.position, s.normal, pattern.next(k));
+            const LightSample sample =
+                sample_light_at(light, s.position, s.normal, pattern.next(k));
             const float cos_alpha = dot(s.normal, sample.to_light);
             if (!(cos_alpha > 0.0f) || max_component(sample.irradiance) <= 0.0f) continue;
             ++tested;

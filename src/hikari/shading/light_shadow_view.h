@@ -10,8 +10,8 @@ namespace hikari {
 enum class ShadowProjection {
     none,      ///< no map: the light is integrated unshadowed (an environment light)
     parallel,  ///< one orthographic map along `direction` (a directional light)
-    cube,      ///< six 90° perspective maps around `origin` (a point light, an area light's centre)
-    cone,      ///< one perspective map from `origin` along `direction`, `half_angle` wide (a spot)
+    cube,  ///< six 90° perspective maps around `origin` (a point light, an area light's centre)
+    cone,  ///< one perspective map from `origin` along `direction`, `half_angle` wide (a spot)
 };
 
 /// Where a light's shadows are cast from.

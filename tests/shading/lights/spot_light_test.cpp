@@ -38,9 +38,8 @@ TEST(SpotLight, FullInsideTheInnerConeNoneOutsideTheOuter) {
     const float d35 = 2.0f * std::tan(35.0f * testing::k_pi_f / 180.0f);
     EXPECT_EQ(sample_light<float>(spot, Vec3(d35, 0, 0)).irradiance.x, 0.0f);
     const Vec3 p10(2.0f * std::tan(10.0f * testing::k_pi_f / 180.0f), 0, 0);
-    EXPECT_NEAR(sample_light<float>(spot, p10).irradiance.x, 8.0f / dot(p10 - spot.position,
-                                                                         p10 - spot.position),
-                1e-5f);
+    EXPECT_NEAR(sample_light<float>(spot, p10).irradiance.x,
+                8.0f / dot(p10 - spot.position, p10 - spot.position), 1e-5f);
 }
 
 TEST(SpotLight, EqualAnglesMakeAHardEdge) {

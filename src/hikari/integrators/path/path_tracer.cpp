@@ -80,11 +80,10 @@ class PathIntegrator {
                     m_scene.lights, ray.origin, ray.direction, found ? hit.t : k_infinity);
                 if (face) {
                     const float w =
-                        specular
-                            ? 1.0f
-                            : power_heuristic(bsdf_pdf,
-                                              m_emitters.light_pdf(face->light, last_normal,
-                                                                   ray.direction, face->t));
+                        specular ? 1.0f
+                                 : power_heuristic(bsdf_pdf,
+                                                   m_emitters.light_pdf(face->light, last_normal,
+                                                                        ray.direction, face->t));
                     sum += throughput * face_radiance(m_scene.lights[face->light]) * w;
                     break;
                 }

@@ -20,6 +20,7 @@
 #include "hikari/io/scene/default_scene.h"
 #include "hikari/io/scene/json_reader.h"
 #include "hikari/io/scene/scene_document_rebase.h"
+#include "hikari/shading/lights.h"
 
 namespace hikari {
 
@@ -236,8 +237,8 @@ DirectionalLight parse_directional_light(const JsonNode& node) {
 float parse_cone_angle(const JsonNode& node) {
     const float degrees = node.as_number();
     if (!(degrees > 0.0f && degrees <= 90.0f))
-        node.fail(fmt::format("a spot light's half-angle must be in (0, 90] degrees, not {:g}",
-                              degrees));
+        node.fail(
+            fmt::format("a spot light's half-angle must be in (0, 90] degrees, not {:g}", degrees));
     return degrees;
 }
 
@@ -608,7 +609,7 @@ Scene parse_scene(std::string_view text, const std::string& file,
         bool environment = false;
         for (size_t i = 0; i < lights.value().size(); ++i) {
             b.scene.lights.push_back(parse_kind(lights.at(i), "light", k_light_parsers, b));
-            if (!std::holds_alternative<EnvironmentLight>(b.scene.lights.back())) continue;
+            if (!light_as<EnvironmentLight>(b.scene.lights.back())) continue;
             if (environment) lights.at(i).fail("a scene has at most one environment light");
             environment = true;
         }

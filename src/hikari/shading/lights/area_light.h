@@ -89,8 +89,7 @@ inline std::pair<Vec3, float> area_light_frame(const AreaLight& light) {
 
 /// The path tracer's sample: a point uniform over the area for the pair `u`, its density per
 /// solid angle; radiance 0 where the point sees the back of a one-sided light.
-inline IncidentSample sample_incident(const AreaLight& light, Vec3 p, Vec3, Vec2 u,
-                                      float choice) {
+inline IncidentSample sample_incident(const AreaLight& light, Vec3 p, Vec3, Vec2 u, float choice) {
     IncidentSample s;
     const Vec3 y = light.corner + u.x * light.edge1 + u.y * light.edge2;
     const Vec3 d = y - p;

@@ -1,7 +1,8 @@
 #pragma once
 // The spot light: the lecture's point light (I / d²) restricted to a cone about its axis, with
 // a smooth edge (scene/light.h):
-//   E(p) = I · s(cos θ) / d²,  s(c) = t²(3 − 2t),  t = clamp((c − cos θo) / (cos θi − cos θo), 0, 1)
+//   E(p) = I · s(cos θ) / d²,  s(c) = t²(3 − 2t),  t = clamp((c − cos θo) / (cos θi − cos θo), 0,
+//   1)
 // θ the angle between the axis and p − position, θi and θo the inner and outer half-angles.
 // Every per-kind operation of shading/lights.h for it.
 
@@ -44,8 +45,7 @@ HIKARI_INLINE LightSampleT<F> sample_light(const SpotLight& light, const Vec3T<F
     const F distance = sqrt_of(d2);
     const Vec3T<F> to_light = d / distance;
     const F cos_theta = -dot(to_light, Vec3T<F>(light.direction));
-    return {to_light, distance,
-            Vec3T<F>(light.intensity) * (spot_falloff(light, cos_theta) / d2)};
+    return {to_light, distance, Vec3T<F>(light.intensity) * (spot_falloff(light, cos_theta) / d2)};
 }
 
 inline LightSample sample_light_at(const SpotLight& light, Vec3 p, Vec3, Vec2) {
