@@ -51,19 +51,29 @@ std::string materials_lines(std::span<const Material> materials) {
 
 std::string lights_lines(std::span<const Light> lights) {
     std::string text = fmt::format("  lights      {}\n", lights.size());
-    for (const Light& light : lights) {
-        if (const auto* p = std::get_if<PointLight>(&light))
-            text +=
-                fmt::format("    point at {}, intensity {}\n", vec(p->position), vec(p->intensity));
-        else if (const auto* d = std::get_if<DirectionalLight>(&light))
-            text += fmt::format("    directional toward {}, intensity {}\n", vec(d->direction),
-                                vec(d->intensity));
-        else if (const auto* a = std::get_if<AreaLight>(&light))
-            text +=
-                fmt::format("    area at {}, radiance {}\n", vec(a->centre()), vec(a->radiance));
-        else
-            text += "    environment\n";
-    }
+    for (const Light& light : lights)
+        text += visit_light(
+            light, Overloaded{
+                       [](const PointLight& p) {
+                           return fmt::format("    point at {}, intensity {}\n", vec(p.position),
+                                              vec(p.intensity));
+                       },
+                       [](const SpotLight& s) {
+                           return fmt::format(
+                               "    spot at {} toward {}, intensity {}, cone {:g}°–{:g}°\n",
+                               vec(s.position), vec(s.direction), vec(s.intensity), s.inner_angle,
+                               s.outer_angle);
+                       },
+                       [](const DirectionalLight& d) {
+                           return fmt::format("    directional toward {}, intensity {}\n",
+                                              vec(d.direction), vec(d.intensity));
+                       },
+                       [](const AreaLight& a) {
+                           return fmt::format("    area at {}, radiance {}\n", vec(a.centre()),
+                                              vec(a.radiance));
+                       },
+                       [](const EnvironmentLight&) { return std::string("    environment\n"); },
+                   });
     return text;
 }
 

@@ -10,6 +10,7 @@
 #include "hikari/raster/scanline.h"
 #include "hikari/raster/tessellate.h"
 #include "hikari/raster/zbuffer.h"
+#include "hikari/shading/lights.h"
 #include "raster_test_util.h"
 
 namespace hikari {
@@ -131,9 +132,10 @@ TEST(ShadowMap, PlanesBlockExactlyTheOtherSide) {
                    {"type": "directional", "direction": [0, -1, 0], "intensity": [1, 1, 1]}],
         "objects": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0]}]})");
     for (const Light& light : scene.lights) {
-        EXPECT_FALSE(plane_blocks_light(scene, light, {0, 1, 0}));
-        EXPECT_TRUE(plane_blocks_light(scene, light, {3, -1, 0}));
-        EXPECT_FALSE(plane_blocks_light(scene, light, {3, 0, 0}));  // on the plane itself
+        EXPECT_FALSE(plane_blocks_light(scene, shadow_view(light), {0, 1, 0}));
+        EXPECT_TRUE(plane_blocks_light(scene, shadow_view(light), {3, -1, 0}));
+        EXPECT_FALSE(
+            plane_blocks_light(scene, shadow_view(light), {3, 0, 0}));  // on the plane itself
     }
 }
 

@@ -34,4 +34,13 @@ HIKARI_INLINE decltype(auto) visit_kind(const Variant& v, Function&& f) {
                               std::make_index_sequence<std::variant_size_v<Variant>>());
 }
 
+/// One callable made of several lambdas, one per alternative: `Overloaded{[](const A&) {...},
+/// [](const B&) {...}}`. Visiting with it fails to compile when an alternative has no lambda.
+template <class... Lambdas>
+struct Overloaded : Lambdas... {
+    using Lambdas::operator()...;
+};
+template <class... Lambdas>
+Overloaded(Lambdas...) -> Overloaded<Lambdas...>;
+
 }  // namespace hikari

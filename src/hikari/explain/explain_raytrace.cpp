@@ -5,6 +5,7 @@
 #include "hikari/core/error.h"
 #include "hikari/explain/explain.h"
 #include "hikari/explain/primitive_names.h"
+#include "hikari/shading/lights.h"
 
 namespace hikari {
 
@@ -12,13 +13,6 @@ namespace {
 
 std::string vec_text(Vec3 v, int digits = 4) {
     return fmt::format("({:.{}f}, {:.{}f}, {:.{}f})", v.x, digits, v.y, digits, v.z, digits);
-}
-
-std::string_view light_kind(const Light& light) {
-    if (std::holds_alternative<PointLight>(light)) return "point";
-    if (std::holds_alternative<DirectionalLight>(light)) return "directional";
-    if (std::holds_alternative<AreaLight>(light)) return "area";
-    return "environment";
 }
 
 std::string_view kind_text(RayTreeNode::Kind k) {
@@ -69,7 +63,7 @@ std::string explain_raytrace_pixel(const Scene& scene, const WhittedSettings& wh
             for (const ShadowRayRecord& r : node.shadow_rays)
                 out +=
                     fmt::format("{}   shadow ray to light {} ({}): {}\n", indent, r.light,
-                                light_kind(scene.lights[r.light]),
+                                light_kind_name(scene.lights[r.light]),
                                 !r.facing ? "not cast, the surface faces away"
                                           : (r.blocked ? "blocked: in shadow" : "reaches it: lit"));
             for (uint32_t l = 0; l < scene.lights.size(); ++l)
@@ -77,7 +71,7 @@ std::string explain_raytrace_pixel(const Scene& scene, const WhittedSettings& wh
                     out += fmt::format(
                         "{}   light {} ({}): sampled by --light-samples {} shadow "
                         "rays\n",
-                        indent, l, light_kind(scene.lights[l]), whitted.light_samples);
+                        indent, l, light_kind_name(scene.lights[l]), whitted.light_samples);
             out += fmt::format("{}   local colour {}\n", indent, vec_text(node.local));
         }
         for (const int c : children[static_cast<size_t>(n)]) print(c);

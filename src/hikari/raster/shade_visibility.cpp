@@ -100,12 +100,6 @@ struct PixelSurface {
     Vec3 c[3] = {Vec3(1.0f), Vec3(1.0f), Vec3(1.0f)};
 };
 
-/// Half the mean edge length of an area light: the radius PCSS gives it.
-float light_radius(const Light& light) {
-    const auto* area = std::get_if<AreaLight>(&light);
-    return area ? 0.25f * (length(area->edge1) + length(area->edge2)) : 0.0f;
-}
-
 /// How much of light `l` reaches the pixel's point (0 to 1), by its shadow map (filtered for
 /// pcf and pcss) or stencil (planes, which no finite map or mesh volume holds, answered
 /// exactly), or, for analytic shadows, by the casters themselves: the visible fraction of an
@@ -115,7 +109,7 @@ float light_fraction(const ShadeContext& ctx, size_t l, const ShadowQuery& q) {
     if (ctx.shadows == ShadowMode::none) return 1.0f;
     const Light& light = ctx.scene.lights[l];
     if (ctx.shadows == ShadowMode::analytic) {
-        if (const auto* area = std::get_if<AreaLight>(&light)) {
+        if (const auto* area = light_as<AreaLight>(light)) {
             const float open =
                 visible_light(*area, q.point, q.ng, q.ng, nullptr).cosine_solid_angle;
             if (!(open > 0.0f)) return 1.0f;
@@ -125,13 +119,14 @@ float light_fraction(const ShadeContext& ctx, size_t l, const ShadowQuery& q) {
                                               ctx.light_samples);
             return seen.cosine_solid_angle / open;
         }
-        if (plane_blocks_light(ctx.scene, light, q.point)) return 0.0f;
+        if (plane_blocks_light(ctx.scene, shadow_view(light), q.point)) return 0.0f;
         const LightSample toward = sample_light(light, q.point);
         const Vec3 ng = dot(q.ng, toward.to_light) < 0.0f ? -q.ng : q.ng;
         const Vec3 from = offset_ray_origin(q.point, ng);
         return ctx.occluders->blocks_segment(from, toward.to_light, toward.distance) ? 0.0f : 1.0f;
     }
-    if (plane_blocks_light(ctx.scene, light, q.point)) return 0.0f;
+    const LightShadowView view = shadow_view(light);
+    if (plane_blocks_light(ctx.scene, view, q.point)) return 0.0f;
     if (ctx.shadows == ShadowMode::volume) return (*ctx.in_volume)[l][q.pixel] == 0 ? 1.0f : 0.0f;
     const std::optional<LightShadowMap>& map = ctx.shadow_maps->lights[l];
     if (!map) return 1.0f;
@@ -142,7 +137,7 @@ float light_fraction(const ShadeContext& ctx, size_t l, const ShadowQuery& q) {
         case ShadowMode::pcf:
             return pcf_shadow_fraction(*map, q.point, n);
         case ShadowMode::pcss:
-            return pcss_shadow_fraction(*map, q.point, n, light_radius(light));
+            return pcss_shadow_fraction(*map, q.point, n, view.radius);
         default:
             return lit_in_shadow_map(*map, q.point, n) ? 1.0f : 0.0f;
     }
@@ -159,7 +154,7 @@ struct RasterExtendedLights {
     template <class Visible>
     Vec3 operator()(size_t l, const Light& light, const SurfacePoint<float>& s,
                     const MaterialSample<float>& m, bool specular, Visible&, int32_t&) const {
-        if (const auto* area = std::get_if<AreaLight>(&light)) {
+        if (const auto* area = light_as<AreaLight>(light)) {
             const float fraction = light_fraction(ctx, l, query);
             if (!(fraction > 0.0f)) return Vec3(0.0f);
             const VisibleLight whole =
@@ -496,7 +491,7 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
                      raster.light_samples};
     std::vector<std::optional<IrradianceSh>> environment_sh;
     for (const Light& light : scene.lights) {
-        const auto* env = std::get_if<EnvironmentLight>(&light);
+        const auto* env = light_as<EnvironmentLight>(light);
         environment_sh.push_back(env ? std::optional(project_environment(*env)) : std::nullopt);
     }
     ctx.environment_sh = &environment_sh;
@@ -527,7 +522,7 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
         const RasterScene& volume_scene = tessellated ? *tessellated : ps.scene;
         const std::vector<uint8_t> casters = shadow_casting_triangles(scene, volume_scene);
         for (const Light& light : scene.lights) {
-            if (std::holds_alternative<EnvironmentLight>(light)) {
+            if (shadow_view(light).projection == ShadowProjection::none) {
                 in_volume.emplace_back();  // lit unshadowed: never asked
                 continue;
             }

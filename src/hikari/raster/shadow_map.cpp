@@ -6,11 +6,14 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
+#include <utility>
 
 #include "hikari/core/parallel.h"
 #include "hikari/raster/cull.h"
 #include "hikari/raster/sphere_raster.h"
 #include "hikari/raster/zbuffer.h"
+#include "hikari/shading/lights.h"
 
 namespace hikari {
 
@@ -109,12 +112,11 @@ ShadowMapFace render_face(const RasterScene& casters, const RasterView& view, De
 }
 
 /// A directional light's orthographic map over the casters that lie above `receivers`.
-std::optional<LightShadowMap> directional_map(const DirectionalLight& light,
-                                              const RasterScene& casters, const Aabb& receivers,
-                                              int size) {
+std::optional<LightShadowMap> directional_map(Vec3 travel, const RasterScene& casters,
+                                              const Aabb& receivers, int size) {
     LightShadowMap map;
     map.directional = true;
-    map.direction = normalize(light.direction);
+    map.direction = normalize(travel);
     map.size = size;
     map.origin = receivers.center();
     // The light's view: looking along its travel direction, w toward the light.
@@ -164,14 +166,8 @@ std::optional<LightShadowMap> directional_map(const DirectionalLight& light,
     return map;
 }
 
-/// A point light's cube map: six 90° views along ±x, ±y, ±z, in that order (face 2a + (d_a < 0)
-/// holds the directions whose largest component is axis a).
-std::optional<LightShadowMap> point_map(Vec3 position, const RasterScene& casters, int size) {
-    if (casters.triangles.indices.empty() && casters.spheres.empty()) return std::nullopt;
-    LightShadowMap map;
-    map.origin = position;
-    map.size = size;
-    map.texel_size = 2.0f / static_cast<float>(size);
+/// The nearest and farthest distances from `position` of the bounds of `casters`.
+std::pair<float, float> caster_distances(Vec3 position, const RasterScene& casters) {
     Aabb bounds;
     for (const auto& tri : casters.triangles.indices)
         for (uint32_t i : tri) bounds.extend(casters.triangles.positions[i]);
@@ -187,26 +183,72 @@ std::optional<LightShadowMap> point_map(Vec3 position, const RasterScene& caster
         far_dist = std::max(far_dist, length(p - position));
     }
     const Vec3 nearest = max(min(position, bounds.max), bounds.min);
+    return {length(nearest - position), far_dist};
+}
+
+/// One square perspective face from `position` along unit `axis`, `fov_y` degrees wide, whose
+/// depths are distances from `position`.
+ShadowMapFace perspective_face(const RasterScene& casters, Vec3 position, Vec3 axis, Vec3 up,
+                               float fov_y, float near_plane, float far_dist, int size) {
+    RasterView view;
+    view.eye = position;
+    view.width = view.height = size;
+    view.near_plane = near_plane;
+    view.far_plane = 1.01f * far_dist + near_plane;
+    view.view_from_world = look_at(position, position + axis, up);
+    view.clip_from_view = perspective(fov_y, 1.0f, view.near_plane, view.far_plane);
+    view.screen_from_clip = viewport(size, size);
+    view.clip_from_world = view.clip_from_view * view.view_from_world;
+    return render_face(casters, view, [position](Vec3 hit) { return length(hit - position); });
+}
+
+/// A point light's cube map: six 90° views along ±x, ±y, ±z, in that order (face 2a + (d_a < 0)
+/// holds the directions whose largest component is axis a).
+std::optional<LightShadowMap> point_map(Vec3 position, const RasterScene& casters, int size) {
+    if (casters.triangles.indices.empty() && casters.spheres.empty()) return std::nullopt;
+    LightShadowMap map;
+    map.origin = position;
+    map.size = size;
+    map.texel_size = 2.0f / static_cast<float>(size);
+    const auto [nearest, far_dist] = caster_distances(position, casters);
     // A point at distance d has depth at least d / √3 in the face that holds it.
-    const float near_plane =
-        std::max(0.5f * length(nearest - position), 1e-5f * far_dist) / std::sqrt(3.0f);
+    const float near_plane = std::max(0.5f * nearest, 1e-5f * far_dist) / std::sqrt(3.0f);
     const std::array<Vec3, 6> axes = {Vec3(1, 0, 0),  Vec3(-1, 0, 0), Vec3(0, 1, 0),
                                       Vec3(0, -1, 0), Vec3(0, 0, 1),  Vec3(0, 0, -1)};
-    const Vec3 origin = position;
     for (const Vec3& axis : axes) {
-        RasterView view;
-        view.eye = position;
-        view.width = view.height = size;
-        view.near_plane = near_plane;
-        view.far_plane = 1.01f * far_dist + near_plane;
         const Vec3 up = axis.y != 0.0f ? Vec3(0, 0, 1) : Vec3(0, 1, 0);
-        view.view_from_world = look_at(position, position + axis, up);
-        view.clip_from_view = perspective(90.0f, 1.0f, view.near_plane, view.far_plane);
-        view.screen_from_clip = viewport(size, size);
-        view.clip_from_world = view.clip_from_view * view.view_from_world;
         map.faces.push_back(
-            render_face(casters, view, [origin](Vec3 hit) { return length(hit - origin); }));
+            perspective_face(casters, position, axis, up, 90.0f, near_plane, far_dist, size));
     }
+    return map;
+}
+
+/// Degrees added to a spot light's cone for its map, so that filtered lookups at the cone's edge
+/// stay inside the map; the map's half-angle stays under 85°.
+constexpr float k_cone_map_margin = 2.0f;
+constexpr float k_max_cone_map_half_angle = 85.0f;
+
+/// A spot light's map: one perspective face from the light along its axis, over its cone (what
+/// the light does not reach needs no map).
+std::optional<LightShadowMap> cone_map(const LightShadowView& light, const RasterScene& casters,
+                                       int size) {
+    if (casters.triangles.indices.empty() && casters.spheres.empty()) return std::nullopt;
+    LightShadowMap map;
+    map.cone = true;
+    map.origin = light.origin;
+    map.direction = normalize(light.direction);
+    map.size = size;
+    const float half = std::min(light.half_angle + k_cone_map_margin, k_max_cone_map_half_angle);
+    const float tan_half = std::tan(half * (std::numbers::pi_v<float> / 180.0f));
+    map.texel_size = 2.0f * tan_half / static_cast<float>(size);
+    const auto [nearest, far_dist] = caster_distances(map.origin, casters);
+    // A point at distance d has depth at least d · cos of the face's corner angle, whose tangent
+    // is √2 · tan(half).
+    const float near_plane =
+        std::max(0.5f * nearest, 1e-5f * far_dist) / std::sqrt(1.0f + 2.0f * tan_half * tan_half);
+    const Vec3 up = std::abs(map.direction.y) < 0.9f ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
+    map.faces.push_back(perspective_face(casters, map.origin, map.direction, up, 2.0f * half,
+                                         near_plane, far_dist, size));
     return map;
 }
 
@@ -238,11 +280,22 @@ ShadowMaps build_shadow_maps(const Scene& scene, const RasterScene& raster,
     maps.lights.resize(scene.lights.size());
     if (receivers.empty()) return maps;
     const RasterScene caster_triangles = caster_scene(raster, casters);
-    for (size_t l = 0; l < scene.lights.size(); ++l)
-        if (const auto* d = std::get_if<DirectionalLight>(&scene.lights[l]))
-            maps.lights[l] = directional_map(*d, caster_triangles, receivers, size);
-        else if (const std::optional<Vec3> at = light_position(scene.lights[l]))
-            maps.lights[l] = point_map(*at, caster_triangles, size);  // area lights: their centre
+    for (size_t l = 0; l < scene.lights.size(); ++l) {
+        const LightShadowView view = shadow_view(scene.lights[l]);
+        switch (view.projection) {
+            case ShadowProjection::parallel:
+                maps.lights[l] = directional_map(view.direction, caster_triangles, receivers, size);
+                break;
+            case ShadowProjection::cube:  // area lights: their centre
+                maps.lights[l] = point_map(view.origin, caster_triangles, size);
+                break;
+            case ShadowProjection::cone:
+                maps.lights[l] = cone_map(view, caster_triangles, size);
+                break;
+            case ShadowProjection::none:
+                break;
+        }
+    }
     return maps;
 }
 
@@ -278,7 +331,7 @@ MapLookup map_lookup(const LightShadowMap& map, Vec3 p, Vec3 n) {
 /// or +infinity outside the map.
 float caster_depth(const LightShadowMap& map, Vec3 x) {
     const ShadowMapFace& face =
-        map.directional ? map.faces.front() : map.faces[cube_face(x - map.origin)];
+        map.directional || map.cone ? map.faces.front() : map.faces[cube_face(x - map.origin)];
     const Vec4 clip = face.view.clip_from_world * Vec4(x, 1.0f);
     if (!(clip.w > 0.0f)) return k_no_caster;
     const Vec3 screen = transform_point(face.view.screen_from_clip, clip.xyz() / clip.w);
@@ -360,17 +413,17 @@ float pcss_shadow_fraction(const LightShadowMap& map, Vec3 p, Vec3 n, float ligh
     return percentage_closer(map, m, steps, radius / static_cast<float>(steps));
 }
 
-bool plane_blocks_light(const Scene& scene, const Light& light, Vec3 p) {
+bool plane_blocks_light(const Scene& scene, const LightShadowView& view, Vec3 p) {
     for (const Plane& plane : scene.planes) {
         if (!plane.casts_shadow) continue;
         const float side = dot(p - plane.point, plane.normal);
         // A point on the plane (the plane itself, as a receiver) is never behind it.
         if (!(std::abs(side) > 1e-4f * (1.0f + length(p - plane.point)))) continue;
         bool blocked = false;
-        if (const auto* d = std::get_if<DirectionalLight>(&light))
-            blocked = side * dot(-d->direction, plane.normal) < 0.0f;
-        else if (const std::optional<Vec3> at = light_position(light))
-            blocked = side * dot(*at - plane.point, plane.normal) < 0.0f;
+        if (view.projection == ShadowProjection::parallel)
+            blocked = side * dot(-view.direction, plane.normal) < 0.0f;
+        else if (view.projection != ShadowProjection::none)
+            blocked = side * dot(view.origin - plane.point, plane.normal) < 0.0f;
         if (blocked) return true;
     }
     return false;

@@ -13,6 +13,7 @@
 #include "hikari/raster/raster_scene.h"
 #include "hikari/raster/vertex_pipeline.h"
 #include "hikari/scene/scene.h"
+#include "hikari/shading/light_shadow_view.h"
 
 namespace hikari {
 
@@ -26,15 +27,17 @@ struct ShadowMapFace {
     std::vector<float> depth;
 };
 
-/// The map of one light: one orthographic face for a directional light, six 90° faces (a cube
-/// map) around a point light.
+/// The map of one light (its shadow_view, shading/lights.h): one orthographic face for a
+/// directional light, six 90° faces (a cube map) around a point light, one perspective face
+/// over a spot light's cone.
 struct LightShadowMap {
     bool directional = false;
-    Vec3 origin;     ///< a point light's position; the reference point of a directional map
-    Vec3 direction;  ///< a directional light's unit travel direction
-    int size = 0;    ///< texels per side of every face
-    /// World size of one texel: of a directional map everywhere; of a cube map at distance 1
-    /// from the light (it grows in proportion to the distance).
+    bool cone = false;  ///< one perspective face from `origin` along `direction`
+    Vec3 origin;        ///< the light's position; the reference point of a directional map
+    Vec3 direction;     ///< a directional light's unit travel direction; a cone's unit axis
+    int size = 0;       ///< texels per side of every face
+    /// World size of one texel: of a directional map everywhere; of a cube or cone map at
+    /// distance 1 from the light, on its axes (it grows in proportion to the distance).
     float texel_size = 0;
     std::vector<ShadowMapFace> faces;
 };
@@ -88,9 +91,9 @@ float pcf_shadow_fraction(const LightShadowMap& map, Vec3 p, Vec3 n);
 /// caster and receiver. A directional map or a light of radius 0 gets pcf_shadow_fraction.
 float pcss_shadow_fraction(const LightShadowMap& map, Vec3 p, Vec3 n, float light_radius);
 
-/// Whether one of `scene`'s shadow-casting planes lies between `p` and light `light`: a
-/// plane blocks a point light when the two are strictly on opposite sides, and a directional
-/// light when the ray from `p` toward the light crosses it.
-bool plane_blocks_light(const Scene& scene, const Light& light, Vec3 p);
+/// Whether one of `scene`'s shadow-casting planes lies between `p` and the light seen as `view`
+/// (shadow_view): a plane blocks a light at a point when the two are strictly on opposite
+/// sides, and a directional light when the ray from `p` toward the light crosses it.
+bool plane_blocks_light(const Scene& scene, const LightShadowView& view, Vec3 p);
 
 }  // namespace hikari

@@ -14,6 +14,7 @@
 #include "hikari/raster/cull.h"
 #include "hikari/raster/half_space.h"
 #include "hikari/raster/tile_bins.h"
+#include "hikari/shading/lights.h"
 
 namespace hikari {
 
@@ -160,11 +161,12 @@ CasterMesh caster_mesh(const TriangleSet& tris, const std::vector<uint8_t>& cast
 class VolumeBuilder {
   public:
     VolumeBuilder(const Light& light, std::vector<VolumePolygon>& out) : m_out(out) {
-        if (const auto* d = std::get_if<DirectionalLight>(&light)) {
+        const LightShadowView view = shadow_view(light);
+        if (view.projection == ShadowProjection::parallel) {
             m_directional = true;
-            m_direction = normalize(d->direction);
+            m_direction = normalize(view.direction);
         } else {
-            m_position = light_position(light).value_or(Vec3(0.0f));
+            m_position = view.origin;
         }
     }
 

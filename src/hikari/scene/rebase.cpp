@@ -40,11 +40,9 @@ Scene rebased_to_camera(Scene scene) {
     const Vec3 origin = scene.camera.eye;
     scene.camera.eye = Vec3(0.0f);
     scene.camera.look_at = minus(scene.camera.look_at, origin);
-    for (Light& light : scene.lights) {
-        if (auto* point = std::get_if<PointLight>(&light))
-            point->position = minus(point->position, origin);
-        if (auto* area = std::get_if<AreaLight>(&light)) area->corner = minus(area->corner, origin);
-    }
+    const auto same = [](Vec3 v) { return v; };
+    const LightMove move{[&](Vec3 p) { return minus(p, origin); }, same, same};
+    for (Light& light : scene.lights) move_light(light, move);
     for (Sphere& s : scene.spheres) s.center = minus(s.center, origin);
     for (Plane& p : scene.planes) p.point = minus(p.point, origin);
     for (Vec3& p : scene.triangles.positions) p = minus(p, origin);

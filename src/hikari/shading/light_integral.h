@@ -39,17 +39,6 @@ inline Pcg32 light_sample_stream(Vec3 p, size_t light) {
     return Pcg32(h, light);
 }
 
-/// One sample of an area light (uniform over its area) or an environment light (its importance
-/// density) at `s`, for the point (u, v) of the unit square.
-inline LightSample sample_extended_light(const Light& light, const SurfacePoint<float>& s,
-                                         Vec2 uv) {
-    if (const auto* area = std::get_if<AreaLight>(&light))
-        return sample_area_light<float>(*area, s.position, uv.x, uv.y);
-    if (const auto* env = std::get_if<EnvironmentLight>(&light))
-        return sample_environment(*env, s.normal, uv.x, uv.y);
-    return sample_light<float>(light, s.position);
-}
-
 /// Samples a visibility test may answer together (one packet of shadow rays).
 inline constexpr int k_light_sample_batch = 16;
 
@@ -91,7 +80,8 @@ struct SampledLights {
             pending = 0;
         };
         for (int k = 0; k < samples; ++k) {
-            const LightSample sample = sample_extended_light(light, s, pattern.next(k));
+            const LightSample sample =
+                sample_light_at(light, s.position, s.normal, pattern.next(k));
             const float cos_alpha = dot(s.normal, sample.to_light);
             if (!(cos_alpha > 0.0f) || max_component(sample.irradiance) <= 0.0f) continue;
             ++tested;
@@ -135,7 +125,7 @@ struct AnalyticAreaLights {
     Vec3 operator()(size_t l, const Light& light, const SurfacePoint<float>& s,
                     const MaterialSample<float>& m, bool specular, Visible& visible,
                     int32_t& tested) const {
-        if (const auto* area = std::get_if<AreaLight>(&light)) {
+        if (const auto* area = light_as<AreaLight>(light)) {
             const VisibleLight seen =
                 visible_light(*area, s.position, s.normal, s.geometric_normal, occluders);
             if (seen.exact) return area_light_reflection(*area, seen, l, s, m, specular, samples);

@@ -51,7 +51,7 @@ TEST(Emitters, SamplesReportTheDensityTheLookupsGive) {
             ++kinds_seen[1];
         } else if (std::abs(p.y + s.to_light.y * s.distance - 3.0f) < 1e-3f &&
                    std::abs(p.x + s.to_light.x * s.distance) < 1.0f + 1e-3f) {
-            lookup = table.area_pdf(0, s.to_light, s.distance);
+            lookup = table.light_pdf(0, n, s.to_light, s.distance);
             ++kinds_seen[2];
         } else {
             // On the emissive quad at x = 2: which triangle holds the point.

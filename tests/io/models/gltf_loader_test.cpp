@@ -335,6 +335,48 @@ TEST(GltfLoader, CamerasAndPunctualLights) {
     EXPECT_TRUE(warned);
 }
 
+/// A glTF file with one KHR_lights_punctual spot light of cone half-angles `inner`, `outer`
+/// (radians) on a node turned 90° about +x (its −Z becomes +y) at (1, 2, 3).
+std::filesystem::path spot_light_file(const TempDir& dir, double inner, double outer) {
+    GltfBuilder b;
+    const int mesh = b.mesh(triangle_primitive(b));
+    b.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    b.doc["extensions"] = {
+        {"KHR_lights_punctual",
+         {{"lights",
+           {{{"type", "spot"},
+             {"intensity", 5},
+             {"spot", {{"innerConeAngle", inner}, {"outerConeAngle", outer}}}}}}}}};
+    const double s = std::sin(std::numbers::pi / 4), c = std::cos(std::numbers::pi / 4);
+    b.scene({b.node({{"mesh", mesh}}),
+             b.node({{"translation", {1, 2, 3}},
+                     {"rotation", {s, 0, 0, c}},
+                     {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}})});
+    return b.write(dir, "spot");
+}
+
+TEST(GltfLoader, SpotLightKeepsItsCone) {
+    TempDir dir;
+    const GltfContent g = read_gltf(spot_light_file(dir, 0.25, 0.5));
+    ASSERT_EQ(g.lights.size(), 1u);
+    const auto* spot = std::get_if<SpotLight>(&g.lights[0]);
+    ASSERT_NE(spot, nullptr);
+    expect_near(spot->position, {1, 2, 3}, 1e-5f);
+    expect_near(spot->direction, {0, 1, 0}, 1e-5f);
+    expect_near(spot->intensity, {5, 5, 5}, 1e-5f);
+    EXPECT_NEAR(spot->inner_angle, 0.25 * 180 / std::numbers::pi, 1e-4);
+    EXPECT_NEAR(spot->outer_angle, 0.5 * 180 / std::numbers::pi, 1e-4);
+    for (const std::string& w : g.mesh.warnings) EXPECT_EQ(w.find("spot"), std::string::npos);
+}
+
+TEST(GltfLoader, SpotLightConeOutOfOrderIsRefused) {
+    TempDir dir;
+    EXPECT_NE(gltf_error(spot_light_file(dir, 0.5, 0.25)).find("innerConeAngle < outerConeAngle"),
+              std::string::npos);
+    EXPECT_NE(gltf_error(spot_light_file(dir, 0.1, 2.0)).find("outerConeAngle <= pi/2"),
+              std::string::npos);
+}
+
 TEST(GltfLoader, MissingBinIsNamed) {
     TempDir dir;
     GltfBuilder b;

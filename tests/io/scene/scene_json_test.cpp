@@ -160,6 +160,42 @@ TEST(SceneJson, MeshUvsKeepOnePerVertex) {
         }
 }
 
+TEST(SceneJson, SpotLightReadsItsCone) {
+    const Scene s = parse(R"({"lights": [{"type": "spot", "position": [1, 4, 1],
+        "direction": [0, -2, 0], "intensity": 3, "inner_angle": 20, "outer_angle": 30}],
+        "objects": []})");
+    ASSERT_EQ(s.lights.size(), 1u);
+    const auto& spot = std::get<SpotLight>(s.lights[0]);
+    EXPECT_EQ(spot.position, Vec3(1, 4, 1));
+    EXPECT_EQ(spot.direction, Vec3(0, -1, 0));  // normalized
+    EXPECT_EQ(spot.intensity, Vec3(3.0f));
+    EXPECT_EQ(spot.inner_angle, 20.0f);
+    EXPECT_EQ(spot.outer_angle, 30.0f);
+}
+
+TEST(SceneJson, BadSpotLightsAreRefusedWithTheirPath) {
+    const auto spot = [](const std::string& direction, const std::string& inner,
+                         const std::string& outer) {
+        return error_of(R"({"lights": [{"type": "spot", "position": [0, 1, 0], "direction": )" +
+                        direction + R"(, "intensity": 1, "inner_angle": )" + inner +
+                        R"(, "outer_angle": )" + outer + "}]}");
+    };
+    EXPECT_EQ(spot("[0, -1, 0]", "30", "20"),
+              "s.json: lights[0].outer_angle: outer_angle (20) must be at least inner_angle (30)");
+    EXPECT_EQ(spot("[0, -1, 0]", "0", "20"),
+              "s.json: lights[0].inner_angle: a spot light's half-angle must be in (0, 90] "
+              "degrees, not 0");
+    EXPECT_EQ(spot("[0, -1, 0]", "20", "95"),
+              "s.json: lights[0].outer_angle: a spot light's half-angle must be in (0, 90] "
+              "degrees, not 95");
+    EXPECT_EQ(spot("[0, 0, 0]", "20", "30"),
+              "s.json: lights[0].direction: expected a non-zero direction");
+    EXPECT_NE(error_of(R"({"lights": [{"type": "spot", "position": [0, 1, 0],
+        "direction": [0, -1, 0], "intensity": 1, "inner_angle": 20}]})")
+                  .find("outer_angle"),
+              std::string::npos);
+}
+
 TEST(SceneJson, BadUvsGiveJsonPath) {
     const std::string tri = R"({"objects": [{"type": "triangle",
         "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "uvs": )";
@@ -182,7 +218,7 @@ TEST(SceneJson, UnknownKeySuggestsTheRightOne) {
 TEST(SceneJson, UnknownNamesAreErrors) {
     EXPECT_NE(error_of(R"({"objects": [{"type": "cube"}]})").find("unknown object type"),
               std::string::npos);
-    EXPECT_NE(error_of(R"({"lights": [{"type": "spot"}], "objects": []})").find("lights[0].type"),
+    EXPECT_NE(error_of(R"({"lights": [{"type": "laser"}], "objects": []})").find("lights[0].type"),
               std::string::npos);
     EXPECT_EQ(error_of(R"({"objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1,
                                          "material": "gold"}]})"),

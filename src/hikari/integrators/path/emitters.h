@@ -4,8 +4,10 @@
 // path vertex with probability proportional to its power (an estimate of the light it sends
 // into the scene), then one point or direction on it. The densities are kept per solid angle so
 // that a direction found by BSDF sampling can be weighed against light sampling (Veach 1997,
-// multiple importance sampling).
+// multiple importance sampling). The lights' own sampling, densities and powers are theirs
+// (shading/lights.h); this table only chooses among them.
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -13,21 +15,12 @@
 
 #include "hikari/core/vec.h"
 #include "hikari/scene/scene.h"
+#include "hikari/shading/light_sample.h"
 
 namespace hikari {
 
-/// What one emitter is.
-enum class EmitterKind : uint8_t { triangle, area, environment, point, directional };
-
-/// One light sample seen from a surface point.
-struct EmitterSample {
-    Vec3 to_light;        ///< unit direction from the point toward the light
-    float distance = 0;   ///< to the sampled point; infinity for directions
-    Vec3 radiance{0.0f};  ///< L arriving from there (for a delta light: its irradiance)
-    float pdf = 0;        ///< per steradian, the choice of the emitter included; for a
-                          ///< delta light the probability of choosing it
-    bool delta = false;   ///< a point or directional light: no BSDF sample can find it
-};
+/// One light sample seen from a surface point (the lights' own, shading/light_sample.h).
+using EmitterSample = IncidentSample;
 
 class EmitterTable {
   public:
@@ -46,8 +39,9 @@ class EmitterTable {
     /// normal `n` draws the direction `dir` toward emissive triangle `triangle`, met at distance
     /// `t`.
     float triangle_pdf(uint32_t triangle, Vec3 dir, float t) const;
-    /// The same for area light `light` (an index into Scene::lights).
-    float area_pdf(size_t light, Vec3 dir, float t) const;
+    /// The same for light `light` (an index into Scene::lights) met at distance `t` from a point
+    /// with normal `n`; 0 for delta lights.
+    float light_pdf(size_t light, Vec3 n, Vec3 dir, float t) const;
     /// The same for the environment seen along `dir` from a point with normal `n`.
     float environment_pdf(Vec3 dir, Vec3 n) const;
 
@@ -57,29 +51,27 @@ class EmitterTable {
     }
 
   private:
-    /// One emitter, with what sampling it reads, in one place.
+    /// One emitter: an emissive triangle or a light of the scene.
     struct Entry {
-        EmitterKind kind;
+        bool triangle = false;
         uint32_t index;    ///< a triangle, or a light of Scene::lights
         float choice = 0;  ///< the probability of choosing it
-        // Surfaces (triangles, area lights): corner + a·edge1 + b·edge2.
+        // Triangles: corner + a·edge1 + b·edge2 (a + b ≤ 1), unit normal, area, emission.
         Vec3 corner, edge1, edge2;
-        Vec3 front{0.0f};  ///< unit normal of the emitting side
+        Vec3 front{0.0f};
         float area = 0;
-        Vec3 radiance{0.0f};  ///< emitted radiance
-        bool two_sided = false;
+        Vec3 radiance{0.0f};
     };
 
-    /// The density per solid angle of `entry`'s uniform area samples seen along unit `dir` at
-    /// distance `t`: choice · t² / (A cos θ_y); 0 from behind a one-sided face.
-    static float surface_pdf(const Entry& entry, Vec3 dir, float t);
+    /// The triangle `entry`'s sample toward `p` for the pair `u`.
+    static EmitterSample sample_triangle(const Entry& entry, Vec3 p, Vec2 u);
 
     const Scene& m_scene;
     std::vector<Entry> m_entries;
     std::vector<double> m_cdf;              ///< running sum of the entries' powers
     std::vector<int32_t> m_triangle_entry;  ///< entry of each triangle, -1: none
     std::vector<int32_t> m_light_entry;     ///< entry of each scene light, -1: none
-    int32_t m_environment_entry = -1;
+    int32_t m_environment_light = -1;       ///< the environment's index in Scene::lights
 };
 
 }  // namespace hikari

@@ -80,12 +80,11 @@ class PathIntegrator {
                     m_scene.lights, ray.origin, ray.direction, found ? hit.t : k_infinity);
                 if (face) {
                     const float w =
-                        specular
-                            ? 1.0f
-                            : power_heuristic(bsdf_pdf, m_emitters.area_pdf(
-                                                            face->light, ray.direction, face->t));
-                    sum +=
-                        throughput * std::get<AreaLight>(m_scene.lights[face->light]).radiance * w;
+                        specular ? 1.0f
+                                 : power_heuristic(bsdf_pdf,
+                                                   m_emitters.light_pdf(face->light, last_normal,
+                                                                        ray.direction, face->t));
+                    sum += throughput * face_radiance(m_scene.lights[face->light]) * w;
                     break;
                 }
             }

@@ -879,6 +879,26 @@ class GltfReader {
         m_out.cameras.push_back(std::move(out));
     }
 
+    /// A KHR_lights_punctual spot light: its cone about the node's −Z, half-angles in radians
+    /// (0 ≤ inner < outer ≤ π/2) turned into hikari's degrees; glTF's falloff between them is
+    /// left to the implementation, and hikari's is a smoothstep (scene/light.h).
+    SpotLight spot_light(const tinygltf::Light& light, const Mat4& world, Vec3 intensity,
+                         const std::string& light_at) const {
+        const double inner = light.spot.innerConeAngle, outer = light.spot.outerConeAngle;
+        if (!(inner >= 0.0 && inner < outer && outer <= std::numbers::pi / 2.0 + 1e-9))
+            fail(m_file, fmt::format("{}spot cone angles must satisfy 0 <= innerConeAngle < "
+                                     "outerConeAngle <= pi/2 (got {:g} and {:g})",
+                                     light_at, inner, outer));
+        const Vec3 d = transform_direction(world, Vec3(0.0f, 0.0f, -1.0f));
+        const float len = length(d);
+        if (!(len > 0.0f) || !std::isfinite(len))
+            fail(m_file, light_at + "its node's transform is singular");
+        SpotLight spot{transform_point(world, Vec3(0.0f)), d / len, intensity};
+        spot.inner_angle = static_cast<float>(inner * 180.0 / std::numbers::pi);
+        spot.outer_angle = std::min(static_cast<float>(outer * 180.0 / std::numbers::pi), 90.0f);
+        return spot;
+    }
+
     void add_light(const tinygltf::Node& node, const Mat4& world, const std::string& at) {
         const auto ext = node.extensions.find("KHR_lights_punctual");
         if (ext == node.extensions.end()) return;
@@ -898,9 +918,10 @@ class GltfReader {
         const Vec3 intensity = color * static_cast<float>(light.intensity);
         if (!is_finite(intensity) || intensity.x < 0 || intensity.y < 0 || intensity.z < 0)
             fail(m_file, light_at + "color × intensity must be finite and not negative");
-        if (light.type == "point" || light.type == "spot") {
-            if (light.type == "spot") ++m_spots_as_points;
+        if (light.type == "point") {
             m_out.lights.emplace_back(PointLight{transform_point(world, Vec3(0.0f)), intensity});
+        } else if (light.type == "spot") {
+            m_out.lights.emplace_back(spot_light(light, world, intensity, light_at));
         } else if (light.type == "directional") {
             const Vec3 d = transform_direction(world, Vec3(0.0f, 0.0f, -1.0f));
             const float len = length(d);
@@ -926,7 +947,6 @@ class GltfReader {
              "point or line primitives skipped (hikari draws triangles)");
         warn(m_skipped_without_positions, "primitives without POSITION skipped");
         warn(m_skipped_orthographic, "orthographic cameras skipped");
-        warn(m_spots_as_points, "spot lights read as point lights (their cones are ignored)");
     }
 
     const fs::path& m_file;
@@ -937,7 +957,6 @@ class GltfReader {
     size_t m_skipped_points_and_lines = 0;
     size_t m_skipped_without_positions = 0;
     size_t m_skipped_orthographic = 0;
-    size_t m_spots_as_points = 0;
 };
 
 }  // namespace

@@ -21,6 +21,7 @@
 #include "hikari/io/scene/default_scene.h"
 #include "hikari/io/scene/json_reader.h"
 #include "hikari/io/scene/scene_document_rebase.h"
+#include "hikari/shading/lights.h"
 
 namespace hikari {
 
@@ -238,6 +239,29 @@ DirectionalLight parse_directional_light(const JsonNode& node) {
     return {normalize(node.at("direction").as_direction()), node.at("intensity").as_colour()};
 }
 
+/// A half-angle of a spot light's cone, in degrees: in (0, 90].
+float parse_cone_angle(const JsonNode& node) {
+    const float degrees = node.as_number();
+    if (!(degrees > 0.0f && degrees <= 90.0f))
+        node.fail(
+            fmt::format("a spot light's half-angle must be in (0, 90] degrees, not {:g}", degrees));
+    return degrees;
+}
+
+SpotLight parse_spot_light(const JsonNode& node) {
+    node.expect_object(
+        {"type", "position", "direction", "intensity", "inner_angle", "outer_angle"});
+    SpotLight light{node.at("position").as_vec3(), normalize(node.at("direction").as_direction()),
+                    node.at("intensity").as_colour()};
+    light.inner_angle = parse_cone_angle(node.at("inner_angle"));
+    light.outer_angle = parse_cone_angle(node.at("outer_angle"));
+    if (light.outer_angle < light.inner_angle)
+        node.at("outer_angle")
+            .fail(fmt::format("outer_angle ({:g}) must be at least inner_angle ({:g})",
+                              light.outer_angle, light.inner_angle));
+    return light;
+}
+
 AreaLight parse_area_light(const JsonNode& node) {
     node.expect_object({"type", "corner", "edge1", "edge2", "radiance", "two_sided"});
     AreaLight light{node.at("corner").as_vec3(), node.at("edge1").as_vec3(),
@@ -291,8 +315,9 @@ EnvironmentLight parse_environment_light(const JsonNode& node, SceneBuilder& b) 
 }
 
 /// Every light kind's parser (scene/light.h): one line per kind.
-constexpr std::array<KindParser<Light, SceneBuilder>, 4> k_light_parsers = {{
+constexpr std::array<KindParser<Light, SceneBuilder>, 5> k_light_parsers = {{
     {"point", [](const JsonNode& n, SceneBuilder&) -> Light { return parse_point_light(n); }},
+    {"spot", [](const JsonNode& n, SceneBuilder&) -> Light { return parse_spot_light(n); }},
     {"directional",
      [](const JsonNode& n, SceneBuilder&) -> Light { return parse_directional_light(n); }},
     {"area", [](const JsonNode& n, SceneBuilder&) -> Light { return parse_area_light(n); }},
@@ -514,11 +539,12 @@ void parse_mesh(SceneBuilder& b, const JsonNode& node) {
     }
     // A glTF file's lights light the scene from where the transform puts them; its first camera
     // is the scene's when the scene names none.
+    const LightMove move{
+        [&](Vec3 p) { return transform_point(world_from_model, p); },
+        [&](Vec3 v) { return transform_direction(world_from_model, v); },
+        [&](Vec3 d) { return normalize(transform_direction(world_from_model, d)); }};
     for (Light light : mesh.lights) {
-        if (auto* p = std::get_if<PointLight>(&light))
-            p->position = transform_point(world_from_model, p->position);
-        if (auto* d = std::get_if<DirectionalLight>(&light))
-            d->direction = normalize(transform_direction(world_from_model, d->direction));
+        move_light(light, move);
         b.scene.lights.push_back(light);
     }
     if (!mesh.cameras.empty() && !b.file_camera) {
@@ -591,7 +617,7 @@ Scene parse_scene(std::string_view text, const std::string& file,
         bool environment = false;
         for (size_t i = 0; i < lights.value().size(); ++i) {
             b.scene.lights.push_back(parse_kind(lights.at(i), "light", k_light_parsers, b));
-            if (!std::holds_alternative<EnvironmentLight>(b.scene.lights.back())) continue;
+            if (!light_as<EnvironmentLight>(b.scene.lights.back())) continue;
             if (environment) lights.at(i).fail("a scene has at most one environment light");
             environment = true;
         }

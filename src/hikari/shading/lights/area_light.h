@@ -7,11 +7,17 @@
 // point light at its centre.
 
 #include <cmath>
+#include <numbers>
+#include <optional>
+#include <string_view>
+#include <utility>
 
+#include "hikari/core/color.h"
 #include "hikari/core/lanes.h"
 #include "hikari/core/vec.h"
 #include "hikari/scene/light.h"
 #include "hikari/shading/light_sample.h"
+#include "hikari/shading/light_shadow_view.h"
 
 namespace hikari {
 
@@ -56,5 +62,75 @@ template <class F>
 HIKARI_INLINE LightSampleT<F> sample_light(const AreaLight& light, const Vec3T<F>& p) {
     return sample_area_light<F>(light, p, F(0.5f), F(0.5f));
 }
+
+/// One stratified sample among many: uniform over the area (weight A).
+inline LightSample sample_light_at(const AreaLight& light, Vec3 p, Vec3, Vec2 uv) {
+    return sample_area_light<float>(light, p, uv.x, uv.y);
+}
+
+/// The density per solid angle, times `choice`, of uniform samples over an emitting surface of
+/// area `area` and unit normal `front` (its emitting side; both when two-sided) seen along unit
+/// `dir` at distance `t`: choice · t² / (A cos θ_y); 0 from behind a one-sided face. Area
+/// lights and emissive triangles share it.
+inline float emitting_surface_pdf(Vec3 front, float area, bool two_sided, Vec3 dir, float t,
+                                  float choice) {
+    float cos_y = -dot(front, dir);
+    if (two_sided) cos_y = std::abs(cos_y);
+    if (!(cos_y > 0.0f) || !(area > 0.0f)) return 0.0f;
+    return choice * t * t / (area * cos_y);
+}
+
+/// The light's unit emitting normal (zero for a degenerate light) and its area.
+inline std::pair<Vec3, float> area_light_frame(const AreaLight& light) {
+    const Vec3 n = light.area_normal();
+    const float len = length(n);
+    return {len > 0.0f ? n / len : Vec3(0.0f), len};
+}
+
+/// The path tracer's sample: a point uniform over the area for the pair `u`, its density per
+/// solid angle; radiance 0 where the point sees the back of a one-sided light.
+inline IncidentSample sample_incident(const AreaLight& light, Vec3 p, Vec3, Vec2 u, float choice) {
+    IncidentSample s;
+    const Vec3 y = light.corner + u.x * light.edge1 + u.y * light.edge2;
+    const Vec3 d = y - p;
+    const float r2 = dot(d, d);
+    if (!(r2 > 0.0f)) return s;
+    s.distance = std::sqrt(r2);
+    s.to_light = d / s.distance;
+    const auto [front, area] = area_light_frame(light);
+    s.pdf = emitting_surface_pdf(front, area, light.two_sided, s.to_light, s.distance, choice);
+    if (s.pdf > 0.0f) s.radiance = light.radiance;
+    return s;
+}
+
+/// The density with which sample_incident draws `dir`, met on the light at distance `t`.
+inline float incident_pdf(const AreaLight& light, Vec3, Vec3 dir, float t, float choice) {
+    const auto [front, area] = area_light_frame(light);
+    return emitting_surface_pdf(front, area, light.two_sided, dir, t, choice);
+}
+
+/// Φ = π·L·A from each emitting side.
+inline double light_power(const AreaLight& light, float) {
+    return (light.two_sided ? 2.0 : 1.0) * std::numbers::pi_v<float> * luminance(light.radiance) *
+           area_light_frame(light).second;
+}
+
+inline std::optional<Vec3> light_position(const AreaLight& light) { return light.centre(); }
+
+/// Seen from its centre (a cube map there), with half its mean edge as the radius of PCSS.
+inline LightShadowView shadow_view(const AreaLight& light) {
+    return {ShadowProjection::cube, light.centre(), Vec3(0.0f), 0.0f,
+            0.25f * (length(light.edge1) + length(light.edge2))};
+}
+
+constexpr bool is_delta(const AreaLight&) { return false; }
+constexpr std::string_view light_kind_name(const AreaLight&) { return "area"; }
+
+/// What camera, mirror and refracted rays see of the light: its face (area_light_hit).
+inline float face_hit(const AreaLight& light, Vec3 origin, Vec3 direction, float t_max) {
+    return area_light_hit(light, origin, direction, t_max);
+}
+inline Vec3 face_radiance(const AreaLight& light) { return light.radiance; }
+constexpr bool has_face(const AreaLight&) { return true; }
 
 }  // namespace hikari
