@@ -7,6 +7,7 @@
 #include "hikari/core/image.h"
 #include "hikari/frame/film.h"
 #include "hikari/frame/framebuffer.h"
+#include "hikari/scene/scene.h"
 #include "render_options.h"
 
 namespace hikari::cli {
@@ -19,8 +20,9 @@ Film output_film(const Camera& camera, const std::string& output, const RenderOp
 /// throws Interrupted): an AOV buffer as a picture (frame/aov_picture.h) where the file holds
 /// display values, else as its values; a colour render developed as --exposure and --tonemap ask
 /// (the tone map only where the file holds display values; float files keep radiance), at
-/// --bit-depth.
-void write_output(const std::string& output, Framebuffer&& fb, const RenderOptions& o);
+/// --bit-depth. `scene`: the scene rendered (its infinite planes do not stretch a depth picture).
+void write_output(const std::string& output, Framebuffer&& fb, const RenderOptions& o,
+                  const Scene& scene);
 
 /// `--progressive`: the image so far written over `output` (atomically, as every image is: a
 /// viewer watching the file sees the old image or the new one, never half of one).
