@@ -296,8 +296,7 @@ void plan_depth_sort(Gallery& g) {
           "depth-sort-cyclic-paint-order.png", "depth-sort-cyclic.json",
           {"-m", "depthsort", "--aov", "paint-order"})
         .make = [](const Gallery& g, Figure& f) {
-        render_with_legend(g, f, {"painted first", "最初に描画"},
-                           {"painted last (polygon {:.0f})", "最後に描画（{:.0f}枚目）"});
+        render_with_legend(g, f, {"painted first", "最初に描画"}, {"painted last", "最後に描画"});
     };
     g.files["u-polygon.obj"] = concave_polygon_obj();
     g.scene_files["depth-sort-concave.json"] = concave_polygon_scene("u-polygon.obj", g.width);

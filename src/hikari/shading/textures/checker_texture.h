@@ -33,7 +33,8 @@ inline float square_wave_integral(float x) {
 /// colour instead of beating into moiré; w = 0 is the sharp wave.
 inline float filtered_square_wave(float x, float w) {
     const float sharp = floor_parity(x) != 0 ? -1.0f : 1.0f;
-    if (!(w > 1e-4f)) return sharp;
+    // A box inside one cell averages the cell's own value: exactly, not by rounding.
+    if (!(w > 1e-4f) || std::floor(x - 0.5f * w) == std::floor(x + 0.5f * w)) return sharp;
     if (w >= 2.0f * 65536.0f) return 0.0f;
     const float r = x - 2.0f * std::floor(0.5f * x);  // the same phase, near 0 where precise
     return (square_wave_integral(r + 0.5f * w) - square_wave_integral(r - 0.5f * w)) / w;
