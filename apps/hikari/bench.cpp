@@ -8,6 +8,7 @@
 
 #include "cli_options.h"
 #include "console.h"
+#include "data_folder.h"
 #include "hikari/bench/bench_runner.h"
 #include "hikari/bench/path_bench.h"
 #include "hikari/bench/raster_bench.h"
@@ -33,7 +34,7 @@ int run_path_bench_command(const BenchOptions& o) {
             "B5 renders a scene: --mesh, --packets, --simd, --shadow and --output are for B1, B2 "
             "and B4");
     const std::string file =
-        o.scene.empty() ? std::string(HIKARI_SOURCE_DIR) + "/scenes/bench/cornell.json" : o.scene;
+        o.scene.empty() ? (data_folder() / "scenes" / "bench" / "cornell.json").string() : o.scene;
     std::vector<std::string> warnings;
     const Scene scene = load_scene_file(file, warnings);
     for (const std::string& w : warnings) print_err("hikari: warning: {}\n", w);

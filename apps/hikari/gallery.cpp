@@ -18,8 +18,10 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "data_folder.h"
 #include "gallery_figures.h"
 #include "hikari/core/error.h"
+#include "hikari/frame/aov_picture.h"
 #include "hikari/io/files/atomic_file.h"
 #include "hikari/io/files/read_file.h"
 #include "hikari/io/images/image_read.h"
@@ -124,6 +126,22 @@ std::string label(const std::string& figure, bool japanese) {
     return figure;
 }
 
+/// A false-colour figure's key: ramp_colour (frame/aov_picture.h) as a CSS gradient, its two
+/// ends labelled; empty for other figures.
+std::string legend_html(const Figure& f, bool japanese) {
+    if (f.legend_high.en.empty()) return "";
+    std::string stops;
+    for (int k = 0; k <= 10; ++k) {
+        const Vec3 c = ramp_colour(static_cast<float>(k) / 10.0f);  // display values
+        stops += fmt::format(", rgb({:.0f},{:.0f},{:.0f})", 255 * c.x, 255 * c.y, 255 * c.z);
+    }
+    return fmt::format(
+        "<div class=\"legend\" role=\"img\" aria-label=\"{0} to {1}\"><div "
+        "style=\"background: linear-gradient(to right{2})\"></div><span>{0}</span><span>{1}</span>"
+        "</div>",
+        html_escape(f.legend_low.in(japanese)), html_escape(f.legend_high.in(japanese)), stops);
+}
+
 /// One figure of the contact sheet: the image, its caption, the commands that make it.
 std::string figure_html(const Figure& f, bool japanese) {
     std::string commands;
@@ -131,13 +149,14 @@ std::string figure_html(const Figure& f, bool japanese) {
     const std::string& note = f.note.in(japanese);
     const std::string& caption = f.title.in(japanese);
     return fmt::format(
-        "<figure><a href=\"{0}\"><img src=\"{0}\" alt=\"{1}: {2}\"></a><figcaption><b>{1}</b>: "
+        "<figure><a href=\"{0}\"><img src=\"{0}\" alt=\"{1}: {2}\"></a>{6}<figcaption><b>{1}</b>: "
         "{2}{3}{4}<br>{5}</figcaption></figure>\n",
         html_escape(f.image), html_escape(label(f.figure, japanese)), html_escape(caption),
         note.empty() ? "" : "<br><i>" + html_escape(note) + "</i>", commands,
         fmt::format(fmt::runtime(japanese ? "実行時間 {:.2f} 秒（読み込み・描画・書き出し）"
                                           : "{:.2f} s run (load, render, write)"),
-                    f.seconds));
+                    f.seconds),
+        legend_html(f, japanese));
 }
 
 constexpr const char* k_style = R"(<style>
@@ -148,6 +167,8 @@ figure { margin: 0; width: 260px; background: #fff; padding: 6px; border: 1px so
 figure img { width: 100%; image-rendering: auto; }
 figcaption { font-size: 12px; }
 code { font-size: 11px; word-break: break-all; color: #444; }
+.legend { font-size: 11px; display: flex; flex-wrap: wrap; justify-content: space-between; }
+.legend div { width: 100%; height: 10px; border: 1px solid #999; }
 </style></head><body>
 )";
 
@@ -242,9 +263,8 @@ int run_gallery(const GalleryOptions& o, const std::string& program) {
     g.width = o.width;
     g.threads = o.threads;
     g.japanese = o.lang == "ja";
-    const fs::path model = o.model.empty()
-                               ? fs::path(HIKARI_SOURCE_DIR) / "scenes" / "models" / "teapot.obj"
-                               : fs::path(o.model);
+    const fs::path model = o.model.empty() ? cli::data_folder() / "scenes" / "models" / "teapot.obj"
+                                           : fs::path(o.model);
     // A model that does not load: nothing made.
     const PlacedModel placed = place_model(model, model.filename().string());
     plan(g, placed);

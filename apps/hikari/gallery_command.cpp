@@ -12,7 +12,8 @@ CLI::App* add_gallery_command(CLI::App& app, GalleryOptions& g) {
     gallery->add_option("-o,--output", g.dir, "Directory for the images, scenes and index.html")
         ->capture_default_str();
     gallery->add_option("--model", g.model,
-                        "Mesh for Fig 4.1 and the others (OBJ; default: the repository's teapot)");
+                        "Mesh for Fig 4.1 and the others (OBJ; default: the teapot hikari ships, "
+                        "scenes/models/teapot.obj)");
     gallery->add_option("--width", g.width, "Image width in pixels")
         ->check(whole_in(16, 4096))
         ->capture_default_str();

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "data_folder.h"
 #include "hikari/core/error.h"
 #include "hikari/io/files/read_file.h"
 #include "hikari/io/images/image_read.h"
@@ -24,9 +25,10 @@ namespace {
 
 Json vec(float x, float y, float z) { return {x, y, z}; }
 
-/// A repository scene (scenes/NAME) to copy into the gallery, or an error naming it.
+/// A scene hikari ships (scenes/NAME, data_folder.h) to copy into the gallery, or an error naming
+/// it.
 Json repository_scene(const std::string& name) {
-    const fs::path path = fs::path(HIKARI_SOURCE_DIR) / "scenes" / name;
+    const fs::path path = cli::data_folder() / "scenes" / name;
     try {
         return Json::parse(read_file_bytes(path));
     } catch (const std::exception& e) {
@@ -175,6 +177,25 @@ void render_term_sum(const Gallery& g, Figure& f) {
               fmt::format("(a) + (b) + (c) = (d)：.pfm での最大の差 {:.1e}", worst)};
 }
 
+/// The largest value of a raw AOV buffer (a .pfm of counts or paint positions).
+float largest_value(const fs::path& pfm) {
+    float most = 0.0f;
+    for (const Vec3& v : read_image(pfm).pixels) most = std::max(most, v.x);
+    return most;
+}
+
+/// A false-colour figure (--aov overdraw, paint-order): the picture, and its legend's ends from
+/// the same render's raw values (.pfm: the counts themselves).
+void render_with_legend(const Gallery& g, Figure& f, Text low, Text high_format) {
+    render_plain(g, f);
+    const std::string pfm = "data/" + fs::path(f.image).stem().string() + ".pfm";
+    g.render(f.scene, f.args, pfm);
+    const float most = largest_value(g.dir / pfm);
+    f.legend_low = std::move(low);
+    f.legend_high = {fmt::format(fmt::runtime(high_format.en), most),
+                     fmt::format(fmt::runtime(high_format.ja), most)};
+}
+
 // ---- The figures, section by section ---------------------------------------------------------
 
 const Text k_fig41 = {"Fig 4.1: what rendering draws", "図4.1: 3次元モデルの写実的表現"};
@@ -267,6 +288,16 @@ void plan_depth_sort(Gallery& g) {
         g.add(s, fig, naive, stem + "-naive.png", file, {"-m", "depthsort-naive"});
         g.add(s, fig, right, stem + ".png", file, {"-m", "depthsort"});
     }
+    g.add(s, "Fig 4.9a",
+          {"depthsort's paint order (--aov paint-order): the polygon each pixel shows, by when "
+           "it was painted; stripes mark pieces of the split bar",
+           "depthsort の描画順（--aov paint-order）：各画素に見えるポリゴンを描いた順に色分け"
+           "（縞は分割された棒の断片）"},
+          "depth-sort-cyclic-paint-order.png", "depth-sort-cyclic.json",
+          {"-m", "depthsort", "--aov", "paint-order"})
+        .make = [](const Gallery& g, Figure& f) {
+        render_with_legend(g, f, {"painted first", "最初に描画"}, {"painted last", "最後に描画"});
+    };
     g.files["u-polygon.obj"] = concave_polygon_obj();
     g.scene_files["depth-sort-concave.json"] = concave_polygon_scene("u-polygon.obj", g.width);
     g.add(s, "Fig 4.9c",
@@ -290,6 +321,13 @@ void plan_hidden_surfaces(Gallery& g) {
     g.add(s, "Alg 4.2", {"Z-buffer hidden-surface removal", "Zバッファ法による隠面消去"},
           "alg4-2-zbuffer.png", "model.json", {"-m", "zbuffer", "--shadows", "none"})
         .make = render_zbuffer;
+    g.add(s, "Alg 4.2",
+          {"overdraw: fragments depth-tested per pixel (--aov overdraw)",
+           "オーバードロー：画素ごとの奥行き比較の回数（--aov overdraw）"},
+          "alg4-2-overdraw.png", "model.json", {"-m", "zbuffer", "--aov", "overdraw"})
+        .make = [](const Gallery& g, Figure& f) {
+        render_with_legend(g, f, {"1 fragment", "1回"}, {"{:.0f} fragments", "{:.0f}回"});
+    };
     g.add(s, "Fig 4.14",
           {"the Z-buffer itself: eye distance per pixel, near white, far black",
            "Zバッファの中身：画素ごとの視点からの距離（近：白、遠：黒）"},

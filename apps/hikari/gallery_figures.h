@@ -35,6 +35,10 @@ struct Figure {
     std::vector<std::string> commands;
     /// Renders the figure when it is more than one plain render (default: one render).
     std::function<void(const Gallery&, Figure&)> make;
+    /// A false-colour figure's key (`--aov overdraw`, `paint-order`): the colour ramp from
+    /// frame/aov_picture.h's ramp_colour, `low` at its dark blue end and `high` at its white
+    /// end (filled while rendering); empty `high`: no legend.
+    Text legend_low, legend_high;
 };
 
 /// The gallery being made: where it goes, how to render, the figures and the files they use.

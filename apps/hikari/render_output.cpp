@@ -38,7 +38,8 @@ Film output_film(const Camera& camera, const std::string& output, const RenderOp
     return Film(camera, srgb8 ? FilmFormat::srgb8 : FilmFormat::linear);
 }
 
-void write_output(const std::string& output, Framebuffer&& fb, const RenderOptions& o) {
+void write_output(const std::string& output, Framebuffer&& fb, const RenderOptions& o,
+                  const Scene& scene) {
     if (render_control().cancel.load()) throw Interrupted();
     const ImageWriteSettings settings = image_write_settings(o);
     if (fb.film.format() == FilmFormat::srgb8)
@@ -46,7 +47,8 @@ void write_output(const std::string& output, Framebuffer&& fb, const RenderOptio
     else if (is_colour_aov(o.aov))
         write_colour(output, aov_image(std::move(fb), o.aov), o);
     else if (is_picture_file(output))
-        write_image(output, aov_picture(fb, o.aov, depth_range(o)), settings);
+        write_image(output, aov_picture(fb, o.aov, depth_range(o), unbounded_primitives(scene)),
+                    settings);
     else
         write_image(output, aov_image(std::move(fb), o.aov), settings);
 }

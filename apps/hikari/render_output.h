@@ -20,8 +20,9 @@ Film output_film(const Camera& camera, const std::string& output, const RenderOp
 /// throws Interrupted): an AOV buffer as a picture (frame/aov_picture.h) where the file holds
 /// display values, else as its values; a colour render developed as --exposure and --tonemap ask
 /// (the tone map only where the file holds display values; float files keep radiance), at
-/// --bit-depth.
-void write_output(const std::string& output, Framebuffer&& fb, const RenderOptions& o);
+/// --bit-depth. `scene`: the scene rendered (its infinite planes do not stretch a depth picture).
+void write_output(const std::string& output, Framebuffer&& fb, const RenderOptions& o,
+                  const Scene& scene);
 
 /// `--formulas`: the workbook of io/images/xlsx_formulas_write.h for `scene` (the scene as the
 /// render would see it) written to `output`. Throws InputError naming what the formulas cannot

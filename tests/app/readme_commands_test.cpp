@@ -76,4 +76,19 @@ TEST(ReadmeCommands, EveryBlockOfTheClassroomGuideRuns) {
     fs::remove_all(dir);
 }
 
+/// Every image of the README and docs/ has alt text: `![what it shows](file)`, never `![](file)`
+/// (a reader who cannot see the picture is told what it shows).
+TEST(ReadmeCommands, EveryImageHasAltText) {
+    std::vector<fs::path> pages = {fs::path(HIKARI_SOURCE_DIR) / "README.md"};
+    for (const auto& entry : fs::directory_iterator(fs::path(HIKARI_SOURCE_DIR) / "docs"))
+        if (entry.path().extension() == ".md") pages.push_back(entry.path());
+    const std::regex image(R"(!\[\s*\]\(|<img(?![^>]*\balt="[^"]+")[^>]*>)");
+    for (const fs::path& page : pages) {
+        const std::string text = read_text(page);
+        std::smatch m;
+        EXPECT_FALSE(std::regex_search(text, m, image))
+            << page << ": an image without alt text at byte " << m.position(0);
+    }
+}
+
 }  // namespace

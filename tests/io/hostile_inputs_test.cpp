@@ -170,8 +170,12 @@ TEST_F(HostileObj, IndicesAreParsedExactly) {
         "' is not a corner (v, v/vt, v//vn or v/vt/vn, each a nonzero index of at most 10 digits "
         "that fits in 32 bits)";
     for (const std::string index :
-         {"2147483648", "4294967299", "12345678901234567890", "3abc", "-2147483648", "0", "+3"})
+         {"2147483648", "4294967299", "12345678901234567890", "3abc", "-2147483648", "+3"})
         EXPECT_EQ(obj_error("f 1 2 " + index + "\n"), at(4) + ": 'f': '" + index + corner);
+    EXPECT_EQ(obj_error("f 1 2 0\n"), at(4) +
+                                          ": 'f': '0' uses index 0; OBJ indices start at 1 "
+                                          "(the first 'v' line is 1, and -1 is the last one "
+                                          "read so far)");
     EXPECT_EQ(obj_error("f 1 2 -4\n"),
               at(4) + ": a relative vertex index points before the first vertex");
     EXPECT_EQ(obj_error("f 1 2 9\n"),

@@ -52,19 +52,34 @@ Vec3 index_colour(uint32_t i) {
     return hue_colour(static_cast<float>(std::fmod(0.618033988749895 * i, 1.0)));
 }
 
-std::optional<DepthRange> visible_depth_range(const Framebuffer& fb) {
-    float lo = k_infinity, hi = -k_infinity;
-    for (const float d : fb.depth)
-        if (std::isfinite(d)) lo = std::min(lo, d), hi = std::max(hi, d);
+std::optional<DepthRange> visible_depth_range(const Framebuffer& fb,
+                                              std::span<const PrimitiveId> unbounded) {
+    const bool have_ids = fb.id.size() == fb.depth.size();
+    float lo = k_infinity, hi = -k_infinity, hi_bounded = -k_infinity;
+    for (size_t i = 0; i < fb.depth.size(); ++i) {
+        const float d = fb.depth[i];
+        if (!std::isfinite(d)) continue;
+        lo = std::min(lo, d), hi = std::max(hi, d);
+        // The id buffer holds 1 + the primitive id.
+        if (!have_ids || std::ranges::find(unbounded, fb.id[i] - 1) == unbounded.end())
+            hi_bounded = std::max(hi_bounded, d);
+    }
     if (!(lo <= hi)) return std::nullopt;
-    return DepthRange{lo, hi};
+    return DepthRange{lo, lo <= hi_bounded ? hi_bounded : hi};
 }
 
-Image aov_picture(const Framebuffer& fb, Aov aov, std::optional<DepthRange> range) {
+std::vector<PrimitiveId> unbounded_primitives(const Scene& scene) {
+    std::vector<PrimitiveId> ids;
+    for (const Plane& plane : scene.planes) ids.push_back(plane.id);
+    return ids;
+}
+
+Image aov_picture(const Framebuffer& fb, Aov aov, std::optional<DepthRange> range,
+                  std::span<const PrimitiveId> unbounded) {
     const size_t pixels = static_cast<size_t>(fb.width()) * static_cast<size_t>(fb.height());
     if (fb.depth.size() != pixels)
         throw std::invalid_argument("aov_picture: the render kept colour only");
-    if (!range) range = visible_depth_range(fb);
+    if (!range) range = visible_depth_range(fb, unbounded);
     Image out(fb.width(), fb.height());
     for (size_t i = 0; i < pixels; ++i) {
         Vec3 v(0.0f);

@@ -42,6 +42,13 @@ struct RenderStats {
     std::atomic<uint64_t> raster_fragments{0};
     std::atomic<uint64_t> raster_covered_pixels{0};  ///< pixels that show a triangle
     std::atomic<uint64_t> depth_sort_splits{0};      ///< polygons cut by the depth sort
+    /// The raster methods' shadow pass before shading (maps, volumes or the analytic occluders),
+    /// apart from the render of the picture: its wall time, and the map faces and their texels
+    /// it drew (a point light's cube map is six faces) or the shadow-volume stencils it counted.
+    std::atomic<uint64_t> shadow_pass_us{0};
+    std::atomic<uint64_t> shadow_map_faces{0};
+    std::atomic<uint64_t> shadow_map_texels{0};
+    std::atomic<uint64_t> shadow_volume_stencils{0};
 };
 
 /// How a method decides whether a light reaches a point (`--shadows`, the lecture's Fig 4.24).

@@ -1,6 +1,7 @@
 #include "hikari/raster/shade_visibility.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <optional>
 #include <utility>
@@ -114,9 +115,6 @@ float light_fraction(const ShadeContext& ctx, size_t l, const ShadowQuery& q) {
                 visible_light(*area, q.point, q.ng, q.ng, nullptr).cosine_solid_angle;
             if (!(open > 0.0f)) return 1.0f;
             const VisibleLight seen = visible_light(*area, q.point, q.ng, q.ng, ctx.occluders);
-            if (!seen.exact)
-                return sampled_light_fraction(*area, q.point, q.ng, q.ng, *ctx.occluders,
-                                              ctx.light_samples);
             return seen.cosine_solid_angle / open;
         }
         if (plane_blocks_light(ctx.scene, shadow_view(light), q.point)) return 0.0f;
@@ -178,6 +176,7 @@ Vec3 shade_point(const ShadeContext& ctx, uint32_t material, Vec3 p, Vec3 n, Vec
     s.to_eye = to_eye;
     s.u = tex.uv.x, s.v = tex.uv.y;
     s.du_dx = tex.du_dx, s.dv_dx = tex.dv_dx, s.du_dy = tex.du_dy, s.dv_dy = tex.dv_dy;
+    s.dp_dx = tex.dp_dx, s.dp_dy = tex.dp_dy;
     s.vertex_colour = vertex_colour;
     const MaterialSample<float> m =
         evaluate_material<float>(ctx.scene.materials.data(), static_cast<int32_t>(material), s);
@@ -195,6 +194,30 @@ Vec3 facing(Vec3 n, bool entering, Vec3 ng_front, Vec3 view_dir) {
     if (!(len2 > 0.0f)) return ng_front;
     n = (entering ? n : -n) / std::sqrt(len2);
     return dot(n, view_dir) > 0.0f ? ng_front : n;
+}
+
+/// Where the camera ray of pixel (x + dx, y + dy) meets the plane through `p` with normal `n`,
+/// less p: the point's step per pixel on the surface (0 where that ray runs along the plane).
+Vec3 tangent_plane_step(const ShadeContext& ctx, Vec3 p, Vec3 n, int x, int y, int dx, int dy) {
+    const Ray r = camera_ray(ctx.frame, x + dx + 0.5f, y + dy + 0.5f);
+    const float denominator = dot(n, r.direction);
+    if (denominator == 0.0f) return Vec3(0.0f);
+    const Vec3 step = r.at(dot(p - r.origin, n) / denominator) - p;
+    return std::isfinite(step.x + step.y + step.z) ? step : Vec3(0.0f);
+}
+
+/// --stats: the shadow pass's time, and the maps' faces and texels or the volumes' stencils.
+void report_shadow_pass(const ShadowMaps& maps, const std::vector<std::vector<uint8_t>>& in_volume,
+                        std::chrono::steady_clock::time_point start, RenderStats& stats) {
+    const auto elapsed = std::chrono::steady_clock::now() - start;
+    stats.shadow_pass_us += std::chrono::duration_cast<std::chrono::microseconds>(elapsed).count();
+    for (const std::optional<LightShadowMap>& map : maps.lights) {
+        if (!map) continue;
+        stats.shadow_map_faces += map->faces.size();
+        stats.shadow_map_texels += map->faces.size() * size_t(map->size) * size_t(map->size);
+    }
+    for (const std::vector<uint8_t>& stencil : in_volume)
+        if (!stencil.empty()) ++stats.shadow_volume_stencils;
 }
 
 /// What the centre of pixel (x, y) sees of source triangle `src`.
@@ -221,6 +244,11 @@ PixelSurface surface_at(const ShadeContext& ctx, uint32_t src, int x, int y) {
         s.tex =
             perspective_uv(clip, {ctx.tris.uvs[idx[0]], ctx.tris.uvs[idx[1]], ctx.tris.uvs[idx[2]]},
                            ndc_x, ndc_y, ctx.width, ctx.height);
+    }
+    if (ctx.scene.materials[ctx.tris.material[src]].texture) {
+        const Vec3 n = face_normal(s.p[0], s.p[1], s.p[2]);
+        s.tex.dp_dx = tangent_plane_step(ctx, s.point, n, x, y, 1, 0);
+        s.tex.dp_dy = tangent_plane_step(ctx, s.point, n, x, y, 0, 1);
     }
     if (!ctx.tris.colors.empty() && ctx.scene.materials[ctx.tris.material[src]].vertex_colours)
         for (int k = 0; k < 3; ++k) s.c[k] = ctx.tris.colors[idx[k]];
@@ -291,6 +319,7 @@ PixelUv sphere_pixel_uv(const ShadeContext& ctx, const Sphere& s, Vec3 p, Vec3 n
         return denominator == 0.0f ? Vec3(0.0f) : r.at(dot(p - r.origin, n) / denominator) - p;
     };
     const Vec3 along_x = step(1, 0), along_y = step(0, 1);
+    out.dp_dx = along_x, out.dp_dy = along_y;
     out.du_dx = dot(su.du_dp, along_x), out.dv_dx = dot(su.dv_dp, along_x);
     out.du_dy = dot(su.du_dp, along_y), out.dv_dy = dot(su.dv_dp, along_y);
     return out;
@@ -505,6 +534,7 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
     ShadowMaps maps;
     std::vector<std::vector<uint8_t>> in_volume;
     std::shared_ptr<const OccluderSet> occluders;
+    const auto shadow_pass_start = std::chrono::steady_clock::now();
     if (ctx.shadows == ShadowMode::analytic) {
         occluders = shadow_occluders(scene, settings.cache);
         ctx.occluders = occluders.get();
@@ -532,6 +562,8 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
         }
         ctx.in_volume = &in_volume;
     }
+    if (settings.stats && ctx.shadows != ShadowMode::none)
+        report_shadow_pass(maps, in_volume, shadow_pass_start, *settings.stats);
     for_each_tile(vis.width, vis.height, settings.control,
                   [&](const Tile& tile) { shade_tile(ctx, vis, tile, fb); });
     return fb;

@@ -31,6 +31,8 @@ struct PixelUv {
     Vec2 uv;
     float du_dx = 0, dv_dx = 0;  ///< per step to the right (x + 1)
     float du_dy = 0, dv_dy = 0;  ///< per step down (y + 1, rows counted from the top)
+    /// The surface point's world-space steps along x and y (SurfacePoint::dp_dx, dp_dy).
+    Vec3 dp_dx{0.0f}, dp_dy{0.0f};
 };
 
 /// The perspective-correct (u, v) of the point of the clip-space triangle `clip` with corner

@@ -114,9 +114,8 @@ inline Vec3 area_light_reflection(const AreaLight& light, const VisibleLight& se
 }
 
 /// Area lights analytically (`--shadows analytic`): the part of the light not hidden by
-/// `occluders` (Nishita & Nakamae 1983), then area_light_reflection. Environment lights, and
-/// area lights behind more than k_max_analytic_occluders occluders, are sampled as
-/// SampledLights does.
+/// `occluders` (Nishita & Nakamae 1983), then area_light_reflection. Environment lights are
+/// sampled as SampledLights does.
 struct AnalyticAreaLights {
     int samples = 1;
     const OccluderSet* occluders = nullptr;
@@ -128,7 +127,7 @@ struct AnalyticAreaLights {
         if (const auto* area = light_as<AreaLight>(light)) {
             const VisibleLight seen =
                 visible_light(*area, s.position, s.normal, s.geometric_normal, occluders);
-            if (seen.exact) return area_light_reflection(*area, seen, l, s, m, specular, samples);
+            return area_light_reflection(*area, seen, l, s, m, specular, samples);
         }
         return SampledLights{samples}(l, light, s, m, specular, visible, tested);
     }

@@ -20,6 +20,10 @@ struct SurfacePoint {
     /// derivatives; the ray tracer a ray cone's width (isotropic: du_dx = dv_dy, the others 0).
     /// All 0: sample the finest level.
     F du_dx = F(0.0f), dv_dx = F(0.0f), du_dy = F(0.0f), dv_dy = F(0.0f);
+    /// The same footprint in world space: how far the point moves per pixel step along two
+    /// directions on the surface (the ray tracer: the cone's long and short axes), what a solid
+    /// texture (the checker) is box-filtered over. 0: a point, no filtering.
+    Vec3T<F> dp_dx = Vec3T<F>(F(0.0f)), dp_dy = Vec3T<F>(F(0.0f));
     /// The vertex colour interpolated at the point (white where the mesh has none); a material
     /// with vertex_colours multiplies ka and kd by it.
     Vec3T<F> vertex_colour = Vec3T<F>(F(1.0f));

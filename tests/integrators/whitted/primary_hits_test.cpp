@@ -227,7 +227,10 @@ void expect_same_framebuffer(const Framebuffer& a, const Framebuffer& b) {
 }
 
 TEST(PrimaryHits, WhittedRenderEqualsTheRecursiveOracle) {
-    const Scene scene = parse(b3_scene_json(203, 117));
+    Scene scene = parse(b3_scene_json(203, 117));
+    // The checker off: the product box-filters it over each ray's cone, which the recursive
+    // oracle does not trace (the filter has tests of its own, the scene's render a pin).
+    for (Material& m : scene.materials) m.texture.reset();
     expect_same_framebuffer(render_whitted(scene, Film(scene.camera)),
                             testing::render_whitted_recursive(scene));
 }

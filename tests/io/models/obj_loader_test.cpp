@@ -26,7 +26,7 @@ TEST(ObjLoader, FaceIndicesAreParsedExactly) {
     // tinyobjloader reads indices with atoi: 2^32 + 3 would wrap to 3, "3abc" would be 3.
     TempDir dir;
     for (const char* corner : {"4294967299", "2147483648", "3abc", "12345678901234567890",
-                               "-99999999999", "0", "1/2/3/4", "2/", "+3", "1.5"}) {
+                               "-99999999999", "1/2/3/4", "2/", "+3", "1.5"}) {
         SCOPED_TRACE(corner);
         write_text(dir / "bad.obj",
                    std::string(k_obj_quad) + "vt 0 0\nvn 0 0 1\n\nf 1 2 " + corner + "\n");
@@ -38,6 +38,21 @@ TEST(ObjLoader, FaceIndicesAreParsedExactly) {
     write_text(dir / "good.obj",
                std::string(k_obj_quad) + "vt 0 0\nvn 0 0 1\nf 1/1/1 2//1 -1/1 4\n");
     EXPECT_EQ(obj_load_error(dir / "good.obj"), "");
+}
+
+TEST(ObjLoader, IndexZeroIsExplained) {
+    // A 0-based writer's mistake: the message says where OBJ indices start.
+    TempDir dir;
+    for (const char* corner : {"0", "1/0", "1//0", "-0"}) {
+        SCOPED_TRACE(corner);
+        write_text(dir / "zero.obj",
+                   std::string(k_obj_quad) + "vt 0 0\nvn 0 0 1\n\nf 1 2 " + corner + "\n");
+        const std::string e = obj_load_error(dir / "zero.obj");
+        EXPECT_NE(e.find("zero.obj:8: 'f': '" + std::string(corner) +
+                         "' uses index 0; OBJ indices start at 1"),
+                  std::string::npos)
+            << e;
+    }
 }
 
 /// The colour `mesh` gives the vertex at `position` (every vertex there has the same one).

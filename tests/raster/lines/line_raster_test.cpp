@@ -62,6 +62,26 @@ TEST(LineRaster, AxisAlignedCoverageIsExact) {
     EXPECT_NEAR(line_coverage(1.0f, 5.0f, 10.0f, 2.0f, r, r), 0.5f, 1e-6f);
 }
 
+TEST(LineRaster, OcclusionHidesEachSegmentForItself) {
+    // Two segments on the same pixels (a sphere's back and front equator seen edge-on), the
+    // hidden one (some 200 units away) drawn last, over surfaces 30 units from the eye: the
+    // front one (at most 25 away) shows on every pixel of its row, the back one on none.
+    LineDrawing d = drawing(20, 20, 1.0f);
+    d.segments.push_back(segment({0, 10.5f}, {20, 10.5f}));
+    LineSegment behind = segment({0, 10.5f}, {20, 10.5f}, Vec3(1, 0, 0));
+    behind.world_a.z = behind.world_b.z = -200;
+    d.segments.push_back(behind);
+    const std::vector<float> surface(20 * 20, 30.0f);
+    const Framebuffer fb =
+        rasterize_lines(d, Film(20, 20, FilmFormat::linear), false, {surface, 0.01f});
+    for (int x = 0; x < 20; ++x) EXPECT_EQ(fb.film.linear().pixels[10 * 20 + x], Vec3(1.0f)) << x;
+    // Without the front segment nothing is drawn.
+    d.segments.erase(d.segments.begin());
+    const Framebuffer hidden =
+        rasterize_lines(d, Film(20, 20, FilmFormat::linear), false, {surface, 0.01f});
+    EXPECT_DOUBLE_EQ(coverage_sum(hidden), 0.0);
+}
+
 TEST(LineRaster, LaterSegmentsGoOverEarlierOnesInSrgb) {
     LineDrawing d = drawing(20, 20, 2.0f);
     d.background = Vec3(0.0f, 1.0f, 0.0f);

@@ -200,8 +200,9 @@ TEST(AreaLight, VisiblePiecesAnswerWhichLightPointsAreSeen) {
     EXPECT_GE(agree, total - 4);  // only points on the shadow's edge may differ
 }
 
-TEST(AreaLight, DenseOccludersAreSampledInstead) {
-    // A checkerboard of 2 x 200 small triangles between the point and the light.
+TEST(AreaLight, DenseOccludersAreIntegratedExactly) {
+    // A checkerboard of 2 x 200 small triangles between the point and the light: more than
+    // k_max_cut_occluders, so their union is integrated over its boundary.
     const AreaLight light = square_light(1, 2);
     std::vector<Vec3> positions;
     std::vector<std::array<uint32_t, 3>> indices;
@@ -219,7 +220,7 @@ TEST(AreaLight, DenseOccludersAreSampledInstead) {
     const OccluderSet occluders(positions, indices, {}, {}, {});
     const Vec3 up(0, 1, 0), p(0.1f, 0, 0.05f);
     const VisibleLight seen = visible_light(light, p, up, up, &occluders);
-    EXPECT_FALSE(seen.exact);
+    const float whole = visible_light(light, p, up, up, nullptr).cosine_solid_angle;
     // Brute force: the cosine-weighted share of light points whose segment misses every square.
     double open = 0, visible = 0;
     constexpr int n = 300;
@@ -235,7 +236,46 @@ TEST(AreaLight, DenseOccludersAreSampledInstead) {
             open += w;
             visible += blocked ? 0 : w;
         }
-    EXPECT_NEAR(sampled_light_fraction(light, p, up, up, occluders, 1024), visible / open, 0.02);
+    // 300 x 300 light points resolve the squares' edges to a third of a percent.
+    EXPECT_NEAR(seen.cosine_solid_angle / whole, visible / open, 0.003);
+    // The holes answer which light points are seen, as the pieces do with few occluders.
+    int agree = 0;
+    for (int i = 0; i < 40; ++i)
+        for (int j = 0; j < 40; ++j) {
+            const Vec2 ab{(i + 0.5f) / 40, (j + 0.5f) / 40};
+            const Vec3 at = p + 0.5f * (Vec3{-0.5f + ab.x, 2, -0.5f + ab.y} - p);
+            const int cx = static_cast<int>(std::floor((at.x + 0.5f) / 0.05f));
+            const int cz = static_cast<int>(std::floor((at.z + 0.5f) / 0.05f));
+            const bool blocked = cx >= 0 && cx < 20 && cz >= 0 && cz < 20 && (cx + cz) % 2 == 0;
+            agree += seen.sees(ab) == !blocked;
+        }
+    EXPECT_GE(agree, 1600 - 40);  // only points on a square's edge may differ
+}
+
+TEST(AreaLight, OverlappingOccludersHideTheirUnionOnce) {
+    // 60 copies of one square, each cut in two triangles, and a second square that overlaps it
+    // by half: the union is 1.5 squares, however many times they repeat.
+    const AreaLight light = square_light(1, 2);
+    std::vector<Vec3> positions;
+    std::vector<std::array<uint32_t, 3>> indices;
+    const auto square = [&](float x, float z, float size) {
+        const auto base = static_cast<uint32_t>(positions.size());
+        positions.insert(positions.end(),
+                         {{x, 1, z}, {x + size, 1, z}, {x + size, 1, z + size}, {x, 1, z + size}});
+        indices.push_back({base, base + 1, base + 2});
+        indices.push_back({base, base + 2, base + 3});
+    };
+    for (int k = 0; k < 60; ++k) square(-0.1f, -0.1f, 0.2f);
+    square(0.0f, -0.1f, 0.2f);
+    const OccluderSet many(positions, indices, {}, {}, {});
+    // The same union as one 0.3 x 0.2 rectangle (two triangles: cut out piece by piece).
+    const std::vector<Vec3> rectangle = {
+        {-0.1f, 1, -0.1f}, {0.2f, 1, -0.1f}, {0.2f, 1, 0.1f}, {-0.1f, 1, 0.1f}};
+    const std::vector<std::array<uint32_t, 3>> halves = {{0, 1, 2}, {0, 2, 3}};
+    const OccluderSet one(rectangle, halves, {}, {}, {});
+    const Vec3 up(0, 1, 0), p(0.05f, 0, 0.02f);
+    EXPECT_NEAR(visible_light(light, p, up, up, &many).cosine_solid_angle,
+                visible_light(light, p, up, up, &one).cosine_solid_angle, 1e-5);
 }
 
 }  // namespace

@@ -115,6 +115,7 @@ PrimaryHitTracer::PrimaryHitTracer(const SceneIntersector& intersector, const Sc
     // 100 ns per walk); both give the same answers.
     constexpr size_t k_lane_sphere_limit = 64;
     m_spheres_in_lanes = scene.spheres.size() <= k_lane_sphere_limit;
+    m_casts_shadows = casts_any_shadow(scene);
     m_analytic.sphere_codes = m_casters.sphere_codes = static_cast<int32_t>(scene.spheres.size());
     // Object codes 0 (no hit) and 1 (triangle) first, then spheres, then planes. A sphere's
     // normal is (p - centre) / radius, which Vec3's operator/ computes as (p - centre) * (1 /
@@ -275,6 +276,10 @@ void PrimaryHitTracer::finish(const TriangleHit* triangle_hits, PrimaryBlock& bl
     block.shadows_known = m_scene.lights.size() <= k_max_block_lights &&
                           std::all_of(m_scene.lights.begin(), m_scene.lights.end(), is_delta_light);
     if (!block.shadows_known) return;
+    if (!m_casts_shadows) {  // nothing can block a shadow ray: every light is seen, none traced
+        for (int c = 0; c < chunks; ++c) std::fill_n(lanes.chunks[c].lit, k_lane_chunk, -1);
+        return;
+    }
     for (int c = 0; c < chunks; ++c) std::fill_n(lanes.chunks[c].lit, k_lane_chunk, 0);
     const auto shadows = simd_pick(m_level, detail::primary_shadows_portable,
                                    detail::primary_shadows_avx2, detail::primary_shadows_avx512);

@@ -22,6 +22,7 @@
 #include "hikari/core/ray.h"
 #include "hikari/core/simd_level.h"
 #include "hikari/scene/camera.h"
+#include "hikari/scene/scene.h"
 
 namespace hikari {
 
@@ -78,6 +79,19 @@ struct PrimaryObjects {
 };
 
 }  // namespace detail
+
+/// Whether some primitive of `scene` casts a shadow: where none does (`--shadows none`), a shadow
+/// ray cannot be blocked, and the ray tracer traces (and counts) none.
+inline bool casts_any_shadow(const Scene& scene) {
+    for (const Sphere& s : scene.spheres)
+        if (s.casts_shadow) return true;
+    for (const Plane& p : scene.planes)
+        if (p.casts_shadow) return true;
+    if (scene.triangles.casts_shadow.empty()) return !scene.triangles.indices.empty();
+    for (const uint8_t casts : scene.triangles.casts_shadow)
+        if (casts != 0) return true;
+    return false;
+}
 
 /// Traces the camera rays of pixel blocks of one scene and camera. Built once per render
 /// (the scene's spheres and planes copied into the lanes' layout), read by all threads.
@@ -140,7 +154,8 @@ class PrimaryHitTracer {
     /// the lanes; otherwise each ray asks the sphere BVH (the same answers, found faster).
     bool m_spheres_in_lanes = true;
     Analytic m_analytic;
-    Analytic m_casters;  ///< the spheres and planes that cast shadows
+    Analytic m_casters;           ///< the spheres and planes that cast shadows
+    bool m_casts_shadows = true;  ///< some primitive casts a shadow (casts_any_shadow)
     Objects m_objects;
 };
 

@@ -100,6 +100,7 @@ inline RayCone refracted_cone(const RayCone& incoming, float width, float curvat
 /// SurfacePoint fields du_dx, dv_dx and du_dy, dv_dy).
 struct UvFootprint {
     float du_dx = 0, dv_dx = 0, du_dy = 0, dv_dy = 0;
+    Vec3 dp_dx{0.0f}, dp_dy{0.0f};  ///< the same two axes in world space (SurfacePoint's)
 };
 
 /// The texture-space footprint of a cone of width `width` meeting a surface with unit normal
@@ -123,8 +124,12 @@ inline UvFootprint cone_footprint(float width, Vec3 direction, Vec3 normal, cons
     }
     const Vec3 across = cross(normal, along);
     const Vec3 long_axis = along * (w * stretch), short_axis = across * w;
-    return {dot(uv.du_dp, long_axis), dot(uv.dv_dp, long_axis), dot(uv.du_dp, short_axis),
-            dot(uv.dv_dp, short_axis)};
+    return {dot(uv.du_dp, long_axis),
+            dot(uv.dv_dp, long_axis),
+            dot(uv.du_dp, short_axis),
+            dot(uv.dv_dp, short_axis),
+            long_axis,
+            short_axis};
 }
 
 }  // namespace hikari

@@ -44,8 +44,11 @@ struct ShadowRays {
     const SceneIntersector& intersector;
     bool lit_known;
     uint32_t lit;
+    /// false: nothing casts a shadow (TraceContext::shadow_rays_traced), every light is seen.
+    bool traced = true;
 
     bool operator()(size_t l, const LightSample& light, const SurfacePoint<float>& s, bool) const {
+        if (!traced) return true;
         if (lit_known && l < k_max_block_lights) return ((lit >> l) & 1u) != 0;
         const Ray shadow{offset_ray_origin(s.position, s.geometric_normal), light.to_light};
         return !intersector.occluded(shadow, {0.0f, light.distance});
@@ -55,6 +58,7 @@ struct ShadowRays {
     /// each exactly as operator() answers it.
     uint32_t many(size_t, const LightSample* samples, int count,
                   const SurfacePoint<float>& s) const {
+        if (!traced) return count >= 32 ? ~0u : (1u << count) - 1;
         const Vec3 origin = offset_ray_origin(s.position, s.geometric_normal);
         RayPacket packet;
         for (int i = 0; i < static_cast<int>(k_packet_size); ++i) {
@@ -84,6 +88,8 @@ struct TraceContext {
     bool textured;             ///< some material has a texture: rays carry their cones
     int max_depth;
     const Emitters& emitters;  ///< what rays see of the lights themselves
+    /// false where nothing casts a shadow: no shadow ray is traced, so none is counted (--stats).
+    bool shadow_rays_traced = true;
     uint64_t rays = 0;
 };
 
@@ -251,7 +257,7 @@ class WaveTracer {
                 scalar |= lane.scalar_only[j] | (block.shadows_known ? 0 : lane.active[j]);
                 children += lane.children[j];
             }
-            m_ctx.rays += static_cast<uint64_t>(shadow_rays);
+            if (m_ctx.shadow_rays_traced) m_ctx.rays += static_cast<uint64_t>(shadow_rays);
             if (scalar != 0) shade_one_ray_at_a_time(block, c, rays, nodes, base, cones);
             if (m_ctx.emitters.any()) {
                 see_emitters(block, c, rays, nodes, base);
@@ -284,7 +290,9 @@ class WaveTracer {
             for (int a = 0; a < 3; ++a) nodes.colour[a][base + j] = direct.colour[a];
             // The lanes counted the point and directional lights' shadow rays; these add the
             // area and environment lights' samples.
-            m_ctx.rays += static_cast<uint64_t>(std::max(0, direct.tested - lane.shadow_rays[j]));
+            if (m_ctx.shadow_rays_traced)
+                m_ctx.rays +=
+                    static_cast<uint64_t>(std::max(0, direct.tested - lane.shadow_rays[j]));
         }
     }
 
@@ -323,10 +331,11 @@ class WaveTracer {
             h.u = uv.uv.x, h.v = uv.uv.y;
             h.du_dx = footprint.du_dx, h.dv_dx = footprint.dv_dx;
             h.du_dy = footprint.du_dy, h.dv_dy = footprint.dv_dy;
+            h.dp_dx = footprint.dp_dx, h.dp_dy = footprint.dp_dy;
         }
         if (m_ctx.shading.materials[hit.material].vertex_colours)
             h.vertex_colour = m_ctx.intersector.surface_colour(hit);
-        const ShadowRays visible{m_ctx.intersector, lit_known, lit};
+        const ShadowRays visible{m_ctx.intersector, lit_known, lit, m_ctx.shadow_rays_traced};
         return shade_whitted_hit<float>(m_ctx.shading, h, true, visible).direct;
     }
 
@@ -660,9 +669,9 @@ Framebuffer render_whitted(const Scene& scene, Film film, const RenderSettings& 
     static_assert(k_tile_size <= k_primary_block);
 
     for_each_tile(cam.width, cam.height, settings.control, [&](const Tile& tile) {
-        TraceContext ctx{
-            render.intersector, render.shading,    scene,          CameraCones(scene.camera),
-            has_texture(scene), whitted.max_depth, render.emitters};
+        TraceContext ctx{render.intersector,        render.shading,         scene,
+                         CameraCones(scene.camera), has_texture(scene),     whitted.max_depth,
+                         render.emitters,           casts_any_shadow(scene)};
         thread_local std::unique_ptr<WaveScratch> scratch;
         if (!scratch) scratch = std::make_unique<WaveScratch>();
         WaveTracer wave(ctx, render.primary, render.shader, *scratch);

@@ -34,6 +34,7 @@ struct WhittedHit {
     /// the ray tracer's one-ray path fills them from ray cones, the lanes leave them 0).
     F u = F(0.0f), v = F(0.0f);
     F du_dx = F(0.0f), dv_dx = F(0.0f), du_dy = F(0.0f), dv_dy = F(0.0f);
+    Vec3T<F> dp_dx = Vec3T<F>(F(0.0f)), dp_dy = Vec3T<F>(F(0.0f));
     /// The vertex colour (SurfacePoint's; the one-ray path fills it, the lanes leave it white).
     Vec3T<F> vertex_colour = Vec3T<F>(F(1.0f));
 };
@@ -60,6 +61,7 @@ HIKARI_INLINE SurfacePoint<F> face_the_ray(const WhittedHit<F>& hit, MaskOf<F>& 
     s.to_eye = -hit.direction;
     s.u = hit.u, s.v = hit.v;
     s.du_dx = hit.du_dx, s.dv_dx = hit.dv_dx, s.du_dy = hit.du_dy, s.dv_dy = hit.dv_dy;
+    s.dp_dx = hit.dp_dx, s.dp_dy = hit.dp_dy;
     s.vertex_colour = hit.vertex_colour;
     return s;
 }

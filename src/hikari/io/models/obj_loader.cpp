@@ -15,6 +15,7 @@
 #include <map>
 #include <regex>
 #include <set>
+#include <span>
 #include <sstream>
 #include <string_view>
 #include <unordered_map>
@@ -224,6 +225,14 @@ bool is_obj_index(std::string_view part) {
            value <= std::numeric_limits<int32_t>::max();
 }
 
+/// Whether one of a corner's parts is a zero (`0`, `-0`, `00`): the mistake of a 0-based writer.
+bool has_zero_index(std::span<const std::string_view> parts) {
+    return std::ranges::any_of(parts, [](std::string_view part) {
+        const std::string_view digits = part.starts_with('-') ? part.substr(1) : part;
+        return !digits.empty() && digits.find_first_not_of('0') == std::string_view::npos;
+    });
+}
+
 /// Checks every corner of a face: `v`, `v/vt`, `v//vn` or `v/vt/vn`, each an OBJ index.
 void check_face_corners(const std::filesystem::path& file, size_t line, std::string_view rest) {
     for_each_token(rest, [&](std::string_view corner) {
@@ -244,6 +253,11 @@ void check_face_corners(const std::filesystem::path& file, size_t line, std::str
                            (count < 2 || parts[1].empty() || is_obj_index(parts[1])) &&
                            (count < 3 || is_obj_index(parts[2])) &&
                            !(count == 2 && parts[1].empty());
+        if (!valid && has_zero_index(std::span(parts, std::min<size_t>(count, 3))))
+            fail(file, line,
+                 fmt::format("'f': '{}' uses index 0; OBJ indices start at 1 (the first 'v' line "
+                             "is 1, and -1 is the last one read so far)",
+                             corner));
         if (!valid)
             fail(file, line,
                  fmt::format("'f': {} is not a corner (v, v/vt, v//vn or v/vt/vn, each a "

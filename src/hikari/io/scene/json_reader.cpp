@@ -201,6 +201,16 @@ struct ErrorPosition final : nlohmann::json_sax<nlohmann::json> {
     }
 };
 
+/// Whether the character nlohmann stopped at (`byte`, 1-based, just past it) opens a `//` or
+/// `/*` comment: JSON (RFC 8259) has none, and a reader who wrote one deserves to be told so
+/// rather than read "invalid literal".
+bool is_comment_at(std::string_view text, size_t byte) {
+    if (byte == 0 || byte > text.size()) return false;
+    const size_t slash = text[byte - 1] == '/' ? byte - 1 : byte >= 2 ? byte - 2 : byte - 1;
+    return slash + 1 < text.size() && text[slash] == '/' &&
+           (text[slash + 1] == '/' || text[slash + 1] == '*');
+}
+
 }  // namespace
 
 std::string bounded_parse_reason(std::string_view reason) {
@@ -218,6 +228,11 @@ nlohmann::json parse_json(std::string_view text, const std::string& file) {
     try {
         return nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
+        if (is_comment_at(text, e.byte))
+            throw InputError(printable_text(
+                fmt::format("{}: JSON has no comments ('//' or '/* */'); remove the comment, or "
+                            "keep notes in a string value such as \"note\": \"...\"",
+                            text_position(text, file, e.byte))));
         std::string_view reason = e.what();
         // Drop nlohmann's "[json.exception.parse_error.101] parse error at line 3, column 5: ".
         if (const size_t colon = reason.find(": "); colon != std::string_view::npos)

@@ -65,6 +65,7 @@ struct BandAccumulator {
     std::vector<Vec3> color;  ///< sRGB-encoded; starts as the background
     std::vector<float> best_coverage, best_depth;
     std::vector<uint32_t> best_id;
+    LineOcclusion occlusion;  ///< the surfaces lines may be hidden behind (none when empty)
 };
 
 void draw_segment(const LineDrawing& d, const LineSegment& seg, int row0, int row1,
@@ -91,6 +92,14 @@ void draw_segment(const LineDrawing& d, const LineSegment& seg, int row0, int ro
             const float c =
                 line_coverage(f.nx * px + f.ny * py, along, f.length, d.line_width, f.ux, f.uy);
             if (!(c > 0.0f)) continue;
+            if (!acc.occlusion.depth.empty()) {
+                // Each segment is tested for itself: where a hidden edge and a visible one share
+                // a pixel (a sphere's front and back equator seen edge-on), the visible one stays.
+                const float s = std::clamp(along / f.length, 0.0f, 1.0f);
+                const float depth = camera_distance(d.camera, segment_world_point(seg, s));
+                const float surface = acc.occlusion.depth[static_cast<size_t>(y) * d.width + x];
+                if (depth > surface * (1.0f + acc.occlusion.tolerance)) continue;
+            }
             const size_t i = static_cast<size_t>(y - row0) * d.width + x;
             // Porter & Duff's "over", segment after segment, on sRGB-encoded colour: what SVG
             // renderers do with strokes, so that the SVG file shows this image.
@@ -128,7 +137,8 @@ float line_coverage(float across, float along, float length, float width, float 
     return overlap(across, -half, half, ux, uy) * overlap(along, 0.0f, length, ux, uy);
 }
 
-Framebuffer rasterize_lines(const LineDrawing& d, Film film, bool aov_buffers) {
+Framebuffer rasterize_lines(const LineDrawing& d, Film film, bool aov_buffers,
+                            LineOcclusion occlusion) {
     Framebuffer fb(std::move(film), d.width, d.height, aov_buffers);
     const int bands = (d.height + k_band_rows - 1) / k_band_rows;
     const std::vector<std::vector<uint32_t>> bins = bin_segments(d, bands);
@@ -137,7 +147,7 @@ Framebuffer rasterize_lines(const LineDrawing& d, Film film, bool aov_buffers) {
         const size_t n = static_cast<size_t>(row1 - row0) * d.width;
         BandAccumulator acc{std::vector<Vec3>(n, encode_srgb(d.background)),
                             std::vector<float>(n, 0.0f), std::vector<float>(n, k_infinity),
-                            std::vector<uint32_t>(n, k_background_id)};
+                            std::vector<uint32_t>(n, k_background_id), occlusion};
         for (const uint32_t k : bins[static_cast<size_t>(band)])
             draw_segment(d, d.segments[k], row0, row1, acc);
         std::vector<Vec3> row(static_cast<size_t>(d.width));

@@ -4,6 +4,8 @@
 // covers, measured in the segment's own frame (an analytic box filter, exact for lines along
 // the axes), so that the PNG and the SVG of one drawing agree.
 
+#include <span>
+
 #include "hikari/frame/film.h"
 #include "hikari/frame/framebuffer.h"
 #include "hikari/frame/line_drawing.h"
@@ -26,6 +28,14 @@ float line_coverage(float across, float along, float length, float width, float 
 /// the eye distance, and the id AOV 1 + the id, of the segment covering most of each pixel;
 /// the normal AOV stays zero. Parallel over bands of rows, each taking its segments in the
 /// drawing's order: the result does not depend on the thread count.
-Framebuffer rasterize_lines(const LineDrawing& drawing, Film film, bool aov_buffers);
+/// Surfaces a line drawing may be hidden behind (`--wireframe-overlay`): a segment covers a
+/// pixel only where its eye distance is at most depth[pixel] · (1 + tolerance).
+struct LineOcclusion {
+    std::span<const float> depth;  ///< eye distance per pixel, row-major (empty: nothing hides)
+    float tolerance = 0.0f;        ///< a fraction of the depth
+};
+
+Framebuffer rasterize_lines(const LineDrawing& drawing, Film film, bool aov_buffers,
+                            LineOcclusion occlusion = {});
 
 }  // namespace hikari

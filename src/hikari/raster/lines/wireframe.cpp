@@ -39,15 +39,14 @@ void overlay_wireframe(const Scene& scene, const LineSettings& lines, Vec3 colou
     LineDrawing drawing = draw_wireframe(scene, lines);
     drawing.background = Vec3(0.0f);
     for (LineSegment& s : drawing.segments) s.color = Vec3(1.0f);
-    const Framebuffer alpha = rasterize_lines(
-        drawing, Film(image.width, image.height, FilmFormat::linear), !depth.empty());
+    const Framebuffer alpha =
+        rasterize_lines(drawing, Film(image.width, image.height, FilmFormat::linear), false,
+                        {depth, k_overlay_depth_tolerance});
     const Image& a = alpha.film.linear();
     const Vec3 line = encode_srgb(colour);
     hikari::parallel_for(size_t{0}, image.pixels.size(), [&](size_t i) {
         const float opacity = linear_to_srgb(a.pixels[i].x);
         if (opacity <= 0.0f) return;
-        if (!depth.empty() && alpha.depth[i] > depth[i] * (1.0f + k_overlay_depth_tolerance))
-            return;
         image.pixels[i] =
             decode_srgb(encode_srgb(image.pixels[i]) * (1.0f - opacity) + line * opacity);
     });

@@ -22,8 +22,9 @@ LineDrawing draw_wireframe(const Scene& scene, const LineSettings& lines);
 /// `image` (linear colour, the camera's size) with `scene`'s wireframe drawn over it in `colour`
 /// (`--wireframe-overlay`): the triangles a raster method drew, as the lines of draw_wireframe,
 /// composited over the picture as rasterize_lines composites them over a background. Where
-/// `depth` (the picture's depth AOV, eye distances) is not empty, a line shows only where it is not
-/// behind the surface the pixel sees (within k_overlay_depth_tolerance): the visible edges.
+/// `depth` (the picture's depth AOV, eye distances) is not empty, each line shows only where it is
+/// not behind the surface the pixel sees (within k_overlay_depth_tolerance), tested segment by
+/// segment: the visible edges, whichever hidden edges share their pixels.
 void overlay_wireframe(const Scene& scene, const LineSettings& lines, Vec3 colour,
                        std::span<const float> depth, Image& image);
 

@@ -2,15 +2,13 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
 #include <utility>
 
 #include "hikari/core/orthonormal_basis.h"
-#include "hikari/core/rng.h"
-#include "hikari/core/strata.h"
+#include "hikari/core/ray.h"
 
 namespace hikari {
 
@@ -37,6 +35,12 @@ struct Line2 {
     float a, b, c;
     float at(Vec2 q) const { return a * q.x + b * q.y + c; }
 };
+
+/// The line through p and q, positive to its left: the inside of a counter-clockwise polygon
+/// with edge p → q.
+Line2 left_of(Vec2 p, Vec2 q) {
+    return {-(q.y - p.y), q.x - p.x, (q.y - p.y) * p.x - (q.x - p.x) * p.y};
+}
 
 /// The part of convex polygon `in` (n corners) where `line` >= 0 (`inside`) and the part where
 /// it is < 0 (`outside`), Sutherland–Hodgman style; each output has at most n + 1 corners.
@@ -123,14 +127,119 @@ void subtract(Pieces& pieces, Pieces& next, const std::vector<Vec2>& hole) {
         for (size_t e = 0; e < hole.size() && rest.size() >= 3; ++e) {
             const Vec2 p = hole[e], q = hole[(e + 1) % hole.size()];
             // Inside a counter-clockwise polygon is to the left of each edge.
-            const Line2 left{-(q.y - p.y), q.x - p.x, (q.y - p.y) * p.x - (q.x - p.x) * p.y};
-            split(rest.data(), static_cast<int>(rest.size()), left, inside, outside);
+            split(rest.data(), static_cast<int>(rest.size()), left_of(p, q), inside, outside);
             if (outside.size() >= 3 && std::abs(signed_area(outside)) > 1e-12f)
                 next.add(outside.data(), static_cast<int>(outside.size()));
             rest.swap(inside);
         }
     }
     std::swap(pieces, next);
+}
+
+/// The corners' bounding box of polygon k of `polys`: {min a, min b, max a, max b}.
+std::array<float, 4> bounding_box(const Pieces& polys, int k) {
+    std::array<float, 4> box{k_infinity, k_infinity, -k_infinity, -k_infinity};
+    for (int i = polys.starts[k]; i < polys.starts[k + 1]; ++i) {
+        const Vec2 c = polys.corners[i];
+        box = {std::min(box[0], c.x), std::min(box[1], c.y), std::max(box[2], c.x),
+               std::max(box[3], c.y)};
+    }
+    return box;
+}
+
+/// The interval [t0, t1] of the segment a + t (b − a), t in [0, 1], that lies in convex
+/// counter-clockwise polygon `c` (n corners), Cyrus & Beck 1978; empty when t0 >= t1. A segment
+/// along an edge of c is inside where the edge runs the other way (the segment is a shared edge,
+/// between two polygons of the union: not on its boundary), and inside where it runs the same
+/// way only when `first` (two polygons with a boundary in common: the first one keeps it).
+std::pair<float, float> inside_interval(Vec2 a, Vec2 b, const Vec2* c, int n, bool first) {
+    constexpr float k_collinear = 1e-6f;  // light coordinates: the light is 1 wide
+    float t0 = 0.0f, t1 = 1.0f;
+    for (int e = 0; e < n && t0 < t1; ++e) {
+        const Vec2 p = c[e], q = c[(e + 1) % n];
+        const Line2 line = left_of(p, q);
+        const float length = std::hypot(line.a, line.b);
+        if (!(length > 0.0f)) continue;
+        const float da = line.at(a) / length, db = line.at(b) / length;
+        if (std::abs(da) <= k_collinear && std::abs(db) <= k_collinear) {
+            const bool same_way = (b.x - a.x) * (q.x - p.x) + (b.y - a.y) * (q.y - p.y) > 0.0f;
+            if (same_way && !first) return {1.0f, 0.0f};
+            continue;
+        }
+        if (da >= 0.0f && db >= 0.0f) continue;
+        if (da < 0.0f && db < 0.0f) return {1.0f, 0.0f};
+        const float t = da / (da - db);
+        if (da < 0.0f)
+            t0 = std::max(t0, t);
+        else
+            t1 = std::min(t1, t);
+    }
+    return {t0, t1};
+}
+
+/// Calls emit(a, b) for every directed segment of the boundary of the union of the convex
+/// counter-clockwise polygons `polys` (light coordinates): the parts of their edges inside no
+/// other polygon, so counter-clockwise around the union and clockwise around its holes. A
+/// uniform grid over the polygons' boxes finds the polygons an edge may enter (O(n) edges, each
+/// against its neighbours, instead of every pair).
+template <class Emit>
+void union_boundary(const Pieces& polys, Emit&& emit) {
+    const int count = polys.count();
+    std::vector<std::array<float, 4>> boxes(static_cast<size_t>(count));
+    std::array<float, 4> all{k_infinity, k_infinity, -k_infinity, -k_infinity};
+    for (int k = 0; k < count; ++k) {
+        boxes[k] = bounding_box(polys, k);
+        all = {std::min(all[0], boxes[k][0]), std::min(all[1], boxes[k][1]),
+               std::max(all[2], boxes[k][2]), std::max(all[3], boxes[k][3])};
+    }
+    const int g = std::clamp(static_cast<int>(std::sqrt(static_cast<float>(count))), 1, 64);
+    const float sx = g / std::max(all[2] - all[0], 1e-12f),
+                sy = g / std::max(all[3] - all[1], 1e-12f);
+    const auto cell = [&](float v, float lo, float scale) {
+        return std::clamp(static_cast<int>((v - lo) * scale), 0, g - 1);
+    };
+    std::vector<std::vector<int>> grid(static_cast<size_t>(g * g));
+    for (int k = 0; k < count; ++k)
+        for (int y = cell(boxes[k][1], all[1], sy); y <= cell(boxes[k][3], all[1], sy); ++y)
+            for (int x = cell(boxes[k][0], all[0], sx); x <= cell(boxes[k][2], all[0], sx); ++x)
+                grid[static_cast<size_t>(y * g + x)].push_back(k);
+    std::vector<int> seen_by(static_cast<size_t>(count), -1);
+    std::vector<std::pair<float, float>> covered;
+    int edge_id = 0;
+    for (int i = 0; i < count; ++i) {
+        const Vec2* c = polys.corners.data() + polys.starts[i];
+        const int n = polys.starts[i + 1] - polys.starts[i];
+        for (int e = 0; e < n; ++e, ++edge_id) {
+            const Vec2 a = c[e], b = c[(e + 1) % n];
+            const float lo_x = std::min(a.x, b.x), hi_x = std::max(a.x, b.x);
+            const float lo_y = std::min(a.y, b.y), hi_y = std::max(a.y, b.y);
+            covered.clear();
+            for (int y = cell(lo_y, all[1], sy); y <= cell(hi_y, all[1], sy); ++y)
+                for (int x = cell(lo_x, all[0], sx); x <= cell(hi_x, all[0], sx); ++x)
+                    for (const int j : grid[static_cast<size_t>(y * g + x)]) {
+                        if (j == i || seen_by[j] == edge_id) continue;
+                        seen_by[j] = edge_id;
+                        const std::array<float, 4>& box = boxes[j];
+                        if (box[0] > hi_x || box[2] < lo_x || box[1] > hi_y || box[3] < lo_y)
+                            continue;
+                        const auto t =
+                            inside_interval(a, b, polys.corners.data() + polys.starts[j],
+                                            polys.starts[j + 1] - polys.starts[j], j < i);
+                        if (t.first < t.second) covered.push_back(t);
+                    }
+            // The gaps between the covered intervals are on the union's boundary.
+            std::sort(covered.begin(), covered.end());
+            float from = 0.0f;
+            const auto at = [&](float t) {
+                return Vec2{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+            };
+            for (const auto& [t0, t1] : covered) {
+                if (t0 > from) emit(at(from), at(t0));
+                from = std::max(from, t1);
+            }
+            if (from < 1.0f) emit(at(from), b);
+        }
+    }
 }
 
 /// Sides of the polygon that stands for a sphere's outline.
@@ -164,7 +273,10 @@ bool sphere_outline(const Sphere& sphere, Vec3 p, const std::array<Vec4, 7>& bou
 
 }  // namespace
 
-bool VisibleLight::sees(Vec2 ab) const {
+namespace {
+
+/// Whether (a, b) lies in one of the convex counter-clockwise polygons `corners`, `starts`.
+bool in_any(const std::vector<Vec2>& corners, const std::vector<int>& starts, Vec2 ab) {
     for (size_t k = 0; k + 1 < starts.size(); ++k) {
         bool in = true;
         const int first = starts[k], n = starts[k + 1] - first;
@@ -177,19 +289,75 @@ bool VisibleLight::sees(Vec2 ab) const {
     return false;
 }
 
+/// Lambert's term of one directed edge a → b (world space) seen from p with unit normal n:
+/// γ · n·(va × vb) / |va × vb|; half the sum over a closed contour, signed by its orientation,
+/// is ∫ cos θ dω over what it encloses.
+double lambert_edge(Vec3 p, Vec3 n, Vec3 a_world, Vec3 b_world) {
+    const Vec3 a = a_world - p, b = b_world - p;
+    const double ax = a.x, ay = a.y, az = a.z, bx = b.x, by = b.y, bz = b.z;
+    const double cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
+    const double cross_len = std::sqrt(cx * cx + cy * cy + cz * cz);
+    if (!(cross_len > 0.0)) return 0.0;
+    const double gamma = std::atan2(cross_len, ax * bx + ay * by + az * bz);
+    return gamma * (n.x * cx + n.y * cy + n.z * cz) / cross_len;
+}
+
+}  // namespace
+
+bool VisibleLight::sees(Vec2 ab) const {
+    return in_any(corners, starts, ab) && !in_any(hole_corners, hole_starts, ab);
+}
+
 double polygon_cosine_solid_angle(Vec3 p, Vec3 n, const Vec3* corners, int count) {
     double sum = 0.0;
-    for (int i = 0; i < count; ++i) {
-        const Vec3 a = corners[i] - p, b = corners[(i + 1) % count] - p;
-        const double ax = a.x, ay = a.y, az = a.z, bx = b.x, by = b.y, bz = b.z;
-        const double cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
-        const double cross_len = std::sqrt(cx * cx + cy * cy + cz * cz);
-        if (!(cross_len > 0.0)) continue;
-        const double gamma = std::atan2(cross_len, ax * bx + ay * by + az * bz);
-        sum += gamma * (n.x * cx + n.y * cy + n.z * cz) / cross_len;
-    }
+    for (int i = 0; i < count; ++i) sum += lambert_edge(p, n, corners[i], corners[(i + 1) % count]);
     return 0.5 * std::abs(sum);
 }
+
+namespace {
+
+/// What point p (unit normal n) sees of `light`, the single convex piece of the light above
+/// its horizon and its planes, past the many convex shadows `holes`: each hole clipped to the
+/// light, then ∫ cos θ dω over their union by Lambert's formula on the union's boundary
+/// (union_boundary), taken from the light's. Exact for any number of occluders, and with no
+/// cut pieces to multiply: the cost grows with the holes' edges, not with their overlaps.
+VisibleLight union_shadow(const LightFrame& f, Vec3 p, Vec3 n, Pieces light, const Pieces& holes) {
+    VisibleLight out;
+    if (light.count() != 1) return out;  // nothing of the light above the horizon and planes
+    const Vec2* region = light.corners.data();
+    const int sides = light.starts[1];
+    Pieces clipped;
+    std::vector<Vec2> poly, inside, outside;
+    for (int k = 0; k < holes.count(); ++k) {
+        poly.assign(holes.corners.begin() + holes.starts[k],
+                    holes.corners.begin() + holes.starts[k + 1]);
+        for (int e = 0; e < sides && poly.size() >= 3; ++e) {
+            split(poly.data(), static_cast<int>(poly.size()),
+                  left_of(region[e], region[(e + 1) % sides]), inside, outside);
+            poly.swap(inside);
+        }
+        if (poly.size() >= 3 && std::abs(signed_area(poly)) > 1e-12f)
+            clipped.add(poly.data(), static_cast<int>(poly.size()));
+    }
+    // Lambert's sum is signed by the contour's orientation: the light's own (counter-clockwise
+    // in (a, b)) tells which sign encloses.
+    double open = 0.0;
+    for (int i = 0; i < sides; ++i)
+        open += lambert_edge(p, n, f.world(region[i]), f.world(region[(i + 1) % sides]));
+    double hidden = 0.0;
+    union_boundary(clipped,
+                   [&](Vec2 a, Vec2 b) { hidden += lambert_edge(p, n, f.world(a), f.world(b)); });
+    const double sign = open < 0.0 ? -1.0 : 1.0;
+    out.cosine_solid_angle = static_cast<float>(
+        std::max(0.0, 0.5 * sign * open - std::clamp(0.5 * sign * hidden, 0.0, 0.5 * sign * open)));
+    out.corners = std::move(light.corners);
+    out.starts = std::move(light.starts);
+    out.hole_corners = std::move(clipped.corners);
+    out.hole_starts = std::move(clipped.starts);
+    return out;
+}
+
+}  // namespace
 
 VisibleLight visible_light(const AreaLight& light, Vec3 p, Vec3 n, Vec3 ng,
                            const OccluderSet* occluders) {
@@ -283,10 +451,8 @@ VisibleLight visible_light(const AreaLight& light, Vec3 p, Vec3 n, Vec3 ng,
         occluders->for_each_sphere_in(bounds, [&](const Sphere& sphere) {
             if (sphere_outline(sphere, p, bounds, poly)) project();
         });
-        if (order.size() > k_max_analytic_occluders) {
-            out.exact = false;
-            order.clear();
-        }
+        if (order.size() > k_max_cut_occluders)
+            return union_shadow(f, p, n, std::move(pieces), holes);
         std::sort(order.begin(), order.end());
         for (const auto& [area, k] : order) {
             if (pieces.count() == 0) break;
@@ -308,35 +474,6 @@ VisibleLight visible_light(const AreaLight& light, Vec3 p, Vec3 n, Vec3 ng,
     }
     out.cosine_solid_angle = static_cast<float>(e);
     return out;
-}
-
-float sampled_light_fraction(const AreaLight& light, Vec3 p, Vec3 n, Vec3 ng,
-                             const OccluderSet& occluders, int samples) {
-    StratifiedSquare pattern(samples, Pcg32(std::bit_cast<uint32_t>(p.x) ^
-                                                (uint64_t{std::bit_cast<uint32_t>(p.z)} << 32),
-                                            std::bit_cast<uint32_t>(p.y)));
-    const Vec3 from =
-        p + ng * (1e-4f * (1.0f + std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)})));
-    const Vec3 normal = light.area_normal();
-    double open = 0, seen = 0;
-    for (int k = 0; k < samples; ++k) {
-        const Vec2 ab = pattern.next(k);
-        const Vec3 y = light.corner + ab.x * light.edge1 + ab.y * light.edge2;
-        const Vec3 d = y - from;
-        const float r2 = dot(d, d);
-        const float weight = std::max(0.0f, dot(n, d)) * std::abs(dot(normal, d)) / (r2 * r2);
-        if (!(weight > 0.0f)) continue;
-        open += weight;
-        bool blocked = false;
-        for (const Plane& plane : occluders.planes()) {
-            const float a = dot(from - plane.point, plane.normal),
-                        b = dot(y - plane.point, plane.normal);
-            blocked |= (a > 0.0f && b < 0.0f) || (a < 0.0f && b > 0.0f);
-        }
-        const float r = std::sqrt(r2);
-        if (!blocked && !occluders.blocks_segment(from, d / r, r)) seen += weight;
-    }
-    return open > 0 ? static_cast<float>(seen / open) : 1.0f;
 }
 
 }  // namespace hikari

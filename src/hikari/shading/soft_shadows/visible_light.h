@@ -17,24 +17,27 @@
 namespace hikari {
 
 /// The part of an area light a point sees: convex pieces in the light's own coordinates
-/// (a, b) in [0, 1]², the point corner + a·edge1 + b·edge2.
+/// (a, b) in [0, 1]², the point corner + a·edge1 + b·edge2, less the convex holes (when many
+/// occluders are not cut out of the pieces one by one, but integrated as a union).
 struct VisibleLight {
     std::vector<Vec2> corners;  ///< every piece's corners, counter-clockwise, one after another
     std::vector<int> starts;    ///< piece k's corners are [starts[k], starts[k + 1])
-    /// ∫ cos θ dω over the visible pieces (θ from the normal): the irradiance divided by L.
+    /// The occluders' shadows on the light, counter-clockwise, as `corners` and `starts`; empty
+    /// when they were cut out of the pieces.
+    std::vector<Vec2> hole_corners;
+    std::vector<int> hole_starts;
+    /// ∫ cos θ dω over the visible part (θ from the normal): the irradiance divided by L.
     float cosine_solid_angle = 0;
-    /// False when more than k_max_analytic_occluders occluders lie between the point and the
-    /// light: the pieces were not cut (they hold the unoccluded light) and the caller samples
-    /// the shadow instead (a dense mesh would cut the light into too many pieces).
-    bool exact = true;
 
     size_t piece_count() const { return starts.empty() ? 0 : starts.size() - 1; }
-    /// Whether light point (a, b) is among the visible pieces.
+    /// Whether light point (a, b) is among the visible pieces and in none of the holes.
     bool sees(Vec2 ab) const;
 };
 
-/// The most occluder polygons one point's light is cut by in closed form.
-inline constexpr size_t k_max_analytic_occluders = 96;
+/// Up to this many occluder polygons, the light is cut by each in turn into convex pieces;
+/// beyond (a dense mesh, whose cuts would shatter it), the shadow is the union of the
+/// occluders' polygons, integrated over the union's boundary (visible_light.cpp). Both exact.
+inline constexpr size_t k_max_cut_occluders = 96;
 
 /// What of `light` the point `p` with unit shading normal `n` sees above its horizon, past the
 /// triangles and planes of `occluders` (none when null). `ng` is the unit geometric normal on
@@ -42,12 +45,6 @@ inline constexpr size_t k_max_analytic_occluders = 96;
 /// ignored (they cannot block light that reaches the surface, and the surface itself is there).
 VisibleLight visible_light(const AreaLight& light, Vec3 p, Vec3 n, Vec3 ng,
                            const OccluderSet* occluders);
-
-/// The share of `light`'s diffuse light at `p` (unit normal `n`, geometric normal `ng` on the
-/// light's side) that `occluders` let through, from `samples` stratified points of the light,
-/// each tested with a segment toward it: what replaces visible_light when it is not exact.
-float sampled_light_fraction(const AreaLight& light, Vec3 p, Vec3 n, Vec3 ng,
-                             const OccluderSet& occluders, int samples);
 
 /// ∫ cos θ dω over the polygon `corners` (world space) seen from `p` with unit normal `n`:
 /// Lambert's contour formula, for a polygon wholly above the horizon of p.

@@ -1,6 +1,8 @@
 #pragma once
 // The solid checker (POV-Ray's `checker` pattern) at a surface point.
 
+#include <cmath>
+
 #include "hikari/core/lanes.h"
 #include "hikari/scene/texture.h"
 #include "hikari/shading/surface.h"
@@ -18,20 +20,47 @@ HIKARI_INLINE IntOf<F> floor_parity(F v) {
     return floor & IntOf<F>(1);
 }
 
-/// Lanes compute the checker themselves.
-template <>
-inline constexpr bool k_texture_has_lane_form<CheckerTexture> = true;
+/// ∫₀ˣ s(t) dt for the square wave s(t) = (−1)^⌊t⌋: a triangle wave of period 2 (0 at even
+/// integers, 1 at odd ones). `x` already reduced to [0, 2) keeps the difference below exact.
+inline float square_wave_integral(float x) {
+    const float m = x - 2.0f * std::floor(0.5f * x);
+    return 1.0f - std::abs(1.0f - m);
+}
 
-/// The checker's colour at `point`: colour_a where the cells' floor sum is even, else colour_b.
+/// s(t) = (−1)^⌊t⌋ averaged over [x − w/2, x + w/2]: the checker's one axis box-filtered over a
+/// footprint w cells wide (Heckbert 1989's integrated square wave; Quilez's "filtered
+/// checkerboard"). A footprint of many cells averages to 0, so far checkers fade to the mean
+/// colour instead of beating into moiré; w = 0 is the sharp wave.
+inline float filtered_square_wave(float x, float w) {
+    const float sharp = floor_parity(x) != 0 ? -1.0f : 1.0f;
+    // A box inside one cell averages the cell's own value: exactly, not by rounding.
+    if (!(w > 1e-4f) || std::floor(x - 0.5f * w) == std::floor(x + 0.5f * w)) return sharp;
+    if (w >= 2.0f * 65536.0f) return 0.0f;
+    const float r = x - 2.0f * std::floor(0.5f * x);  // the same phase, near 0 where precise
+    return (square_wave_integral(r + 0.5f * w) - square_wave_integral(r - 0.5f * w)) / w;
+}
+
+/// The checker is evaluated one point at a time: its filter needs the pixel's footprint, which
+/// only the one-ray paths carry (as for image textures).
+template <>
+inline constexpr bool k_texture_has_lane_form<CheckerTexture> = false;
+
+/// The checker's colour at `point`: colour_a where the cells' floor sum is even, else colour_b,
+/// box-filtered over the pixel's footprint (SurfacePoint::dp_dx, dp_dy; its axis-aligned
+/// bounds, in cells). In ±1 form the checker is the product s(x)·s(y)·s(z), so the box filter
+/// is the product of the three filtered square waves, and the colour the mix of a and b by it.
 template <class F>
 HIKARI_INLINE Vec3T<F> texture_colour(const CheckerTexture& t, const SurfacePoint<F>& point) {
-    const F inverse_size = F(1.0f / t.size);
-    const Vec3T<F> q = (point.position + Vec3T<F>(t.offset)) * inverse_size;
-    const MaskOf<F> odd =
-        (floor_parity(q.x) ^ floor_parity(q.y) ^ floor_parity(q.z)) != IntOf<F>(0);
-    return {select(odd, F(t.color_b.x), F(t.color_a.x)),
-            select(odd, F(t.color_b.y), F(t.color_a.y)),
-            select(odd, F(t.color_b.z), F(t.color_a.z))};
+    static_assert(k_is_scalar<F>, "the checker has no lane form");
+    const float inverse_size = 1.0f / t.size;
+    const Vec3 q = (point.position + Vec3(t.offset)) * inverse_size;
+    const auto width = [&](int a) {
+        return (std::abs(point.dp_dx[a]) + std::abs(point.dp_dy[a])) * inverse_size;
+    };
+    const float even = filtered_square_wave(q.x, width(0)) * filtered_square_wave(q.y, width(1)) *
+                       filtered_square_wave(q.z, width(2));
+    const float a = 0.5f + 0.5f * even;
+    return t.color_a * a + t.color_b * (1.0f - a);
 }
 
 }  // namespace hikari
