@@ -42,6 +42,8 @@ struct RenderStats {
     std::atomic<uint64_t> raster_fragments{0};
     std::atomic<uint64_t> raster_covered_pixels{0};  ///< pixels that show a triangle
     std::atomic<uint64_t> depth_sort_splits{0};      ///< polygons cut by the depth sort
+    /// 1: the depth sort ran out of cuts (raster/depth_sort.h, DepthSortCounts::gave_up).
+    std::atomic<uint64_t> depth_sort_gave_up{0};
 };
 
 /// How a method decides whether a light reaches a point (`--shadows`, the lecture's Fig 4.24).

@@ -1,14 +1,13 @@
 #include "hikari/io/images/xlsx_write.h"
 
-#include <unistd.h>
 #include <xlsxwriter.h>
 
-#include <atomic>
 #include <string>
 
 #include <fmt/format.h>
 
 #include "hikari/core/error.h"
+#include "hikari/io/files/atomic_file.h"
 #include "hikari/io/files/read_file.h"
 #include "hikari/io/images/colour_palette.h"
 
@@ -22,27 +21,6 @@ namespace {
 constexpr uint32_t k_cell_pixels = 12;
 /// Cell size of the channel sheets: wide enough for "255".
 constexpr uint32_t k_number_width_pixels = 30, k_number_height_pixels = 16;
-
-/// A workbook file in the temporary directory, removed when this goes out of scope (libxlsxwriter
-/// writes only to files; the bytes are then written atomically to the real output).
-class TemporaryWorkbook {
-  public:
-    TemporaryWorkbook() {
-        static std::atomic<unsigned> counter{0};
-        m_path = std::filesystem::temp_directory_path() /
-                 fmt::format("hikari-{}-{}.xlsx", ::getpid(), counter++);
-    }
-    ~TemporaryWorkbook() {
-        std::error_code ignored;
-        std::filesystem::remove(m_path, ignored);
-    }
-    TemporaryWorkbook(const TemporaryWorkbook&) = delete;
-    TemporaryWorkbook& operator=(const TemporaryWorkbook&) = delete;
-    const std::filesystem::path& path() const { return m_path; }
-
-  private:
-    std::filesystem::path m_path;
-};
 
 [[noreturn]] void fail(const std::filesystem::path& path, const std::string& why) {
     throw InputError(fmt::format("cannot write {}: {}", path.string(), why));
@@ -79,10 +57,16 @@ std::vector<uint8_t> encode_xlsx(const std::filesystem::path& path, const Srgb8I
                                "rows)",
                                image.width, image.height, k_xlsx_max_columns, k_xlsx_max_rows));
     const PalettedImage paletted = median_cut(image, k_xlsx_palette_colours);
-    const TemporaryWorkbook file;
-    const std::string temporary = file.path().string();
+    // libxlsxwriter writes only to files: the workbook goes to a temporary beside the output,
+    // named and removed as every other temporary (io/files/atomic_file.h), and its scratch
+    // files (unlinked as soon as opened) to the output's directory too, so that no other
+    // directory needs to exist or have room.
+    const TemporaryFile file(path);
+    const std::string& temporary = file.path();
+    std::string directory = path.has_parent_path() ? path.parent_path().string() : ".";
     lxw_workbook_options options{};
     options.constant_memory = LXW_TRUE;
+    options.tmpdir = directory.data();
     lxw_workbook* book = workbook_new_opt(temporary.c_str(), &options);
     if (!book) fail(path, "libxlsxwriter could not start a workbook");
     try {
@@ -130,7 +114,7 @@ std::vector<uint8_t> encode_xlsx(const std::filesystem::path& path, const Srgb8I
         throw;
     }
     check(workbook_close(book), path);
-    const std::string bytes = read_file_bytes(file.path());
+    const std::string bytes = read_file_bytes(temporary);
     return {bytes.begin(), bytes.end()};
 }
 
