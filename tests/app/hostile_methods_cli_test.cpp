@@ -238,7 +238,7 @@ TEST_F(HostileMethods, WorkbookTemporariesLiveBesideTheirOutput) {
 }
 
 /// Every file under `dir` with its size (hidden temporaries included).
-std::map<std::string, uintmax_t> listing(const fs::path& dir) {
+std::map<std::string, uintmax_t> files_under(const fs::path& dir) {
     std::map<std::string, uintmax_t> files;
     std::error_code ec;
     for (const auto& e : fs::recursive_directory_iterator(dir, ec))
@@ -261,16 +261,16 @@ TEST_F(HostileMethods, GalleryStopsItsRendersOnASignalAndLeavesNothingBehind) {
         ASSERT_EQ(posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ), 0);
         posix_spawn_file_actions_destroy(&actions);
         // Signal it while it renders: once its first figure has been written.
-        for (int k = 0; k < 400 && listing(out).size() < 3; ++k) ::usleep(25'000);
+        for (int k = 0; k < 400 && files_under(out).size() < 3; ++k) ::usleep(25'000);
         ::kill(pid, sig);
         int status = 0;
         ASSERT_EQ(::waitpid(pid, &status, 0), pid);
         EXPECT_TRUE(WIFEXITED(status)) << sig;
         EXPECT_EQ(WEXITSTATUS(status), 128 + sig);
         // Nothing goes on writing after it has gone, and no temporary is left.
-        const auto at_exit = listing(out);
+        const auto at_exit = files_under(out);
         ::sleep(3);
-        EXPECT_EQ(listing(out), at_exit) << sig;
+        EXPECT_EQ(files_under(out), at_exit) << sig;
         for (const auto& [file, size] : at_exit)
             EXPECT_EQ(file.find(".hikari-"), std::string::npos) << file;
     }
