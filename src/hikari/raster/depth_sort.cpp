@@ -153,7 +153,9 @@ DepthSorter::DepthSorter(std::span<const ScreenTriangle> triangles, DepthSortTra
     // one another everywhere (random triangles across one volume) needs cuts quadratic in
     // their number: the budget grows linearly, and running out is reported (counts.gave_up).
     const auto n = static_cast<int64_t>(m_polygons.size());
-    m_split_budget = std::min<int64_t>(8 * n * n, k_splits_per_polygon * n) + 1024;
+    m_split_budget = std::min<int64_t>(
+                         8 * n * n, std::max<int64_t>(k_splits_per_polygon * n, int64_t{1} << 22)) +
+                     1024;
 }
 
 /// Makes a polygon of the pooled vertices from `first` to the end of the pool.
