@@ -14,6 +14,7 @@
 #include "hikari/io/images/image_format.h"
 #include "hikari/io/images/image_read.h"
 #include "hikari/io/images/image_write.h"
+#include "hikari/io/images/svg_write.h"
 #include "output_paths.h"
 
 namespace hikari::cli {
@@ -63,6 +64,9 @@ CLI::App* add_compare_command(CLI::App& app, CompareOptions& c) {
 }
 
 int run_compare(const CompareOptions& o) {
+    if (is_svg_path(o.output))
+        throw UsageError(
+            fmt::format("{}: compare writes its difference as an image, not as SVG", o.output));
     if (!o.output.empty())
         check_output_path(o.output, std::vector<RenderInput>{{o.a, "the first image"},
                                                              {o.b, "the second image"}});

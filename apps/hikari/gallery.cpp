@@ -6,8 +6,10 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <functional>
 #include <limits>
@@ -20,12 +22,14 @@
 
 #include "data_folder.h"
 #include "gallery_figures.h"
+#include "hikari/core/cancel.h"
 #include "hikari/core/error.h"
 #include "hikari/frame/aov_picture.h"
 #include "hikari/io/files/atomic_file.h"
 #include "hikari/io/files/read_file.h"
 #include "hikari/io/images/image_read.h"
 #include "hikari/io/images/image_write.h"
+#include "signals.h"
 
 extern char** environ;
 
@@ -41,6 +45,27 @@ void Gallery::write_text(const std::string& name, const std::string& text) const
 void Gallery::write_scene(const std::string& name, const Json& scene) const {
     write_text(name, scene.dump(2) + "\n");
 }
+
+namespace {
+
+/// The exit status of child `pid`, waited for. A signal interrupts waitpid (EINTR): that is no
+/// status, so the wait goes on; the first SIGINT or SIGTERM is passed on to the child, which
+/// stops its render, removes its temporaries and exits.
+int wait_for_child(pid_t pid) {
+    bool passed_on = false;
+    int status = 0;
+    while (waitpid(pid, &status, 0) == -1) {
+        if (errno != EINTR)
+            throw InputError(fmt::format("gallery: lost the render process {}", pid));
+        if (cancel_requested() && !passed_on) {
+            kill(pid, cli::first_signal());
+            passed_on = true;
+        }
+    }
+    return status;
+}
+
+}  // namespace
 
 double Gallery::render(const std::string& scene, const std::vector<std::string>& args,
                        const std::string& output, const std::string& log) const {
@@ -60,12 +85,15 @@ double Gallery::render(const std::string& scene, const std::vector<std::string>&
         posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
                                          0644);
     const auto start = std::chrono::steady_clock::now();
+    throw_if_cancelled();  // after a signal, no render starts
     pid_t pid = 0;
     const int spawned = posix_spawn(&pid, program.c_str(), &actions, nullptr, raw.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
     if (spawned != 0) throw InputError(fmt::format("gallery: cannot run {}", program));
-    int status = 0;
-    waitpid(pid, &status, 0);
+    cli::set_child_process(pid);
+    const int status = wait_for_child(pid);
+    cli::set_child_process(0);
+    throw_if_cancelled();  // the child was stopped: what it wrote is not a figure
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
         throw InputError(fmt::format("gallery: rendering {} failed (hikari render scenes/{} ...)",
                                      output, scene));

@@ -1,6 +1,9 @@
 #include "output_paths.h"
 
 #include <unistd.h>
+#include <climits>
+
+#include <algorithm>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -15,6 +18,7 @@
 #include "hikari/io/images/svg_write.h"
 #include "hikari/io/images/xlsx_write.h"
 #include "hikari/io/models/model_file.h"
+#include "hikari/io/models/model_references.h"
 #include "hikari/io/scene/json_reader.h"
 
 namespace hikari::cli {
@@ -50,6 +54,9 @@ void check_output_format(const fs::path& output) {
             k_writable_image_extensions));
 }
 
+/// The most a temporary's name adds after its prefix: `<pid>-<n>.tmp`.
+constexpr size_t k_temporary_suffix_bytes = 10 + 1 + 20 + 4;
+
 /// A directory that is missing, not one, or not writable, or a file name longer than it allows.
 void check_output_directory(const fs::path& output) {
     std::error_code ec;
@@ -64,6 +71,14 @@ void check_output_directory(const fs::path& output) {
         throw UsageError(fmt::format("{}: cannot write: the directory {} is not writable",
                                      quote_token(output.string(), '\0', k_quoted_path_bytes),
                                      quote_token(dir.string(), '\0', k_quoted_path_bytes)));
+    // The temporary beside it (io/files/atomic_file.h) adds its own name to the directory's.
+    const size_t temporary = (output.has_parent_path() ? dir.string().size() + 1 : 0) +
+                             temporary_prefix_for(output).size() + k_temporary_suffix_bytes;
+    if (const size_t length = std::max(output.string().size(), temporary); length >= PATH_MAX)
+        throw UsageError(fmt::format(
+            "{}: cannot write: the path is {} bytes long with its temporary; the system allows "
+            "{}",
+            quote_token(output.string(), '\0', k_quoted_path_bytes), length, PATH_MAX - 1));
     const long name_max = ::pathconf(dir.c_str(), _PC_NAME_MAX);
     if (const size_t length = output.filename().string().size();
         name_max > 0 && length > static_cast<size_t>(name_max))
@@ -107,12 +122,19 @@ std::vector<RenderInput> render_inputs(const std::string& scene_file) {
     if (scene_file.empty()) return {};
     const bool model = is_model_file(scene_file);
     std::vector<RenderInput> inputs{{scene_file, model ? "the model file" : "the scene file"}};
-    if (model) return inputs;
-    try {
-        const nlohmann::json json = parse_json(read_file_bytes(scene_file), scene_file);
-        collect_named_files(json, fs::path(scene_file).parent_path(), inputs);
-    } catch (const std::exception&) {  // not readable or not JSON: the load says why
+    if (!model) {
+        try {
+            const nlohmann::json json = parse_json(read_file_bytes(scene_file), scene_file);
+            collect_named_files(json, fs::path(scene_file).parent_path(), inputs);
+        } catch (const std::exception&) {  // not readable or not JSON: the load says why
+        }
     }
+    // The models' own references: MTL libraries, their textures, glTF images and buffers.
+    const size_t named = inputs.size();
+    for (size_t i = 0; i < named; ++i)
+        if (is_model_file(inputs[i].file.string()))
+            for (fs::path& file : model_references(inputs[i].file))
+                inputs.push_back({std::move(file), "a file the model reads"});
     return inputs;
 }
 

@@ -1,8 +1,10 @@
 #include "signals.h"
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 
 #include "hikari/core/cancel.h"
@@ -17,6 +19,7 @@ RenderControl g_control;
 std::atomic<int> g_signal_count{0};
 std::atomic<int> g_first_signal{0};  // SIGINT or SIGTERM, the first one received; 0: none
 std::atomic<bool> g_interrupt_reported{false};
+std::atomic<pid_t> g_child{0};  // the child process running now (gallery renders); 0: none
 
 // The first SIGINT or SIGTERM asks every stage to stop (the render, and through core/cancel.h
 // the loaders, the BVH build and the encoders, which then unwind writing nothing), and arms a
@@ -24,6 +27,13 @@ std::atomic<bool> g_interrupt_reported{false};
 // a second signal, or when the alarm rings, leave at once, removing any half-written temporary
 // file. Either way the status is 128 + the first signal and the one line is printed.
 extern "C" void exit_now(int) {
+    // A child would go on writing after its parent is gone: end it first. It gets SIGTERM, so
+    // it removes its own temporaries, and its own alarm bounds the wait.
+    if (const pid_t child = g_child.load(); child > 0) {
+        kill(child, SIGTERM);
+        while (waitpid(child, nullptr, 0) == -1 && errno == EINTR) {
+        }
+    }
     remove_pending_temporary_files();
     report_interrupted();
     _exit(interrupted_status());
@@ -41,6 +51,13 @@ extern "C" void on_interrupt(int sig) {
 }  // namespace
 
 RenderControl& render_control() noexcept { return g_control; }
+
+void set_child_process(pid_t child) noexcept { g_child.store(child); }
+
+int first_signal() noexcept {
+    const int sig = g_first_signal.load();
+    return sig != 0 ? sig : SIGINT;
+}
 
 int interrupted_status() noexcept {
     const int sig = g_first_signal.load();

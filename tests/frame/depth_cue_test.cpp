@@ -92,3 +92,55 @@ TEST(DepthCue, RefusesAFramebufferWithoutDepth) {
 
 }  // namespace
 }  // namespace hikari
+
+namespace hikari {
+namespace {
+
+/// A width x height framebuffer at depth `depth`, colour varying across it.
+Framebuffer gradient(int width, int height, float depth) {
+    Framebuffer fb(Film(width, height, FilmFormat::linear), width, height, true);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const size_t i = static_cast<size_t>(y) * width + x;
+            fb.film.linear().pixels[i] = Vec3(float(x) / width, float(y) / height, 0.5f);
+            fb.depth[i] = depth;
+        }
+    return fb;
+}
+
+TEST(DepthCue, BlurRadiiAreClampedToTheImage) {
+    // 10^4 and 10^12 pixels both reach past the 50-pixel diagonal: the same picture, finite,
+    // every pixel an average of the image's colours (10^12 once overflowed into no blur).
+    Framebuffer wide = gradient(40, 30, 10.0f), huge = gradient(40, 30, 10.0f);
+    DepthCue c = cue(1.0f, 100.0f, 1e4f);
+    apply_depth_cue(c, Vec3(0.0f), wide);
+    c.blur = 1e12f;
+    apply_depth_cue(c, Vec3(0.0f), huge);
+    const Framebuffer sharp = [&] {
+        Framebuffer fb = gradient(40, 30, 10.0f);
+        apply_depth_cue(cue(1.0f, 100.0f), Vec3(0.0f), fb);
+        return fb;
+    }();
+    const float w = depth_cue_weight(c, 10.0f);
+    for (size_t i = 0; i < huge.film.linear().pixels.size(); ++i) {
+        EXPECT_EQ(wide.film.linear().pixels[i], huge.film.linear().pixels[i]) << i;
+        const Vec3 p = huge.film.linear().pixels[i] / w;
+        EXPECT_TRUE(p.x >= 0.0f && p.x < 1.0f && p.y >= 0.0f && p.y < 1.0f) << i;
+    }
+    // Blurred: the corners move toward the middle's colour.
+    EXPECT_GT(huge.film.linear().pixels[0].x, sharp.film.linear().pixels[0].x + 0.1f * w);
+}
+
+TEST(DepthCue, AWideBlurOfAFlatImageKeepsItFlat) {
+    Framebuffer fb(Film(300, 200, FilmFormat::linear), 300, 200, true);
+    for (Vec3& p : fb.film.linear().pixels) p = Vec3(0.25f, 0.5f, 0.75f);
+    for (float& d : fb.depth) d = 50.0f;
+    apply_depth_cue(cue(0.0f, 100.0f, 1000.0f), Vec3(0.0f), fb);
+    for (const Vec3& p : fb.film.linear().pixels) {
+        EXPECT_NEAR(p.x, 0.5f * 0.25f, 1e-6f);
+        EXPECT_NEAR(p.z, 0.5f * 0.75f, 1e-6f);
+    }
+}
+
+}  // namespace
+}  // namespace hikari

@@ -26,17 +26,20 @@ bool segment_meets_box(Vec2 a, Vec2 b, Vec2 lo, Vec2 hi) {
     return false;
 }
 
-TEST(ScreenGrid, FindsEveryTriangleWhoseBoxASegmentCrosses) {
+/// Every triangle whose box segment (a, b) crosses is found, over an image of `scale` × (100 ×
+/// 80) pixels in cells of `cell` pixels.
+void expect_segments_find_their_triangles(float scale, float cell) {
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> u(-20.0f, 120.0f);  // some beyond the 100 × 80 image
     std::vector<ScreenTriangle> tris;
     for (int k = 0; k < 300; ++k) {
         const float x = u(rng), y = u(rng);
-        tris.push_back(triangle(x, y, x + u(rng) / 12, y + 3, x - 2, y + u(rng) / 15));
+        tris.push_back(triangle(x * scale, y * scale, (x + u(rng) / 12) * scale, (y + 3) * scale,
+                                (x - 2) * scale, (y + u(rng) / 15) * scale));
     }
-    const ScreenGrid grid(tris, 100, 80, 8);
+    const ScreenGrid grid(tris, std::max(1, int(100 * scale)), std::max(1, int(80 * scale)), cell);
     for (int k = 0; k < 50; ++k) {
-        const Vec2 a{u(rng), u(rng)}, b{u(rng), u(rng)};
+        const Vec2 a{u(rng) * scale, u(rng) * scale}, b{u(rng) * scale, u(rng) * scale};
         std::set<uint32_t> found;
         grid.for_each_along(a, b, 1.0f, [&](uint32_t i) { found.insert(i); });
         for (uint32_t i = 0; i < tris.size(); ++i) {
@@ -48,6 +51,15 @@ TEST(ScreenGrid, FindsEveryTriangleWhoseBoxASegmentCrosses) {
             if (segment_meets_box(a, b, lo, hi)) EXPECT_TRUE(found.count(i)) << k << ", " << i;
         }
     }
+}
+
+TEST(ScreenGrid, FindsEveryTriangleWhoseBoxASegmentCrosses) {
+    expect_segments_find_their_triangles(1.0f, 8.0f);
+}
+
+TEST(ScreenGrid, CellsOfAFractionOfAPixelServeATinyImage) {
+    // The hidden-line grid of a 1 × 1 image (raster/lines/hidden_line.cpp): cells of 1/64 pixel.
+    expect_segments_find_their_triangles(0.01f, 1.0f / 64.0f);
 }
 
 TEST(ScreenGrid, BoxQueryVisitsTheTrianglesInItsCells) {

@@ -42,7 +42,7 @@ Built build(const std::string& light, const std::string& objects, Aabb receivers
                                          objects + "]}");
     b.raster = tessellate_scene(b.scene);
     b.maps = build_shadow_maps(b.scene, b.raster, shadow_casting_triangles(b.scene, b.raster),
-                               receivers, size);
+                               &receivers, size);
     return b;
 }
 

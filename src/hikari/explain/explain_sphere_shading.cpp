@@ -11,6 +11,7 @@
 
 #include "hikari/core/color.h"
 #include "hikari/explain/explain.h"
+#include "hikari/shading/lights.h"
 #include "hikari/shading/phong.h"
 
 namespace hikari {
@@ -30,9 +31,9 @@ struct LectureLight {
 };
 
 std::optional<LectureLight> lecture_light(const Light& light, Vec3 p) {
-    if (const auto* d = std::get_if<DirectionalLight>(&light))
+    if (const auto* d = light_as<DirectionalLight>(light))
         return LectureLight{normalize(d->direction), d->intensity, "directional"};
-    if (const auto* pl = std::get_if<PointLight>(&light)) {
+    if (const auto* pl = light_as<PointLight>(light)) {
         const Vec3 to_p = p - pl->position;
         const float d2 = dot(to_p, to_p);
         return LectureLight{normalize(to_p),

@@ -18,16 +18,26 @@ float depth_fraction(const DepthCue& cue, float distance) {
     return std::clamp((distance - cue.near) / (cue.far - cue.near), 0.0f, 1.0f);
 }
 
+/// The most pixels a gather reads along each direction from its centre: a wider disc is read
+/// on a grid of every step-th pixel (step = ⌈reach / k_gather_reach⌉), so the cost per pixel
+/// stays below (2 · 16 + 1)² reads however wide the blur; discs up to 16 pixels are read whole.
+constexpr int k_gather_reach = 16;
+
 /// Pixel (x, y) of `source` averaged over the disc of `radius` pixels around it, taking only the
-/// pixels at depth `min_depth` or more.
+/// pixels at depth `min_depth` or more (wide discs on a grid, k_gather_reach).
 Vec3 gather(const Image& source, const HugePageVector<float>& depth, int x, int y, float radius,
             float min_depth) {
     const int reach = static_cast<int>(std::ceil(radius));
+    const int step = (reach + k_gather_reach - 1) / k_gather_reach;
+    const int steps = reach / step;
     const float r2 = radius * radius;
     Vec3 sum(0.0f);
     int count = 0;
-    for (int v = std::max(0, y - reach); v <= std::min(source.height - 1, y + reach); ++v)
-        for (int u = std::max(0, x - reach); u <= std::min(source.width - 1, x + reach); ++u) {
+    for (int j = -std::min(steps, y / step); j <= std::min(steps, (source.height - 1 - y) / step);
+         ++j)
+        for (int i = -std::min(steps, x / step);
+             i <= std::min(steps, (source.width - 1 - x) / step); ++i) {
+            const int u = x + i * step, v = y + j * step;
             const float du = static_cast<float>(u - x), dv = static_cast<float>(v - y);
             const size_t q = static_cast<size_t>(v) * source.width + u;
             if (du * du + dv * dv > r2 || !(depth[q] >= min_depth)) continue;
@@ -37,17 +47,21 @@ Vec3 gather(const Image& source, const HugePageVector<float>& depth, int x, int 
     return count > 0 ? sum / static_cast<float>(count) : source.at(x, y);
 }
 
-/// The blurred colour of every pixel, from a copy of the unblurred image.
+/// The blurred colour of every pixel, from a copy of the unblurred image. A radius beyond the
+/// image's diagonal reads no more pixels than the diagonal: it is clamped there.
 void blur(const DepthCue& cue, Framebuffer& fb) {
     const Image source = fb.film.linear();
     Image& target = fb.film.linear();
+    const float diagonal =
+        std::hypot(static_cast<float>(source.width), static_cast<float>(source.height));
     hikari::parallel_for(
         tbb::blocked_range<int>(0, source.height), [&](const tbb::blocked_range<int>& rows) {
             for (int y = rows.begin(); y != rows.end(); ++y)
                 for (int x = 0; x < source.width; ++x) {
                     const size_t i = static_cast<size_t>(y) * source.width + x;
-                    const float radius = depth_cue_blur_radius(cue, fb.depth[i]);
-                    if (radius < 0.5f) continue;  // the nearest pixel only: nothing to average
+                    const float radius =
+                        std::min(depth_cue_blur_radius(cue, fb.depth[i]), diagonal);
+                    if (!(radius >= 0.5f)) continue;  // the nearest pixel only: nothing to average
                     target.pixels[i] = gather(source, fb.depth, x, y, radius, 0.98f * fb.depth[i]);
                 }
         });

@@ -21,7 +21,9 @@ float depth_cue_blur_radius(const DepthCue& cue, float distance);
 /// one): colour := w·colour + (1 − w)·cue colour, w = depth_cue_weight(depth). The blur of a
 /// pixel averages the pixels within its radius whose depth is similar or greater (at least 98%
 /// of its own), so that a near object's edge is never smeared over what lies behind it, nor the
-/// far background over it. `fb` must hold linear colour and the depth AOV.
+/// far background over it. A radius is clamped to the image's diagonal, and a disc wider than 16
+/// pixels is read on a grid of at most 33 × 33 of its pixels, so no blur takes more than that
+/// per pixel. `fb` must hold linear colour and the depth AOV.
 void apply_depth_cue(const DepthCue& cue, Vec3 background, Framebuffer& fb);
 
 }  // namespace hikari

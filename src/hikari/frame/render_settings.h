@@ -49,6 +49,8 @@ struct RenderStats {
     std::atomic<uint64_t> shadow_map_faces{0};
     std::atomic<uint64_t> shadow_map_texels{0};
     std::atomic<uint64_t> shadow_volume_stencils{0};
+    /// 1: the depth sort ran out of cuts (raster/depth_sort.h, DepthSortCounts::gave_up).
+    std::atomic<uint64_t> depth_sort_gave_up{0};
 };
 
 /// How a method decides whether a light reaches a point (`--shadows`, the lecture's Fig 4.24).

@@ -15,6 +15,7 @@
 #include "hikari/raster/lines/hidden_line.h"
 #include "hikari/raster/lines/wireframe.h"
 #include "hikari/raster/scanline.h"
+#include "hikari/raster/shadow_map.h"
 #include "hikari/raster/zbuffer.h"
 #include "hikari/scene/rebase.h"
 
@@ -38,7 +39,8 @@ Framebuffer ray_trace(const Scene& scene, Film film, const RenderSettings& setti
 /// Anti-aliasing by supersampling (`--spp N` for the raster methods): N whole renders, each
 /// sampling every pixel at one of the sub-pixel points the ray tracer takes (frame/subpixel.h),
 /// their linear colours averaged; the AOVs come from one more render at the pixel centres, as
-/// the ray tracer's do. Costs N (+1 with AOVs) times one render, shadow maps included.
+/// the ray tracer's do. Costs N (+1 with AOVs) times one render; the shadow maps, which do not
+/// depend on the sample point, are drawn once (RasterSettings::shared_shadow_maps).
 template <class RenderPass>
 Framebuffer supersample(Film film, const RenderSettings& settings, int spp, RenderPass&& pass) {
     const int width = film.width(), height = film.height();
@@ -84,6 +86,7 @@ Framebuffer rasterize(const Scene& scene, Film film, const RenderSettings& setti
     raster.light_samples = own.light_samples;
     const int spp = own.samples_per_pixel.value_or(1);
     if (spp == 1) return render(scene, std::move(film), settings, raster);
+    raster.shared_shadow_maps = std::make_shared<SharedShadowMaps>();
     return supersample(film, settings, spp, [&](Film pass, const RenderSettings& s, Vec2 offset) {
         raster.sample_offset = offset;
         return render(scene, std::move(pass), s, raster);

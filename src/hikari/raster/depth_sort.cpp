@@ -3,14 +3,21 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
+#include "hikari/raster/box_grid.h"
 #include "hikari/raster/polygon_fill.h"
 #include "hikari/raster/shade_visibility.h"
 
 namespace hikari {
 namespace {
+
+/// The cuts the depth sort may make per polygon of the scene before it paints the order it has
+/// (DepthSortCounts::gave_up): scenes that interpenetrate here and there cut each polygon a few
+/// times at most.
+constexpr int64_t k_splits_per_polygon = 4;
 
 /// Relative tolerance of the plane-side and projection tests: a vertex this close to a plane counts
 /// as on it, so neighbours sharing an edge or a vertex never count as straddling each other.
@@ -51,6 +58,18 @@ class DepthSorter {
     bool projections_overlap(const Polygon& p, const Polygon& q) const;
     bool separated_by_edges_of(const Polygon& p, const Polygon& q) const;
     Step examine(uint32_t p, uint32_t& q_out) const;
+    /// Once the cuts are spent: every polygon left painted in list order (farthest first).
+    void paint_rest();
+    /// Tests 3–5 and the decision for a Q whose extents overlap P's: nullopt when Q cannot
+    /// hide P (the scan goes on), else the step.
+    std::optional<Step> compare(uint32_t p_id, uint32_t q_id, uint32_t& q_out) const;
+    /// Whether P's neighbours come cheaper from the grid than from the list: its box covers
+    /// few of the grid's cells (a polygon over most of the image is compared with every other
+    /// anyway), and no trace wants every comparison.
+    bool grid_pays(const Polygon& p) const;
+    /// The alive Q that may overlap P (depth and extents), from the grid, in list order.
+    void grid_candidates(uint32_t p_id) const;
+    static ScreenBox box_of(const Polygon& p) { return {p.x_min, p.y_min, p.x_max, p.y_max}; }
     void add_polygon(uint32_t first, uint32_t source, double a, double b, double c);
     /// Cuts polygon `id` where `offset` changes sign: along the plane or an edge line of
     /// polygon `by`, or halved (`cut`, for the trace).
@@ -76,6 +95,10 @@ class DepthSorter {
     size_t m_alive = 0;                          ///< polygons neither painted nor split
     int64_t m_split_budget = 0;
     DepthSortTrace* m_trace = nullptr;
+    BoxGrid m_grid;  ///< every polygon's screen box, pieces added as they are cut
+    mutable std::vector<uint32_t> m_candidates;  ///< grid_candidates' answer
+    mutable std::vector<uint32_t> m_stamp;       ///< per polygon: the query that saw it last
+    mutable uint32_t m_query = 0;
 
   public:
     mutable DepthSortCounts counts;
@@ -116,10 +139,23 @@ DepthSorter::DepthSorter(std::span<const ScreenTriangle> triangles, DepthSortTra
         return list_before(m_polygons[p], p, m_polygons[q], q);
     });
     if (m_trace) m_trace->sorted = m_list;
+    // The screen grid of candidate pairs: about four polygons per cell.
+    ScreenBox bounds{INFINITY, INFINITY, -INFINITY, -INFINITY};
+    for (const Polygon& p : m_polygons)
+        bounds = {std::min(bounds.x0, p.x_min), std::min(bounds.y0, p.y_min),
+                  std::max(bounds.x1, p.x_max), std::max(bounds.y1, p.y_max)};
+    if (!m_polygons.empty()) {
+        m_grid = BoxGrid(bounds, m_polygons.size() / 4);
+        for (uint32_t i = 0; i < m_polygons.size(); ++i) m_grid.insert(i, box_of(m_polygons[i]));
+    }
     // every interpenetrating pair needs a cut and pieces can be cut again; past this budget the
-    // order is accepted as it is, so the sort always ends
+    // order is accepted as it is, so the sort always ends. A tangle of polygons that pierce
+    // one another everywhere (random triangles across one volume) needs cuts quadratic in
+    // their number: the budget grows linearly, and running out is reported (counts.gave_up).
     const auto n = static_cast<int64_t>(m_polygons.size());
-    m_split_budget = std::min<int64_t>(8 * n * n, int64_t{1} << 22) + 1024;
+    m_split_budget = std::min<int64_t>(
+                         8 * n * n, std::max<int64_t>(k_splits_per_polygon * n, int64_t{1} << 22)) +
+                     1024;
 }
 
 /// Makes a polygon of the pooled vertices from `first` to the end of the pool.
@@ -192,9 +228,41 @@ bool DepthSorter::projections_overlap(const Polygon& p, const Polygon& q) const 
     return !separated_by_edges_of(p, q) && !separated_by_edges_of(q, p);
 }
 
+bool DepthSorter::grid_pays(const Polygon& p) const {
+    return !m_trace && 4 * m_grid.cells_covered(box_of(p)) < m_grid.cell_count();
+}
+
+void DepthSorter::grid_candidates(uint32_t p_id) const {
+    const Polygon& p = m_polygons[p_id];
+    m_candidates.clear();
+    m_stamp.resize(m_polygons.size(), 0);
+    ++m_query;
+    m_grid.for_each_in_box(box_of(p), [&](uint32_t q_id) {
+        if (m_stamp[q_id] == m_query) return;
+        m_stamp[q_id] = m_query;
+        const Polygon& q = m_polygons[q_id];
+        // what the list scan skips: itself, the painted or cut, Q wholly in front (depth), and
+        // tests 1 and 2 (the x or y extents do not overlap)
+        if (q_id == p_id || m_retired[q_id] || q.z_max <= p.z_min) return;
+        if (p.x_max <= q.x_min || q.x_max <= p.x_min || p.y_max <= q.y_min || q.y_max <= p.y_min)
+            return;
+        m_candidates.push_back(q_id);
+    });
+    std::sort(m_candidates.begin(), m_candidates.end(), [&](uint32_t a, uint32_t b) {
+        return list_before(m_polygons[a], a, m_polygons[b], b);
+    });
+}
+
 /// Newell, Newell & Sancha 1972: may P be painted now, before every Q it shares depths with?
+/// The Q are met in list order, from the list itself or, the same ones, from the screen grid.
 Step DepthSorter::examine(uint32_t p_id, uint32_t& q_out) const {
     const Polygon& p = m_polygons[p_id];
+    if (grid_pays(p)) {
+        grid_candidates(p_id);
+        for (const uint32_t q_id : m_candidates)
+            if (const std::optional<Step> step = compare(p_id, q_id, q_out)) return *step;
+        return Step::paint;
+    }
     for (size_t k = m_head; k < m_list.size(); ++k) {
         const uint32_t q_id = m_list[k];
         const Polygon& q = m_polygons[q_id];
@@ -211,35 +279,41 @@ Step DepthSorter::examine(uint32_t p_id, uint32_t& q_out) const {
             note_compare(p_id, q_id, Settled::y_extents);
             continue;
         }
-        // test 3: P entirely behind Q's plane (on the far side from the viewer)
-        const int p_wrt_q = sides(q, p);
-        if (!(p_wrt_q & k_in_front)) {
-            note_compare(p_id, q_id, Settled::p_behind_q);
-            continue;
-        }
-        // test 4: Q entirely in front of P's plane
-        const int q_wrt_p = sides(p, q);
-        if (!(q_wrt_p & k_behind)) {
-            note_compare(p_id, q_id, Settled::q_in_front);
-            continue;
-        }
-        // test 5: the projections do not overlap
-        if (!projections_overlap(p, q)) {
-            note_compare(p_id, q_id, Settled::no_overlap);
-            continue;
-        }
-        // Q may hide part of P. Can Q go first (tests 3, 4 with P and Q swapped)?
-        note_compare(p_id, q_id, Settled::q_may_hide);
-        q_out = q_id;
-        const bool q_first = !(q_wrt_p & k_in_front) || !(p_wrt_q & k_behind);
-        if (!q_first) return Step::split_q_by_p;  // interpenetration (Fig 4.9b): they straddle
-        if (!m_marked[q_id]) return Step::move_q;
-        // Q already waits above P: cyclic overlap (Fig 4.9a); cut the cycle
-        if (q_wrt_p == k_straddles) return Step::split_q_by_p;
-        if (p_wrt_q == k_straddles) return Step::split_p_by_q;
-        return Step::bisect_p;
+        if (const std::optional<Step> step = compare(p_id, q_id, q_out)) return *step;
     }
     return Step::paint;
+}
+
+std::optional<Step> DepthSorter::compare(uint32_t p_id, uint32_t q_id, uint32_t& q_out) const {
+    const Polygon &p = m_polygons[p_id], &q = m_polygons[q_id];
+    using Settled = DepthSortTrace::Settled;
+    // test 3: P entirely behind Q's plane (on the far side from the viewer)
+    const int p_wrt_q = sides(q, p);
+    if (!(p_wrt_q & k_in_front)) {
+        note_compare(p_id, q_id, Settled::p_behind_q);
+        return std::nullopt;
+    }
+    // test 4: Q entirely in front of P's plane
+    const int q_wrt_p = sides(p, q);
+    if (!(q_wrt_p & k_behind)) {
+        note_compare(p_id, q_id, Settled::q_in_front);
+        return std::nullopt;
+    }
+    // test 5: the projections do not overlap
+    if (!projections_overlap(p, q)) {
+        note_compare(p_id, q_id, Settled::no_overlap);
+        return std::nullopt;
+    }
+    // Q may hide part of P. Can Q go first (tests 3, 4 with P and Q swapped)?
+    note_compare(p_id, q_id, Settled::q_may_hide);
+    q_out = q_id;
+    const bool q_first = !(q_wrt_p & k_in_front) || !(p_wrt_q & k_behind);
+    if (!q_first) return Step::split_q_by_p;  // interpenetration (Fig 4.9b): they straddle
+    if (!m_marked[q_id]) return Step::move_q;
+    // Q already waits above P: cyclic overlap (Fig 4.9a); cut the cycle
+    if (q_wrt_p == k_straddles) return Step::split_q_by_p;
+    if (p_wrt_q == k_straddles) return Step::split_p_by_q;
+    return Step::bisect_p;
 }
 
 /// A member of the cycle from marked Q up the chain to P that straddles the plane of another
@@ -342,6 +416,7 @@ void DepthSorter::split(uint32_t id, OffsetFn&& offset, uint32_t by, DepthSortTr
                                              return list_before(m_polygons[n], n, m_polygons[e], e);
                                          });
         m_list.insert(at, new_id);
+        m_grid.insert(new_id, box_of(m_polygons[new_id]));
     }
     note({DepthSortTrace::Kind::split, id, by, DepthSortTrace::Settled::q_may_hide, cut,
           static_cast<uint32_t>(m_polygons.size() - before)});
@@ -377,6 +452,17 @@ void DepthSorter::cut_cycle(uint32_t p, uint32_t q) {
         q, DepthSortTrace::Cut::halved);
 }
 
+void DepthSorter::paint_rest() {
+    counts.gave_up = true;
+    for (size_t k = m_head; k < m_list.size(); ++k)
+        if (!m_retired[m_list[k]]) {
+            note({DepthSortTrace::Kind::paint, m_list[k], m_list[k]});
+            m_order.push_back(m_list[k]);
+            m_retired[m_list[k]] = 1;
+        }
+    m_chain.clear();
+}
+
 void DepthSorter::sort() {
     for (;;) {
         // drop retired entries once they are most of the list, so scans stay short
@@ -390,10 +476,14 @@ void DepthSorter::sort() {
             m_chain.push_back(m_list[m_head]);
             m_marked[m_list[m_head]] = 1;
         }
+        if (m_split_budget <= 0) return paint_rest();
         const uint32_t p = m_chain.back();
         uint32_t q = 0;
         Step step = examine(p, q);
-        if (step != Step::paint && step != Step::move_q && m_split_budget <= 0) step = Step::paint;
+        if (step != Step::paint && step != Step::move_q && m_split_budget <= 0) {
+            step = Step::paint;
+            counts.gave_up = true;
+        }
         switch (step) {
             case Step::paint:
                 note({DepthSortTrace::Kind::paint, p, p});
@@ -552,6 +642,7 @@ Framebuffer render_depth_sort(const Scene& scene, Film film, const RenderSetting
             if (settings.stats) {
                 settings.stats->raster_fragments += counts.paints;
                 settings.stats->depth_sort_splits += counts.splits;
+                if (counts.gave_up) settings.stats->depth_sort_gave_up = 1;
             }
             return vis;
         });

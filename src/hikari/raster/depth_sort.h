@@ -29,6 +29,10 @@ VisibilityBuffer depth_sort_visibility(std::span<const ScreenTriangle> triangles
 struct DepthSortCounts {
     uint64_t splits = 0;  ///< polygons cut
     uint64_t paints = 0;  ///< pixels painted, every overwrite counted
+    /// The polygons pierce one another so much that cutting them all would take cuts quadratic
+    /// in their number: the sort stopped cutting and painted the order it had (some pixels may
+    /// show a farther polygon).
+    bool gave_up = false;
 };
 
 /// depth_sort_visibility, also counting into `counts`.

@@ -1,10 +1,14 @@
 #pragma once
 // The raster methods' own settings (zbuffer, scanline, depthsort, depthsort-naive).
 
+#include <memory>
+
 #include "hikari/core/vec.h"
 #include "hikari/frame/render_settings.h"
 
 namespace hikari {
+
+struct SharedShadowMaps;  // raster/shadow_map.h
 
 /// How the raster methods interpolate shading across a triangle (the lecture's flat, Gouraud and
 /// Phong shading).
@@ -26,6 +30,10 @@ struct RasterSettings {
     /// [−½, ½)): the image is shifted so that pixel centres land there. The supersampling of
     /// `--spp` renders one pass per sub-pixel sample (frame/subpixel.h).
     Vec2 sample_offset{0.0f, 0.0f};
+    /// Set by `--spp` supersampling: the shadow maps its passes share, drawn by the first pass
+    /// that needs them (fitted to the shadow casters alone, so that they serve every pass).
+    /// Null: each render draws its own.
+    std::shared_ptr<SharedShadowMaps> shared_shadow_maps;
 };
 
 }  // namespace hikari

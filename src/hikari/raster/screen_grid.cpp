@@ -17,10 +17,10 @@ void bounds_of(const ScreenTriangle& t, float& x0, float& y0, float& x1, float& 
 
 }  // namespace
 
-ScreenGrid::ScreenGrid(std::span<const ScreenTriangle> triangles, int width, int height, int cell)
-    : m_cell(std::max(cell, 1)),
-      m_columns(std::max(1, (width + m_cell - 1) / m_cell)),
-      m_rows(std::max(1, (height + m_cell - 1) / m_cell)) {
+ScreenGrid::ScreenGrid(std::span<const ScreenTriangle> triangles, int width, int height, float cell)
+    : m_cell(cell > 0.0f ? cell : 1.0f),
+      m_columns(std::max(1, static_cast<int>(std::ceil(static_cast<float>(width) / m_cell)))),
+      m_rows(std::max(1, static_cast<int>(std::ceil(static_cast<float>(height) / m_cell)))) {
     const size_t cells = static_cast<size_t>(m_columns) * m_rows;
     m_first.assign(cells + 1, 0);
     // Two passes, counting then filling, so that each cell lists its triangles in index order.
@@ -40,20 +40,20 @@ ScreenGrid::ScreenGrid(std::span<const ScreenTriangle> triangles, int width, int
 }
 
 int ScreenGrid::column_of(float x) const {
-    const float g = std::floor(x / float(m_cell));
+    const float g = std::floor(x / m_cell);
     return static_cast<int>(std::clamp(g, 0.0f, float(m_columns - 1)));
 }
 
 int ScreenGrid::row_of(float y) const {
-    const float g = std::floor(y / float(m_cell));
+    const float g = std::floor(y / m_cell);
     return static_cast<int>(std::clamp(g, 0.0f, float(m_rows - 1)));
 }
 
 void ScreenGrid::x_range_in_row(Vec2 a, Vec2 b, float reach, int gy, float& x_lo,
                                 float& x_hi) const {
     // Rows at the border also hold everything beyond the image.
-    const float y0 = gy == 0 ? -INFINITY : float(gy * m_cell) - reach;
-    const float y1 = gy == m_rows - 1 ? INFINITY : float((gy + 1) * m_cell) + reach;
+    const float y0 = gy == 0 ? -INFINITY : static_cast<float>(gy) * m_cell - reach;
+    const float y1 = gy == m_rows - 1 ? INFINITY : static_cast<float>(gy + 1) * m_cell + reach;
     float s0 = 0.0f, s1 = 1.0f;
     const float dy = b.y - a.y;
     if (std::abs(dy) > 1e-12f) {

@@ -14,10 +14,10 @@ namespace hikari {
 
 class ScreenGrid {
   public:
-    /// Bins each of `triangles` into the cells (of `cell` pixels) its bounding box overlaps, in
-    /// index order; the grid covers a width × height image, and what lies beyond it goes to the
-    /// border cells.
-    ScreenGrid(std::span<const ScreenTriangle> triangles, int width, int height, int cell);
+    /// Bins each of `triangles` into the cells (of `cell` pixels, > 0; fractions of a pixel
+    /// allowed, for small images) its bounding box overlaps, in index order; the grid covers a
+    /// width × height image, and what lies beyond it goes to the border cells.
+    ScreenGrid(std::span<const ScreenTriangle> triangles, int width, int height, float cell);
 
     /// Calls visit(triangle index) for every triangle binned in a cell that the segment (a, b)
     /// passes within `reach` pixels of; a triangle in several such cells is visited once per
@@ -51,7 +51,8 @@ class ScreenGrid {
         for (uint32_t k = m_first[c]; k < m_first[c + 1]; ++k) visit(m_items[k]);
     }
 
-    int m_cell = 8, m_columns = 1, m_rows = 1;
+    float m_cell = 8;
+    int m_columns = 1, m_rows = 1;
     std::vector<uint32_t> m_first;  ///< per cell, where its triangles start in m_items
     std::vector<uint32_t> m_items;  ///< triangle indices, cell after cell
 };

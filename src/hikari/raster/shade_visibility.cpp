@@ -540,9 +540,19 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
         ctx.occluders = occluders.get();
     } else if (ctx.shadows == ShadowMode::map || ctx.shadows == ShadowMode::pcf ||
                ctx.shadows == ShadowMode::pcss) {
-        maps = build_shadow_maps(scene, ps.scene, shadow_casting_triangles(scene, ps.scene),
-                                 visible_bounds(ps, vis), raster.shadow_map_size);
-        ctx.shadow_maps = &maps;
+        if (SharedShadowMaps* shared = raster.shared_shadow_maps.get()) {
+            // Supersampling: drawn once for every pass, fitted to the casters alone.
+            if (!shared->maps)
+                shared->maps =
+                    build_shadow_maps(scene, ps.scene, shadow_casting_triangles(scene, ps.scene),
+                                      nullptr, raster.shadow_map_size);
+            ctx.shadow_maps = &*shared->maps;
+        } else {
+            const Aabb receivers = visible_bounds(ps, vis);
+            maps = build_shadow_maps(scene, ps.scene, shadow_casting_triangles(scene, ps.scene),
+                                     &receivers, raster.shadow_map_size);
+            ctx.shadow_maps = &maps;
+        }
     } else if (ctx.shadows == ShadowMode::volume) {
         const std::vector<float> depth = visible_depth(ctx, vis);
         // Shadow volumes are built from polygon silhouettes: exact spheres cast theirs through

@@ -9,6 +9,9 @@
 #include <numbers>
 #include <utility>
 
+#include <fmt/format.h>
+
+#include "hikari/core/memory_budget.h"
 #include "hikari/core/parallel.h"
 #include "hikari/raster/cull.h"
 #include "hikari/raster/sphere_raster.h"
@@ -113,25 +116,33 @@ ShadowMapFace render_face(const RasterScene& casters, const RasterView& view, De
 
 /// A directional light's orthographic map over the casters that lie above `receivers`.
 std::optional<LightShadowMap> directional_map(Vec3 travel, const RasterScene& casters,
-                                              const Aabb& receivers, int size) {
+                                              const Aabb* receivers, int size) {
     LightShadowMap map;
     map.directional = true;
     map.direction = normalize(travel);
     map.size = size;
-    map.origin = receivers.center();
+    map.origin = receivers ? receivers->center() : Vec3(0.0f);
     // The light's view: looking along its travel direction, w toward the light.
     const Vec3 w = -map.direction;
     const Vec3 up = std::abs(w.y) < 0.9f ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
     const Vec3 u = normalize(cross(up, w));
     const Vec3 v = cross(w, u);
+    if (!receivers) {  // fitted to the casters alone: the map's reference is their centre
+        const Aabb world =
+            bounds_in_frame(casters, Vec3(0.0f), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1));
+        if (!world.empty()) map.origin = world.center();
+    }
     const Aabb caster_box = bounds_in_frame(casters, map.origin, u, v, w);
-    Aabb receiver_box;
-    for (int corner = 0; corner < 8; ++corner) {
-        const Vec3 p{(corner & 1) ? receivers.max.x : receivers.min.x,
-                     (corner & 2) ? receivers.max.y : receivers.min.y,
-                     (corner & 4) ? receivers.max.z : receivers.min.z};
-        const Vec3 d = p - map.origin;
-        receiver_box.extend(Vec3(dot(d, u), dot(d, v), dot(d, w)));
+    Aabb receiver_box = caster_box;
+    if (receivers) {
+        receiver_box = Aabb{};
+        for (int corner = 0; corner < 8; ++corner) {
+            const Vec3 p{(corner & 1) ? receivers->max.x : receivers->min.x,
+                         (corner & 2) ? receivers->max.y : receivers->min.y,
+                         (corner & 4) ? receivers->max.z : receivers->min.z};
+            const Vec3 d = p - map.origin;
+            receiver_box.extend(Vec3(dot(d, u), dot(d, v), dot(d, w)));
+        }
     }
     // Only casters over the receivers matter, seen along the light.
     const float x0 = std::max(caster_box.min.x, receiver_box.min.x);
@@ -262,6 +273,34 @@ size_t cube_face(Vec3 d) {
 
 }  // namespace
 
+void check_shadow_map_memory(const Scene& scene, const RasterScene& raster, int size) {
+    double faces = 0;
+    for (const Light& light : scene.lights) switch (shadow_view(light).projection) {
+            case ShadowProjection::parallel:
+            case ShadowProjection::cone:
+                faces += 1;
+                break;
+            case ShadowProjection::cube:
+                faces += 6;
+                break;
+            case ShadowProjection::none:
+                break;
+        }
+    if (faces == 0) return;
+    const double texels = static_cast<double>(size) * size;
+    // Kept: one depth per texel of every face. While a face renders: its visibility buffer,
+    // the sphere rays of its texels and the copy of the casters (caster_scene, projected).
+    const double kept = faces * texels * sizeof(float);
+    const double face = texels * (sizeof(uint32_t) + sizeof(Ray));
+    const double casters =
+        static_cast<double>(raster.triangles.size()) *
+            (sizeof(std::array<uint32_t, 3>) + 2 * sizeof(uint32_t)) +
+        static_cast<double>(raster.triangles.positions.size()) * 3 * sizeof(Vec3);
+    check_memory_need(kept + face + casters,
+                      fmt::format("{:.0f} shadow map faces of {}x{} texels (--shadow-map-size)",
+                                  faces, size, size));
+}
+
 std::vector<uint8_t> shadow_casting_triangles(const Scene& scene, const RasterScene& raster) {
     std::vector<uint8_t> casts_by_id(scene.primitive_count, 1);
     for (const Sphere& s : scene.spheres) casts_by_id[s.id] = s.casts_shadow ? 1 : 0;
@@ -275,10 +314,11 @@ std::vector<uint8_t> shadow_casting_triangles(const Scene& scene, const RasterSc
 }
 
 ShadowMaps build_shadow_maps(const Scene& scene, const RasterScene& raster,
-                             const std::vector<uint8_t>& casters, const Aabb& receivers, int size) {
+                             const std::vector<uint8_t>& casters, const Aabb* receivers, int size) {
+    check_shadow_map_memory(scene, raster, size);
     ShadowMaps maps;
     maps.lights.resize(scene.lights.size());
-    if (receivers.empty()) return maps;
+    if (receivers && receivers->empty()) return maps;
     const RasterScene caster_triangles = caster_scene(raster, casters);
     for (size_t l = 0; l < scene.lights.size(); ++l) {
         const LightShadowView view = shadow_view(scene.lights[l]);

@@ -48,19 +48,31 @@ struct ShadowMaps {
     std::vector<std::optional<LightShadowMap>> lights;
 };
 
+/// Shadow maps drawn once and shared by the passes of one supersampled render.
+struct SharedShadowMaps {
+    std::optional<ShadowMaps> maps;  ///< nullopt until the first pass draws them
+};
+
 /// Which triangles of `raster` (the tessellated scene) cast shadows into maps: those of
 /// spheres, triangles and meshes whose `casts_shadow` is true. Infinite planes are left out of
 /// every map — no finite map holds them; plane_blocks_light() answers for them exactly.
 std::vector<uint8_t> shadow_casting_triangles(const Scene& scene, const RasterScene& raster);
+
+/// Refuses (InputError, core/memory_budget.h) shadow maps of `size` × `size` texels per face
+/// for `scene`'s lights (one face per directional light, six per point or area light) that
+/// would not fit in the memory limit, before any is drawn: what build_shadow_maps checks first.
+void check_shadow_map_memory(const Scene& scene, const RasterScene& raster, int size);
 
 /// Renders the shadow maps of every light of `scene` at `size` × `size` texels per face:
 /// casters are the triangles of `raster` that `casters` marks and the exact spheres of `raster`
 /// that cast shadows (drawn per texel: their shadows are round). A directional light's map is
 /// fitted to the bounds of those casters, in the light's view, that lie over `receivers` (the
 /// bounds of the points the camera sees): casters elsewhere cannot shadow anything visible.
-/// Faces render in parallel; the maps do not depend on the thread count.
+/// Null `receivers`: fitted to the casters alone, so that the maps serve any receivers (the
+/// passes of a supersampled render). Faces render in parallel; the maps do not depend on the
+/// thread count.
 ShadowMaps build_shadow_maps(const Scene& scene, const RasterScene& raster,
-                             const std::vector<uint8_t>& casters, const Aabb& receivers, int size);
+                             const std::vector<uint8_t>& casters, const Aabb* receivers, int size);
 
 /// Whether `p` (a visible point with unit normal `n` on the side the light may reach) is
 /// lit according to `map`. The comparison allows a depth bias of one texel plus the slope

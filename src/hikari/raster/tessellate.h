@@ -36,6 +36,18 @@ enum class SphereGeometry { tessellated, exact };
 RasterScene tessellate_scene(const Scene& scene,
                              SphereGeometry spheres = SphereGeometry::tessellated);
 
+/// The triangles tessellate_sphere makes of a sphere of `segments` polygons around its equator.
+double sphere_triangle_count(uint32_t segments);
+
+/// Refuses (InputError, core/memory_budget.h) a scene whose tessellation and projection would
+/// not fit in the memory limit, before any of it is allocated: what tessellate_scene checks
+/// first. The count covers spheres' tessellations (`--tessellation`) and meshes repeated many
+/// times alike. Returns the counts it found (at most what tessellate_scene makes).
+struct RasterCounts {
+    double triangles = 0, vertices = 0;
+};
+RasterCounts check_raster_memory(const Scene& scene, SphereGeometry spheres);
+
 /// The distance from the camera's eye to the nearest sphere or mesh triangle it could see
 /// (RasterScene::nearest_object): triangles wholly behind the eye, and triangles edge-on with
 /// the eye in their plane, are left out; a triangle counts by its bounding box (never farther

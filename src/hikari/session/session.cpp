@@ -285,6 +285,12 @@ RenderResult Session::render(const RenderRequest& request) {
         }
     }
     if (control.cancel.load() || cancel_requested()) throw Interrupted();
+    if (result.stats->depth_sort_gave_up.load())
+        result.warnings.push_back(fmt::format(
+            "the depth sort stopped cutting polygons after {} cuts: they pierce one another so "
+            "much that ordering them all needs cuts quadratic in their number, so some pixels "
+            "may show a farther polygon (-m zbuffer resolves every pixel exactly)",
+            result.stats->depth_sort_splits.load()));
     if (request.wireframe_overlay && !is_algorithm_aov(request.aov)) {
         LineSettings lines;
         lines.triangle_edges = true;

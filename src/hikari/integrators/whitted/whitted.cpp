@@ -1,6 +1,7 @@
 #include "hikari/integrators/whitted/whitted.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -8,7 +9,10 @@
 #include <utility>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "hikari/bvh/scene_intersector.h"
+#include "hikari/core/memory_budget.h"
 #include "hikari/frame/subpixel.h"
 #include "hikari/frame/tiles.h"
 #include "hikari/geometry/ray_offset.h"
@@ -120,6 +124,33 @@ struct WaveRecord {
     std::vector<PathLevel> folded;          ///< per level, after fold(): the totals
 };
 
+/// The ray-tree nodes every thread holds at once, for the memory limit: a tree's breadth can
+/// double at each level (a glass surface spawns a mirror and a refracted ray), so a deep
+/// --max-depth between mirrors and glass is checked level by level rather than up front.
+std::atomic<uint64_t> g_tree_nodes_held{0};
+
+/// A tracer's share of g_tree_nodes_held, given back when its paths are finished.
+class HeldTreeNodes {
+  public:
+    HeldTreeNodes() = default;
+    HeldTreeNodes(const HeldTreeNodes&) = delete;
+    HeldTreeNodes& operator=(const HeldTreeNodes&) = delete;
+    ~HeldTreeNodes() { g_tree_nodes_held.fetch_sub(m_nodes); }
+
+    /// Adds `nodes` of a new level at `depth` of --max-depth `max_depth`, each `node_bytes`
+    /// over all the arrays that hold it; InputError when all trees then exceed the limit.
+    void add(size_t nodes, double node_bytes, int depth, int max_depth) {
+        m_nodes += nodes;
+        const uint64_t held = g_tree_nodes_held.fetch_add(nodes) + nodes;
+        check_memory_need(static_cast<double>(held) * node_bytes,
+                          fmt::format("the ray tree ({} rays at level {} of --max-depth {})", held,
+                                      depth, max_depth));
+    }
+
+  private:
+    uint64_t m_nodes = 0;
+};
+
 /// What one thread keeps between tiles (the blocks are too big for a worker's stack).
 struct WaveScratch {
     PrimaryBlock block;
@@ -190,8 +221,11 @@ class WaveTracer {
     const PathLevel& finish_paths(PathLevel& first) {
         join_refracted(first);
         if (m_record) m_record->own.push_back(first);
+        HeldTreeNodes held;
+        held.add(first.mirror.size(), node_bytes(), 1, m_ctx.max_depth);
         int depth = 1;
         while (!m_s.next_rays.empty()) {
+            held.add(m_s.next_rays.size(), node_bytes(), depth + 1, m_ctx.max_depth);
             std::swap(m_s.rays, m_s.next_rays);
             std::swap(m_s.cones, m_s.next_cones);
             m_s.next_rays.clear();
@@ -207,6 +241,16 @@ class WaveTracer {
         if (m_record)
             for (int d = 0; d < depth; ++d) m_record->folded.push_back(level(d));
         return level(0);
+    }
+
+    /// The bytes one node of the tree takes over every array that holds it: its PathLevel
+    /// entries, its ray in two ray lists, its cones, and what a WaveRecord copies of it.
+    double node_bytes() const {
+        constexpr double level = 3 * sizeof(float) + 2 * sizeof(int32_t) + 2 * sizeof(float);
+        double bytes = level + 2 * sizeof(Ray);
+        if (m_ctx.textured) bytes += 2 * sizeof(RayCone);
+        if (m_record) bytes += sizeof(WaveRecord::Traced) + 2 * level + sizeof(RayTreeNode);
+        return bytes;
     }
 
     /// Traces and shades `rays[0, count)`, which are of path segment `segment`, block by block

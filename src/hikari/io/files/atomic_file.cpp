@@ -201,6 +201,17 @@ void write_file_atomically(const std::filesystem::path& path, std::span<const ui
     if (out.error != 0) throw_write_error(path, out.step, out.error);
 }
 
+TemporaryFile::TemporaryFile(const std::filesystem::path& target) {
+    remove_stale_temporary_files(target);
+    m_path = temporary_path_for(target).string();
+    m_slot = register_temporary(m_path);
+}
+
+TemporaryFile::~TemporaryFile() {
+    ::unlink(m_path.c_str());
+    unregister_temporary(m_slot);
+}
+
 void remove_pending_temporary_files() noexcept {
     for (TemporarySlot& slot : g_slots) {
         if (slot.state.load(std::memory_order_acquire) == k_ready) ::unlink(slot.path);

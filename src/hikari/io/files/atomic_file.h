@@ -30,6 +30,24 @@ std::string temporary_prefix_for(const std::filesystem::path& target);
 /// were removed. Never throws: an unreadable directory removes nothing.
 size_t remove_stale_temporary_files(const std::filesystem::path& target) noexcept;
 
+/// A temporary file beside `target` for a library that writes only to files (libxlsxwriter),
+/// named and cleaned up as write_file_atomically's own: a later run's
+/// remove_stale_temporary_files removes it when a `kill -9` left it, a signal handler's
+/// remove_pending_temporary_files removes it on SIGINT or SIGTERM, and the destructor removes
+/// it otherwise. Creates nothing itself: the path is the library's to create.
+class TemporaryFile {
+  public:
+    explicit TemporaryFile(const std::filesystem::path& target);
+    ~TemporaryFile();
+    TemporaryFile(const TemporaryFile&) = delete;
+    TemporaryFile& operator=(const TemporaryFile&) = delete;
+    const std::string& path() const { return m_path; }
+
+  private:
+    std::string m_path;
+    int m_slot = -1;  ///< in the signal handler's registry; -1: not registered
+};
+
 /// Unlinks every temporary file that a write_file_atomically() call is writing right now.
 /// Async-signal-safe (only atomics and unlink(2) on fixed buffers): call it from a SIGINT/SIGTERM
 /// handler before exiting, so an interrupted write leaves nothing behind.

@@ -11,9 +11,9 @@
 
 #include "hikari/core/color.h"
 #include "hikari/core/error.h"
-#include "hikari/io/files/read_file.h"
 #include "hikari/io/images/xlsx_workbook.h"
 #include "hikari/io/images/xlsx_write.h"
+#include "hikari/shading/lights.h"
 
 namespace hikari {
 
@@ -411,7 +411,7 @@ void write_workbook(lxw_workbook* book, const Scene& scene, SampleEncoding encod
 std::string formula_workbook_obstacle(const Scene& scene) {
     if (scene.spheres.size() != 1 || !scene.planes.empty() || scene.triangles.size() != 0)
         return "it computes one sphere and nothing else";
-    if (scene.lights.size() != 1 || !std::holds_alternative<DirectionalLight>(scene.lights[0]))
+    if (scene.lights.size() != 1 || !light_as<DirectionalLight>(scene.lights[0]))
         return "it computes one directional light";
     const Sphere& s = scene.spheres.front();
     const Material& m = scene.materials[s.material];
@@ -433,21 +433,8 @@ std::vector<uint8_t> encode_xlsx_formulas(const std::filesystem::path& path, con
                                           SampleEncoding encoding) {
     if (const std::string why = formula_workbook_obstacle(scene); !why.empty())
         fail_workbook(path, "--formulas cannot express this scene: " + why);
-    const TemporaryWorkbook file;
-    const std::string temporary = file.path().string();
-    lxw_workbook_options options{};
-    options.constant_memory = LXW_TRUE;
-    lxw_workbook* book = workbook_new_opt(temporary.c_str(), &options);
-    if (!book) fail_workbook(path, "libxlsxwriter could not start a workbook");
-    try {
-        write_workbook(book, scene, encoding, path);
-    } catch (...) {
-        workbook_close(book);
-        throw;
-    }
-    check_workbook(workbook_close(book), path);
-    const std::string bytes = read_file_bytes(file.path());
-    return {bytes.begin(), bytes.end()};
+    return build_workbook(path,
+                          [&](lxw_workbook* book) { write_workbook(book, scene, encoding, path); });
 }
 
 }  // namespace hikari

@@ -1,24 +1,31 @@
 #include "hikari/io/images/xlsx_workbook.h"
 
-#include <unistd.h>
-
-#include <atomic>
-
 #include <fmt/format.h>
 
 #include "hikari/core/error.h"
+#include "hikari/io/files/atomic_file.h"
+#include "hikari/io/files/read_file.h"
 
 namespace hikari {
 
-TemporaryWorkbook::TemporaryWorkbook() {
-    static std::atomic<unsigned> counter{0};
-    m_path = std::filesystem::temp_directory_path() /
-             fmt::format("hikari-{}-{}.xlsx", ::getpid(), counter++);
-}
-
-TemporaryWorkbook::~TemporaryWorkbook() {
-    std::error_code ignored;
-    std::filesystem::remove(m_path, ignored);
+std::vector<uint8_t> build_workbook(const std::filesystem::path& output,
+                                    const std::function<void(lxw_workbook*)>& fill) {
+    const TemporaryFile file(output);
+    std::string directory = output.has_parent_path() ? output.parent_path().string() : ".";
+    lxw_workbook_options options{};
+    options.constant_memory = LXW_TRUE;
+    options.tmpdir = directory.data();
+    lxw_workbook* book = workbook_new_opt(file.path().c_str(), &options);
+    if (!book) fail_workbook(output, "libxlsxwriter could not start a workbook");
+    try {
+        fill(book);
+    } catch (...) {
+        workbook_close(book);
+        throw;
+    }
+    check_workbook(workbook_close(book), output);
+    const std::string bytes = read_file_bytes(file.path());
+    return {bytes.begin(), bytes.end()};
 }
 
 void fail_workbook(const std::filesystem::path& path, const std::string& why) {

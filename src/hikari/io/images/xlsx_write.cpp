@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 
 #include "hikari/core/error.h"
-#include "hikari/io/files/read_file.h"
 #include "hikari/io/images/colour_palette.h"
 #include "hikari/io/images/xlsx_workbook.h"
 
@@ -53,13 +52,7 @@ std::vector<uint8_t> encode_xlsx(const std::filesystem::path& path, const Srgb8I
                                "rows)",
                                image.width, image.height, k_xlsx_max_columns, k_xlsx_max_rows));
     const PalettedImage paletted = median_cut(image, k_xlsx_palette_colours);
-    const TemporaryWorkbook file;
-    const std::string temporary = file.path().string();
-    lxw_workbook_options options{};
-    options.constant_memory = LXW_TRUE;
-    lxw_workbook* book = workbook_new_opt(temporary.c_str(), &options);
-    if (!book) fail(path, "libxlsxwriter could not start a workbook");
-    try {
+    return build_workbook(path, [&](lxw_workbook* book) {
         // Sheet 1: the picture, one fill format per palette colour.
         lxw_worksheet* picture = add_grid_sheet(book, "image", image.width, image.height,
                                                 k_cell_pixels, k_cell_pixels, path);
@@ -99,13 +92,7 @@ std::vector<uint8_t> encode_xlsx(const std::filesystem::path& path, const Srgb8I
                         path);
             }
         }
-    } catch (...) {
-        workbook_close(book);
-        throw;
-    }
-    check(workbook_close(book), path);
-    const std::string bytes = read_file_bytes(file.path());
-    return {bytes.begin(), bytes.end()};
+    });
 }
 
 }  // namespace hikari

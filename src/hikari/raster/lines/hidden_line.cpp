@@ -17,7 +17,11 @@ namespace hikari {
 namespace {
 
 /// Grid cell size in pixels: small cells keep the candidate lists of dense meshes short.
-constexpr int k_cell_pixels = 8;
+constexpr float k_cell_pixels = 8.0f;
+/// The fewest grid cells across the image's larger side: a small image gets cells of a
+/// fraction of a pixel, so the work of finding candidates is the same at 1 × 1 as at 512 ×
+/// 512 (the candidates found do not depend on the grid, only how many are looked at).
+constexpr float k_min_cells_across = 64.0f;
 /// Relative depth margin: a face hides a point only when nearer by more than this (float noise
 /// on a face through the point itself, e.g. a third face on an edge, must not hide it).
 constexpr float k_depth_margin = 1e-5f;
@@ -298,7 +302,10 @@ LineDrawing draw_hidden_lines(const Scene& scene, const LineSettings& lines) {
     const LineScene ls = prepare_line_scene(scene, lines);
     const std::vector<ScreenTriangle>& screen = ls.projected.triangles;
     Context ctx{std::vector<Occluder>(screen.size()),
-                ScreenGrid(screen, scene.camera.width, scene.camera.height, k_cell_pixels)};
+                ScreenGrid(screen, scene.camera.width, scene.camera.height,
+                           std::min(k_cell_pixels, static_cast<float>(std::max(
+                                                       scene.camera.width, scene.camera.height)) /
+                                                       k_min_cells_across))};
     hikari::parallel_for(size_t{0}, screen.size(),
                          [&](size_t i) { ctx.occluders[i] = make_occluder(screen[i]); });
 
