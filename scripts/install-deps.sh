@@ -24,8 +24,9 @@ packages=(
     pybind11-dev python3-dev python3-numpy python3-pytest
 )
 # The browser test drives hikari serve's page in Debian's chromium.
+# ffmpeg encodes `-o turntable.mp4/.gif/.webm` (docs/animation.md); its test needs it too.
 if $tests; then
-    packages+=(chromium)
+    packages+=(chromium ffmpeg)
     # A node with its npm from elsewhere (NodeSource, nvm) will do; Debian's otherwise.
     command -v npm > /dev/null || packages+=(nodejs npm)
 fi

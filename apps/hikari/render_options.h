@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "frame_options.h"
 #include "hikari/frame/framebuffer.h"
 #include "hikari/frame/tone_map.h"
 #include "hikari/io/scene/scene_overrides.h"
@@ -43,6 +44,7 @@ struct RenderOptions {
     float exposure = 0.0f;              ///< --exposure EV: colour × 2^EV in every format
     ToneMap tone_map = ToneMap::clamp;  ///< --tonemap: for the formats of display values
     int bit_depth = 8;                  ///< --bit-depth: 16 for .png and .ppm
+    FrameOptions frames;                ///< --turntable, --frames, --shard: an animation
 };
 
 }  // namespace hikari::cli
