@@ -37,13 +37,13 @@ void check_frame_outputs(const RenderOptions& o) {
         std::string why;
         if (is_video_path(output)) {
             if (!o.frames.shard.empty())
-                throw CLI::ValidationError(fmt::format(
-                    "{}: a video takes every frame in one process; with --shard, write "
-                    "numbered images (-o frame_%04d.png) and encode them afterwards",
-                    output));
+                throw CLI::ValidationError(
+                    fmt::format("{}: a video takes every frame in one process; with --shard, write "
+                                "numbered images (-o frame_%04d.png) and encode them afterwards",
+                                output));
         } else if (!parse_frame_pattern(output, why)) {
-            throw CLI::ValidationError(fmt::format("-o {}: a frame output needs a frame number: {}",
-                                                   output, why));
+            throw CLI::ValidationError(
+                fmt::format("-o {}: a frame output needs a frame number: {}", output, why));
         }
     }
 }
@@ -58,12 +58,14 @@ void add_frame_options(CLI::App& render, FrameOptions& f) {
                     "distance; frame k turned by k/N of a turn. -o names the frames "
                     "(out/frame_%04d.png) or a video (.mp4, .webm, .gif; needs ffmpeg)")
         ->check(whole_in(1, 1000000));
-    render.add_option("--frames", f.range,
-                      "With --turntable: render frames A to B only (numbered from 0)")
+    render
+        .add_option("--frames", f.range,
+                    "With --turntable: render frames A to B only (numbered from 0)")
         ->type_name("A-B");
-    render.add_option("--shard", f.shard,
-                      "Render shard I of N (I from 0): every N-th frame of the range starting at "
-                      "its I-th, so N jobs of an array render each frame once")
+    render
+        .add_option("--shard", f.shard,
+                    "Render shard I of N (I from 0): every N-th frame of the range starting at "
+                    "its I-th, so N jobs of an array render each frame once")
         ->type_name("I/N");
     render.add_flag("--overwrite", f.overwrite,
                     "Render frames whose files exist again (default: skip them, so a stopped "

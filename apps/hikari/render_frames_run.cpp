@@ -62,10 +62,9 @@ void check_video_output(const fs::path& video, std::span<const RenderInput> inpu
     std::error_code ec;
     const fs::path dir = video.has_parent_path() ? video.parent_path() : ".";
     if (!fs::is_directory(dir, ec) || ::access(dir.c_str(), W_OK) != 0)
-        throw UsageError(fmt::format("{}: cannot write: the directory {} {}", video.string(),
-                                     dir.string(),
-                                     fs::is_directory(dir, ec) ? "is not writable"
-                                                               : "does not exist"));
+        throw UsageError(
+            fmt::format("{}: cannot write: the directory {} {}", video.string(), dir.string(),
+                        fs::is_directory(dir, ec) ? "is not writable" : "does not exist"));
     for (const RenderInput& input : inputs)
         if (fs::equivalent(video, input.file, ec))
             throw UsageError(fmt::format("{}: refusing to overwrite {} with the video",
@@ -240,9 +239,9 @@ void report_frames(const RenderOptions& o, const FrameRun& run, const FrameTally
                    double seconds) {
     if (o.quiet) return;
     const std::string skipped =
-        tally.skipped > 0 ? fmt::format(", {} already there (--overwrite renders them)",
-                                        tally.skipped)
-                          : "";
+        tally.skipped > 0
+            ? fmt::format(", {} already there (--overwrite renders them)", tally.skipped)
+            : "";
     print_err("hikari: wrote {} frame{} to {} ({}{}, {:.3f} s, {:.2f} frames/s)\n", tally.rendered,
               tally.rendered == 1 ? "" : "s", run.output, run.method->name, skipped, seconds,
               seconds > 0 ? double(tally.rendered) / seconds : 0.0);

@@ -37,9 +37,8 @@ std::optional<FrameRange> parse_frame_range(std::string_view text, std::string& 
 std::optional<FrameShard> parse_frame_shard(std::string_view text, std::string& why) {
     const size_t slash = text.find('/');
     const std::optional<int> index = whole_number(text.substr(0, slash));
-    const std::optional<int> count = slash == std::string_view::npos
-                                         ? std::nullopt
-                                         : whole_number(text.substr(slash + 1));
+    const std::optional<int> count =
+        slash == std::string_view::npos ? std::nullopt : whole_number(text.substr(slash + 1));
     if (!index || !count || *count == 0) {
         why = "expected I/N, shard I of N (whole numbers, N at least 1), such as 0/4";
         return std::nullopt;

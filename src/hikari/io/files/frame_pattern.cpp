@@ -44,9 +44,10 @@ std::optional<FramePattern> parse_frame_pattern(std::string_view pattern, std::s
         size_t length = 0;
         const int digits = spec_digits(rest, length);
         if (digits < 0 || found) {
-            why = digits < 0 ? fmt::format("'%' at character {} is not %d, %0Nd (N from 1 to 9) "
-                                           "or %% (a literal %)",
-                                           i + 1)
+            why = digits < 0 ? fmt::format(
+                                   "'%' at character {} is not %d, %0Nd (N from 1 to 9) "
+                                   "or %% (a literal %)",
+                                   i + 1)
                              : "it has two frame numbers; give one, such as %04d";
             return std::nullopt;
         }
@@ -56,8 +57,9 @@ std::optional<FramePattern> parse_frame_pattern(std::string_view pattern, std::s
         i += length;
     }
     if (!found) {
-        why = "it has no frame number; put %04d (or %d) where each frame's number goes, as in "
-              "out/frame_%04d.png";
+        why =
+            "it has no frame number; put %04d (or %d) where each frame's number goes, as in "
+            "out/frame_%04d.png";
         return std::nullopt;
     }
     return parsed;

@@ -46,10 +46,21 @@ std::vector<std::string> output_arguments(const fs::path& path) {
 /// The whole ffmpeg command line: raw RGB24 frames on standard input, the video to `temporary`.
 std::vector<std::string> ffmpeg_arguments(const fs::path& path, const fs::path& temporary,
                                           const VideoSettings& s) {
-    std::vector<std::string> args{"ffmpeg", "-hide_banner", "-loglevel", "error",
-                                  "-y",     "-f",           "rawvideo",  "-pix_fmt",
-                                  "rgb24",  "-s",           fmt::format("{}x{}", s.width, s.height),
-                                  "-r",     fmt::format("{}", s.fps),     "-i", "-"};
+    std::vector<std::string> args{"ffmpeg",
+                                  "-hide_banner",
+                                  "-loglevel",
+                                  "error",
+                                  "-y",
+                                  "-f",
+                                  "rawvideo",
+                                  "-pix_fmt",
+                                  "rgb24",
+                                  "-s",
+                                  fmt::format("{}x{}", s.width, s.height),
+                                  "-r",
+                                  fmt::format("{}", s.fps),
+                                  "-i",
+                                  "-"};
     for (std::string& a : output_arguments(path)) args.push_back(std::move(a));
     args.push_back(temporary.string());
     return args;
@@ -73,7 +84,8 @@ int spawn_with_input_pipe(const fs::path& program, const std::vector<std::string
     ::close(fds[0]);
     if (error != 0) {
         ::close(fds[1]);
-        throw InputError(fmt::format("cannot start {}: {}", program.string(), std::strerror(error)));
+        throw InputError(
+            fmt::format("cannot start {}: {}", program.string(), std::strerror(error)));
     }
     return fds[1];
 }
@@ -115,17 +127,16 @@ std::string missing_ffmpeg_message(const fs::path& video) {
 }
 
 VideoPipe::VideoPipe(const fs::path& path, const VideoSettings& settings)
-    : m_path(path),
-      m_frame_bytes(static_cast<size_t>(settings.width) * settings.height * 3) {
+    : m_path(path), m_frame_bytes(static_cast<size_t>(settings.width) * settings.height * 3) {
     const std::optional<fs::path> ffmpeg = find_ffmpeg();
     if (!ffmpeg) throw InputError(missing_ffmpeg_message(path));
     remove_stale_temporary_files(path);
-    m_temporary = path.parent_path() /
-                  fmt::format("{}{}-video.tmp", temporary_prefix_for(path), ::getpid());
+    m_temporary =
+        path.parent_path() / fmt::format("{}{}-video.tmp", temporary_prefix_for(path), ::getpid());
     // A write to a pipe whose reader has gone must fail with EPIPE, not end this process.
     ::signal(SIGPIPE, SIG_IGN);
-    m_input = spawn_with_input_pipe(*ffmpeg, ffmpeg_arguments(path, m_temporary, settings),
-                                    m_process);
+    m_input =
+        spawn_with_input_pipe(*ffmpeg, ffmpeg_arguments(path, m_temporary, settings), m_process);
 }
 
 VideoPipe::~VideoPipe() { stop(); }
@@ -155,9 +166,10 @@ void VideoPipe::write_frame(std::span<const uint8_t> rgb) {
             const int status = (::close(m_input), m_input = -1, wait_for(m_process));
             m_process = -1;
             stop();
-            throw InputError(fmt::format("{}: ffmpeg stopped (exit status {}) before the video "
-                                         "was whole; its messages are above",
-                                         m_path.string(), status));
+            throw InputError(
+                fmt::format("{}: ffmpeg stopped (exit status {}) before the video "
+                            "was whole; its messages are above",
+                            m_path.string(), status));
         }
         data += n;
         left -= static_cast<size_t>(n);
