@@ -7,6 +7,7 @@
 
 #include "cli_options.h"
 #include "hikari/io/files/frame_pattern.h"
+#include "hikari/io/images/svg_write.h"
 #include "hikari/io/video/video_pipe.h"
 #include "hikari/session/frame_selection.h"
 #include "output_paths.h"
@@ -41,6 +42,10 @@ void check_frame_outputs(const RenderOptions& o) {
                     fmt::format("{}: a video takes every frame in one process; with --shard, write "
                                 "numbered images (-o frame_%04d.png) and encode them afterwards",
                                 output));
+        } else if (is_svg_path(output) && !find_method(name)->draw) {
+            throw CLI::ValidationError(
+                fmt::format("{}: SVG output is for the line methods ({}); method {} draws no lines",
+                            output, drawing_methods(), name));
         } else if (!parse_frame_pattern(output, why)) {
             throw CLI::ValidationError(
                 fmt::format("-o {}: a frame output needs a frame number: {}", output, why));

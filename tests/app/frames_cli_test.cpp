@@ -158,6 +158,7 @@ TEST(FramesCli, BadFrameOptionsAreClearErrors) {
     expect("-o " + (dir / "t.mp4").string(), 2, "a video needs frames");
     expect("--turntable 6 --shard 0/2 -o " + (dir / "t.mp4").string(), 2, "--shard");
     expect("--turntable 0 -o " + out, 2, "--turntable");
+    expect("--turntable 2 -o " + (dir / "f_%d.svg").string(), 2, "draws no lines");
     expect("--turntable 2 -o " + (dir / "no" / "f_%d.png").string(), 2, "does not exist");
     expect("--turntable 2 -o " + out + " " + (dir / "missing.json").string(), 1, "missing.json");
     EXPECT_EQ(names_in(dir.path()).size(), 0u);
