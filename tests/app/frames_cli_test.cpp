@@ -88,15 +88,16 @@ TEST(FramesCli, RerunSkipsFinishedFramesAndOverwriteRendersThem) {
     EXPECT_EQ(names_in(dir.path()).size(), 4u);  // no temporaries left
 }
 
-TEST(FramesCli, ShardsPartitionTheFrames) {
+TEST(FramesCli, ShardsPartitionTheFramesWhateverTheThreads) {
     TempDir dir;
     fs::create_directories(dir / "whole");
     fs::create_directories(dir / "shards");
     const std::string frames = k_still + " --turntable 7 --frames 1-6";
     ASSERT_EQ(run_hikari(frames + " -o " + (dir / "whole" / "f_%03d.png").string()).status, 0);
     for (int i = 0; i < 4; ++i) {
-        const RunResult r = run_hikari(fmt::format("{} --shard {}/4 -o {}", frames, i,
-                                                   (dir / "shards" / "f_%03d.png").string()));
+        const RunResult r =
+            run_hikari(fmt::format("{} --shard {}/4 --threads {} -o {}", frames, i, 1 + i % 2,
+                                   (dir / "shards" / "f_%03d.png").string()));
         ASSERT_EQ(r.status, 0) << r.output;
         const size_t written_so_far[] = {2, 4, 5, 6};  // 6 frames in 4 shards: 2, 2, 1, 1
         EXPECT_EQ(names_in(dir / "shards").size(), written_so_far[i]);
