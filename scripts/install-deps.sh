@@ -24,9 +24,10 @@ packages=(
     pybind11-dev python3-dev python3-numpy python3-pytest
 )
 # The browser test drives hikari serve's page in Debian's chromium; LibreOffice recalculates the
-# --formulas workbook in tests/python/test_xlsx_formulas.py.
+# --formulas workbook in tests/python/test_xlsx_formulas.py; ffmpeg encodes `-o turntable.mp4`
+# (docs/animation.md), and its test needs it too.
 if $tests; then
-    packages+=(chromium libreoffice-calc-nogui)
+    packages+=(chromium libreoffice-calc-nogui ffmpeg)
     # A node with its npm from elsewhere (NodeSource, nvm) will do; Debian's otherwise.
     command -v npm > /dev/null || packages+=(nodejs npm)
 fi

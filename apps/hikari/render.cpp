@@ -19,6 +19,7 @@
 #include "load_scene.h"
 #include "output_paths.h"
 #include "progress.h"
+#include "render_frames.h"
 #include "render_output.h"
 #include "render_report.h"
 #include "signals.h"
@@ -153,6 +154,7 @@ void render_with(const RenderOptions& o, Session& session, const Run& run, doubl
 }  // namespace
 
 int run_render(const RenderOptions& o) {
+    if (is_frame_render(o)) return run_frame_render(o);
     const auto load_start = Clock::now();
     const std::vector<Run> runs = planned_runs(o);
     if (!is_svg_path(runs.front().output))

@@ -11,6 +11,7 @@
 #include "hikari/io/images/svg_write.h"
 #include "hikari/scene/scene.h"
 #include "output_paths.h"
+#include "render_frames.h"
 #include "render_methods.h"
 
 namespace hikari::cli {
@@ -221,6 +222,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
     add_set_option(*render, o.overrides);
     add_model_options(*render, o);
     add_extra_options(*render, o);
+    add_frame_options(*render, o.frames);
     add_method_options(*render, o.own);
     render->footer(method_list());
     return render;
@@ -238,6 +240,7 @@ void check_render_command(const CLI::App& render, RenderOptions& o) {
         throw CLI::ValidationError("--depth-range is for --aov depth");
     check_output_development(render, o);
     check_formulas(render, o);
+    check_frame_options(render, o);
 }
 
 }  // namespace hikari::cli

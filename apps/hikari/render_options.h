@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "frame_options.h"
 #include "hikari/frame/framebuffer.h"
 #include "hikari/frame/tone_map.h"
 #include "hikari/io/scene/scene_overrides.h"
@@ -45,6 +46,7 @@ struct RenderOptions {
     int bit_depth = 8;                  ///< --bit-depth: 16 for .png and .ppm
     SampleEncoding encoding = SampleEncoding::srgb;  ///< --encoding of the integer formats
     bool formulas = false;  ///< --formulas: an .xlsx that computes the picture itself
+    FrameOptions frames;    ///< --turntable, --frames, --shard: an animation
 };
 
 /// --bit-depth and --encoding, as the image writer takes them.

@@ -1,0 +1,107 @@
+#include "render_frames.h"
+
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "cli_options.h"
+#include "hikari/io/files/frame_pattern.h"
+#include "hikari/io/images/svg_write.h"
+#include "hikari/io/video/video_pipe.h"
+#include "hikari/session/frame_selection.h"
+#include "output_paths.h"
+
+namespace hikari::cli {
+
+namespace {
+
+/// --frames: a range A-B within the turntable's frames.
+void check_frame_range(const FrameOptions& f) {
+    std::string why;
+    const std::optional<FrameRange> range = parse_frame_range(f.range, why);
+    if (!range) throw CLI::ValidationError(fmt::format("--frames {}: {}", f.range, why));
+    if (range->last >= f.turntable)
+        throw CLI::ValidationError(
+            fmt::format("--frames {}: the turntable has frames 0 to {} (--turntable {})", f.range,
+                        f.turntable - 1, f.turntable));
+}
+
+/// -o of every method: a video, or a file name with a frame number in it.
+void check_frame_outputs(const RenderOptions& o) {
+    if (o.output.empty())
+        throw CLI::ValidationError(
+            "name the frames' files with -o and a frame number (-o out/frame_%04d.png), or a "
+            "video (-o turntable.mp4, .webm or .gif)");
+    for (const std::string& name : o.methods) {
+        const std::string output = output_for(o, name);
+        std::string why;
+        if (is_video_path(output)) {
+            if (!o.frames.shard.empty())
+                throw CLI::ValidationError(
+                    fmt::format("{}: a video takes every frame in one process; with --shard, write "
+                                "numbered images (-o frame_%04d.png) and encode them afterwards",
+                                output));
+        } else if (is_svg_path(output) && !find_method(name)->draw) {
+            throw CLI::ValidationError(
+                fmt::format("{}: SVG output is for the line methods ({}); method {} draws no lines",
+                            output, drawing_methods(), name));
+        } else if (!parse_frame_pattern(output, why)) {
+            throw CLI::ValidationError(
+                fmt::format("-o {}: a frame output needs a frame number: {}", output, why));
+        }
+    }
+}
+
+}  // namespace
+
+void add_frame_options(CLI::App& render, FrameOptions& f) {
+    render
+        .add_option("--turntable", f.turntable,
+                    "Render N frames of the camera orbiting the point it looks at (the scene's "
+                    "camera, or a model's framing), about its up axis, keeping its elevation and "
+                    "distance; frame k turned by k/N of a turn. -o names the frames "
+                    "(out/frame_%04d.png) or a video (.mp4, .webm, .gif; needs ffmpeg)")
+        ->check(whole_in(1, 1000000));
+    render
+        .add_option("--frames", f.range,
+                    "With --turntable: render frames A to B only (numbered from 0)")
+        ->type_name("A-B");
+    render
+        .add_option("--shard", f.shard,
+                    "Render shard I of N (I from 0): every N-th frame of the range starting at "
+                    "its I-th, so N jobs of an array render each frame once")
+        ->type_name("I/N");
+    render.add_flag("--overwrite", f.overwrite,
+                    "Render frames whose files exist again (default: skip them, so a stopped "
+                    "run resumes)");
+    render.add_option("--fps", f.fps, "A video's frames per second")
+        ->check(real_in(0.01, 1000))
+        ->capture_default_str();
+}
+
+void check_frame_options(const CLI::App& render, const RenderOptions& o) {
+    const FrameOptions& f = o.frames;
+    const bool frames = f.turntable > 0;
+    for (const char* flag : {"--frames", "--shard", "--overwrite", "--fps"})
+        if (!frames && render.count(flag) > 0)
+            throw CLI::ValidationError(
+                fmt::format("{} is for an animation's frames: add --turntable N", flag));
+    if (!frames) {
+        for (const std::string& name : o.methods)
+            if (is_video_path(output_for(o, name)))
+                throw CLI::ValidationError(fmt::format(
+                    "{}: a video needs frames: add --turntable N", output_for(o, name)));
+        return;
+    }
+    if (!f.range.empty()) check_frame_range(f);
+    std::string why;
+    if (!f.shard.empty() && !parse_frame_shard(f.shard, why))
+        throw CLI::ValidationError(fmt::format("--shard {}: {}", f.shard, why));
+    if (o.print_matrices) throw CLI::ValidationError("--print-matrices is for a single render");
+    check_frame_outputs(o);
+}
+
+bool is_frame_render(const RenderOptions& o) { return o.frames.turntable > 0; }
+
+}  // namespace hikari::cli

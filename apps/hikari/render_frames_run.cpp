@@ -1,0 +1,271 @@
+// run_frame_render (render_frames.h): the frames rendered on one session, written as numbered
+// files or piped into a video, with one progress line.
+
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "cli_options.h"
+#include "console.h"
+#include "hikari/core/error.h"
+#include "hikari/core/srgb8_encoder.h"
+#include "hikari/frame/aov_picture.h"
+#include "hikari/frame/tone_map.h"
+#include "hikari/io/files/frame_pattern.h"
+#include "hikari/io/images/image_write.h"
+#include "hikari/io/images/svg_write.h"
+#include "hikari/io/video/video_pipe.h"
+#include "hikari/scene/camera_orbit.h"
+#include "hikari/session/frame_selection.h"
+#include "load_scene.h"
+#include "output_paths.h"
+#include "render_frames.h"
+#include "render_output.h"
+#include "signals.h"
+
+namespace hikari::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+/// A method and where its frames go: numbered files, or one video.
+struct FrameRun {
+    const Method* method;
+    std::string output;
+    std::optional<FramePattern> pattern;  ///< numbered files; nullopt: a video
+};
+
+/// The frames this process renders: --frames (default: all of the turntable) of --shard, as
+/// check_frame_options accepted them.
+std::vector<int> planned_frames(const FrameOptions& f) {
+    std::string why;
+    FrameRange range{0, f.turntable - 1};
+    if (!f.range.empty()) range = *parse_frame_range(f.range, why);
+    FrameShard shard;
+    if (!f.shard.empty()) shard = *parse_frame_shard(f.shard, why);
+    return shard_frames(range, shard);
+}
+
+/// A video's directory: it must exist and be writable; and ffmpeg must be there, before any
+/// frame is rendered.
+void check_video_output(const fs::path& video, std::span<const RenderInput> inputs) {
+    std::error_code ec;
+    const fs::path dir = video.has_parent_path() ? video.parent_path() : ".";
+    if (!fs::is_directory(dir, ec) || ::access(dir.c_str(), W_OK) != 0)
+        throw UsageError(
+            fmt::format("{}: cannot write: the directory {} {}", video.string(), dir.string(),
+                        fs::is_directory(dir, ec) ? "is not writable" : "does not exist"));
+    for (const RenderInput& input : inputs)
+        if (fs::equivalent(video, input.file, ec))
+            throw UsageError(fmt::format("{}: refusing to overwrite {} with the video",
+                                         video.string(), input.role));
+    if (!find_ffmpeg()) throw UsageError(missing_ffmpeg_message(video));
+}
+
+/// Every method with its output, each frame's file checked before any work is done.
+std::vector<FrameRun> planned_runs(const RenderOptions& o, const std::vector<int>& frames) {
+    const std::vector<RenderInput> inputs = render_inputs(o.scene_file);
+    std::vector<FrameRun> runs;
+    for (const std::string& name : o.methods) {
+        FrameRun run{find_method(name), output_for(o, name), std::nullopt};
+        std::string why;
+        if (is_video_path(run.output))
+            check_video_output(run.output, inputs);
+        else
+            run.pattern = parse_frame_pattern(run.output, why);  // checked by the parser
+        if (run.pattern)
+            for (const int frame : frames) check_output_path(run.pattern->file_name(frame), inputs);
+        runs.push_back(std::move(run));
+    }
+    return runs;
+}
+
+/// The progress line: the frame at work, the frames done of this process's and the time left.
+/// On a terminal one line, rewritten; otherwise (a batch job's log) one line per frame.
+class FrameProgress {
+  public:
+    FrameProgress(bool enabled, size_t total)
+        : m_enabled(enabled), m_terminal(::isatty(STDERR_FILENO) == 1), m_total(total) {}
+    ~FrameProgress() {
+        if (m_enabled && m_terminal && m_shown) print_err("\n");
+    }
+
+    /// Frame `frame` starts (after `skipped` frames were found done).
+    void starting(int frame) {
+        if (!m_enabled) return;
+        std::string eta = "ETA --";
+        if (m_rendered > 0) {
+            const double per_frame =
+                std::chrono::duration<double>(Clock::now() - m_start).count() / m_rendered;
+            const auto left = static_cast<long>(per_frame * double(m_total - m_done) + 0.5);
+            eta = fmt::format("ETA {}:{:02}:{:02}", left / 3600, left / 60 % 60, left % 60);
+        }
+        print_err("{}hikari: frame {}, {}/{} done, {}{}", m_terminal ? "\r\033[K" : "", frame,
+                  m_done, m_total, eta, m_terminal ? "" : "\n");
+        m_shown = true;
+    }
+    void skipped() { ++m_done; }
+    void rendered() {
+        ++m_done;
+        ++m_rendered;
+    }
+    size_t rendered_count() const { return m_rendered; }
+
+  private:
+    bool m_enabled, m_terminal, m_shown = false;
+    size_t m_total, m_done = 0, m_rendered = 0;
+    Clock::time_point m_start = Clock::now();
+};
+
+/// The request for one frame of `run`: the options' own with the frame's camera, the film its
+/// output needs (a video frame: what an 8-bit PNG holds).
+RenderRequest frame_request(const RenderOptions& o, const FrameRun& run, const Camera& camera) {
+    RenderRequest request = render_request(o);
+    request.method = run.method->name;
+    request.camera = camera;
+    request.width = camera.width;
+    request.height = camera.height;
+    const std::string file = run.pattern ? run.output : "frame.png";
+    request.film = output_film(camera, file, o).format();
+    request.algorithm_counts = !is_picture_file(file);
+    return request;
+}
+
+/// One frame rendered into `file`, as `hikari render` with that camera writes it.
+void render_frame_file(const RenderOptions& o, Session& session, const FrameRun& run,
+                       const Camera& camera, const std::string& file, bool first) {
+    const RenderRequest request = frame_request(o, run, camera);
+    if (is_svg_path(file)) return write_svg(file, session.draw(request));
+    RenderResult result = session.render(request);
+    if (first)
+        for (const std::string& w : result.warnings) print_err("hikari: warning: {}\n", w);
+    if (result.algorithm_picture)
+        return write_image(file, *result.algorithm_picture, ImageWriteSettings{o.bit_depth});
+    write_output(file, std::move(result.framebuffer), o);
+}
+
+/// A finished frame as the 8-bit sRGB picture an 8-bit PNG of it holds.
+Srgb8Image frame_picture(RenderResult&& result, const RenderOptions& o) {
+    if (render_control().cancel.load()) throw Interrupted();
+    if (result.algorithm_picture) return encode_srgb8(*result.algorithm_picture);
+    Framebuffer& fb = result.framebuffer;
+    if (fb.film.format() == FilmFormat::srgb8) return fb.film.srgb8();
+    if (!is_colour_aov(o.aov)) {
+        std::optional<DepthRange> range;
+        if (!o.depth_range.empty()) range = DepthRange{o.depth_range[0], o.depth_range[1]};
+        return encode_srgb8(aov_picture(fb, o.aov, range));
+    }
+    Image colour = aov_image(std::move(fb), o.aov);
+    expose_and_tone_map(colour, o.exposure, o.tone_map);
+    return encode_srgb8(colour);
+}
+
+/// Whether a frame's file is there whole: files are written atomically (io/files/atomic_file.h),
+/// so one under the frame's own name was finished; a stopped write leaves only a temporary.
+bool frame_is_done(const std::string& file) {
+    std::error_code ec;
+    return fs::is_regular_file(file, ec) && fs::file_size(file, ec) > 0 && !ec;
+}
+
+/// What a run of frames did, for the summary.
+struct FrameTally {
+    size_t rendered = 0, skipped = 0;
+};
+
+/// The frames of `run` as numbered files; those already there skipped unless --overwrite.
+FrameTally render_frame_files(const RenderOptions& o, Session& session, const FrameRun& run,
+                              const Camera& base, const std::vector<int>& frames) {
+    FrameProgress progress(!o.quiet, frames.size());
+    FrameTally tally;
+    for (const int frame : frames) {
+        const std::string file = run.pattern->file_name(frame);
+        if (!o.frames.overwrite && frame_is_done(file)) {
+            progress.skipped();
+            ++tally.skipped;
+            continue;
+        }
+        progress.starting(frame);
+        const Camera camera = turntable_camera(base, frame, o.frames.turntable);
+        render_frame_file(o, session, run, camera, file, tally.rendered == 0);
+        progress.rendered();
+        ++tally.rendered;
+    }
+    return tally;
+}
+
+/// H.264 in yuv420p keeps colour at half resolution in both directions: an even size only.
+void check_video_size(const FrameRun& run, const Camera& camera) {
+    const std::string ext = fs::path(run.output).extension().string();
+    if (ext == ".mp4" && (camera.width % 2 != 0 || camera.height % 2 != 0))
+        throw UsageError(fmt::format(
+            "{}: H.264 video (yuv420p) needs an even width and height; the frames are {}x{} "
+            "(set --width and --height)",
+            run.output, camera.width, camera.height));
+}
+
+/// The frames of `run` piped into its video, in order, none on the disk.
+FrameTally render_video(const RenderOptions& o, Session& session, const FrameRun& run,
+                        const Camera& base, const std::vector<int>& frames) {
+    VideoPipe video(run.output, VideoSettings{base.width, base.height, o.frames.fps});
+    FrameProgress progress(!o.quiet, frames.size());
+    FrameTally tally;
+    for (const int frame : frames) {
+        progress.starting(frame);
+        const Camera camera = turntable_camera(base, frame, o.frames.turntable);
+        RenderResult result = session.render(frame_request(o, run, camera));
+        if (tally.rendered == 0)
+            for (const std::string& w : result.warnings) print_err("hikari: warning: {}\n", w);
+        const Srgb8Image picture = frame_picture(std::move(result), o);
+        video.write_frame(picture.bytes);
+        progress.rendered();
+        ++tally.rendered;
+    }
+    video.finish();
+    return tally;
+}
+
+/// The line after a run's frames: how many, where, how fast.
+void report_frames(const RenderOptions& o, const FrameRun& run, const FrameTally& tally,
+                   double seconds) {
+    if (o.quiet) return;
+    const std::string skipped =
+        tally.skipped > 0
+            ? fmt::format(", {} already there (--overwrite renders them)", tally.skipped)
+            : "";
+    print_err("hikari: wrote {} frame{} to {} ({}{}, {:.3f} s, {:.2f} frames/s)\n", tally.rendered,
+              tally.rendered == 1 ? "" : "s", run.output, run.method->name, skipped, seconds,
+              seconds > 0 ? double(tally.rendered) / seconds : 0.0);
+}
+
+}  // namespace
+
+int run_frame_render(const RenderOptions& o) {
+    const std::vector<int> frames = planned_frames(o.frames);
+    const std::vector<FrameRun> runs = planned_runs(o, frames);
+    for (const std::string& note : o.notes) print_err("hikari: warning: {}\n", note);
+    const std::unique_ptr<Session> session = load_render_session(o);
+    const Camera base = session->camera_for(render_request(o));
+    check_image_memory(base);
+    for (const FrameRun& run : runs)
+        if (!run.pattern) check_video_size(run, base);
+    for (const FrameRun& run : runs) {
+        const auto start = Clock::now();
+        const FrameTally tally = run.pattern ? render_frame_files(o, *session, run, base, frames)
+                                             : render_video(o, *session, run, base, frames);
+        report_frames(o, run, tally, std::chrono::duration<double>(Clock::now() - start).count());
+    }
+    return 0;
+}
+
+}  // namespace hikari::cli
