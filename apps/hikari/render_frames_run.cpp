@@ -152,11 +152,11 @@ void render_frame_file(const RenderOptions& o, Session& session, const FrameRun&
         for (const std::string& w : result.warnings) print_err("hikari: warning: {}\n", w);
     if (result.algorithm_picture)
         return write_image(file, *result.algorithm_picture, ImageWriteSettings{o.bit_depth});
-    write_output(file, std::move(result.framebuffer), o);
+    write_output(file, std::move(result.framebuffer), o, session.scene());
 }
 
 /// A finished frame as the 8-bit sRGB picture an 8-bit PNG of it holds.
-Srgb8Image frame_picture(RenderResult&& result, const RenderOptions& o) {
+Srgb8Image frame_picture(RenderResult&& result, const RenderOptions& o, const Scene& scene) {
     if (render_control().cancel.load()) throw Interrupted();
     if (result.algorithm_picture) return encode_srgb8(*result.algorithm_picture);
     Framebuffer& fb = result.framebuffer;
@@ -164,7 +164,7 @@ Srgb8Image frame_picture(RenderResult&& result, const RenderOptions& o) {
     if (!is_colour_aov(o.aov)) {
         std::optional<DepthRange> range;
         if (!o.depth_range.empty()) range = DepthRange{o.depth_range[0], o.depth_range[1]};
-        return encode_srgb8(aov_picture(fb, o.aov, range));
+        return encode_srgb8(aov_picture(fb, o.aov, range, unbounded_primitives(scene)));
     }
     Image colour = aov_image(std::move(fb), o.aov);
     expose_and_tone_map(colour, o.exposure, o.tone_map);
@@ -226,7 +226,7 @@ FrameTally render_video(const RenderOptions& o, Session& session, const FrameRun
         RenderResult result = session.render(frame_request(o, run, camera));
         if (tally.rendered == 0)
             for (const std::string& w : result.warnings) print_err("hikari: warning: {}\n", w);
-        const Srgb8Image picture = frame_picture(std::move(result), o);
+        const Srgb8Image picture = frame_picture(std::move(result), o, session.scene());
         video.write_frame(picture.bytes);
         progress.rendered();
         ++tally.rendered;

@@ -82,7 +82,7 @@ std::string string_member(const Json& body, std::string_view key, std::string fa
 
 /// The frame's bytes: a colour render developed as `exposure` and `tonemap` ask, an AOV as its
 /// picture (PNG) or its values (PFM), as `hikari render -o frame.png|pfm` writes them.
-std::string encode_frame(RenderResult& result, const RenderRequest& request,
+std::string encode_frame(RenderResult& result, const RenderRequest& request, const Scene& scene,
                          const std::string& format, float exposure, ToneMap tonemap) {
     const std::filesystem::path name = "frame." + format;
     const bool pfm = format != "png";
@@ -97,7 +97,8 @@ std::string encode_frame(RenderResult& result, const RenderRequest& request,
         expose_and_tone_map(colour, exposure, pfm ? ToneMap::clamp : tonemap);
         bytes = encode_image(name, colour);
     } else if (!pfm)
-        bytes = encode_image(name, aov_picture(fb, request.aov, std::nullopt));
+        bytes = encode_image(
+            name, aov_picture(fb, request.aov, std::nullopt, unbounded_primitives(scene)));
     else
         bytes = encode_image(name, aov_image(std::move(fb), request.aov));
     return {bytes.begin(), bytes.end()};
@@ -216,7 +217,7 @@ std::string ServeApi::render(const std::string& text, std::string& content_type,
     content_type = format == "png"   ? "image/png"
                    : format == "exr" ? "image/x-exr"
                                      : "image/x-portable-floatmap";
-    return encode_frame(result, request, format, exposure, tonemap);
+    return encode_frame(result, request, loaded->session->scene(), format, exposure, tonemap);
 }
 
 std::string ServeApi::explain(const std::string& text) {
