@@ -146,9 +146,10 @@ void render_with(const RenderOptions& o, Session& session, const Run& run, doubl
     times.render = result.seconds;
     const auto rendered = Clock::now();
     const int width = result.framebuffer.width(), height = result.framebuffer.height();
-    write_output(run.output, std::move(result.framebuffer), o, session.scene());
+    const std::unique_ptr<RenderStats> stats = std::move(result.stats);
+    write_output(run.output, std::move(result), o, session.scene());
     times.write = seconds_since(rendered);
-    report_render(o, run, session.scene(), width, height, times, *result.stats);
+    report_render(o, run, session.scene(), width, height, times, *stats);
 }
 
 }  // namespace

@@ -18,8 +18,6 @@
 #include "console.h"
 #include "hikari/core/error.h"
 #include "hikari/core/srgb8_encoder.h"
-#include "hikari/frame/aov_picture.h"
-#include "hikari/frame/tone_map.h"
 #include "hikari/io/files/frame_pattern.h"
 #include "hikari/io/images/image_write.h"
 #include "hikari/io/images/svg_write.h"
@@ -150,25 +148,15 @@ void render_frame_file(const RenderOptions& o, Session& session, const FrameRun&
     RenderResult result = session.render(request);
     if (first)
         for (const std::string& w : result.warnings) print_err("hikari: warning: {}\n", w);
-    if (result.algorithm_picture)
-        return write_image(file, *result.algorithm_picture, ImageWriteSettings{o.bit_depth});
-    write_output(file, std::move(result.framebuffer), o, session.scene());
+    write_output(file, std::move(result), o, session.scene());
 }
 
 /// A finished frame as the 8-bit sRGB picture an 8-bit PNG of it holds.
 Srgb8Image frame_picture(RenderResult&& result, const RenderOptions& o, const Scene& scene) {
     if (render_control().cancel.load()) throw Interrupted();
-    if (result.algorithm_picture) return encode_srgb8(*result.algorithm_picture);
-    Framebuffer& fb = result.framebuffer;
-    if (fb.film.format() == FilmFormat::srgb8) return fb.film.srgb8();
-    if (!is_colour_aov(o.aov)) {
-        std::optional<DepthRange> range;
-        if (!o.depth_range.empty()) range = DepthRange{o.depth_range[0], o.depth_range[1]};
-        return encode_srgb8(aov_picture(fb, o.aov, range, unbounded_primitives(scene)));
-    }
-    Image colour = aov_image(std::move(fb), o.aov);
-    expose_and_tone_map(colour, o.exposure, o.tone_map);
-    return encode_srgb8(colour);
+    DevelopedImage image = develop(std::move(result), development(o, true), scene);
+    if (auto* srgb8 = std::get_if<Srgb8Image>(&image)) return std::move(*srgb8);
+    return encode_srgb8(std::get<Image>(image));
 }
 
 /// Whether a frame's file is there whole: files are written atomically (io/files/atomic_file.h),

@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 
 #include "hikari/core/error.h"
-#include "hikari/frame/aov_picture.h"
 #include "hikari/frame/tone_map.h"
 #include "hikari/io/files/atomic_file.h"
 #include "hikari/io/images/image_write.h"
@@ -23,12 +22,6 @@ void write_colour(const std::string& output, Image colour, const RenderOptions& 
     write_image(output, colour, image_write_settings(o));
 }
 
-/// --depth-range, when given.
-std::optional<DepthRange> depth_range(const RenderOptions& o) {
-    if (o.depth_range.empty()) return std::nullopt;
-    return DepthRange{o.depth_range[0], o.depth_range[1]};
-}
-
 }  // namespace
 
 Film output_film(const Camera& camera, const std::string& output, const RenderOptions& o) {
@@ -38,19 +31,21 @@ Film output_film(const Camera& camera, const std::string& output, const RenderOp
     return Film(camera, srgb8 ? FilmFormat::srgb8 : FilmFormat::linear);
 }
 
-void write_output(const std::string& output, Framebuffer&& fb, const RenderOptions& o,
+Development development(const RenderOptions& o, bool display) {
+    Development how{o.aov, o.exposure, o.tone_map, std::nullopt, display};
+    if (!o.depth_range.empty()) how.depth_range = DepthRange{o.depth_range[0], o.depth_range[1]};
+    return how;
+}
+
+void write_output(const std::string& output, RenderResult&& result, const RenderOptions& o,
                   const Scene& scene) {
     if (render_control().cancel.load()) throw Interrupted();
-    const ImageWriteSettings settings = image_write_settings(o);
-    if (fb.film.format() == FilmFormat::srgb8)
-        write_image(output, fb.film.srgb8());
-    else if (is_colour_aov(o.aov))
-        write_colour(output, aov_image(std::move(fb), o.aov), o);
-    else if (is_picture_file(output))
-        write_image(output, aov_picture(fb, o.aov, depth_range(o), unbounded_primitives(scene)),
-                    settings);
+    const DevelopedImage image =
+        develop(std::move(result), development(o, is_picture_file(output)), scene);
+    if (const auto* srgb8 = std::get_if<Srgb8Image>(&image))
+        write_image(output, *srgb8);
     else
-        write_image(output, aov_image(std::move(fb), o.aov), settings);
+        write_image(output, std::get<Image>(image), image_write_settings(o));
 }
 
 void write_formula_workbook(const std::string& output, const Scene& scene, const RenderOptions& o) {

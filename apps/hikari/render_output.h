@@ -8,6 +8,7 @@
 #include "hikari/frame/film.h"
 #include "hikari/frame/framebuffer.h"
 #include "hikari/scene/scene.h"
+#include "hikari/session/developed_frame.h"
 #include "render_options.h"
 
 namespace hikari::cli {
@@ -16,12 +17,14 @@ namespace hikari::cli {
 /// nor tone mapped, in an 8-bit PNG, JPEG, PPM or spreadsheet), else linear floats.
 Film output_film(const Camera& camera, const std::string& output, const RenderOptions& o);
 
-/// Writes the buffer --aov of a finished render to `output` (unless the render was interrupted:
-/// throws Interrupted): an AOV buffer as a picture (frame/aov_picture.h) where the file holds
-/// display values, else as its values; a colour render developed as --exposure and --tonemap ask
-/// (the tone map only where the file holds display values; float files keep radiance), at
-/// --bit-depth. `scene`: the scene rendered (its infinite planes do not stretch a depth picture).
-void write_output(const std::string& output, Framebuffer&& fb, const RenderOptions& o,
+/// How --aov, --exposure, --tonemap and --depth-range develop a render (session/developed_frame.h);
+/// `display`: whether the output holds display values (is_picture_file).
+Development development(const RenderOptions& o, bool display);
+
+/// Writes the render `result` to `output` developed as the options ask (development), at
+/// --bit-depth and --encoding, unless the render was interrupted: throws Interrupted. `scene`:
+/// the scene rendered.
+void write_output(const std::string& output, RenderResult&& result, const RenderOptions& o,
                   const Scene& scene);
 
 /// `--formulas`: the workbook of io/images/xlsx_formulas_write.h for `scene` (the scene as the

@@ -13,12 +13,12 @@
 
 #include "hikari/core/cancel.h"
 #include "hikari/core/error.h"
-#include "hikari/frame/aov_picture.h"
 #include "hikari/frame/tone_map.h"
 #include "hikari/io/images/image_write.h"
 #include "hikari/io/scene/json_reader.h"
 #include "hikari/methods/method_catalog.h"
 #include "hikari/methods/method_options.h"
+#include "hikari/session/developed_frame.h"
 #include "hikari/session/request_json.h"
 #include "serve_page.h"
 
@@ -85,22 +85,10 @@ std::string string_member(const Json& body, std::string_view key, std::string fa
 std::string encode_frame(RenderResult& result, const RenderRequest& request, const Scene& scene,
                          const std::string& format, float exposure, ToneMap tonemap) {
     const std::filesystem::path name = "frame." + format;
-    const bool pfm = format != "png";
-    std::vector<uint8_t> bytes;
-    Framebuffer& fb = result.framebuffer;
-    if (result.algorithm_picture)
-        bytes = encode_image(name, *result.algorithm_picture);
-    else if (fb.film.format() == FilmFormat::srgb8)
-        bytes = encode_image(name, fb.film.srgb8());
-    else if (is_colour_aov(request.aov)) {
-        Image colour = aov_image(std::move(fb), request.aov);
-        expose_and_tone_map(colour, exposure, pfm ? ToneMap::clamp : tonemap);
-        bytes = encode_image(name, colour);
-    } else if (!pfm)
-        bytes = encode_image(
-            name, aov_picture(fb, request.aov, std::nullopt, unbounded_primitives(scene)));
-    else
-        bytes = encode_image(name, aov_image(std::move(fb), request.aov));
+    const Development how{request.aov, exposure, tonemap, std::nullopt, format == "png"};
+    const DevelopedImage image = develop(std::move(result), how, scene);
+    const std::vector<uint8_t> bytes =
+        std::visit([&](const auto& picture) { return encode_image(name, picture); }, image);
     return {bytes.begin(), bytes.end()};
 }
 
