@@ -39,17 +39,8 @@ SceneOverride scene_edit(const std::string& path, const py::handle& value) {
 
 /// A method option's value as the command line writes it: 16, 0.5, map, 0.1,0.2,0.3.
 std::string option_text(const py::handle& value) {
-    if (py::isinstance<py::str>(value)) return value.cast<std::string>();
     if (py::isinstance<py::bool_>(value)) throw InputError("a method option is not a bool");
-    if (py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value))
-        return py::repr(value).cast<std::string>();
-    if (py::isinstance<py::sequence>(value)) {
-        std::string text;
-        for (const py::handle item : value.cast<py::sequence>())
-            text += (text.empty() ? "" : ",") + option_text(item);
-        return text;
-    }
-    throw InputError("a method option takes a number, a word or a list of numbers");
+    return option_text_of_json(json_value(value));
 }
 
 /// `count` numbers from a Python sequence, or InputError naming `what`.

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "hikari/core/error.h"
 
@@ -100,6 +101,20 @@ void set_method_option(MethodSettings& settings, const Method& method, std::stri
     }
     throw InputError(
         fmt::format("method {} has no option '{}' (its options: {})", method.name, keyword, names));
+}
+
+std::string option_text_of_json(const nlohmann::json& value) {
+    if (value.is_string()) return value.get<std::string>();
+    if (value.is_number()) return value.dump();
+    if (value.is_array()) {
+        std::string text;
+        for (const nlohmann::json& item : value) {
+            if (!item.is_number()) throw InputError("expected a list of numbers");
+            text += (text.empty() ? "" : ",") + item.dump();
+        }
+        return text;
+    }
+    throw InputError("expected a number, a word or a list of numbers");
 }
 
 }  // namespace hikari

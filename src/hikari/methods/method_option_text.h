@@ -6,6 +6,8 @@
 #include <string>
 #include <string_view>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "hikari/methods/registry.h"
 
 namespace hikari {
@@ -18,5 +20,10 @@ std::string option_keyword(std::string_view flag);
 /// option (listing the ones it has).
 void set_method_option(MethodSettings& settings, const Method& method, std::string_view name,
                        std::string_view text);
+
+/// An option's value given as JSON (a viewer request's "options", a Python keyword argument) as
+/// the command line writes it: 16, 0.5, map, 0.1,0.2,0.3. Throws InputError for anything else
+/// (true, null, an object, a list holding other than numbers).
+std::string option_text_of_json(const nlohmann::json& value);
 
 }  // namespace hikari

@@ -23,20 +23,6 @@ std::vector<std::string_view> request_keys(std::span<const std::string_view> ext
     return keys;
 }
 
-/// A method option's value as the command line writes it: 16, 0.5, map, 0.1,0.2,0.3.
-std::string option_text(const JsonNode& node) {
-    const Json& v = node.value();
-    if (v.is_string()) return v.get<std::string>();
-    if (v.is_number()) return v.dump();
-    if (v.is_array()) {
-        std::string text;
-        for (size_t i = 0; i < v.size(); ++i)
-            text += (i ? "," : "") + std::string(v[i].is_number() ? v[i].dump() : "?");
-        return text;
-    }
-    node.fail("expected a number, a word or an array of numbers");
-}
-
 }  // namespace
 
 RenderRequest render_request_from_json(const Json& body, std::string_view what,
@@ -68,7 +54,7 @@ RenderRequest render_request_from_json(const Json& body, std::string_view what,
         for (const auto& [name, value] : options.value().items()) {
             const JsonNode node = options.at(name);
             try {
-                set_method_option(request.options, method, name, option_text(node));
+                set_method_option(request.options, method, name, option_text_of_json(node.value()));
             } catch (const InputError& e) {
                 node.fail(e.what());
             }
