@@ -20,6 +20,7 @@
 #include "hikari/methods/method_options.h"
 #include "hikari/session/developed_frame.h"
 #include "hikari/session/request_json.h"
+#include "hikari/session/scene_document.h"
 #include "serve_page.h"
 
 namespace hikari::cli {
@@ -218,6 +219,16 @@ std::string ServeApi::explain(const std::string& text) {
     return loaded->session->explain(request, step);
 }
 
+std::string ServeApi::scene_file(const std::string& text) {
+    const Json body = request_json(text);
+    const RenderRequest request = render_request_from_json(body, "request", k_frame_keys);
+    const std::shared_ptr<LoadedScene> loaded =
+        scene(string_member(body, "scene", m_default_scene));
+    const std::scoped_lock turn(loaded->turn);
+    const Session& session = *loaded->session;
+    return scene_document(session.source(), session.camera_for(request)).dump(2) + "\n";
+}
+
 std::string ServeApi::scene_info(const std::string& name) {
     const std::shared_ptr<LoadedScene> loaded = scene(name);
     const std::scoped_lock turn(loaded->turn);
@@ -267,6 +278,9 @@ void ServeApi::route(httplib::Server& server) {
             res.set_header("Content-Type", type);
             for (const auto& [key, value] : headers) res.set_header(key.c_str(), value);
         });
+    });
+    server.Post("/api/scene-file", [this](const httplib::Request& req, httplib::Response& res) {
+        answer(res, [&] { res.set_content(scene_file(req.body), "application/json"); });
     });
     server.Post("/api/explain", [this](const httplib::Request& req, httplib::Response& res) {
         answer(res, [&] { res.set_content(explain(req.body), "text/plain; charset=utf-8"); });

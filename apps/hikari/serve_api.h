@@ -52,6 +52,8 @@ class ServeApi {
     std::string render(const std::string& body, std::string& content_type,
                        std::map<std::string, std::string>& headers);
     std::string explain(const std::string& body);
+    /// The scene file of the request's scene with its camera (session/scene_document.h).
+    std::string scene_file(const std::string& body);
     std::string scene_info(const std::string& name);
 
     ServedFiles m_files;

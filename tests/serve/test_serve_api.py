@@ -217,3 +217,26 @@ def test_progress_events_stream(server):
     with OPENER.open(request, timeout=10) as r:
         assert r.headers["Content-Type"].startswith("text/event-stream")
         assert r.readline().decode().startswith("data: idle")
+
+
+@pytest.mark.parametrize("scene", ["scenes/teapot.json", "scenes/models/BoxTextured.gltf", ""])
+def test_the_scene_file_of_a_view_renders_that_view_from_any_folder(server, tmp_path, scene):
+    view = {"scene": scene, "method": "zbuffer", "width": 80, "height": 60, "camera": CAMERA}
+    status, body, headers = server.post("/api/scene-file", view)
+    assert status == 200 and headers["Content-Type"] == "application/json", body
+    document = json.loads(body)
+    assert document["camera"]["width"] == 80 and document["camera"]["eye"] == [2.5, 1.2, 2.0]
+    folder = tmp_path / "elsewhere"
+    folder.mkdir()
+    (folder / "view.json").write_bytes(body)
+    out = folder / "view.png"
+    subprocess.run([CLI, "render", "view.json", "-m", "zbuffer", "-o", str(out), "-q"],
+                   check=True, cwd=folder)
+    status, frame, _ = server.post("/api/render", view)
+    assert status == 200
+    assert out.read_bytes() == frame
+
+
+def test_the_scene_file_of_a_bad_view_is_refused_with_the_reason(server):
+    status, body, _ = server.post("/api/scene-file", {"camera": {"fov_y": 500}})
+    assert status == 400 and b"camera.fov_y" in body, body
