@@ -285,17 +285,28 @@ void ServeApi::route(httplib::Server& server) {
     server.Post("/api/explain", [this](const httplib::Request& req, httplib::Response& res) {
         answer(res, [&] { res.set_content(explain(req.body), "text/plain; charset=utf-8"); });
     });
-    // Server-Sent Events: the progress of the client's running render, about ten times a second,
-    // as "data: 0.42" lines ("data: idle" when none runs).
+    // Server-Sent Events: the progress of the client's running render as "data: 0.42" ("data:
+    // idle" when none runs), sent when it changes (checked ten times a second), and a comment
+    // every 15 s that keeps the connection open: an idle page costs the server no work.
     server.Get("/api/progress", [this](const httplib::Request& req, httplib::Response& res) {
         const std::string client = req.get_param_value("client");
+        auto last = std::make_shared<std::pair<std::string, int>>("", 0);
         res.set_chunked_content_provider(
-            "text/event-stream", [this, client](size_t, httplib::DataSink& sink) {
+            "text/event-stream", [this, client, last](size_t, httplib::DataSink& sink) {
                 if (cancel_requested()) return false;
                 const std::optional<double> fraction = progress(client);
                 const std::string event =
                     fraction ? fmt::format("data: {:.3f}\n\n", *fraction) : "data: idle\n\n";
-                if (!sink.write(event.data(), event.size())) return false;
+                auto& [sent, quiet_ticks] = *last;
+                if (event != sent) {
+                    if (!sink.write(event.data(), event.size())) return false;
+                    sent = event;
+                    quiet_ticks = 0;
+                } else if (++quiet_ticks == 150) {
+                    const std::string_view keep_alive = ": keep-alive\n\n";
+                    if (!sink.write(keep_alive.data(), keep_alive.size())) return false;
+                    quiet_ticks = 0;
+                }
                 std::this_thread::sleep_for(std::chrono::milliseconds(100));
                 return true;
             });

@@ -219,6 +219,27 @@ def test_progress_events_stream(server):
         assert r.readline().decode().startswith("data: idle")
 
 
+def test_progress_is_pushed_when_it_changes_and_idle_after(server):
+    body = {"scene": "scenes/teapot.json", "client": "slow", "method": "path", "width": 160,
+            "height": 120, "options": {"spp": 48}}
+    request = urllib.request.Request(server.url + "/api/progress?client=slow")
+    events = []
+    with OPENER.open(request, timeout=120) as r:
+        assert r.readline().decode().strip() == "data: idle"
+        r.readline()
+        render = threading.Thread(target=server.post, args=("/api/render", body))
+        render.start()
+        while not events or events[-1] != "data: idle":
+            line = r.readline().decode().strip()
+            if line:
+                events.append(line)
+        render.join()
+    fractions = [float(e[6:]) for e in events[:-1]]
+    assert fractions, events
+    assert all(0 <= f <= 1 for f in fractions)
+    assert all(a != b for a, b in zip(events, events[1:])), events
+
+
 @pytest.mark.parametrize("scene", ["scenes/teapot.json", "scenes/models/BoxTextured.gltf", ""])
 def test_the_scene_file_of_a_view_renders_that_view_from_any_folder(server, tmp_path, scene):
     view = {"scene": scene, "method": "zbuffer", "width": 80, "height": 60, "camera": CAMERA}
