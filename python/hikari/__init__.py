@@ -128,6 +128,12 @@ class Scene:
                                      **method_options)
         return array.view(Image)
 
+    def to_json(self, width=None, height=None, camera=None):
+        """The scene as scene-format JSON text with this camera (a dict, as render takes) and
+        size: `hikari render` of the saved file renders what render() gives for that view.
+        Files are named by absolute paths; `set` values are applied."""
+        return self._session.to_json(width, height, camera)
+
     @property
     def camera(self):
         """The scene's camera as a dict (eye, look_at, up, projection, fov_y, ...)."""

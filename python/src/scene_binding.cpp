@@ -17,6 +17,7 @@
 #include "bindings.h"
 #include "hikari/core/error.h"
 #include "hikari/methods/method_option_text.h"
+#include "hikari/session/scene_document.h"
 #include "hikari/session/session.h"
 #include "scene_words.h"
 
@@ -225,6 +226,14 @@ std::string explain(Session& session, const std::string& method, const py::objec
     return session.explain(request, step);
 }
 
+/// The scene as a scene file with the view `camera` (a dict, as render takes) at the size asked
+/// (session/scene_document.h): `hikari render` of that file renders what render() gives.
+std::string scene_json(const Session& session, std::optional<int> width, std::optional<int> height,
+                       const py::object& camera) {
+    const RenderRequest request = request_of(session, "raytrace", width, height, camera, {});
+    return scene_document(session.source(), session.camera_for(request)).dump(2) + "\n";
+}
+
 SceneSource file_source(const std::string& path, const py::object& set, bool ground,
                         std::optional<float> crease_angle, const py::object& camera_from,
                         const py::object& look_at) {
@@ -317,6 +326,10 @@ void bind_scene(py::module_& m) {
              py::arg("height") = py::none(), py::arg("camera") = py::none(),
              "One step of a method's algorithm as `hikari explain` prints it: pixel=(x, y) for "
              "zbuffer and raytrace, row=y for scanline, neither for the depth sort.")
+        .def("to_json", &scene_json, py::arg("width") = py::none(), py::arg("height") = py::none(),
+             py::arg("camera") = py::none(),
+             "The scene as scene-format JSON with this camera and size: `hikari render` of the "
+             "file renders what render() gives (files named by absolute paths, `set` applied).")
         .def_property_readonly("camera",
                                [](const Session& s) { return camera_dict(s.scene().camera); })
         .def_property_readonly("warnings", &Session::load_warnings)

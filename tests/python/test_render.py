@@ -144,3 +144,14 @@ def test_threads_do_not_change_the_image():
     one = scene.render("zbuffer", width=48, threads=1)
     two = scene.render("zbuffer", width=48, threads=2)
     assert np.array_equal(one, two)
+
+
+def test_the_scene_as_json_with_a_view_renders_that_view(tmp_path):
+    scene = hikari.Scene.load(scene_path("teapot.json"), set={"materials.porcelain.shininess": 7})
+    camera = {"eye": [1.8, 1.1, -2.0], "fov_y": 35}
+    text = scene.to_json(width=40, height=30, camera=camera)
+    (tmp_path / "view.json").write_text(text)
+    copy = hikari.Scene.load(str(tmp_path / "view.json"))
+    assert copy.camera["width"] == 40 and copy.camera["eye"] == pytest.approx((1.8, 1.1, -2.0))
+    expected = scene.render("zbuffer", width=40, height=30, camera=camera)
+    assert np.array_equal(copy.render("zbuffer"), expected)
