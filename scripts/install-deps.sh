@@ -31,7 +31,7 @@ if $tests; then
     # A node with its npm from elsewhere (NodeSource, nvm) will do; Debian's otherwise.
     command -v npm > /dev/null || packages+=(nodejs npm)
 fi
-# CI also checks formatting, runs clang-tidy and builds with sanitizers.
+# CI also checks formatting and builds with sanitizers (clang-tidy: scripts/check-tidy.sh, by hand).
 if $ci; then
     packages+=(clang clang-format clang-tidy libclang-rt-14-dev git)
 fi
