@@ -42,6 +42,8 @@ struct RenderStats {
     std::atomic<uint64_t> raster_fragments{0};
     std::atomic<uint64_t> raster_covered_pixels{0};  ///< pixels that show a triangle
     std::atomic<uint64_t> depth_sort_splits{0};      ///< polygons cut by the depth sort
+    /// Polygons in the depth sort's painting order (each piece of a split polygon one).
+    std::atomic<uint64_t> depth_sort_polygons{0};
     /// The raster methods' shadow pass before shading (maps, volumes or the analytic occluders),
     /// apart from the render of the picture: its wall time, and the map faces and their texels
     /// it drew (a point light's cube map is six faces) or the shadow-volume stencils it counted.

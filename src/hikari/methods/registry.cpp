@@ -185,6 +185,21 @@ constexpr MethodOption k_raster_options[] = {
     k_light_samples_option,
 };
 
+/// The raster options, and the depth sort's own step through its painting.
+static_assert(std::size(k_raster_options) == 6, "the depth sort takes every raster option");
+constexpr MethodOption k_depth_sort_options[] = {
+    k_raster_options[0],
+    k_raster_options[1],
+    k_raster_options[2],
+    k_raster_options[3],
+    k_raster_options[4],
+    k_raster_options[5],
+    {"--paint-steps",
+     "Paint only the first N polygons of the painting order (a piece of a split polygon counts "
+     "as one), to watch Fig 4.6's painter part-way; 0 (the default) paints them all",
+     IntegerOption{0, 1 << 30, [](MethodSettings& s) -> int& { return s.raster.paint_steps; }}},
+};
+
 constexpr MethodOption k_line_options[] = {
     {"--line-width", "Line width in pixels (wireframe, hidden lines)",
      RealOption{0.01f, 1000.0f, [](MethodSettings& s) -> float& { return s.lines.width; }}},
@@ -307,11 +322,12 @@ constexpr auto k_raster = &rasterize<render>;
 /// warnings, colour as the sum of shading terms, and what it shows of its own work.
 constexpr Method raster_method(std::string_view name, std::string_view summary,
                                RenderFunction render, AlgorithmAovs algorithm_aovs,
-                               ExplainViews explain, StatsWords stats) {
+                               ExplainViews explain, StatsWords stats,
+                               std::span<const MethodOption> options = k_raster_options) {
     return Method{.name = name,
                   .summary = summary,
                   .render = render,
-                  .options = k_raster_options,
+                  .options = options,
                   .shadow_modes = k_raster_shadow_modes,
                   .warnings = &raster_scene_warnings,
                   .shading_terms = true,
@@ -348,7 +364,8 @@ constexpr std::array k_methods = {
     raster_method("depthsort",
                   "depth sort (Newell et al. 1972): sort, overlap tests, reorder, split cycles",
                   k_raster<&render_depth_sort>, {k_depth_sort_aovs, &depth_sort_algorithm_aov},
-                  {.whole = &explain_depth_sort_run}, {.work = "pixel paints", .splits = true}),
+                  {.whole = &explain_depth_sort_run}, {.work = "pixel paints", .splits = true},
+                  k_depth_sort_options),
     raster_method("depthsort-naive",
                   "painter's algorithm by centroid depth (Fig 4.7): fails on overlap cycles",
                   k_raster<&render_depth_sort_naive>, {}, {}, {.work = "pixel paints (naive)"}),

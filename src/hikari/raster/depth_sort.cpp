@@ -48,7 +48,8 @@ class DepthSorter {
                          DepthSortTrace* trace = nullptr);
     /// The polygons in painting order, back to front.
     void sort();
-    void paint(VisibilityBuffer& out) const;
+    /// Paints the first `limit` polygons of the order, back to front.
+    void paint(VisibilityBuffer& out, uint32_t limit = UINT32_MAX) const;
 
   private:
     std::span<const PolygonVertex> vertices(const Polygon& p) const {
@@ -518,14 +519,16 @@ void DepthSorter::sort() {
     }
 }
 
-void DepthSorter::paint(VisibilityBuffer& out) const {
+void DepthSorter::paint(VisibilityBuffer& out, uint32_t limit) const {
     if (m_trace) {
         m_trace->painted = m_order;
         m_trace->visible_paint.assign(out.triangle.size(), UINT32_MAX);
         m_trace->paint_count.assign(out.triangle.size(), 0);
     }
+    counts.polygons = m_order.size();
     // painter's algorithm: later (nearer) polygons overwrite
-    for (uint32_t k = 0; k < m_order.size(); ++k) {
+    const uint32_t painted = std::min<size_t>(m_order.size(), limit);
+    for (uint32_t k = 0; k < painted; ++k) {
         const Polygon& p = m_polygons[m_order[k]];
         fill_convex_polygon(vertices(p), out.width, out.height, [&](int i, int j) {
             const size_t pixel = static_cast<size_t>(j) * out.width + i;
@@ -579,12 +582,13 @@ VisibilityBuffer depth_sort_visibility(std::span<const ScreenTriangle> triangles
 }
 
 VisibilityBuffer depth_sort_visibility_counted(std::span<const ScreenTriangle> triangles, int width,
-                                               int height, DepthSortCounts& counts) {
+                                               int height, DepthSortCounts& counts,
+                                               uint32_t paint_limit) {
     VisibilityBuffer out = empty_buffer(width, height);
     if (out.triangle.empty()) return out;
     DepthSorter sorter(triangles);
     sorter.sort();
-    sorter.paint(out);
+    sorter.paint(out, paint_limit);
     counts = sorter.counts;
     return out;
 }
@@ -638,10 +642,14 @@ Framebuffer render_depth_sort(const Scene& scene, Film film, const RenderSetting
     return render_raster(
         scene, std::move(film), settings, raster, [&](auto triangles, int width, int height) {
             DepthSortCounts counts;
-            VisibilityBuffer vis = depth_sort_visibility_counted(triangles, width, height, counts);
+            const uint32_t limit =
+                raster.paint_steps > 0 ? static_cast<uint32_t>(raster.paint_steps) : UINT32_MAX;
+            VisibilityBuffer vis =
+                depth_sort_visibility_counted(triangles, width, height, counts, limit);
             if (settings.stats) {
                 settings.stats->raster_fragments += counts.paints;
                 settings.stats->depth_sort_splits += counts.splits;
+                settings.stats->depth_sort_polygons += counts.polygons;
                 if (counts.gave_up) settings.stats->depth_sort_gave_up = 1;
             }
             return vis;

@@ -27,17 +27,20 @@ VisibilityBuffer depth_sort_visibility(std::span<const ScreenTriangle> triangles
 
 /// What a depth sort cost (`--stats`).
 struct DepthSortCounts {
-    uint64_t splits = 0;  ///< polygons cut
-    uint64_t paints = 0;  ///< pixels painted, every overwrite counted
+    uint64_t splits = 0;    ///< polygons cut
+    uint64_t paints = 0;    ///< pixels painted, every overwrite counted
+    uint64_t polygons = 0;  ///< in the painting order (each piece of a split polygon one)
     /// The polygons pierce one another so much that cutting them all would take cuts quadratic
     /// in their number: the sort stopped cutting and painted the order it had (some pixels may
     /// show a farther polygon).
     bool gave_up = false;
 };
 
-/// depth_sort_visibility, also counting into `counts`.
+/// depth_sort_visibility, also counting into `counts`, painting only the first `paint_limit`
+/// polygons of the order (Fig 4.6 part-way; `counts.polygons` still counts them all).
 VisibilityBuffer depth_sort_visibility_counted(std::span<const ScreenTriangle> triangles, int width,
-                                               int height, DepthSortCounts& counts);
+                                               int height, DepthSortCounts& counts,
+                                               uint32_t paint_limit = UINT32_MAX);
 
 /// What the depth sort did, step by step (`hikari explain -m depthsort`, `--aov paint-order`).
 /// Polygons are numbered in creation order: the scene's triangles first (those that cover any

@@ -34,6 +34,9 @@ struct RasterSettings {
     /// that needs them (fitted to the shadow casters alone, so that they serve every pass).
     /// Null: each render draws its own.
     std::shared_ptr<SharedShadowMaps> shared_shadow_maps;
+    /// `--paint-steps` (depthsort): paint only the first N polygons of the painting order, to
+    /// watch the painter's algorithm of Fig 4.6 part-way; 0 paints them all.
+    int paint_steps = 0;
 };
 
 }  // namespace hikari
