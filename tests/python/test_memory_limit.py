@@ -9,7 +9,7 @@ import hikari
 
 from conftest import scene_path
 
-# One pixel between a mirror, a glass pane and a second mirror: the ray tree doubles every two
+# Between a mirror, a glass pane and a second mirror: the ray tree doubles every two
 # levels.
 RAY_TREE = {
     "camera": {"eye": [0, 0, 0], "look_at": [0, 0, -1], "width": 32, "height": 24},
@@ -45,7 +45,7 @@ def test_the_ray_tree_counts_against_the_limit(limit_restored):
     with pytest.raises(hikari.InputError, match="the ray tree"):
         scene.render("raytrace", max_depth=48, max_memory=0.25)
     with pytest.raises(hikari.InputError, match="65536 rays per camera ray"):
-        hikari.explain(scene, "raytrace", pixel=(0, 0), max_depth=48)
+        hikari.explain(scene, "raytrace", pixel=(0, 0), width=1, height=1, max_depth=48)
     assert scene.render("raytrace", max_depth=12, max_memory=0.25).shape == (24, 32, 3)
 
 
