@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "hikari/core/error.h"
+#include "hikari/core/memory_budget.h"
 
 namespace hikari::cli {
 
@@ -68,6 +69,15 @@ void add_set_option(CLI::App& app, std::vector<SceneOverride>& overrides) {
         ->type_name("PATH=VALUE")
         ->expected(1)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
+
+void add_max_memory_option(CLI::App& app, std::string_view what) {
+    app.add_option_function<double>(
+           "--max-memory", [](double gib) { set_memory_limit(gib * (1 << 30)); },
+           fmt::format("Refuse {} that need more than this many GiB (default: half the "
+                       "machine's memory)",
+                       what))
+        ->check(real_in(k_least_positive, k_max_real, "a positive number of GiB"));
 }
 
 }  // namespace hikari::cli

@@ -56,6 +56,11 @@ CLI::Option* add_choice_option(CLI::App& app, std::string_view flag, std::string
         ->default_str(std::string(choice_name(choices, target)));
 }
 
+/// `--max-memory GIB`, set as the process's memory limit (core/memory_budget.h) as it is parsed:
+/// the subcommands that read or build large things besides `render` (explain, compare, info).
+/// `what` names what it refuses in the help ("inputs and buffers").
+void add_max_memory_option(CLI::App& app, std::string_view what);
+
 /// `--set PATH=VALUE` (repeatable) into `overrides`, in order.
 void add_set_option(CLI::App& app, std::vector<SceneOverride>& overrides);
 

@@ -60,6 +60,7 @@ CLI::App* add_compare_command(CLI::App& app, CompareOptions& c) {
         ->check(real_in(0, k_max_real))
         ->capture_default_str();
     compare->add_flag("--psnr", c.psnr_only, "Print the PSNR alone (for scripts)");
+    add_max_memory_option(*compare, "images");
     return compare;
 }
 

@@ -78,6 +78,7 @@ CLI::App* add_explain_command(CLI::App& app, ExplainOptions& e) {
             "raytrace: ray segments per path, the camera ray included (default 5)")
         ->check(whole_in(1, 64));
     add_set_option(*explain, e.scene.overrides);
+    add_max_memory_option(*explain, "scenes and ray trees");
     return explain;
 }
 

@@ -8,6 +8,7 @@
 #include <variant>
 #include <vector>
 
+#include "cli_options.h"
 #include "console.h"
 #include "hikari/io/models/model_file.h"
 #include "hikari/io/scene/scene_json.h"
@@ -129,6 +130,7 @@ CLI::App* add_info_command(CLI::App& app, std::string& file) {
         "textures, lights, cameras, and the load time.");
     info->add_option("file", file, "Model (.obj, .ply, .gltf, .glb) or scene (.json) file")
         ->required();
+    add_max_memory_option(*info, "files");
     return info;
 }
 

@@ -10,16 +10,34 @@ on the camera (the BVH, ...). Bad input raises hikari.InputError (a ValueError) 
 the command line prints; Ctrl-C stops a render (KeyboardInterrupt). See docs/python.md.
 """
 
+import contextlib as _contextlib
 import json as _json
 
 import numpy as _np
 
 from . import _hikari
-from ._hikari import InputError, compare, methods, read, to_srgb8, write
+from ._hikari import (InputError, compare, max_memory, methods, read, set_max_memory, to_srgb8,
+                      write)
 
 __version__ = _hikari.__version__
-__all__ = ["Scene", "Image", "Explanation", "InputError", "methods", "explain", "to_srgb8",
+__all__ = ["Scene", "Image", "Explanation", "InputError", "methods", "explain", "set_max_memory",
+           "max_memory", "to_srgb8",
            "write", "read", "compare"]
+
+
+@_contextlib.contextmanager
+def _memory_limit(gib):
+    """The memory limit set to `gib` GiB for one call (None: as it is), as --max-memory sets it
+    for one command; the limit before is restored after, whatever happens."""
+    if gib is None:
+        yield
+        return
+    before = max_memory()
+    set_max_memory(gib)
+    try:
+        yield
+    finally:
+        set_max_memory(before)
 
 
 class Image(_np.ndarray):
@@ -75,13 +93,14 @@ class Explanation(str):
 
 
 def explain(scene, method, pixel=None, row=None, width=None, height=None, camera=None,
-            **method_options):
+            max_memory=None, **method_options):
     """One step of `method`'s algorithm on `scene`, as `hikari explain` prints it: pixel=(x, y)
     for zbuffer (the fragments tested there, Alg 4.2) and raytrace (the ray tree, Alg 4.3),
     row=y for scanline (edge table, active edges and spans, Alg 4.1), neither for depthsort
     (Newell's comparisons and the painting order). An Explanation: print it, or read .steps."""
-    return Explanation(scene._session.explain(method, pixel, row, width, height, camera,
-                                              **method_options))
+    with _memory_limit(max_memory):
+        return Explanation(scene._session.explain(method, pixel, row, width, height, camera,
+                                                  **method_options))
 
 
 class Scene:
@@ -91,18 +110,21 @@ class Scene:
         self._session = session
 
     @classmethod
-    def load(cls, path, **overrides):
+    def load(cls, path, max_memory=None, **overrides):
         """Loads a scene file (.json) or a model (.obj .ply .gltf .glb) as `hikari render` does.
 
         Keywords as the command line's: set={"materials.clay.shininess": 5} (or a list of
-        "PATH=VALUE"), ground=True, crease_angle=30, camera_from=(x, y, z), look_at=(x, y, z).
+        "PATH=VALUE"), ground=True, crease_angle=30, camera_from=(x, y, z), look_at=(x, y, z),
+        max_memory=GiB (the limit for this load; see set_max_memory).
         """
-        return cls(_hikari.Scene.load(str(path), **overrides))
+        with _memory_limit(max_memory):
+            return cls(_hikari.Scene.load(str(path), **overrides))
 
     @classmethod
-    def from_dict(cls, scene, base_dir="."):
+    def from_dict(cls, scene, base_dir=".", max_memory=None):
         """A scene from the scene format as Python data (dicts and lists, docs/scene-format.md)."""
-        return cls(_hikari.Scene.from_json(_json.dumps(scene), str(base_dir), "scene"))
+        with _memory_limit(max_memory):
+            return cls(_hikari.Scene.from_json(_json.dumps(scene), str(base_dir), "scene"))
 
     @classmethod
     def default(cls):
@@ -114,7 +136,7 @@ class Scene:
         self._session.set(path, value)
 
     def render(self, method="raytrace", width=None, height=None, aov="color", camera=None,
-               threads=None, progress=None, **method_options):
+               threads=None, progress=None, max_memory=None, **method_options):
         """Renders with `method` (see hikari.methods()): an Image, float32 linear values,
         (H, W, 3) for colour, normals and the spans and culled pictures; (H, W) for depth, ids
         and the counts of overdraw (fragments per pixel) and paint-order (1 + painting position;
@@ -123,9 +145,12 @@ class Scene:
         camera: a dict with any of eye, look_at, up, fov_y, projection, view_height, width,
         height. progress: called with the fraction done. Method options as keywords:
         spp=16, shadows="pcf", max_depth=3, line_color=(0.1, 0.1, 0.2), ...
+        max_memory: the memory limit in GiB for this render, as --max-memory (every buffer it
+        makes counts, with the scene's); InputError when it would need more.
         """
-        array = self._session.render(method, width, height, aov, camera, threads, progress,
-                                     **method_options)
+        with _memory_limit(max_memory):
+            array = self._session.render(method, width, height, aov, camera, threads, progress,
+                                         **method_options)
         return array.view(Image)
 
     def to_json(self, width=None, height=None, camera=None):

@@ -16,6 +16,8 @@ namespace py = pybind11;
 void bind_scene(py::module_& m);
 /// to_srgb8, write, read, compare.
 void bind_images(py::module_& m);
+/// set_max_memory, max_memory: the memory limit (--max-memory).
+void bind_memory(py::module_& m);
 /// methods(): the registry, with each method's options and AOVs.
 void bind_methods(py::module_& m);
 

@@ -24,4 +24,5 @@ PYBIND11_MODULE(_hikari, m) {
     hikari::python::bind_scene(m);
     hikari::python::bind_images(m);
     hikari::python::bind_methods(m);
+    hikari::python::bind_memory(m);
 }

@@ -177,25 +177,72 @@ TEST_F(HostileMethods, OneMeshRepeatedHundredsOfTimesIsCountedInTheRasterPipelin
                          "rasterizing 1044300 triangles");
 }
 
+// Camera between a mirror, a glass pane and a second mirror: each glass hit spawns a mirror and a
+// refracted ray that both come back, so the tree doubles every two levels.
+const std::string k_ray_tree_scene = R"({
+  "camera": {"eye": [0, 0, 0], "look_at": [0, 0, -1], "width": 1, "height": 1},
+  "materials": {"mirror": {"kd": [0, 0, 0], "reflectivity": 0.9},
+                "glass": {"kd": [0, 0, 0], "reflectivity": 0.5, "transparency": 0.5,
+                          "ior": 1.5}},
+  "lights": [{"type": "point", "position": [0, 0, 0], "intensity": [1, 1, 1]}],
+  "objects": [
+    {"type": "plane", "point": [0, 0, -1], "normal": [0, 0, 1], "material": "mirror"},
+    {"type": "plane", "point": [0, 0, 0.5], "normal": [0, 0, 1], "material": "glass"},
+    {"type": "plane", "point": [0, 0, 2], "normal": [0, 0, -1], "material": "mirror"}]})";
+
 TEST_F(HostileMethods, TheRayTreeBetweenMirrorAndGlassIsCheckedLevelByLevel) {
-    // Camera between a mirror, a glass pane and a second mirror: each glass hit spawns a mirror
-    // and a refracted ray that both come back, so the tree doubles every two levels.
-    write("tree.json", R"({
-      "camera": {"eye": [0, 0, 0], "look_at": [0, 0, -1], "width": 1, "height": 1},
-      "materials": {"mirror": {"kd": [0, 0, 0], "reflectivity": 0.9},
-                    "glass": {"kd": [0, 0, 0], "reflectivity": 0.5, "transparency": 0.5,
-                              "ior": 1.5}},
-      "lights": [{"type": "point", "position": [0, 0, 0], "intensity": [1, 1, 1]}],
-      "objects": [
-        {"type": "plane", "point": [0, 0, -1], "normal": [0, 0, 1], "material": "mirror"},
-        {"type": "plane", "point": [0, 0, 0.5], "normal": [0, 0, 1], "material": "glass"},
-        {"type": "plane", "point": [0, 0, 2], "normal": [0, 0, -1], "material": "mirror"}]})");
-    expect_refused_under(path("tree.json") + " --max-depth 48", 0.25, "the ray tree");
+    write("tree.json", k_ray_tree_scene);
+    // Many pixels: the trees of all of them reach the memory limit first.
+    expect_refused_under(path("tree.json") + " --width 32 --height 24 --max-depth 48", 0.25,
+                         "the ray tree");
     // A shallow tree renders.
     EXPECT_EQ(run_hikari("render -q " + path("tree.json") + " --max-depth 12 --max-memory 0.25 " +
                          "-o " + path("ok.png"))
                   .status,
               0);
+}
+
+TEST_F(HostileMethods, TheRayTreeOfOnePixelIsRefusedWhereItsBreadthExplodes) {
+    // One pixel under any limit (the default one included): refused at the level where the
+    // tree holds 65536 rays per camera ray, long before it fills the memory; in explain too.
+    write("tree.json", k_ray_tree_scene);
+    for (const std::string& command :
+         {"render -q " + path("tree.json") + " --max-depth 64 -o " + path("out.png"),
+          "explain -m raytrace --pixel 0,0 --max-depth 48 " + path("tree.json")}) {
+        const Measured m = run_measured(command);
+        EXPECT_EQ(m.result.status, 1) << m.result.output;
+        EXPECT_EQ(m.result.output.rfind("hikari: error: the ray tree grows past 65536 rays per "
+                                        "camera ray at level 35 of --max-depth ",
+                                        0),
+                  0u)
+            << m.result.output;
+        EXPECT_EQ(std::count(m.result.output.begin(), m.result.output.end(), '\n'), 1);
+        EXPECT_LT(m.peak_mib, allowed_peak_mib(0.25));
+    }
+    EXPECT_FALSE(fs::exists(path("out.png")));
+}
+
+TEST_F(HostileMethods, ExplainCompareAndInfoTakeTheMemoryLimit) {
+    write("tree.json", k_ray_tree_scene);
+    // explain records every ray of the tree: 2^15 rays at level 30 need more than 8 MiB.
+    const Result e = run_hikari("explain -m raytrace --pixel 0,0 --max-depth 30 --max-memory " +
+                                std::to_string(8.0 / 1024) + " " + path("tree.json"));
+    EXPECT_EQ(e.status, 1) << e.output;
+    EXPECT_NE(e.output.find("the ray tree"), std::string::npos) << e.output;
+    EXPECT_NE(e.output.find("(raise it with --max-memory)"), std::string::npos) << e.output;
+    // compare: two 1024x1024 images, 12 MiB each decoded, under 16 MiB together.
+    const std::string big = path("big.pfm");
+    ASSERT_EQ(run_hikari("render -q --width 1024 --height 1024 -o " + big).status, 0);
+    const Result c =
+        run_hikari("compare --max-memory " + std::to_string(16.0 / 1024) + " " + big + " " + big);
+    EXPECT_EQ(c.status, 1) << c.output;
+    EXPECT_NE(c.output.find("(raise it with --max-memory)"), std::string::npos) << c.output;
+    // info reads the model under the limit.
+    const Result i =
+        run_hikari("info --max-memory " + std::to_string(1.0 / (1 << 20)) + " " +
+                   (fs::path(HIKARI_SOURCE_DIR) / "scenes/models/teapot.obj").string());
+    EXPECT_EQ(i.status, 1) << i.output;
+    EXPECT_NE(i.output.find("(raise it with --max-memory)"), std::string::npos) << i.output;
 }
 
 TEST_F(HostileMethods, TexturesTheRenderReadsAreNeverOverwritten) {

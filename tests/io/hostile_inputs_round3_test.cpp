@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/input_error.h"
+#include "../support/limits_restored.h"
 #include "../support/peak_memory.h"
 #include "hikari/core/memory_budget.h"
 #include "hikari/io/files/input_limits.h"
@@ -43,17 +44,7 @@ void write_sparse(const std::filesystem::path& path, const std::string& head, of
     ::close(fd);
 }
 
-class HostileRound3 : public ::testing::Test {
-  protected:
-    void TearDown() override {
-        set_memory_limit(m_memory);
-        set_max_input_size(0);
-    }
-    TempDir m_dir;
-
-  private:
-    double m_memory = memory_limit();
-};
+class HostileRound3 : public testing::LimitsRestored {};
 
 TEST_F(HostileRound3, PlyMagicIsCheckedBeforeTheFileIsRead) {
     const auto file = m_dir / "big.ply";

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/input_error.h"
+#include "../support/limits_restored.h"
 #include "hikari/core/error.h"
 #include "hikari/core/memory_budget.h"
 #include "hikari/io/files/input_limits.h"
@@ -34,18 +35,7 @@ using testing::input_error_of;
 using testing::TempDir;
 using testing::write_text;
 
-/// Restores the process-wide limits a test changes.
-class HostileInput : public ::testing::Test {
-  protected:
-    void TearDown() override {
-        set_memory_limit(m_memory);
-        set_max_input_size(0);
-    }
-    TempDir m_dir;
-
-  private:
-    double m_memory = memory_limit();
-};
+class HostileInput : public testing::LimitsRestored {};
 
 std::string scene_error(const std::string& json) {
     return input_error_of([&] {

@@ -34,6 +34,18 @@ TEST(DepthSort, MatchesRayCasterOnRandomInterpenetratingTriangles) {
     EXPECT_LE(depth_sort_errors(testing::random_triangles(9, 40, 200)), k_allowed);
 }
 
+TEST(DepthSort, ATangleOfLargePiercingTrianglesIsGivenUpOnAfterBoundedWork) {
+    // Issue 41: thousands of triangles across one volume pierce one another everywhere, so
+    // ordering them needs cuts quadratic in their number, each step scanning all of them. The
+    // sort stops after work linear in their number (not after millions of cuts) and says so.
+    DepthSortCounts counts;
+    const std::vector<ScreenTriangle> tangle = testing::random_triangles(5, 3000, 256);
+    const VisibilityBuffer got = depth_sort_visibility_counted(tangle, 64, 64, counts);
+    EXPECT_TRUE(counts.gave_up);
+    EXPECT_LT(counts.splits, 100'000u);
+    EXPECT_EQ(got.triangle.size(), 64u * 64u);
+}
+
 TEST(DepthSort, ResolvesCyclicOverlapBySplitting) {
     EXPECT_LE(depth_sort_errors(testing::three_bars()), k_allowed);
 }

@@ -21,8 +21,33 @@ void set_memory_limit(double bytes);
 
 /// Throws InputError "WHAT needs about N GiB, more than the limit of M GiB (raise it with
 /// --max-memory)" when `bytes` exceed the limit. Call it with the size an allocation is about to
-/// take, computed from the counts that decide it (in double, so it cannot overflow).
+/// take, computed from the counts that decide it (in double, so it cannot overflow). What is
+/// already held counts with it: every MemoryHeld, and inside a MemoryScope what the process's
+/// memory has grown since the scope began, so the buffers of one render are checked together
+/// (its image, BVH, shadow maps, tessellation, ray tree), not each alone.
 void check_memory_need(double bytes, std::string_view what);
+
+/// How the refusal says to raise the limit: "--max-memory" (the command line) by default; the
+/// Python module says its own keyword.
+void set_memory_limit_hint(std::string hint);
+
+/// The memory the process holds now: its resident set (Linux /proc/self/statm); under
+/// AddressSanitizer, the bytes its allocator has handed out (the resident set there carries
+/// shadow memory and the quarantine of freed blocks).
+double process_memory_bytes();
+
+/// While alive, what the process's memory grows beyond its size when the outermost scope began
+/// counts as held (check_memory_need): a load or a render opens one, so every buffer it has made
+/// counts against the limit together with the next. Scopes nest: the outermost sets the start.
+class MemoryScope {
+  public:
+    MemoryScope();
+    ~MemoryScope();
+    MemoryScope(const MemoryScope&) = delete;
+    MemoryScope& operator=(const MemoryScope&) = delete;
+    /// The growth since the outermost scope began (0 when it shrank).
+    static double grown_bytes();
+};
 
 /// While alive, `bytes` count as held: check_memory_need() adds them to every need it checks,
 /// so a step that keeps one large result while it makes the next (`compare` decoding its second

@@ -19,6 +19,15 @@ namespace {
 /// times at most.
 constexpr int64_t k_splits_per_polygon = 4;
 
+/// The polygons the sort may look at (a Q scanned for P, a member of a cycle, an entry a split
+/// moves in the list) before it paints the order it has: an ordinary scene looks at a few per
+/// polygon, but a tangle of large polygons that all pierce one another makes every step scan
+/// all of them, so cuts alone would not bound the time (8,000 such triangles took 46 s).
+/// About a second of work, more for larger scenes; a trace records every step, so less.
+constexpr int64_t k_work_base = int64_t{1} << 24;
+constexpr int64_t k_work_base_traced = int64_t{1} << 21;
+constexpr int64_t k_work_per_polygon = 64;
+
 /// Relative tolerance of the plane-side and projection tests: a vertex this close to a plane counts
 /// as on it, so neighbours sharing an edge or a vertex never count as straddling each other.
 constexpr double k_side_epsilon = 1e-9;
@@ -95,6 +104,7 @@ class DepthSorter {
     size_t m_head = 0;                           ///< m_list before m_head is all retired
     size_t m_alive = 0;                          ///< polygons neither painted nor split
     int64_t m_split_budget = 0;
+    mutable int64_t m_work_budget = 0;  ///< polygons left to look at (k_work_base)
     DepthSortTrace* m_trace = nullptr;
     BoxGrid m_grid;  ///< every polygon's screen box, pieces added as they are cut
     mutable std::vector<uint32_t> m_candidates;  ///< grid_candidates' answer
@@ -157,6 +167,7 @@ DepthSorter::DepthSorter(std::span<const ScreenTriangle> triangles, DepthSortTra
     m_split_budget = std::min<int64_t>(
                          8 * n * n, std::max<int64_t>(k_splits_per_polygon * n, int64_t{1} << 22)) +
                      1024;
+    m_work_budget = (m_trace ? k_work_base_traced : k_work_base) + k_work_per_polygon * n;
 }
 
 /// Makes a polygon of the pooled vertices from `first` to the end of the pool.
@@ -260,6 +271,7 @@ Step DepthSorter::examine(uint32_t p_id, uint32_t& q_out) const {
     const Polygon& p = m_polygons[p_id];
     if (grid_pays(p)) {
         grid_candidates(p_id);
+        m_work_budget -= static_cast<int64_t>(m_candidates.size()) + 1;
         for (const uint32_t q_id : m_candidates)
             if (const std::optional<Step> step = compare(p_id, q_id, q_out)) return *step;
         return Step::paint;
@@ -269,6 +281,7 @@ Step DepthSorter::examine(uint32_t p_id, uint32_t& q_out) const {
         const Polygon& q = m_polygons[q_id];
         // the list is sorted by z_max: from here on every Q lies entirely in front of P
         if (q.z_max <= p.z_min) break;
+        --m_work_budget;
         if (q_id == p_id || m_retired[q_id]) continue;
         using Settled = DepthSortTrace::Settled;
         // test 1, 2: the x or the y extents do not overlap
@@ -321,6 +334,8 @@ std::optional<Step> DepthSorter::compare(uint32_t p_id, uint32_t q_id, uint32_t&
 /// member whose projection it overlaps.
 bool DepthSorter::find_cycle_cut(uint32_t q, uint32_t& cut, uint32_t& by) const {
     const auto from = std::find(m_chain.begin(), m_chain.end(), q);
+    const auto members = static_cast<int64_t>(m_chain.end() - from);
+    m_work_budget -= members * members;
     for (auto x = from; x != m_chain.end(); ++x)
         for (auto y = from; y != m_chain.end(); ++y) {
             if (x == y) continue;
@@ -376,6 +391,7 @@ template <class OffsetFn>
 void DepthSorter::split(uint32_t id, OffsetFn&& offset, uint32_t by, DepthSortTrace::Cut cut) {
     --m_split_budget;
     ++counts.splits;
+    m_work_budget -= static_cast<int64_t>(m_list.size() - m_head) / 16 + 1;  // the insertions
     const size_t before = m_polygons.size();
     const Polygon parent = m_polygons[id];
     m_front.clear();
@@ -477,11 +493,12 @@ void DepthSorter::sort() {
             m_chain.push_back(m_list[m_head]);
             m_marked[m_list[m_head]] = 1;
         }
-        if (m_split_budget <= 0) return paint_rest();
+        if (m_split_budget <= 0 || m_work_budget <= 0) return paint_rest();
         const uint32_t p = m_chain.back();
         uint32_t q = 0;
         Step step = examine(p, q);
-        if (step != Step::paint && step != Step::move_q && m_split_budget <= 0) {
+        if (step != Step::paint && step != Step::move_q &&
+            (m_split_budget <= 0 || m_work_budget <= 0)) {
             step = Step::paint;
             counts.gave_up = true;
         }

@@ -130,6 +130,16 @@ class RenderWatch {
     std::jthread m_thread;  ///< last: joined first, while the members above live
 };
 
+/// The scene `source` names, loaded inside a MemoryScope (the loaders' buffers count together);
+/// `grown` gets what the process grew by, which the scene holds from then on.
+Scene load_measured(const SceneSource& source, std::vector<std::string>& warnings, double& grown) {
+    const MemoryScope scope;
+    const double before = process_memory_bytes();
+    Scene scene = load_scene_source(source, warnings);
+    grown = std::max(0.0, process_memory_bytes() - before);
+    return scene;
+}
+
 }  // namespace
 
 const Method& method_named(std::string_view name) {
@@ -162,9 +172,11 @@ Camera resized_camera(Camera camera, int width, int height) {
 Session::Session(SceneSource source)
     : m_source(std::move(source)), m_cache(std::make_unique<BuildCache>()) {
     const auto start = Clock::now();
-    Scene scene = load_scene_source(m_source, m_warnings);
+    double grown = 0;
+    Scene scene = load_measured(m_source, m_warnings, grown);
     m_load_seconds = std::chrono::duration<double>(Clock::now() - start).count();
     adopt(std::move(scene));
+    m_scene_memory.emplace(grown);
 }
 
 Session::Session(Scene scene) : m_cache(std::make_unique<BuildCache>()) { adopt(std::move(scene)); }
@@ -196,11 +208,14 @@ void Session::set(const SceneOverride& edit) {
     source.overrides.push_back(edit);
     std::vector<std::string> warnings;
     const auto start = Clock::now();
-    Scene scene = load_scene_source(source, warnings);
+    double grown = 0;
+    Scene scene = load_measured(source, warnings, grown);
     m_load_seconds = std::chrono::duration<double>(Clock::now() - start).count();
     m_source = std::move(source);
     m_warnings = std::move(warnings);
     adopt(std::move(scene));
+    m_scene_memory.reset();
+    m_scene_memory.emplace(grown);
 }
 
 void Session::replace_scene(Scene scene) { adopt(std::move(scene)); }
@@ -239,6 +254,7 @@ std::string Session::explain(const RenderRequest& request, const ExplainStep& st
     const ExplainViews& views = method.explain;
     if (!has_explain_view(method))
         throw InputError(fmt::format("explain: {} has no explain view", method.name));
+    const MemoryScope scope;  // the scene's copy, the image and the method's own records
     const Scene scene = scene_as_rendered(request);
     check_image_memory(scene.camera);
     const MethodSettings& own = request.options;
@@ -256,6 +272,8 @@ std::string Session::explain(const RenderRequest& request, const ExplainStep& st
 }
 
 RenderResult Session::render(const RenderRequest& request) {
+    // Every buffer this render makes counts against the limit with the next (and the scene's).
+    const MemoryScope scope;
     const Method& method = method_named(request.method);
     check_aov(method, request.aov);
     check_image_memory(camera_for(request));
@@ -307,6 +325,7 @@ LineDrawing Session::draw(const RenderRequest& request) {
     if (!method.draw)
         throw InputError(fmt::format("method {} draws no lines (methods that do: {})", method.name,
                                      drawing_methods()));
+    const MemoryScope scope;
     std::optional<Scene> changed;
     const Scene& scene = scene_for(request, changed);
     const ThreadLimit thread_limit(request.threads);

@@ -16,6 +16,7 @@
 
 #include "hikari/core/build_cache.h"
 #include "hikari/core/image.h"
+#include "hikari/core/memory_budget.h"
 #include "hikari/frame/framebuffer.h"
 #include "hikari/frame/line_drawing.h"
 #include "hikari/frame/render_settings.h"
@@ -158,6 +159,9 @@ class Session {
     std::optional<DepthCue> m_depth_cue;  ///< the scene's own depth cue
     std::vector<std::string> m_warnings;
     double m_load_seconds = 0;
+    /// What loading the scene grew the process by: held while the session lives, so every
+    /// render's buffers count against the memory limit together with the scene.
+    std::optional<MemoryHeld> m_scene_memory;
 };
 
 /// The scene `source` names, loaded as a session loads it, appending the loaders' warnings (for

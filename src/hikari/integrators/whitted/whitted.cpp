@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "hikari/bvh/scene_intersector.h"
+#include "hikari/core/error.h"
 #include "hikari/core/memory_budget.h"
 #include "hikari/frame/subpixel.h"
 #include "hikari/frame/tiles.h"
@@ -129,6 +130,14 @@ struct WaveRecord {
 /// --max-depth between mirrors and glass is checked level by level rather than up front.
 std::atomic<uint64_t> g_tree_nodes_held{0};
 
+/// The most rays one level of the tree may hold per camera ray. Whitted's recursion is
+/// exponential: a ray that meets glass between mirrors spawns a mirror and a refracted ray that
+/// both come back, so a path of D segments can end in 2^(D-1) rays. A scene needs this many at
+/// one level only past depth 17 with glass at every bounce; the tree is refused there at once
+/// (the memory check alone lets it grow to the limit first, which a large limit makes
+/// minutes of tracing).
+constexpr size_t k_max_rays_per_camera_ray = size_t{1} << 16;
+
 /// A tracer's share of g_tree_nodes_held, given back when its paths are finished.
 class HeldTreeNodes {
   public:
@@ -183,6 +192,7 @@ class WaveTracer {
     const PathLevel& trace_tile(const Tile& tile, FirstHits&& first_hits) {
         const int width = tile.x1 - tile.x0, height = tile.y1 - tile.y0;
         PrimaryBlock& block = m_s.block;
+        m_camera_rays = static_cast<size_t>(width) * height;
         m_hits.trace(tile.x0, tile.y0, width, height, block);
         first_hits(block);
         PathLevel& camera = level(0);
@@ -204,6 +214,7 @@ class WaveTracer {
     const PathLevel& trace_camera_rays(const Ray* rays, size_t count) {
         PathLevel& camera = level(0);
         camera.resize(count);
+        m_camera_rays = count;
         m_s.next_rays.clear();
         m_s.next_cones.clear();
         trace_level(rays, count, nullptr, 1, camera);
@@ -225,6 +236,7 @@ class WaveTracer {
         held.add(first.mirror.size(), node_bytes(), 1, m_ctx.max_depth);
         int depth = 1;
         while (!m_s.next_rays.empty()) {
+            check_breadth(m_s.next_rays.size(), depth + 1);
             held.add(m_s.next_rays.size(), node_bytes(), depth + 1, m_ctx.max_depth);
             std::swap(m_s.rays, m_s.next_rays);
             std::swap(m_s.cones, m_s.next_cones);
@@ -241,6 +253,16 @@ class WaveTracer {
         if (m_record)
             for (int d = 0; d < depth; ++d) m_record->folded.push_back(level(d));
         return level(0);
+    }
+
+    /// Refuses a level of `rays` at `depth` that is broader than k_max_rays_per_camera_ray.
+    void check_breadth(size_t rays, int depth) const {
+        if (rays <= k_max_rays_per_camera_ray * std::max<size_t>(m_camera_rays, 1)) return;
+        throw InputError(fmt::format(
+            "the ray tree grows past {} rays per camera ray at level {} of --max-depth {}: "
+            "surfaces that both reflect and refract, between mirrors, double it (lower "
+            "--max-depth, or make them reflect or refract only)",
+            k_max_rays_per_camera_ray, depth, m_ctx.max_depth));
     }
 
     /// The bytes one node of the tree takes over every array that holds it: its PathLevel
@@ -515,6 +537,7 @@ class WaveTracer {
     const LaneShader& m_shader;
     WaveScratch& m_s;
     WaveRecord* m_record;
+    size_t m_camera_rays = 1;  ///< of the tile or sample being traced
 };
 
 /// Everything a render's tiles share.
