@@ -135,29 +135,6 @@ void render_zbuffer(const Gallery& g, Figure& f) {
         fmt::format("スキャンライン法とZバッファ法のID バッファは {:.3f}% の画素で一致", agree)};
 }
 
-/// Fig 4.24b: every surface in its flat colour times the fraction of its diffuse light that
-/// reaches it (shadowed ÷ unshadowed --aov diffuse; 1 where no light faces it): the cast
-/// shadows alone, without shading.
-void render_shadows_only(const Gallery& g, Figure& f) {
-    const std::vector<std::string> lit = {"-m", "raytrace", "--aov", "diffuse"};
-    std::vector<std::string> open = lit;
-    open.insert(open.end(), {"--shadows", "none"});
-    const std::vector<std::string> flat = {"-m", "raytrace", "--shadows", "none"};
-    f.seconds = g.render("model-flat.json", flat, "data/flat.pfm") +
-                g.render(f.scene, lit, "data/lit.pfm") + g.render(f.scene, open, "data/open.pfm");
-    Image picture = read_image(g.data() / "flat.pfm");
-    const Image a = read_image(g.data() / "lit.pfm"), b = read_image(g.data() / "open.pfm");
-    for (size_t i = 0; i < picture.pixels.size(); ++i) {
-        const float reached = b.pixels[i].x + b.pixels[i].y + b.pixels[i].z;
-        const float got = a.pixels[i].x + a.pixels[i].y + a.pixels[i].z;
-        picture.pixels[i] *= reached > 0 ? std::clamp(got / reached, 0.0f, 1.0f) : 1.0f;
-    }
-    write_image(g.dir / f.image, picture);
-    f.commands = {command_line("model-flat.json", flat, "flat.pfm"),
-                  command_line(f.scene, lit, "lit.pfm"), command_line(f.scene, open, "open.pfm")};
-    f.note = {"the picture: flat × lit ÷ open, per pixel", "画像 = flat × lit ÷ open（画素ごと）"};
-}
-
 /// Fig 4.29d: the colour, and how closely the three term AOVs add up to it (float files).
 void render_term_sum(const Gallery& g, Figure& f) {
     render_plain(g, f);
@@ -362,17 +339,18 @@ void plan_shading(Gallery& g) {
     }
 }
 
-void plan_shadows(Gallery& g, const Json& m) {
+void plan_shadows(Gallery& g, const Json& m, const PlacedModel& model) {
     const Text s = {"Fig 4.24: shading and shadows", "図4.24: シェーディングと影付け"};
-    g.scene_files["model-flat.json"] = flat_colour(m);
+    g.files["model-toward-light.obj"] = model.toward_light_obj;
+    g.scene_files["model-shadows-only.json"] = shadows_only(m, "model-toward-light.obj");
     g.add(s, "Fig 4.24", {"(a) shading only", "(a) シェーディングのみ"}, "fig4-24-shading.png",
           "model.json", {"-m", "raytrace", "--shadows", "none"});
     g.add(s, "Fig 4.24",
-          {"(b) shadows only: every surface in its flat colour, darkened where its light is "
-           "blocked (cast shadows, no shading)",
-           "(b) 影付けのみ：各面を一様な色で塗り、光がさえぎられる所だけ暗くする"},
-          "fig4-24-shadows.png", "model.json", {})
-        .make = render_shadows_only;
+          {"(b) shadows only: every surface in its flat colour, darker where the light is "
+           "blocked (no shading: every normal faces the light, so cos α = 1)",
+           "(b) 影付けのみ：各面を一様な色で塗り、光がさえぎられる所だけ暗くする（法線をすべて"
+           "光源へ向け cos α = 1 とし、陰影を消す）"},
+          "fig4-24-shadows.png", "model-shadows-only.json", {"-m", "raytrace"});
     g.add(s, "Fig 4.24", {"(c) both", "(c) シェーディングと影付けの両方"}, "fig4-24-both.png",
           "model.json", {"-m", "raytrace"});
 }
@@ -456,9 +434,11 @@ void plan_global_illumination(Gallery& g) {
     g.add(s, "GI", {"with inter-reflection: 8 bounces", "相互反射（間接光）あり：8回反射"},
           "gi-path.png", "cornell.json", {"-m", "path"});
     g.add(s, "GI",
-          {"glass and mirror: caustics, 256 samples per pixel",
-           "ガラスと鏡：コースティクス、1画素256サンプル"},
-          "gi-glass.png", "cornell-glass.json", {"-m", "path", "--spp", "256"});
+          {"glass and mirror: caustics (light focused by the glass ball, thrown by the mirror "
+           "ball) traced from the light, 64 samples per pixel",
+           "ガラスと鏡：コースティクス（ガラス球が集め、鏡の球が投げる光）を光源から追跡、"
+           "1画素64サンプル"},
+          "gi-glass.png", "cornell-glass.json", {"-m", "path"});
 }
 
 void plan_assignment(Gallery& g) {
@@ -490,7 +470,7 @@ void plan(Gallery& g, const PlacedModel& model) {
     plan_depth_sort(g);
     plan_hidden_surfaces(g);
     plan_shading(g);
-    plan_shadows(g, m);
+    plan_shadows(g, m, model);
     plan_lights(g, m);
     plan_ray_tracing(g);
     plan_global_illumination(g);

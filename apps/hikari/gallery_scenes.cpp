@@ -26,6 +26,25 @@ Json ground_triangles() {
              {"material", "ground"}}};
 }
 
+/// Fig 4.24b's light: from above, front and right, as the model scene's key light.
+constexpr float k_shadow_light[3] = {-2.2f, -3.5f, -2.5f};
+
+/// Unit vector toward the light of Fig 4.24b.
+Vec3 toward_shadow_light() {
+    return -normalize(Vec3(k_shadow_light[0], k_shadow_light[1], k_shadow_light[2]));
+}
+
+/// `scene`'s triangles as OBJ text, every vertex with the one normal `n`.
+std::string obj_with_normal(const Scene& scene, Vec3 n) {
+    std::string out = "# hikari gallery, Fig 4.24b: the model, every normal toward the light\n";
+    for (const Vec3& p : scene.triangles.positions)
+        out += fmt::format("v {} {} {}\n", p.x, p.y, p.z);
+    out += fmt::format("vn {} {} {}\n", n.x, n.y, n.z);
+    for (const auto& [a, b, c] : scene.triangles.indices)
+        out += fmt::format("f {}//1 {}//1 {}//1\n", a + 1, b + 1, c + 1);
+    return out;
+}
+
 /// A camera at `eye` looking at `at`, `width` × `height` pixels.
 Json camera(Json eye, Json at, float fov_y, int width, int height) {
     return {{"eye", std::move(eye)},
@@ -67,6 +86,7 @@ PlacedModel place_model(const std::filesystem::path& model, const std::string& f
     // The bounding sphere fills the view (38° high, 4:3): r / sin(19°), with a margin.
     const float radius = 0.5f * length(extent) * scale;
     placed.distance = 1.1f * radius / std::sin(19.0f * 3.14159265f / 180.0f);
+    placed.toward_light_obj = obj_with_normal(scene, toward_shadow_light());
     return placed;
 }
 
@@ -113,14 +133,29 @@ Json textured(Json scene) {
     return scene;
 }
 
-Json flat_colour(Json scene) {
-    scene["description"] = "Fig 4.24b: every surface in its own flat colour (ka = kd, no shading)";
+Json shadows_only(Json scene, const std::string& obj_file) {
+    scene["description"] =
+        "Fig 4.24b: shadows only. One directional light; every normal faces it (the model's in "
+        "its OBJ copy, the ground's kd divided by its cos α), so cos α = 1 everywhere and each "
+        "surface shows its flat colour ka + kd where the light reaches it, ka where its shadow "
+        "falls. Shadow rays and shadow maps use the true geometry.";
+    const Vec3 l = toward_shadow_light();
+    const float ground_cos = l.y;  // the ground's normal is +y
     for (auto& [name, m] : scene["materials"].items()) {
-        m["ka"] = m.value("kd", vec(0.8f, 0.8f, 0.8f));
-        m["kd"] = vec(0, 0, 0);
+        const Json colour = m.value("kd", vec(0.8f, 0.8f, 0.8f));
+        const float kd = name == "ground" ? 0.6f / ground_cos : 0.6f;
+        m["ka"] = {0.4f * colour[0].get<float>(), 0.4f * colour[1].get<float>(),
+                   0.4f * colour[2].get<float>()};
+        m["kd"] = {kd * colour[0].get<float>(), kd * colour[1].get<float>(),
+                   kd * colour[2].get<float>()};
         m["ks"] = vec(0, 0, 0);
     }
     scene["ambient"] = vec(1, 1, 1);
+    scene["lights"] = {{{"type", "directional"},
+                        {"direction", vec(k_shadow_light[0], k_shadow_light[1], k_shadow_light[2])},
+                        {"intensity", vec(1, 1, 1)}}};
+    for (Json& object : scene["objects"])
+        if (object.value("type", "") == "mesh") object["file"] = obj_file;
     return scene;
 }
 

@@ -17,6 +17,9 @@ struct PlacedModel {
     Json object;         ///< the mesh object, its file named relative to the gallery's scenes/
     float height = 1;    ///< its height after placing
     float distance = 3;  ///< how far the camera stands from its centre to see all of it
+    /// Fig 4.24b: the model as OBJ text with every vertex normal turned toward the light of
+    /// shadows_only (positions and faces as in the file).
+    std::string toward_light_obj;
 };
 
 /// Loads `model` to measure it; the object names it as `file_in_scenes` (a copy beside the
@@ -33,9 +36,12 @@ Json depth_cued(Json scene, float near, float far);
 /// Fig 4.1f: `scene` with a checker texture on the model and the ground.
 Json textured(Json scene);
 
-/// Fig 4.24b: `scene` in flat colour: each material's ka = its kd, no diffuse or specular term,
-/// white ambient light, so every surface shows its own colour unshaded.
-Json flat_colour(Json scene);
+/// Fig 4.24b, shadowing without shading, in one render: `scene` (model_scene) lit by one
+/// directional light, its model loaded from `obj_file` (PlacedModel::toward_light_obj, every
+/// normal facing the light) and its ground's kd divided by the ground's cos α, so that cos α is 1
+/// everywhere: each surface shows ka + kd = its flat colour where the light reaches it and ka
+/// (40% of it) where a shadow falls. Shadow rays and maps use the true geometry.
+Json shadows_only(Json scene, const std::string& obj_file);
 
 /// `scene` with its lights replaced by `lights`.
 Json with_lights(Json scene, Json lights);

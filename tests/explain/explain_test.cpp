@@ -113,5 +113,31 @@ TEST(Explain, TextNamesTheStepsAndRefusesPointsOutsideTheImage) {
     EXPECT_NE(m.find("sphere (primitive 3)"), std::string::npos);
 }
 
+TEST(Explain, ZBufferDescribesTheExactSphereTheRenderDraws) {
+    // Phong interpolation (the default) draws spheres exactly, and the explanation follows the
+    // render: where the sphere is visible its fragment is the exact sphere's, and no triangle of
+    // a tessellated sphere is listed anywhere. Gouraud draws (and explains) its polygons.
+    const Scene scene = testing::parse(k_triangles_and_sphere);
+    const RasterSettings phong;
+    int sphere_pixels = 0;
+    for (int y = 0; y < scene.camera.height; ++y)
+        for (int x = 0; x < scene.camera.width; ++x) {
+            const std::string z = explain_zbuffer_pixel(scene, phong, x, y);
+            EXPECT_EQ(z.find("of sphere"), std::string::npos) << z;
+            sphere_pixels +=
+                z.find("Result: exact sphere (primitive 3) is visible") != std::string::npos;
+        }
+    EXPECT_GT(sphere_pixels, 20);
+    RasterSettings gouraud;
+    gouraud.interp = Interpolation::gouraud;
+    bool polygons = false;
+    for (int x = 0; x < scene.camera.width; ++x) {
+        const std::string z = explain_zbuffer_pixel(scene, gouraud, x, 8);
+        EXPECT_EQ(z.find("exact"), std::string::npos) << z;
+        polygons = polygons || z.find("of sphere") != std::string::npos;
+    }
+    EXPECT_TRUE(polygons);
+}
+
 }  // namespace
 }  // namespace hikari

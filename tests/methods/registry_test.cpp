@@ -114,10 +114,10 @@ TEST(Methods, EveryMethodDeclaresItsOptions) {
     // Each option once, whichever methods share it.
     std::vector<std::string> all;
     for (const MethodOption* option : method_options()) all.emplace_back(option->flag);
-    EXPECT_EQ(all, (std::vector<std::string>{"--spp", "--max-depth", "--shadows", "--light-samples",
-                                             "--clamp", "--time-limit", "--progressive", "--filter",
-                                             "--filter-width", "--interp", "--cull",
-                                             "--shadow-map-size", "--line-width", "--line-color"}));
+    EXPECT_EQ(all, (std::vector<std::string>{
+                       "--spp", "--max-depth", "--shadows", "--light-samples", "--clamp",
+                       "--caustics", "--time-limit", "--progressive", "--filter", "--filter-width",
+                       "--interp", "--cull", "--shadow-map-size", "--line-width", "--line-color"}));
     EXPECT_TRUE(takes_option(*find_method("path"), "--spp"));
     EXPECT_FALSE(takes_option(*find_method("path"), "--shadows"));
 }

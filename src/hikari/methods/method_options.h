@@ -104,6 +104,9 @@ inline constexpr Choice<PixelFilterKind> k_filter_choices[] = {
 
 /// `--cull`: RasterSettings::cull_back_faces.
 inline constexpr Choice<bool> k_cull_choices[] = {{"back", true}, {"none", false}};
+/// `--caustics`: light (traced from the lights, integrators/path/caustic_light_tracer.h) or
+/// path (found by the path tracer alone).
+inline constexpr Choice<bool> k_caustic_choices[] = {{"light", true}, {"path", false}};
 
 /// Where an option's value goes: one field of MethodSettings.
 template <class T>

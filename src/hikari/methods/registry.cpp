@@ -144,6 +144,12 @@ constexpr MethodOption k_path_options[] = {
      "Scale each sample's radiance down to at most this per channel (removes fireflies, "
      "biased; default 0 = off)",
      RealOption{0.0f, 1e30f, [](MethodSettings& s) -> float& { return s.path.clamp; }}},
+    {"--caustics",
+     "Caustics (light through mirror or glass onto a diffuse surface) from emissive triangles: "
+     "light (traced from the lights and joined to the eye: no fireflies; default) or path (left "
+     "to the camera paths, as plain path tracing does: the same mean, far noisier)",
+     ChoiceOption<bool>{k_caustic_choices,
+                        [](MethodSettings& s) -> bool& { return s.path.light_traced_caustics; }}},
     {"--time-limit",
      "Stop after this many seconds of path tracing (at least one sample per pixel); without "
      "--spp, sample until then",

@@ -13,6 +13,7 @@
 #include "hikari/frame/tiles.h"
 #include "hikari/geometry/ray_offset.h"
 #include "hikari/integrators/hit_aovs.h"
+#include "hikari/integrators/path/caustic_light_tracer.h"
 #include "hikari/integrators/path/emitters.h"
 #include "hikari/shading/bsdf/scattering.h"
 #include "hikari/shading/lights.h"
@@ -54,12 +55,18 @@ class PathIntegrator {
           m_intersector(*m_kept_intersector),
           m_emitters(scene),
           m_environment(find_environment(scene.lights)),
-          m_has_area_lights(has_area_light(scene.lights)) {
+          m_has_area_lights(has_area_light(scene.lights)),
+          m_caustics_from_lights(settings.light_traced_caustics &&
+                                 traces_caustics_from_lights(scene)) {
         m_scale.reserve(scene.materials.size());
         for (const Material& m : scene.materials) m_scale.push_back(energy_scale(m));
     }
 
     const SceneIntersector& intersector() const { return m_intersector; }
+    /// Each material's energy_scale.
+    const std::vector<float>& scale() const { return m_scale; }
+    /// Whether the caustic paths are the light tracer's (integrators/path/caustic_light_tracer.h).
+    bool caustics_from_lights() const { return m_caustics_from_lights; }
     /// Whether this render built the intersector (false: kept from an earlier render).
     bool built_intersector() const { return m_built_intersector; }
 
@@ -68,7 +75,7 @@ class PathIntegrator {
         Vec3 sum(0.0f), throughput(1.0f);
         // Emitters found by a camera ray or after a delta bounce count fully (no light sample
         // could have found them); after a smooth bounce they are weighed against light sampling.
-        bool specular = true;
+        bool specular = true, first_smooth = false;
         float bsdf_pdf = 0.0f;
         Vec3 last_normal(0.0f);
         for (int bounce = 0;; ++bounce) {
@@ -94,7 +101,12 @@ class PathIntegrator {
             }
             const Material& material = m_scene.materials[hit.material];
             const bool front = dot(hit.geometric_normal, ray.direction) < 0.0f;
-            if (front && max_component(material.emission) > 0.0f) {
+            // A caustic path (the eye's vertex smooth, the light's a mirror or glass bounce) off
+            // an emissive triangle is the light tracer's, which finds it far more often.
+            const bool light_traced = m_caustics_from_lights && bounce >= 2 && specular &&
+                                      first_smooth && hit.kind == HitKind::triangle &&
+                                      m_emitters.emits(hit.index);
+            if (front && max_component(material.emission) > 0.0f && !light_traced) {
                 const float light_pdf =
                     hit.kind == HitKind::triangle
                         ? m_emitters.triangle_pdf(hit.index, ray.direction, hit.t)
@@ -126,6 +138,7 @@ class PathIntegrator {
             if (!(max_component(next.weight) > 0.0f)) break;
             throughput = throughput * next.weight;
             specular = next.delta;
+            if (bounce == 0) first_smooth = !next.delta;
             bsdf_pdf = next.pdf;
             last_normal = at.normal;
             if (bounce + 1 >= k_roulette_after) {
@@ -145,16 +158,7 @@ class PathIntegrator {
   private:
     /// The material at `hit`, its texture applied.
     MaterialSample<float> material_at(const SurfaceHit& hit, const ScatterFrame& at) const {
-        SurfacePoint<float> point{hit.position, at.normal, at.geometric_normal, at.to_eye};
-        if (m_scene.materials[hit.material].texture ||
-            m_scene.materials[hit.material].ambient_texture) {
-            const SurfaceUv uv = m_intersector.surface_uv(hit);
-            point.u = uv.uv.x, point.v = uv.uv.y;
-        }
-        if (m_scene.materials[hit.material].vertex_colours)
-            point.vertex_colour = m_intersector.surface_colour(hit);
-        return evaluate_material<float>(m_scene.materials.data(),
-                                        static_cast<int32_t>(hit.material), point);
+        return material_at_hit(m_scene, m_intersector, hit, at);
     }
 
     /// What a ray that leaves the scene along `dir` brings back: the environment light (weighed
@@ -197,6 +201,7 @@ class PathIntegrator {
     EmitterTable m_emitters;
     const EnvironmentLight* m_environment;
     bool m_has_area_lights;
+    bool m_caustics_from_lights;
     std::vector<float> m_scale;  ///< energy_scale per material
 };
 
@@ -216,12 +221,28 @@ class PathRender {
           m_frame(make_camera_frame(scene.camera)),
           m_filter(path.filter, path.filter_width > 0.0f ? path.filter_width
                                                          : default_filter_width(path.filter)),
-          m_sums(static_cast<size_t>(scene.camera.width) * scene.camera.height, Vec3(0.0f)) {}
+          m_sums(static_cast<size_t>(scene.camera.width) * scene.camera.height, Vec3(0.0f)) {
+        if (m_integrator.caustics_from_lights())
+            m_light_tracer = std::make_unique<CausticLightTracer>(
+                scene, m_integrator.intersector(), m_integrator.scale(), m_filter, path.max_depth);
+    }
 
     const PathIntegrator& integrator() const { return m_integrator; }
 
-    /// Samples [first, first + count) of every pixel, added to the sums.
+    /// Samples [first, first + count) of every pixel, added to the sums, and as many light
+    /// paths as camera paths for the caustics.
     void add_samples(int first, int count) {
+        add_camera_samples(first, count);
+        if (!m_light_tracer || cancelled(m_settings.control)) return;
+        const uint64_t pixels = m_sums.size();
+        uint64_t rays = 0;
+        m_light_tracer->trace(pixels * static_cast<uint64_t>(first),
+                              pixels * static_cast<uint64_t>(count), rays);
+        if (m_settings.stats) m_settings.stats->rays_traced += rays;
+    }
+
+    /// Samples [first, first + count) of every pixel from the camera.
+    void add_camera_samples(int first, int count) {
         const int width = m_scene.camera.width;
         RenderControl* control = m_settings.control;
         for_each_tile(
@@ -262,6 +283,12 @@ class PathRender {
         Image image(m_scene.camera.width, m_scene.camera.height);
         const float inverse = 1.0f / static_cast<float>(samples);
         for (size_t i = 0; i < m_sums.size(); ++i) image.pixels[i] = m_sums[i] * inverse;
+        if (m_light_tracer) {
+            const double paths = static_cast<double>(samples) * static_cast<double>(m_sums.size());
+            const float per_path = static_cast<float>(1.0 / paths);
+            for (size_t i = 0; i < m_sums.size(); ++i)
+                image.pixels[i] += m_light_tracer->sum(i) * per_path;
+        }
         return image;
     }
 
@@ -306,6 +333,7 @@ class PathRender {
     CameraFrame m_frame;
     PixelFilter m_filter;
     std::vector<Vec3> m_sums;
+    std::unique_ptr<CausticLightTracer> m_light_tracer;  ///< null: no caustics to trace
 };
 
 }  // namespace

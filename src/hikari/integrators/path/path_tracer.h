@@ -30,6 +30,9 @@ struct PathSettings {
     /// A sample's radiance is scaled down to at most this in every channel (0: never; any
     /// other value biases the image to remove fireflies).
     float clamp = 0.0f;
+    /// Caustic paths from emissive triangles traced from the lights (caustic_light_tracer.h);
+    /// false: left to the camera paths (the same mean, far more noise).
+    bool light_traced_caustics = true;
     /// Stop once this many seconds of rendering are spent (0: no limit); at least one sample
     /// per pixel is always taken.
     float time_limit_seconds = 0.0f;

@@ -19,12 +19,8 @@ namespace hikari {
 
 namespace {
 
-/// Picture cells: 20 pixels, 15 points, square in Excel and in LibreOffice. The two turn a
-/// column width (in characters, w) into different sizes: Excel into 7w + 5 pixels, LibreOffice
-/// into about 7w points; rows are points in both. The two agree with the row at w = 15/7, 20
-/// pixels (0.2081 in and 0.2083 in measured in LibreOffice 7.4; at 12 pixels its columns are a
-/// third wider than the rows).
-constexpr uint32_t k_picture_cell_pixels = 20;
+/// Picture cells: 24 pixels, 18 points, square in Excel and in LibreOffice (set_square_cells).
+constexpr uint32_t k_picture_cell_pixels = 24;
 
 /// One labelled row of the parameter sheet: up to three values, each a defined name the
 /// formulas read (`eye_x`, `kd_red`, `shininess_n`), given as numbers or derived by formulas.
@@ -394,10 +390,8 @@ void write_workbook(lxw_workbook* book, const Scene& scene, SampleEncoding encod
         for (int x = 0; x < camera.width; ++x)
             pixels.push_back(pixel_quantities(scene, derived, x, y, encoding));
     lxw_worksheet* image = add_sheet(book, picture.name, path);
-    check_workbook(worksheet_set_column_pixels(image, 0, static_cast<lxw_col_t>(camera.width - 1),
-                                               k_picture_cell_pixels, nullptr),
-                   path);
-    worksheet_set_default_row(image, 0.75 * k_picture_cell_pixels, LXW_FALSE);  // points
+    set_square_cells(image, 0, static_cast<lxw_col_t>(camera.width - 1), k_picture_cell_pixels,
+                     path);
     worksheet_gridlines(image, LXW_HIDE_ALL_GRIDLINES);
     colour_picture(book, image, scene, encoding, path);
     fill_pixel_sheet(image, picture, pixels, camera, path);

@@ -12,10 +12,9 @@ namespace hikari {
 
 namespace {
 
-/// Cell size of the picture on screen and paper, in pixels: 12, one character of the default
-/// font, is the smallest width that Excel and LibreOffice both turn into the same pixels (below
-/// one character they convert widths differently).
-constexpr uint32_t k_cell_pixels = 12;
+/// Cell size of the picture on screen and paper, in pixels: two digits of the workbook's font,
+/// square in Excel and LibreOffice alike (set_square_cells).
+constexpr uint32_t k_cell_pixels = 16;
 /// Cell size of the channel sheets: wide enough for "255".
 constexpr uint32_t k_number_width_pixels = 30, k_number_height_pixels = 16;
 
@@ -34,8 +33,12 @@ lxw_worksheet* add_grid_sheet(lxw_workbook* book, const char* name, int width, i
     if (!sheet) fail(path, "libxlsxwriter could not add a worksheet");
     const auto last_row = static_cast<lxw_row_t>(height - 1);
     const auto last_column = static_cast<lxw_col_t>(width - 1);
-    check(worksheet_set_column_pixels(sheet, 0, last_column, cell_width, nullptr), path);
-    worksheet_set_default_row(sheet, 0.75 * cell_height, LXW_FALSE);  // points = 3/4 pixel
+    if (cell_width == cell_height) {
+        set_square_cells(sheet, 0, last_column, cell_width, path);
+    } else {
+        check(worksheet_set_column_pixels(sheet, 0, last_column, cell_width, nullptr), path);
+        worksheet_set_default_row(sheet, 0.75 * cell_height, LXW_FALSE);  // points = 3/4 pixel
+    }
     worksheet_gridlines(sheet, LXW_HIDE_ALL_GRIDLINES);
     worksheet_set_margins(sheet, 0.2, 0.2, 0.2, 0.2);
     if (width * cell_width > height * cell_height) worksheet_set_landscape(sheet);
