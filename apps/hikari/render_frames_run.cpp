@@ -28,6 +28,7 @@
 #include "hikari/session/frame_selection.h"
 #include "hikari/session/scene_animation.h"
 #include "load_scene.h"
+#include "mpi_frames.h"
 #include "output_paths.h"
 #include "render_frames.h"
 #include "render_output.h"
@@ -215,24 +216,26 @@ struct FrameTally {
     size_t rendered = 0, skipped = 0;
 };
 
-/// The frames of `run` as numbered files; those already there skipped unless --overwrite.
+/// The frames of `run` as numbered files, shared among the MPI job's ranks; those already there
+/// skipped unless --overwrite. The tally is this rank's.
 FrameTally render_frame_files(const RenderOptions& o, Session& session, const FrameRun& run,
-                              FrameStage& stage, const std::vector<int>& frames) {
-    FrameProgress progress(!o.quiet, frames.size());
+                              FrameStage& stage, const std::vector<int>& frames,
+                              const MpiJob& job) {
+    FrameProgress progress(!o.quiet && job.rank() == 0, frames.size());
     FrameTally tally;
-    for (const int frame : frames) {
+    job.share(frames, [&](int frame) {
         const std::string file = run.pattern->file_name(frame);
         if (!o.frames.overwrite && frame_is_done(file)) {
             progress.skipped();
             ++tally.skipped;
-            continue;
+            return;
         }
         progress.starting(frame);
         const Camera camera = stage.camera(frame);
         render_frame_file(o, session, run, camera, file, tally.rendered == 0);
         progress.rendered();
         ++tally.rendered;
-    }
+    });
     return tally;
 }
 
@@ -268,6 +271,12 @@ FrameTally render_video(const RenderOptions& o, Session& session, const FrameRun
     return tally;
 }
 
+/// `o` without its messages (-q): the MPI ranks after the first, which would repeat them.
+RenderOptions quiet(RenderOptions o) {
+    o.quiet = true;
+    return o;
+}
+
 /// The line after a run's frames: how many, where, how fast.
 void report_frames(const RenderOptions& o, const FrameRun& run, const FrameTally& tally,
                    double seconds) {
@@ -290,17 +299,28 @@ int run_frame_render(const RenderOptions& o) {
     }
     const std::vector<int> frames = planned_frames(o.frames);
     const std::vector<FrameRun> runs = planned_runs(o, frames);
+    const MpiJob job;
+    for (const FrameRun& run : runs)
+        if (!run.pattern && job.size() > 1)
+            throw UsageError(
+                fmt::format("{}: a video takes every frame in one process; under "
+                            "mpirun, write numbered images (-o frame_%04d.png)",
+                            run.output));
     for (const std::string& note : o.notes) print_err("hikari: warning: {}\n", note);
-    const std::unique_ptr<Session> session = load_render_session(o);
+    const std::unique_ptr<Session> session = load_render_session(job.rank() == 0 ? o : quiet(o));
     FrameStage stage(o, *session);
     check_image_memory(stage.base());
     for (const FrameRun& run : runs)
         if (!run.pattern) check_video_size(run, stage.base());
     for (const FrameRun& run : runs) {
         const auto start = Clock::now();
-        const FrameTally tally = run.pattern ? render_frame_files(o, *session, run, stage, frames)
-                                             : render_video(o, *session, run, stage, frames);
-        report_frames(o, run, tally, std::chrono::duration<double>(Clock::now() - start).count());
+        FrameTally tally = run.pattern ? render_frame_files(o, *session, run, stage, frames, job)
+                                       : render_video(o, *session, run, stage, frames);
+        tally.rendered = static_cast<size_t>(job.total(static_cast<long long>(tally.rendered)));
+        tally.skipped = static_cast<size_t>(job.total(static_cast<long long>(tally.skipped)));
+        if (job.rank() == 0)
+            report_frames(o, run, tally,
+                          std::chrono::duration<double>(Clock::now() - start).count());
     }
     return 0;
 }
