@@ -143,8 +143,22 @@ MpiJob::~MpiJob() {
 void MpiJob::share(const std::vector<int>& frames, const std::function<void(int)>& render) const {
 #if HIKARI_MPI
     if (m_size > 1) {
-        if (m_rank == 0) return render_and_hand_out(frames, m_size, render);
-        return ask_for_frames(render);
+        // Each rank waits for the others at the end, so no rank's asks for the next method's
+        // frames reach rank 0's dispatcher of this one.
+        if (m_rank != 0) {
+            ask_for_frames(render);
+            MPI_Barrier(MPI_COMM_WORLD);
+            return;
+        }
+        std::exception_ptr failure;
+        try {
+            render_and_hand_out(frames, m_size, render);
+        } catch (...) {
+            failure = std::current_exception();
+        }
+        MPI_Barrier(MPI_COMM_WORLD);
+        if (failure) std::rethrow_exception(failure);
+        return;
     }
 #endif
     for (const int frame : frames) render(frame);
