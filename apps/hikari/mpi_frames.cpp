@@ -1,6 +1,7 @@
 #include "mpi_frames.h"
 
 #include <atomic>
+#include <chrono>
 #include <cstdlib>
 #include <exception>
 #include <string>
@@ -39,7 +40,12 @@ void hand_out(std::atomic<size_t>& next, const std::vector<int>& frames, int siz
     for (int active = size - 1; active > 0;) {
         int kind = 0;
         MPI_Status status;
-        MPI_Recv(&kind, 1, MPI_INT, MPI_ANY_SOURCE, k_tag_ask, MPI_COMM_WORLD, &status);
+        // Polled with a pause, not MPI_Recv: Open MPI's blocking receive spins, and this
+        // thread would take a core from rank 0's own rendering.
+        MPI_Request request;
+        MPI_Irecv(&kind, 1, MPI_INT, MPI_ANY_SOURCE, k_tag_ask, MPI_COMM_WORLD, &request);
+        for (int done = 0; MPI_Test(&request, &done, &status), !done;)
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
         const int source = status.MPI_SOURCE;
         if (kind == k_ask_failed) {
             MPI_Probe(source, k_tag_failure, MPI_COMM_WORLD, &status);
