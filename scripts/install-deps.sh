@@ -20,6 +20,8 @@ packages=(
     nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libfmt-dev libtbb-dev
     libstb-dev libtinyexr-dev libtinygltf-dev zlib1g-dev libgtest-dev libxlsxwriter-dev
     libcpp-httplib-dev
+    # MPI: frames and one image shared among ranks (docs/distributed.md; HIKARI_MPI), and its tests.
+    libopenmpi-dev openmpi-bin
     # The Python module (python/) and its tests.
     pybind11-dev python3-dev python3-numpy python3-pytest
 )

@@ -11,7 +11,16 @@ struct FrameOptions {
     std::string range;       ///< --frames A-B; empty: every frame
     std::string shard;       ///< --shard I/N; empty: every frame of the range
     bool overwrite = false;  ///< --overwrite: render frames whose files exist again
-    double fps = 30;         ///< --fps: a video's frame rate
+    double fps = 30;         ///< --fps: a video's frame rate (an animation's own without it)
+    /// Found by check_frame_options: whether to render frames, not a still, and the frames of
+    /// the scene's "animation" block (0: none, or a --turntable run).
+    bool frame_render = false;
+    int animation_frames = 0;
 };
+
+/// The frames of the turntable or of the scene's animation.
+inline int frame_count(const FrameOptions& f) {
+    return f.turntable > 0 ? f.turntable : f.animation_frames;
+}
 
 }  // namespace hikari::cli

@@ -33,8 +33,13 @@ std::vector<SceneOverride> scene_edits(const RenderOptions& o) {
     return overrides;
 }
 
-/// What the options name to load: the scene file, the model file framed as a scene, or the
-/// built-in assignment, with --set, --camera-from, --look-at, --crease-angle and --ground.
+/// Prints what loading had to say.
+void print_warnings(const std::vector<std::string>& warnings) {
+    for (const std::string& w : warnings) print_err("hikari: warning: {}\n", w);
+}
+
+}  // namespace
+
 SceneSource scene_source(const RenderOptions& o) {
     SceneSource source;
     source.file = o.scene_file;
@@ -43,13 +48,6 @@ SceneSource scene_source(const RenderOptions& o) {
     if (o.crease_angle >= 0.0f) source.crease_angle = o.crease_angle;
     return source;
 }
-
-/// Prints what loading had to say.
-void print_warnings(const std::vector<std::string>& warnings) {
-    for (const std::string& w : warnings) print_err("hikari: warning: {}\n", w);
-}
-
-}  // namespace
 
 RenderRequest render_request(const RenderOptions& o) {
     RenderRequest request;

@@ -9,6 +9,10 @@
 
 namespace hikari::cli {
 
+/// What the options name to load: the scene file, the model file framed as a scene, or the
+/// built-in assignment, with --set, --camera-from, --look-at, --crease-angle and --ground.
+SceneSource scene_source(const RenderOptions& o);
+
 /// The render session of the scene the options name (the built-in assignment when none; loaded
 /// with --set, --camera-from, --look-at, --crease-angle and --ground), its load warnings printed
 /// on stderr; sets the --max-memory and --max-input-size limits first. Image size and the other

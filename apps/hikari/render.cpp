@@ -17,6 +17,7 @@
 #include "hikari/io/images/svg_write.h"
 #include "hikari/methods/registry.h"
 #include "load_scene.h"
+#include "mpi_frames.h"
 #include "output_paths.h"
 #include "progress.h"
 #include "render_frames.h"
@@ -156,6 +157,10 @@ void render_with(const RenderOptions& o, Session& session, const Run& run, doubl
 
 int run_render(const RenderOptions& o) {
     if (is_frame_render(o)) return run_frame_render(o);
+    if (launched_among_ranks())
+        throw UsageError(
+            "under mpirun, hikari shares an animation's frames (--frames, --turntable); one "
+            "image is not split among ranks yet: run it as one process");
     const auto load_start = Clock::now();
     const std::vector<Run> runs = planned_runs(o);
     if (!is_svg_path(runs.front().output))

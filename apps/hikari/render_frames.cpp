@@ -10,21 +10,55 @@
 #include "hikari/io/images/svg_write.h"
 #include "hikari/io/video/video_pipe.h"
 #include "hikari/session/frame_selection.h"
+#include "hikari/session/scene_animation.h"
+#include "load_scene.h"
 #include "output_paths.h"
 
 namespace hikari::cli {
 
 namespace {
 
-/// --frames: a range A-B within the turntable's frames.
+/// --frames: a range A-B within the turntable's or the animation's frames.
 void check_frame_range(const FrameOptions& f) {
     std::string why;
     const std::optional<FrameRange> range = parse_frame_range(f.range, why);
     if (!range) throw CLI::ValidationError(fmt::format("--frames {}: {}", f.range, why));
-    if (range->last >= f.turntable)
+    if (range->last >= frame_count(f))
         throw CLI::ValidationError(
-            fmt::format("--frames {}: the turntable has frames 0 to {} (--turntable {})", f.range,
-                        f.turntable - 1, f.turntable));
+            fmt::format("--frames {}: the {} has frames 0 to {}", f.range,
+                        f.turntable > 0 ? fmt::format("turntable (--turntable {})", f.turntable)
+                                        : "scene's animation",
+                        frame_count(f) - 1));
+}
+
+/// Whether the options ask for frames of whatever animation the scene holds: a frame option,
+/// a video, or an output with a frame number.
+bool asks_for_frames(const CLI::App& render, const RenderOptions& o) {
+    for (const char* flag : {"--frames", "--shard", "--overwrite", "--fps"})
+        if (render.count(flag) > 0) return true;
+    if (o.output.empty()) return false;
+    std::string why;
+    for (const std::string& name : o.methods)
+        if (is_video_path(output_for(o, name)) || parse_frame_pattern(output_for(o, name), why))
+            return true;
+    return false;
+}
+
+/// What the scene offers as frames.
+enum class SceneFrames { none, animation, unreadable };
+
+/// The scene's "animation" block, its frame count (and rate, without --fps) kept in `o`. A
+/// scene that cannot be read is left to the load, which says why.
+SceneFrames read_animation(const CLI::App& render, RenderOptions& o) {
+    try {
+        const std::optional<SceneAnimation> animation = SceneAnimation::of(scene_source(o));
+        if (!animation) return SceneFrames::none;
+        o.frames.animation_frames = animation->frame_count();
+        if (render.count("--fps") == 0) o.frames.fps = animation->fps();
+        return SceneFrames::animation;
+    } catch (const std::exception&) {
+        return SceneFrames::unreadable;
+    }
 }
 
 /// -o of every method: a video, or a file name with a frame number in it.
@@ -65,7 +99,9 @@ void add_frame_options(CLI::App& render, FrameOptions& f) {
         ->check(whole_in(1, 1000000));
     render
         .add_option("--frames", f.range,
-                    "With --turntable: render frames A to B only (numbered from 0)")
+                    "Render frames A to B (numbered from 0) of the --turntable, or of the scene's "
+                    "\"animation\" block (without --frames: all of them, with -o naming the "
+                    "frames or a video)")
         ->type_name("A-B");
     render
         .add_option("--shard", f.shard,
@@ -80,18 +116,27 @@ void add_frame_options(CLI::App& render, FrameOptions& f) {
         ->capture_default_str();
 }
 
-void check_frame_options(const CLI::App& render, const RenderOptions& o) {
-    const FrameOptions& f = o.frames;
-    const bool frames = f.turntable > 0;
-    for (const char* flag : {"--frames", "--shard", "--overwrite", "--fps"})
-        if (!frames && render.count(flag) > 0)
-            throw CLI::ValidationError(
-                fmt::format("{} is for an animation's frames: add --turntable N", flag));
-    if (!frames) {
+void check_frame_options(const CLI::App& render, RenderOptions& o) {
+    FrameOptions& f = o.frames;
+    f.frame_render = f.turntable > 0;
+    if (!f.frame_render && asks_for_frames(render, o)) {
+        const SceneFrames frames = read_animation(render, o);
+        f.frame_render = frames != SceneFrames::none;
+        if (frames == SceneFrames::unreadable) return;  // the load says why
+    }
+    if (!f.frame_render) {
+        for (const char* flag : {"--frames", "--shard", "--overwrite", "--fps"})
+            if (render.count(flag) > 0)
+                throw CLI::ValidationError(fmt::format(
+                    "{} is for an animation's frames: add --turntable N, or render a scene "
+                    "with an \"animation\" block",
+                    flag));
         for (const std::string& name : o.methods)
             if (is_video_path(output_for(o, name)))
                 throw CLI::ValidationError(fmt::format(
-                    "{}: a video needs frames: add --turntable N", output_for(o, name)));
+                    "{}: a video needs frames: add --turntable N, or render a scene with an "
+                    "\"animation\" block",
+                    output_for(o, name)));
         return;
     }
     if (!f.range.empty()) check_frame_range(f);
@@ -102,6 +147,6 @@ void check_frame_options(const CLI::App& render, const RenderOptions& o) {
     check_frame_outputs(o);
 }
 
-bool is_frame_render(const RenderOptions& o) { return o.frames.turntable > 0; }
+bool is_frame_render(const RenderOptions& o) { return o.frames.frame_render; }
 
 }  // namespace hikari::cli

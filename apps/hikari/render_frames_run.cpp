@@ -24,7 +24,9 @@
 #include "hikari/io/video/video_pipe.h"
 #include "hikari/scene/camera_orbit.h"
 #include "hikari/session/frame_selection.h"
+#include "hikari/session/scene_animation.h"
 #include "load_scene.h"
+#include "mpi_frames.h"
 #include "output_paths.h"
 #include "render_frames.h"
 #include "render_output.h"
@@ -44,11 +46,11 @@ struct FrameRun {
     std::optional<FramePattern> pattern;  ///< numbered files; nullopt: a video
 };
 
-/// The frames this process renders: --frames (default: all of the turntable) of --shard, as
+/// The frames this process renders: --frames (default: all of them) of --shard, as
 /// check_frame_options accepted them.
 std::vector<int> planned_frames(const FrameOptions& f) {
     std::string why;
-    FrameRange range{0, f.turntable - 1};
+    FrameRange range{0, frame_count(f) - 1};
     if (!f.range.empty()) range = *parse_frame_range(f.range, why);
     FrameShard shard;
     if (!f.shard.empty()) shard = *parse_frame_shard(f.shard, why);
@@ -126,6 +128,37 @@ class FrameProgress {
     Clock::time_point m_start = Clock::now();
 };
 
+/// Puts each frame on the session: the turntable's camera, or the scene of the animation's frame.
+class FrameStage {
+  public:
+    FrameStage(const RenderOptions& o, Session& session)
+        : m_session(session), m_request(render_request(o)), m_turntable(o.frames.turntable) {
+        if (m_turntable == 0) {
+            m_animation = SceneAnimation::of(scene_source(o));
+            if (!m_animation)
+                throw InputError(
+                    fmt::format("{}: the scene has no \"animation\" block any more", o.scene_file));
+        }
+        m_base = session.camera_for(m_request);
+    }
+
+    /// The camera the frames start from (their image size).
+    const Camera& base() const { return m_base; }
+    /// Frame `frame`'s camera; an animation's frame scene put on the session.
+    Camera camera(int frame) {
+        if (!m_animation) return turntable_camera(m_base, frame, m_turntable);
+        m_animation->show(m_session, frame);
+        return m_session.camera_for(m_request);
+    }
+
+  private:
+    Session& m_session;
+    RenderRequest m_request;
+    int m_turntable;
+    std::optional<SceneAnimation> m_animation;
+    Camera m_base;
+};
+
 /// The request for one frame of `run`: the options' own with the frame's camera, the film its
 /// output needs (a video frame: what an 8-bit PNG holds).
 RenderRequest frame_request(const RenderOptions& o, const FrameRun& run, const Camera& camera) {
@@ -171,24 +204,26 @@ struct FrameTally {
     size_t rendered = 0, skipped = 0;
 };
 
-/// The frames of `run` as numbered files; those already there skipped unless --overwrite.
+/// The frames of `run` as numbered files, shared among the MPI job's ranks; those already there
+/// skipped unless --overwrite. The tally is this rank's.
 FrameTally render_frame_files(const RenderOptions& o, Session& session, const FrameRun& run,
-                              const Camera& base, const std::vector<int>& frames) {
-    FrameProgress progress(!o.quiet, frames.size());
+                              FrameStage& stage, const std::vector<int>& frames,
+                              const MpiJob& job) {
+    FrameProgress progress(!o.quiet && job.rank() == 0, frames.size());
     FrameTally tally;
-    for (const int frame : frames) {
+    job.share(frames, [&](int frame) {
         const std::string file = run.pattern->file_name(frame);
         if (!o.frames.overwrite && frame_is_done(file)) {
             progress.skipped();
             ++tally.skipped;
-            continue;
+            return;
         }
         progress.starting(frame);
-        const Camera camera = turntable_camera(base, frame, o.frames.turntable);
+        const Camera camera = stage.camera(frame);
         render_frame_file(o, session, run, camera, file, tally.rendered == 0);
         progress.rendered();
         ++tally.rendered;
-    }
+    });
     return tally;
 }
 
@@ -204,13 +239,14 @@ void check_video_size(const FrameRun& run, const Camera& camera) {
 
 /// The frames of `run` piped into its video, in order, none on the disk.
 FrameTally render_video(const RenderOptions& o, Session& session, const FrameRun& run,
-                        const Camera& base, const std::vector<int>& frames) {
-    VideoPipe video(run.output, VideoSettings{base.width, base.height, o.frames.fps});
+                        FrameStage& stage, const std::vector<int>& frames) {
+    VideoPipe video(run.output,
+                    VideoSettings{stage.base().width, stage.base().height, o.frames.fps});
     FrameProgress progress(!o.quiet, frames.size());
     FrameTally tally;
     for (const int frame : frames) {
         progress.starting(frame);
-        const Camera camera = turntable_camera(base, frame, o.frames.turntable);
+        const Camera camera = stage.camera(frame);
         RenderResult result = session.render(frame_request(o, run, camera));
         if (tally.rendered == 0)
             for (const std::string& w : result.warnings) print_err("hikari: warning: {}\n", w);
@@ -221,6 +257,12 @@ FrameTally render_video(const RenderOptions& o, Session& session, const FrameRun
     }
     video.finish();
     return tally;
+}
+
+/// `o` without its messages (-q): the MPI ranks after the first, which would repeat them.
+RenderOptions quiet(RenderOptions o) {
+    o.quiet = true;
+    return o;
 }
 
 /// The line after a run's frames: how many, where, how fast.
@@ -239,19 +281,34 @@ void report_frames(const RenderOptions& o, const FrameRun& run, const FrameTally
 }  // namespace
 
 int run_frame_render(const RenderOptions& o) {
+    if (frame_count(o.frames) == 0) {
+        load_render_session(o);  // the checks could not read the scene: its load says why
+        throw InputError(fmt::format("{}: the scene has no \"animation\" block", o.scene_file));
+    }
     const std::vector<int> frames = planned_frames(o.frames);
     const std::vector<FrameRun> runs = planned_runs(o, frames);
-    for (const std::string& note : o.notes) print_err("hikari: warning: {}\n", note);
-    const std::unique_ptr<Session> session = load_render_session(o);
-    const Camera base = session->camera_for(render_request(o));
-    check_image_memory(base);
+    const MpiJob job;
     for (const FrameRun& run : runs)
-        if (!run.pattern) check_video_size(run, base);
+        if (!run.pattern && job.size() > 1)
+            throw UsageError(
+                fmt::format("{}: a video takes every frame in one process; under "
+                            "mpirun, write numbered images (-o frame_%04d.png)",
+                            run.output));
+    for (const std::string& note : o.notes) print_err("hikari: warning: {}\n", note);
+    const std::unique_ptr<Session> session = load_render_session(job.rank() == 0 ? o : quiet(o));
+    FrameStage stage(o, *session);
+    check_image_memory(stage.base());
+    for (const FrameRun& run : runs)
+        if (!run.pattern) check_video_size(run, stage.base());
     for (const FrameRun& run : runs) {
         const auto start = Clock::now();
-        const FrameTally tally = run.pattern ? render_frame_files(o, *session, run, base, frames)
-                                             : render_video(o, *session, run, base, frames);
-        report_frames(o, run, tally, std::chrono::duration<double>(Clock::now() - start).count());
+        FrameTally tally = run.pattern ? render_frame_files(o, *session, run, stage, frames, job)
+                                       : render_video(o, *session, run, stage, frames);
+        tally.rendered = static_cast<size_t>(job.total(static_cast<long long>(tally.rendered)));
+        tally.skipped = static_cast<size_t>(job.total(static_cast<long long>(tally.skipped)));
+        if (job.rank() == 0)
+            report_frames(o, run, tally,
+                          std::chrono::duration<double>(Clock::now() - start).count());
     }
     return 0;
 }

@@ -18,6 +18,7 @@
 #include "hikari/io/images/texture_files.h"
 #include "hikari/io/models/material_rules.h"
 #include "hikari/io/models/model_file.h"
+#include "hikari/io/scene/animation_json.h"
 #include "hikari/io/scene/default_scene.h"
 #include "hikari/io/scene/json_reader.h"
 #include "hikari/io/scene/scene_document_rebase.h"
@@ -591,10 +592,16 @@ Scene parse_scene(std::string_view text, const std::string& file,
                   const SceneLoadOptions& options) {
     nlohmann::json doc = parse_json(text, file);
     apply_scene_overrides(doc, options.overrides);
+    return parse_scene_document(std::move(doc), file, base_dir, warnings, options);
+}
+
+Scene parse_scene_document(nlohmann::json doc, const std::string& file,
+                           const std::filesystem::path& base_dir,
+                           std::vector<std::string>& warnings, const SceneLoadOptions& options) {
     const std::optional<WorldOrigin> origin = rebase_scene_document(doc);
     const JsonNode root(doc, file, "");
     root.expect_object({"description", "camera", "background", "sky", "ambient", "depth_cue",
-                        "materials", "lights", "objects"});
+                        "materials", "lights", "objects", "animation"});
     SceneBuilder b{Scene{}, {}, base_dir, warnings, {}, options, std::nullopt};
     if (root.has("description")) root.at("description").as_string();
     if (root.has("camera")) b.scene.camera = parse_camera(root.at("camera"));
@@ -625,6 +632,9 @@ Scene parse_scene(std::string_view text, const std::string& file,
     const JsonNode objects = root.at("objects");
     objects.expect_array();
     for (size_t i = 0; i < objects.value().size(); ++i) parse_object(b, objects.at(i));
+    // A still is the scene as written; the block is checked here so that every load reports
+    // its errors (its frames are session/scene_animation.h's).
+    if (root.has("animation")) parse_animation(root);
     if (!b.scene.triangles.colors.empty())
         b.scene.triangles.colors.resize(b.scene.triangles.positions.size(), Vec3(1.0f));
     if (origin) keep_checkers_in_place(b.scene, *origin);

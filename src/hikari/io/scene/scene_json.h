@@ -38,6 +38,13 @@ Scene parse_scene(std::string_view text, const std::string& file,
                   const std::filesystem::path& base_dir, std::vector<std::string>& warnings,
                   const SceneLoadOptions& options = {});
 
+/// parse_scene of a document already parsed, its `--set` edits applied (`options.overrides` is
+/// not read): what an animation's frame (io/scene/animation_json.h) is built from.
+Scene parse_scene_document(nlohmann::json doc, const std::string& file,
+                           const std::filesystem::path& base_dir,
+                           std::vector<std::string>& warnings,
+                           const SceneLoadOptions& options = {});
+
 class JsonNode;  // io/scene/json_reader.h
 
 /// A scene file's "camera" object (docs/scene-format.md): what it leaves out takes the defaults.

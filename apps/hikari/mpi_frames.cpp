@@ -1,0 +1,184 @@
+#include "mpi_frames.h"
+
+#include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <exception>
+#include <string>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "cli_options.h"
+#include "hikari/core/error.h"
+
+#if HIKARI_MPI
+#include <mpi.h>
+#endif
+
+namespace hikari::cli {
+
+bool launched_among_ranks() {
+    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"})
+        if (const char* v = std::getenv(name); v && std::atoi(v) > 1) return true;
+    return false;
+}
+
+namespace {
+
+#if HIKARI_MPI
+
+/// Message tags: a rank asks for a frame (or says it failed), rank 0 answers with one (−1: no
+/// more), a failed rank's message follows its notice.
+constexpr int k_tag_ask = 1, k_tag_frame = 2, k_tag_failure = 3;
+constexpr int k_ask_frame = 0, k_ask_failed = 1;
+
+/// Rank 0's dispatcher: answers every other rank's asks with the next frame until each has
+/// been told there are none left or has failed; collects the failures, one line each.
+void hand_out(std::atomic<size_t>& next, const std::vector<int>& frames, int size,
+              std::vector<std::string>& failures) {
+    for (int active = size - 1; active > 0;) {
+        int kind = 0;
+        MPI_Status status;
+        // Polled with a pause, not MPI_Recv: Open MPI's blocking receive spins, and this
+        // thread would take a core from rank 0's own rendering.
+        MPI_Request request;
+        MPI_Irecv(&kind, 1, MPI_INT, MPI_ANY_SOURCE, k_tag_ask, MPI_COMM_WORLD, &request);
+        for (int done = 0; MPI_Test(&request, &done, &status), !done;)
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        const int source = status.MPI_SOURCE;
+        if (kind == k_ask_failed) {
+            MPI_Probe(source, k_tag_failure, MPI_COMM_WORLD, &status);
+            int length = 0;
+            MPI_Get_count(&status, MPI_CHAR, &length);
+            std::string message(static_cast<size_t>(length), '\0');
+            MPI_Recv(message.data(), length, MPI_CHAR, source, k_tag_failure, MPI_COMM_WORLD,
+                     MPI_STATUS_IGNORE);
+            failures.push_back(fmt::format("rank {} failed: {}", source, message));
+            --active;
+            continue;
+        }
+        const size_t i = next++;
+        int frame = i < frames.size() ? frames[i] : -1;
+        MPI_Send(&frame, 1, MPI_INT, source, k_tag_frame, MPI_COMM_WORLD);
+        if (frame < 0) --active;
+    }
+}
+
+/// A rank other than 0: asks for frames and renders them until none are left; a failure is
+/// sent to rank 0, which reports it.
+void ask_for_frames(const std::function<void(int)>& render) {
+    try {
+        for (;;) {
+            int ask = k_ask_frame, frame = -1;
+            MPI_Send(&ask, 1, MPI_INT, 0, k_tag_ask, MPI_COMM_WORLD);
+            MPI_Recv(&frame, 1, MPI_INT, 0, k_tag_frame, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            if (frame < 0) return;
+            render(frame);
+        }
+    } catch (const std::exception& e) {
+        int failed = k_ask_failed;
+        const std::string message = e.what();
+        MPI_Send(&failed, 1, MPI_INT, 0, k_tag_ask, MPI_COMM_WORLD);
+        MPI_Send(message.data(), static_cast<int>(message.size()), MPI_CHAR, 0, k_tag_failure,
+                 MPI_COMM_WORLD);
+    }
+}
+
+/// Rank 0: renders frames from the same counter as its dispatcher hands them out, then reports
+/// every rank's failure.
+void render_and_hand_out(const std::vector<int>& frames, int size,
+                         const std::function<void(int)>& render) {
+    std::atomic<size_t> next{0};
+    std::vector<std::string> failures;
+    std::thread dispatcher([&] { hand_out(next, frames, size, failures); });
+    std::exception_ptr own;
+    try {
+        for (size_t i = next++; i < frames.size(); i = next++) render(frames[i]);
+    } catch (...) {
+        own = std::current_exception();
+    }
+    dispatcher.join();
+    if (failures.empty() && own) std::rethrow_exception(own);
+    if (own) {
+        try {
+            std::rethrow_exception(own);
+        } catch (const std::exception& e) {
+            failures.insert(failures.begin(), fmt::format("rank 0 failed: {}", e.what()));
+        }
+    }
+    if (failures.empty()) return;
+    std::string lines;
+    for (const std::string& f : failures) lines += fmt::format("\n  {}", f);
+    throw InputError(fmt::format(
+        "{} of {} MPI ranks failed (the frames the others wrote stay; rerun to resume):{}",
+        failures.size(), size, lines));
+}
+
+#endif
+
+}  // namespace
+
+MpiJob::MpiJob() {
+#if HIKARI_MPI
+    if (!launched_among_ranks()) return;
+    int provided = 0;
+    MPI_Init_thread(nullptr, nullptr, MPI_THREAD_MULTIPLE, &provided);
+    m_started = true;
+    MPI_Comm_rank(MPI_COMM_WORLD, &m_rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &m_size);
+    // Rank 0's dispatcher thread calls MPI while its main thread renders.
+    if (provided < MPI_THREAD_SERIALIZED)
+        throw InputError(
+            "this MPI library cannot be called from a second thread "
+            "(MPI_THREAD_SERIALIZED), which rank 0's frame dispatcher needs");
+#else
+    if (launched_among_ranks())
+        throw UsageError(
+            "this hikari was built without MPI, so its ranks would each render every frame: "
+            "install libopenmpi-dev and rebuild (HIKARI_MPI), or use --shard I/N");
+#endif
+}
+
+MpiJob::~MpiJob() {
+#if HIKARI_MPI
+    if (m_started) MPI_Finalize();
+#endif
+}
+
+void MpiJob::share(const std::vector<int>& frames, const std::function<void(int)>& render) const {
+#if HIKARI_MPI
+    if (m_size > 1) {
+        // Each rank waits for the others at the end, so no rank's asks for the next method's
+        // frames reach rank 0's dispatcher of this one.
+        if (m_rank != 0) {
+            ask_for_frames(render);
+            MPI_Barrier(MPI_COMM_WORLD);
+            return;
+        }
+        std::exception_ptr failure;
+        try {
+            render_and_hand_out(frames, m_size, render);
+        } catch (...) {
+            failure = std::current_exception();
+        }
+        MPI_Barrier(MPI_COMM_WORLD);
+        if (failure) std::rethrow_exception(failure);
+        return;
+    }
+#endif
+    for (const int frame : frames) render(frame);
+}
+
+long long MpiJob::total(long long count) const {
+#if HIKARI_MPI
+    if (m_size > 1) {
+        long long sum = 0;
+        MPI_Reduce(&count, &sum, 1, MPI_LONG_LONG, MPI_SUM, 0, MPI_COMM_WORLD);
+        return sum;
+    }
+#endif
+    return count;
+}
+
+}  // namespace hikari::cli
