@@ -180,9 +180,7 @@ constexpr MethodOption k_raster_options[] = {
          [](MethodSettings& s) -> Interpolation& { return s.raster.interp; }}},
     k_cull_option,
     k_shadows_option,
-    {"--shadow-map-size",
-     "Texels per side of each shadow map (default: the image's larger side rounded up to a power "
-     "of two, 512 to 2048; a cube map has six faces)",
+    {"--shadow-map-size", "Texels per side of each shadow map (a cube map has six faces)",
      IntegerOption{16, 16384, [](MethodSettings& s) -> int& { return s.raster.shadow_map_size; }}},
     k_light_samples_option,
 };

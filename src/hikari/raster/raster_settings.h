@@ -23,9 +23,7 @@ struct RasterSettings {
     Interpolation interp = Interpolation::phong;  ///< shading interpolation
     bool cull_back_faces = false;                 ///< drop triangles facing away (Fig 4.3)
     ShadowMode shadows = ShadowMode::none;        ///< none, map, volume, pcf, pcss or analytic
-    /// Texels per side of each shadow map face; 0: sized to the image (raster/shadow_map.h
-    /// shadow_map_size_for).
-    int shadow_map_size = 0;
+    int shadow_map_size = 2048;                   ///< texels per side of each shadow map face
     /// Samples of the specular term per area light and point (the diffuse term is analytic).
     int light_samples = k_default_light_samples;
     /// Where each pixel is sampled, relative to its centre, in pixels (each coordinate in

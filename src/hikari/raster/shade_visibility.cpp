@@ -512,8 +512,7 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
     } else if (ctx.shadows == ShadowMode::map || ctx.shadows == ShadowMode::pcf ||
                ctx.shadows == ShadowMode::pcss) {
         // Kept by a session, or shared by supersampling's passes (raster/shadow_map.h).
-        const int size = shadow_map_size_for(raster.shadow_map_size, vis.width, vis.height);
-        maps = shadow_maps_for_render(scene, ps.scene, size, settings.cache,
+        maps = shadow_maps_for_render(scene, ps.scene, raster.shadow_map_size, settings.cache,
                                       raster.shared_shadow_maps.get(), settings.stats);
         ctx.shadow_maps = maps.get();
     } else if (ctx.shadows == ShadowMode::volume) {

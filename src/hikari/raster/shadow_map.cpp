@@ -363,12 +363,6 @@ void check_shadow_map_memory(const Scene& scene, const RasterScene& raster, int 
                                   faces, size, size));
 }
 
-int shadow_map_size_for(int requested, int width, int height) {
-    if (requested > 0) return requested;
-    const auto side = static_cast<unsigned>(std::max({width, height, 1}));
-    return static_cast<int>(std::clamp(std::bit_ceil(side), 512u, 2048u));
-}
-
 std::vector<uint8_t> shadow_casting_triangles(const Scene& scene, const RasterScene& raster) {
     std::vector<uint8_t> casts_by_id(scene.primitive_count, 1);
     for (const Sphere& s : scene.spheres) casts_by_id[s.id] = s.casts_shadow ? 1 : 0;

@@ -61,13 +61,6 @@ struct SharedShadowMaps {
     std::shared_ptr<const ShadowMaps> maps;  ///< null until the first pass draws them
 };
 
-/// The texels per side of a render's shadow map faces: `requested` (`--shadow-map-size`) when
-/// given (> 0), else the image's larger side rounded up to a power of two, from 512 to 2048. A
-/// map texel then covers about as much of the casters as a pixel does where they fill the
-/// image (a directional map spans the casters' bounds), and small images do not pay for
-/// 2048² faces: a 320 × 240 render draws 512² faces, a 1920 × 1080 one 2048².
-int shadow_map_size_for(int requested, int width, int height);
-
 /// Which triangles of `raster` (the tessellated scene) cast shadows into maps: those of
 /// spheres, triangles and meshes whose `casts_shadow` is true. Infinite planes are left out of
 /// every map — no finite map holds them; plane_blocks_light() answers for them exactly.
