@@ -49,12 +49,16 @@ void print_raster_stats(const std::string& prefix, const RenderStats& stats, con
 /// render time): shadow maps drawn from the lights, shadow-volume stencils or analytic occluders.
 void print_shadow_pass_stats(const std::string& prefix, const RenderStats& stats) {
     const uint64_t us = stats.shadow_pass_us.load();
-    if (us == 0) return;
+    const uint64_t kept = stats.shadow_maps_kept.load();
+    if (us == 0 && kept == 0) return;
     std::string what = "analytic occluders";
-    if (const uint64_t faces = stats.shadow_map_faces.load(); faces > 0)
-        what = fmt::format("{} shadow-map face{}, {} texels", faces, faces == 1 ? "" : "s",
+    if (const uint64_t faces = stats.shadow_map_faces.load(); faces > 0 || kept > 0) {
+        what = fmt::format("{} shadow-map face{}, {} texels drawn", faces, faces == 1 ? "" : "s",
                            stats.shadow_map_texels.load());
-    else if (const uint64_t stencils = stats.shadow_volume_stencils.load(); stencils > 0)
+        if (kept > 0)
+            what +=
+                fmt::format("; {} map{} kept from an earlier render", kept, kept == 1 ? "" : "s");
+    } else if (const uint64_t stencils = stats.shadow_volume_stencils.load(); stencils > 0)
         what = fmt::format("{} shadow-volume stencil{}", stencils, stencils == 1 ? "" : "s");
     print_err("{}: shadow pass: {}, {:.1f} ms (within the render time)\n", prefix, what,
               1e-3 * double(us));

@@ -47,9 +47,27 @@ class BuildCache {
         if (built) *built = it == m_entries.end();
         if (it == m_entries.end()) {
             std::shared_ptr<const T> made = std::make_shared<const T>(build());
-            it = m_entries.emplace(std::string(key), Entry{made, depends_on}).first;
+            it = m_entries.emplace(std::string(key), Entry{made, depends_on, {}}).first;
         }
         return std::static_pointer_cast<const T>(it->second.value);
+    }
+
+    /// The entry `key` when it was built for `version` (what it depends on beyond the scene's
+    /// parts, spelled as a string: a setting, a light's position), else one built by `build()`
+    /// in its place (the stale one dropped first): one entry per key however often that changes.
+    template <class T, class Build>
+    std::shared_ptr<const T> get_version(std::string_view key, std::string_view version,
+                                         SceneParts depends_on, Build&& build,
+                                         bool* built = nullptr) {
+        std::lock_guard lock(m_mutex);
+        auto it = m_entries.find(key);
+        const bool fresh = it == m_entries.end() || it->second.version != version;
+        if (built) *built = fresh;
+        if (!fresh) return std::static_pointer_cast<const T>(it->second.value);
+        if (it != m_entries.end()) m_entries.erase(it);
+        std::shared_ptr<const T> made = std::make_shared<const T>(build());
+        m_entries.emplace(std::string(key), Entry{made, depends_on, std::string(version)});
+        return made;
     }
 
     /// Ties the cache to the scene object its entries are built from (their references point
@@ -73,6 +91,7 @@ class BuildCache {
     struct Entry {
         std::shared_ptr<const void> value;
         SceneParts depends_on;
+        std::string version;  ///< get_version's; empty for get
     };
     mutable std::mutex m_mutex;
     const void* m_scene = nullptr;

@@ -46,10 +46,12 @@ struct RenderStats {
     std::atomic<uint64_t> depth_sort_polygons{0};
     /// The raster methods' shadow pass before shading (maps, volumes or the analytic occluders),
     /// apart from the render of the picture: its wall time, and the map faces and their texels
-    /// it drew (a point light's cube map is six faces) or the shadow-volume stencils it counted.
+    /// it drew (a point light's cube map is up to six faces) or the shadow-volume stencils it
+    /// counted; the maps a render session kept from an earlier render are not drawn again.
     std::atomic<uint64_t> shadow_pass_us{0};
     std::atomic<uint64_t> shadow_map_faces{0};
     std::atomic<uint64_t> shadow_map_texels{0};
+    std::atomic<uint64_t> shadow_maps_kept{0};  ///< lights' maps kept from an earlier render
     std::atomic<uint64_t> shadow_volume_stencils{0};
     /// 1: the depth sort ran out of cuts (raster/depth_sort.h, DepthSortCounts::gave_up).
     std::atomic<uint64_t> depth_sort_gave_up{0};

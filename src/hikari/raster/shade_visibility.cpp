@@ -126,7 +126,7 @@ float light_fraction(const ShadeContext& ctx, size_t l, const ShadowQuery& q) {
     const LightShadowView view = shadow_view(light);
     if (plane_blocks_light(ctx.scene, view, q.point)) return 0.0f;
     if (ctx.shadows == ShadowMode::volume) return (*ctx.in_volume)[l][q.pixel] == 0 ? 1.0f : 0.0f;
-    const std::optional<LightShadowMap>& map = ctx.shadow_maps->lights[l];
+    const auto& map = ctx.shadow_maps->lights[l];
     if (!map) return 1.0f;
     // The normal offset moves the lookup off the surface on the light's side.
     const Vec3 to_light = sample_light(light, q.point).to_light;
@@ -207,15 +207,11 @@ Vec3 tangent_plane_step(const ShadeContext& ctx, Vec3 p, Vec3 n, int x, int y, i
 }
 
 /// --stats: the shadow pass's time, and the maps' faces and texels or the volumes' stencils.
-void report_shadow_pass(const ShadowMaps& maps, const std::vector<std::vector<uint8_t>>& in_volume,
+/// (The maps count what they draw themselves: shadow_maps_for_render.)
+void report_shadow_pass(const std::vector<std::vector<uint8_t>>& in_volume,
                         std::chrono::steady_clock::time_point start, RenderStats& stats) {
     const auto elapsed = std::chrono::steady_clock::now() - start;
     stats.shadow_pass_us += std::chrono::duration_cast<std::chrono::microseconds>(elapsed).count();
-    for (const std::optional<LightShadowMap>& map : maps.lights) {
-        if (!map) continue;
-        stats.shadow_map_faces += map->faces.size();
-        stats.shadow_map_texels += map->faces.size() * size_t(map->size) * size_t(map->size);
-    }
     for (const std::vector<uint8_t>& stencil : in_volume)
         if (!stencil.empty()) ++stats.shadow_volume_stencils;
 }
@@ -414,31 +410,6 @@ std::vector<float> visible_depth(const ShadeContext& ctx, const VisibilityBuffer
     return depth;
 }
 
-/// The bounds of every triangle seen at some pixel centre: where shadows can be seen.
-Aabb visible_bounds(const ProjectedScene& ps, const VisibilityBuffer& vis) {
-    std::vector<uint8_t> seen(ps.scene.triangles.size(), 0);
-    std::vector<uint8_t> sphere_seen(ps.scene.spheres.size(), 0);
-    for (uint32_t t : vis.triangle)
-        if (t == k_no_triangle)
-            continue;
-        else if (t >= ps.triangles.size())
-            sphere_seen[t - ps.triangles.size()] = 1;  // an exact sphere (VisibilityBuffer)
-        else
-            seen[ps.triangles[t].source] = 1;
-    Aabb bounds;
-    for (size_t k = 0; k < sphere_seen.size(); ++k)
-        if (sphere_seen[k]) {
-            const Sphere& s = ps.scene.spheres[k];
-            bounds.extend(s.center - Vec3(s.radius));
-            bounds.extend(s.center + Vec3(s.radius));
-        }
-    for (size_t t = 0; t < seen.size(); ++t)
-        if (seen[t])
-            for (uint32_t i : ps.scene.triangles.indices[t])
-                bounds.extend(ps.scene.triangles.positions[i]);
-    return bounds;
-}
-
 }  // namespace
 
 namespace {
@@ -531,7 +502,7 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
     }
     // The shadow pass, shared by every visibility method: maps from the lights, or a stencil
     // per light counted against the depth of each pixel's visible point.
-    ShadowMaps maps;
+    std::shared_ptr<const ShadowMaps> maps;
     std::vector<std::vector<uint8_t>> in_volume;
     std::shared_ptr<const OccluderSet> occluders;
     const auto shadow_pass_start = std::chrono::steady_clock::now();
@@ -540,19 +511,10 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
         ctx.occluders = occluders.get();
     } else if (ctx.shadows == ShadowMode::map || ctx.shadows == ShadowMode::pcf ||
                ctx.shadows == ShadowMode::pcss) {
-        if (SharedShadowMaps* shared = raster.shared_shadow_maps.get()) {
-            // Supersampling: drawn once for every pass, fitted to the casters alone.
-            if (!shared->maps)
-                shared->maps =
-                    build_shadow_maps(scene, ps.scene, shadow_casting_triangles(scene, ps.scene),
-                                      nullptr, raster.shadow_map_size);
-            ctx.shadow_maps = &*shared->maps;
-        } else {
-            const Aabb receivers = visible_bounds(ps, vis);
-            maps = build_shadow_maps(scene, ps.scene, shadow_casting_triangles(scene, ps.scene),
-                                     &receivers, raster.shadow_map_size);
-            ctx.shadow_maps = &maps;
-        }
+        // Kept by a session, or shared by supersampling's passes (raster/shadow_map.h).
+        maps = shadow_maps_for_render(scene, ps.scene, raster.shadow_map_size, settings.cache,
+                                      raster.shared_shadow_maps.get(), settings.stats);
+        ctx.shadow_maps = maps.get();
     } else if (ctx.shadows == ShadowMode::volume) {
         const std::vector<float> depth = visible_depth(ctx, vis);
         // Shadow volumes are built from polygon silhouettes: exact spheres cast theirs through
@@ -573,7 +535,7 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
         ctx.in_volume = &in_volume;
     }
     if (settings.stats && ctx.shadows != ShadowMode::none)
-        report_shadow_pass(maps, in_volume, shadow_pass_start, *settings.stats);
+        report_shadow_pass(in_volume, shadow_pass_start, *settings.stats);
     for_each_tile(vis.width, vis.height, settings.control,
                   [&](const Tile& tile) { shade_tile(ctx, vis, tile, fb); });
     return fb;

@@ -7,12 +7,15 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <optional>
+#include <string>
 #include <utility>
 
 #include <fmt/format.h>
 
 #include "hikari/core/memory_budget.h"
 #include "hikari/core/parallel.h"
+#include "hikari/frame/tiles.h"
 #include "hikari/raster/cull.h"
 #include "hikari/raster/sphere_raster.h"
 #include "hikari/raster/zbuffer.h"
@@ -31,9 +34,17 @@ constexpr float k_constant_bias_texels = 1.0f;
 constexpr float k_normal_offset_texels = 1.0f;
 constexpr float k_max_slope = 8.0f;
 
-/// The casters alone, as a scene of their own for the light's vertex stage.
-RasterScene caster_scene(const RasterScene& raster, const std::vector<uint8_t>& casters) {
-    RasterScene out;
+/// The casters alone: their triangles (the scene's vertex arrays, the casting triangles'
+/// indices) for the light's vertex stage, and their exact spheres.
+struct Casters {
+    TriangleSet triangles;
+    std::vector<Sphere> spheres;
+
+    bool empty() const { return triangles.indices.empty() && spheres.empty(); }
+};
+
+Casters caster_scene(const RasterScene& raster, const std::vector<uint8_t>& casters) {
+    Casters out;
     const TriangleSet& all = raster.triangles;
     out.triangles.positions = all.positions;
     out.triangles.normals = all.normals;
@@ -48,9 +59,9 @@ RasterScene caster_scene(const RasterScene& raster, const std::vector<uint8_t>& 
     return out;
 }
 
-/// The bounds of the vertices that `scene`'s triangles use and of its exact spheres, in the
-/// orthonormal frame (origin, u, v, w).
-Aabb bounds_in_frame(const RasterScene& scene, Vec3 origin, Vec3 u, Vec3 v, Vec3 w) {
+/// The bounds of the vertices that the casters' triangles use and of their exact spheres, in
+/// the orthonormal frame (origin, u, v, w).
+Aabb bounds_in_frame(const Casters& scene, Vec3 origin, Vec3 u, Vec3 v, Vec3 w) {
     const TriangleSet& tris = scene.triangles;
     Aabb b;
     for (const auto& tri : tris.indices)
@@ -67,89 +78,140 @@ Aabb bounds_in_frame(const RasterScene& scene, Vec3 origin, Vec3 u, Vec3 v, Vec3
     return b;
 }
 
-/// Renders `view` over `casters` by the project's vertex stage and Z-buffer (exact spheres drawn
-/// per texel, raster/sphere_raster.h), then stores each texel's exact depth: its centre ray
-/// intersected with the plane of the caster seen there, or with the sphere seen there.
-/// `depth_of(hit)` turns a world point into the map's depth.
+/// What the faces of one build reuse: the casters' projection and the Z-buffer's setup and
+/// bins, grown to size by the first face and drawn into again by the others.
+struct FaceScratch {
+    ScreenProjection projection;
+    ZBufferWorkspace zbuffer;
+};
+
+/// The NDC coordinate of texel centre i of `size` (x; y runs the other way, which the callers
+/// below only square or take from the matrix).
+float texel_ndc(int i, int size) { return 2.0f * (static_cast<float>(i) + 0.5f) / size - 1.0f; }
+
+/// Turns the Z-buffer's depth key of a face (raster/zbuffer.h: view depth 1 / inv_w) at texel
+/// (x, y) into the map's depth. Under perspective the key is the distance along the face's axis,
+/// and the distance from the light is that times the length of the texel ray's direction scaled
+/// to unit axis component, √(1 + (x_ndc / P₀₀)² + (y_ndc / P₁₁)²); both squares are kept per
+/// column and row. Under a parallel projection the key is 1 / (1.5 − 0.5 z_ndc)
+/// (RasterView::orthographic), and the depth along the light's rays is affine in the NDC
+/// coordinates: its terms in x and y are kept per column and row.
+struct KeyToDepth {
+    bool parallel = false;
+    std::vector<float> column, row;  ///< perspective: the squares; parallel: the affine terms
+    float per_z_ndc = 0;             ///< parallel: the depth's term in z_ndc
+
+    KeyToDepth(const ShadowMapFace& face, Vec3 origin, Vec3 direction) {
+        const int size = face.view.width;
+        parallel = face.view.orthographic;
+        column.resize(size);
+        row.resize(size);
+        const Mat4& w = face.world_from_clip;
+        const auto along = [&](int c) { return dot(Vec3(w(0, c), w(1, c), w(2, c)), direction); };
+        for (int i = 0; i < size; ++i) {
+            const float x = texel_ndc(i, size), y = -texel_ndc(i, size);
+            if (parallel) {
+                column[i] = along(0) * x;
+                row[i] = along(1) * y;
+            } else {
+                const float a = x / face.view.clip_from_view(0, 0);
+                const float b = y / face.view.clip_from_view(1, 1);
+                column[i] = a * a;
+                row[i] = b * b;
+            }
+        }
+        per_z_ndc = along(2);
+        if (parallel) row_offset = dot(Vec3(w(0, 3), w(1, 3), w(2, 3)) - origin, direction);
+    }
+
+    float operator()(int x, int y, float key) const {
+        if (!parallel) return key * std::sqrt(1.0f + column[x] + row[y]);
+        const float z_ndc = 3.0f - 2.0f / key;
+        return column[x] + row[y] + row_offset + per_z_ndc * z_ndc;
+    }
+
+  private:
+    float row_offset = 0;
+};
+
+/// Renders `view` over `casters` by the vertex stage and the Z-buffer's tile rasterizer, depth
+/// only (exact spheres drawn per texel, raster/sphere_raster.h), then turns each texel's depth key
+/// into the map's depth (KeyToDepth; on a sphere, its exact hit along the texel's ray).
+/// `depth_of(hit)` turns a world point into the map's depth, `origin` and `direction` are the
+/// map's. A face in whose view no caster lies is left empty, undrawn.
 template <class DepthOf>
-ShadowMapFace render_face(const RasterScene& casters, const RasterView& view, DepthOf depth_of) {
+ShadowMapFace render_face(const Casters& casters, const RasterView& view, Vec3 origin,
+                          Vec3 direction, FaceScratch& scratch, DepthOf depth_of) {
     ShadowMapFace face;
     face.view = view;
     invert(view.clip_from_world, face.world_from_clip);
-    const ProjectedScene ps = project_triangles(casters, view, /*cull_back_faces=*/false);
-    const SphereRaster spheres = prepare_sphere_raster(
-        ps.scene.spheres, view, view_pixel_rays(view), static_cast<uint32_t>(ps.triangles.size()));
-    const VisibilityBuffer vis =
-        zbuffer_visibility(ps.triangles, view.width, view.height, nullptr, &spheres);
-    face.depth.assign(vis.triangle.size(), k_no_caster);
-    const TriangleSet& tris = ps.scene.triangles;
-    hikari::parallel_for(tbb::blocked_range<int>(0, view.height), [&](const auto& rows) {
-        for (int y = rows.begin(); y < rows.end(); ++y)
-            for (int x = 0; x < view.width; ++x) {
-                const size_t texel = static_cast<size_t>(y) * view.width + x;
-                if (vis.triangle[texel] == k_no_triangle) continue;
-                if (spheres.is_sphere(vis.triangle[texel])) {
-                    Ray ray;
-                    const Sphere& s = spheres.spheres[vis.triangle[texel] - spheres.first_id];
-                    const float t = pixel_sphere_hit(spheres.rays, s, x, y, ray);
-                    if (t == t) face.depth[texel] = depth_of(ray.at(t));
-                    continue;
+    ScreenProjection& projection = scratch.projection;
+    projection.indexed_allowed = true;
+    project_to_screen(casters.triangles, view, /*cull_back_faces=*/false, projection);
+    const SphereRaster spheres =
+        prepare_sphere_raster(casters.spheres, view, view_pixel_rays(view), 0);
+    const bool no_triangles = !projection.indexed && projection.triangles.empty();
+    if (no_triangles && spheres.tile_spheres.empty()) return face;
+    const size_t texels = static_cast<size_t>(view.width) * static_cast<size_t>(view.height);
+    face.depth.resize(texels);
+    if (projection.indexed)
+        zbuffer_draw(
+            IndexedScreenTriangles{projection.screen.data(), casters.triangles.indices.data(),
+                                   casters.triangles.indices.size()},
+            view.width, view.height, scratch.zbuffer, nullptr, face.depth.data());
+    else
+        zbuffer_draw(projection.triangles, view.width, view.height, scratch.zbuffer, nullptr,
+                     face.depth.data());
+    const KeyToDepth key_to_depth(face, origin, direction);
+    for_each_tile(
+        view.width, view.height, nullptr,
+        [&](const Tile& tile) {
+            std::array<float, k_tile_size * k_tile_size> key;
+            std::array<uint32_t, k_tile_size * k_tile_size> seen;
+            seen.fill(k_no_triangle);
+            for (int y = tile.y0; y < tile.y1; ++y)
+                std::copy_n(face.depth.data() + static_cast<size_t>(y) * view.width + tile.x0,
+                            tile.x1 - tile.x0, key.data() + (y - tile.y0) * k_tile_size);
+            draw_spheres_in_tile(spheres, tile, key.data(), seen.data());
+            for (int y = tile.y0; y < tile.y1; ++y)
+                for (int x = tile.x0; x < tile.x1; ++x) {
+                    const int i = (y - tile.y0) * k_tile_size + (x - tile.x0);
+                    float depth = k_no_caster;
+                    if (spheres.is_sphere(seen[i])) {
+                        Ray ray;
+                        const Sphere& s = spheres.spheres[seen[i]];
+                        const float t = pixel_sphere_hit(spheres.rays, s, x, y, ray);
+                        if (t == t) depth = depth_of(ray.at(t));
+                    } else if (key[i] < k_no_caster) {
+                        depth = key_to_depth(x, y, key[i]);
+                    }
+                    face.depth[static_cast<size_t>(y) * view.width + x] = depth;
                 }
-                const auto& idx = tris.indices[ps.triangles[vis.triangle[texel]].source];
-                const Vec3 a = tris.positions[idx[0]];
-                const Vec3 n = face_normal(a, tris.positions[idx[1]], tris.positions[idx[2]]);
-                // The texel centre's ray: its points at NDC depth −1 and +1.
-                const float ndc_x = 2.0f * (x + 0.5f) / view.width - 1.0f;
-                const float ndc_y = 1.0f - 2.0f * (y + 0.5f) / view.height;
-                const Vec4 h0 = face.world_from_clip * Vec4(ndc_x, ndc_y, -1.0f, 1.0f);
-                const Vec4 h1 = face.world_from_clip * Vec4(ndc_x, ndc_y, 1.0f, 1.0f);
-                const Vec3 o = h0.xyz() / h0.w;
-                const Vec3 d = h1.xyz() / h1.w - o;
-                const float denominator = dot(n, d);
-                if (denominator == 0.0f) continue;  // seen edge-on: the rasterizer's call
-                const float t = dot(n, a - o) / denominator;
-                face.depth[texel] = depth_of(o + t * d);
-            }
-    });
+        },
+        /*report_tiles=*/false);
     return face;
 }
 
-/// A directional light's orthographic map over the casters that lie above `receivers`.
-std::optional<LightShadowMap> directional_map(Vec3 travel, const RasterScene& casters,
-                                              const Aabb* receivers, int size) {
+/// A directional light's orthographic map over all the casters: fitted to their bounds in the
+/// light's view, so that it serves every receiver, whatever the camera sees.
+std::optional<LightShadowMap> directional_map(Vec3 travel, const Casters& casters, int size,
+                                              FaceScratch& scratch) {
+    if (casters.empty()) return std::nullopt;
     LightShadowMap map;
     map.directional = true;
     map.direction = normalize(travel);
     map.size = size;
-    map.origin = receivers ? receivers->center() : Vec3(0.0f);
     // The light's view: looking along its travel direction, w toward the light.
     const Vec3 w = -map.direction;
     const Vec3 up = std::abs(w.y) < 0.9f ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
     const Vec3 u = normalize(cross(up, w));
     const Vec3 v = cross(w, u);
-    if (!receivers) {  // fitted to the casters alone: the map's reference is their centre
-        const Aabb world =
-            bounds_in_frame(casters, Vec3(0.0f), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1));
-        if (!world.empty()) map.origin = world.center();
-    }
+    // The map's reference point: the casters' centre.
+    map.origin =
+        bounds_in_frame(casters, Vec3(0.0f), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)).center();
     const Aabb caster_box = bounds_in_frame(casters, map.origin, u, v, w);
-    Aabb receiver_box = caster_box;
-    if (receivers) {
-        receiver_box = Aabb{};
-        for (int corner = 0; corner < 8; ++corner) {
-            const Vec3 p{(corner & 1) ? receivers->max.x : receivers->min.x,
-                         (corner & 2) ? receivers->max.y : receivers->min.y,
-                         (corner & 4) ? receivers->max.z : receivers->min.z};
-            const Vec3 d = p - map.origin;
-            receiver_box.extend(Vec3(dot(d, u), dot(d, v), dot(d, w)));
-        }
-    }
-    // Only casters over the receivers matter, seen along the light.
-    const float x0 = std::max(caster_box.min.x, receiver_box.min.x);
-    const float x1 = std::min(caster_box.max.x, receiver_box.max.x);
-    const float y0 = std::max(caster_box.min.y, receiver_box.min.y);
-    const float y1 = std::min(caster_box.max.y, receiver_box.max.y);
-    if (caster_box.empty() || !(x0 <= x1 && y0 <= y1)) return std::nullopt;
+    const float x0 = caster_box.min.x, x1 = caster_box.max.x;
+    const float y0 = caster_box.min.y, y1 = caster_box.max.y;
     // Square texels, with a margin of one texel all round.
     const float extent = std::max({x1 - x0, y1 - y0, 1e-6f * (1.0f + length(caster_box.extent()))});
     map.texel_size = extent / static_cast<float>(size - 2);
@@ -172,20 +234,16 @@ std::optional<LightShadowMap> directional_map(Vec3 travel, const RasterScene& ca
     view.clip_from_world = view.clip_from_view * view.view_from_world;
     view.orthographic = true;
     const Vec3 origin = map.origin, direction = map.direction;
-    map.faces.push_back(render_face(
-        casters, view, [origin, direction](Vec3 hit) { return dot(hit - origin, direction); }));
+    map.faces.push_back(
+        render_face(casters, view, origin, direction, scratch,
+                    [origin, direction](Vec3 hit) { return dot(hit - origin, direction); }));
     return map;
 }
 
 /// The nearest and farthest distances from `position` of the bounds of `casters`.
-std::pair<float, float> caster_distances(Vec3 position, const RasterScene& casters) {
-    Aabb bounds;
-    for (const auto& tri : casters.triangles.indices)
-        for (uint32_t i : tri) bounds.extend(casters.triangles.positions[i]);
-    for (const Sphere& s : casters.spheres) {
-        bounds.extend(s.center - Vec3(s.radius));
-        bounds.extend(s.center + Vec3(s.radius));
-    }
+std::pair<float, float> caster_distances(Vec3 position, const Casters& casters) {
+    const Aabb bounds =
+        bounds_in_frame(casters, Vec3(0.0f), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1));
     float far_dist = 0.0f;
     for (int corner = 0; corner < 8; ++corner) {
         const Vec3 p{(corner & 1) ? bounds.max.x : bounds.min.x,
@@ -199,8 +257,9 @@ std::pair<float, float> caster_distances(Vec3 position, const RasterScene& caste
 
 /// One square perspective face from `position` along unit `axis`, `fov_y` degrees wide, whose
 /// depths are distances from `position`.
-ShadowMapFace perspective_face(const RasterScene& casters, Vec3 position, Vec3 axis, Vec3 up,
-                               float fov_y, float near_plane, float far_dist, int size) {
+ShadowMapFace perspective_face(const Casters& casters, Vec3 position, Vec3 axis, Vec3 up,
+                               float fov_y, float near_plane, float far_dist, int size,
+                               FaceScratch& scratch) {
     RasterView view;
     view.eye = position;
     view.width = view.height = size;
@@ -210,13 +269,16 @@ ShadowMapFace perspective_face(const RasterScene& casters, Vec3 position, Vec3 a
     view.clip_from_view = perspective(fov_y, 1.0f, view.near_plane, view.far_plane);
     view.screen_from_clip = viewport(size, size);
     view.clip_from_world = view.clip_from_view * view.view_from_world;
-    return render_face(casters, view, [position](Vec3 hit) { return length(hit - position); });
+    return render_face(casters, view, position, axis, scratch,
+                       [position](Vec3 hit) { return length(hit - position); });
 }
 
 /// A point light's cube map: six 90° views along ±x, ±y, ±z, in that order (face 2a + (d_a < 0)
-/// holds the directions whose largest component is axis a).
-std::optional<LightShadowMap> point_map(Vec3 position, const RasterScene& casters, int size) {
-    if (casters.triangles.indices.empty() && casters.spheres.empty()) return std::nullopt;
+/// holds the directions whose largest component is axis a). Faces that see no caster stay
+/// undrawn.
+std::optional<LightShadowMap> point_map(Vec3 position, const Casters& casters, int size,
+                                        FaceScratch& scratch) {
+    if (casters.empty()) return std::nullopt;
     LightShadowMap map;
     map.origin = position;
     map.size = size;
@@ -228,8 +290,8 @@ std::optional<LightShadowMap> point_map(Vec3 position, const RasterScene& caster
                                       Vec3(0, -1, 0), Vec3(0, 0, 1),  Vec3(0, 0, -1)};
     for (const Vec3& axis : axes) {
         const Vec3 up = axis.y != 0.0f ? Vec3(0, 0, 1) : Vec3(0, 1, 0);
-        map.faces.push_back(
-            perspective_face(casters, position, axis, up, 90.0f, near_plane, far_dist, size));
+        map.faces.push_back(perspective_face(casters, position, axis, up, 90.0f, near_plane,
+                                             far_dist, size, scratch));
     }
     return map;
 }
@@ -241,9 +303,9 @@ constexpr float k_max_cone_map_half_angle = 85.0f;
 
 /// A spot light's map: one perspective face from the light along its axis, over its cone (what
 /// the light does not reach needs no map).
-std::optional<LightShadowMap> cone_map(const LightShadowView& light, const RasterScene& casters,
-                                       int size) {
-    if (casters.triangles.indices.empty() && casters.spheres.empty()) return std::nullopt;
+std::optional<LightShadowMap> cone_map(const LightShadowView& light, const Casters& casters,
+                                       int size, FaceScratch& scratch) {
+    if (casters.empty()) return std::nullopt;
     LightShadowMap map;
     map.cone = true;
     map.origin = light.origin;
@@ -259,7 +321,7 @@ std::optional<LightShadowMap> cone_map(const LightShadowView& light, const Raste
         std::max(0.5f * nearest, 1e-5f * far_dist) / std::sqrt(1.0f + 2.0f * tan_half * tan_half);
     const Vec3 up = std::abs(map.direction.y) < 0.9f ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
     map.faces.push_back(perspective_face(casters, map.origin, map.direction, up, 2.0f * half,
-                                         near_plane, far_dist, size));
+                                         near_plane, far_dist, size, scratch));
     return map;
 }
 
@@ -313,29 +375,121 @@ std::vector<uint8_t> shadow_casting_triangles(const Scene& scene, const RasterSc
     return casters;
 }
 
+namespace {
+
+/// The map of one light over `casters` (null when it casts none).
+std::shared_ptr<const LightShadowMap> light_map(const LightShadowView& view, const Casters& casters,
+                                                int size, FaceScratch& scratch) {
+    std::optional<LightShadowMap> map;
+    switch (view.projection) {
+        case ShadowProjection::parallel:
+            map = directional_map(view.direction, casters, size, scratch);
+            break;
+        case ShadowProjection::cube:  // area lights: their centre
+            map = point_map(view.origin, casters, size, scratch);
+            break;
+        case ShadowProjection::cone:
+            map = cone_map(view, casters, size, scratch);
+            break;
+        case ShadowProjection::none:
+            break;
+    }
+    return map ? std::make_shared<const LightShadowMap>(std::move(*map)) : nullptr;
+}
+
+/// What a light's map is drawn from beyond the geometry, spelled exactly (floats by their bits):
+/// its projection, position, direction and cone, the map size, and the casters' triangle
+/// counts per object (a sphere's tessellation follows the camera under flat and Gouraud
+/// shading, and its triangle count grows with its segments).
+std::string map_version(const LightShadowView& view, int size, const std::string& casters) {
+    const auto bits = [](float f) { return std::bit_cast<uint32_t>(f); };
+    return fmt::format("{} {:x},{:x},{:x} {:x},{:x},{:x} {:x} {} {}",
+                       static_cast<int>(view.projection), bits(view.origin.x), bits(view.origin.y),
+                       bits(view.origin.z), bits(view.direction.x), bits(view.direction.y),
+                       bits(view.direction.z), bits(view.half_angle), size, casters);
+}
+
+/// The casters of `raster` as runs of triangles per object id and exact spheres (map_version).
+std::string caster_counts(const RasterScene& raster, const std::vector<uint8_t>& casters) {
+    std::string out;
+    const std::vector<uint32_t>& id = raster.triangles.id;
+    size_t run = 0;
+    for (size_t t = 0; t < id.size(); ++t) {
+        if (!casters[t]) continue;
+        ++run;
+        if (t + 1 == id.size() || id[t + 1] != id[t]) {
+            out += fmt::format("{}:{} ", id[t], run);
+            run = 0;
+        }
+    }
+    for (const Sphere& s : raster.spheres)
+        if (s.casts_shadow) out += fmt::format("s{} ", s.id);
+    return out;
+}
+
+/// Counts the faces and texels of `map` drawn in this render (--stats).
+void count_drawn(const LightShadowMap& map, RenderStats& stats) {
+    for (const ShadowMapFace& face : map.faces) {
+        if (face.depth.empty()) continue;
+        ++stats.shadow_map_faces;
+        stats.shadow_map_texels += face.depth.size();
+    }
+}
+
+}  // namespace
+
 ShadowMaps build_shadow_maps(const Scene& scene, const RasterScene& raster,
-                             const std::vector<uint8_t>& casters, const Aabb* receivers, int size) {
+                             const std::vector<uint8_t>& casters, int size) {
     check_shadow_map_memory(scene, raster, size);
     ShadowMaps maps;
     maps.lights.resize(scene.lights.size());
-    if (receivers && receivers->empty()) return maps;
-    const RasterScene caster_triangles = caster_scene(raster, casters);
-    for (size_t l = 0; l < scene.lights.size(); ++l) {
-        const LightShadowView view = shadow_view(scene.lights[l]);
-        switch (view.projection) {
-            case ShadowProjection::parallel:
-                maps.lights[l] = directional_map(view.direction, caster_triangles, receivers, size);
-                break;
-            case ShadowProjection::cube:  // area lights: their centre
-                maps.lights[l] = point_map(view.origin, caster_triangles, size);
-                break;
-            case ShadowProjection::cone:
-                maps.lights[l] = cone_map(view, caster_triangles, size);
-                break;
-            case ShadowProjection::none:
-                break;
+    const Casters caster_triangles = caster_scene(raster, casters);
+    FaceScratch scratch;
+    for (size_t l = 0; l < scene.lights.size(); ++l)
+        maps.lights[l] = light_map(shadow_view(scene.lights[l]), caster_triangles, size, scratch);
+    return maps;
+}
+
+std::shared_ptr<const ShadowMaps> shadow_maps_for_render(const Scene& scene,
+                                                         const RasterScene& raster, int size,
+                                                         BuildCache* cache,
+                                                         SharedShadowMaps* shared,
+                                                         RenderStats* stats) {
+    if (shared && shared->maps) return shared->maps;
+    const std::vector<uint8_t> casting = shadow_casting_triangles(scene, raster);
+    auto maps = std::make_shared<ShadowMaps>();
+    if (!cache || cache->scene() != &scene) {
+        *maps = build_shadow_maps(scene, raster, casting, size);
+        if (stats)
+            for (const auto& map : maps->lights)
+                if (map) count_drawn(*map, *stats);
+    } else {
+        // A session: each light's map kept under its index until what it is drawn from changes.
+        check_shadow_map_memory(scene, raster, size);
+        const std::string counts = caster_counts(raster, casting);
+        std::optional<Casters> casters;  // made for the first map to draw
+        FaceScratch scratch;
+        for (const Light& light : scene.lights) {
+            const LightShadowView view = shadow_view(light);
+            bool built = false;
+            auto map = cache->get_version<std::shared_ptr<const LightShadowMap>>(
+                fmt::format("shadow map {}", maps->lights.size()), map_version(view, size, counts),
+                SceneParts::geometry,
+                [&] {
+                    if (!casters) casters.emplace(caster_scene(raster, casting));
+                    return light_map(view, *casters, size, scratch);
+                },
+                &built);
+            if (stats && *map) {
+                if (built)
+                    count_drawn(**map, *stats);
+                else
+                    ++stats->shadow_maps_kept;
+            }
+            maps->lights.push_back(*map);
         }
     }
+    if (shared) shared->maps = maps;
     return maps;
 }
 
@@ -372,6 +526,7 @@ MapLookup map_lookup(const LightShadowMap& map, Vec3 p, Vec3 n) {
 float caster_depth(const LightShadowMap& map, Vec3 x) {
     const ShadowMapFace& face =
         map.directional || map.cone ? map.faces.front() : map.faces[cube_face(x - map.origin)];
+    if (face.depth.empty()) return k_no_caster;  // a face that sees no caster
     const Vec4 clip = face.view.clip_from_world * Vec4(x, 1.0f);
     if (!(clip.w > 0.0f)) return k_no_caster;
     const Vec3 screen = transform_point(face.view.screen_from_clip, clip.xyz() / clip.w);

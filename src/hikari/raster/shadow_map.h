@@ -6,10 +6,13 @@
 // the map holds in its direction.
 
 #include <cstdint>
-#include <optional>
+#include <memory>
 #include <vector>
 
 #include "hikari/core/aabb.h"
+#include "hikari/core/build_cache.h"
+#include "hikari/core/huge_page_allocator.h"
+#include "hikari/frame/render_settings.h"
 #include "hikari/raster/raster_scene.h"
 #include "hikari/raster/vertex_pipeline.h"
 #include "hikari/scene/scene.h"
@@ -23,8 +26,12 @@ struct ShadowMapFace {
     Mat4 world_from_clip;  ///< the inverse of view.clip_from_world, to cast texel rays
     /// Per texel, row-major from the top: the depth of the nearest shadow caster along the ray
     /// through the texel's centre (distance from a point light; distance along a directional
-    /// light's rays from the map's reference point), +infinity where no caster is seen.
-    std::vector<float> depth;
+    /// light's rays from the map's reference point), +infinity where no caster is seen. Empty
+    /// when no caster lies in the face's view (a cube map's faces away from every caster): the
+    /// face is then not drawn at all. Huge pages, left unwritten until the face is drawn: faulting
+    /// in 16 MiB of 4 KiB pages for a 2048² face costs more than drawing it
+    /// (core/huge_page_allocator.h).
+    std::vector<float, UninitializedHugePageAllocator<float>> depth;
 };
 
 /// The map of one light (its shadow_view, shading/lights.h): one orthographic face for a
@@ -42,15 +49,16 @@ struct LightShadowMap {
     std::vector<ShadowMapFace> faces;
 };
 
-/// The maps of a scene's lights, index for index (nullopt where a light casts no shadow map:
-/// nothing casts shadows in its light, or no receiver needs it).
+/// The maps of a scene's lights, index for index (null where a light casts no shadow map:
+/// nothing casts shadows in its light). Shared: a render session keeps each light's map for the
+/// renders after it (shadow_maps_for_render).
 struct ShadowMaps {
-    std::vector<std::optional<LightShadowMap>> lights;
+    std::vector<std::shared_ptr<const LightShadowMap>> lights;
 };
 
 /// Shadow maps drawn once and shared by the passes of one supersampled render.
 struct SharedShadowMaps {
-    std::optional<ShadowMaps> maps;  ///< nullopt until the first pass draws them
+    std::shared_ptr<const ShadowMaps> maps;  ///< null until the first pass draws them
 };
 
 /// Which triangles of `raster` (the tessellated scene) cast shadows into maps: those of
@@ -65,14 +73,28 @@ void check_shadow_map_memory(const Scene& scene, const RasterScene& raster, int 
 
 /// Renders the shadow maps of every light of `scene` at `size` × `size` texels per face:
 /// casters are the triangles of `raster` that `casters` marks and the exact spheres of `raster`
-/// that cast shadows (drawn per texel: their shadows are round). A directional light's map is
-/// fitted to the bounds of those casters, in the light's view, that lie over `receivers` (the
-/// bounds of the points the camera sees): casters elsewhere cannot shadow anything visible.
-/// Null `receivers`: fitted to the casters alone, so that the maps serve any receivers (the
-/// passes of a supersampled render). Faces render in parallel; the maps do not depend on the
-/// thread count.
+/// that cast shadows (drawn per texel: their shadows are round). Each face is a depth-only pass
+/// of the Z-buffer's tile rasterizer (raster/zbuffer.h), its depths then turned into the map's
+/// own (distances from the light, or along a directional light's rays). A directional light's
+/// map is fitted to the bounds of the casters alone, so that no map depends on the camera: a
+/// session keeps them while the camera moves, and the passes of a supersampled render share
+/// them. Tiles render in parallel; the maps do not depend on the thread count.
 ShadowMaps build_shadow_maps(const Scene& scene, const RasterScene& raster,
-                             const std::vector<uint8_t>& casters, const Aabb* receivers, int size);
+                             const std::vector<uint8_t>& casters, int size);
+
+/// The shadow maps a render of `scene` shades with, its tessellation `raster` (what the camera's
+/// vertex stage projects): drawn by build_shadow_maps, or kept. In `cache` (a render session's,
+/// core/build_cache.h) each light's map is kept under the light's index and rebuilt only when
+/// what it is drawn from changes: the geometry (the cache drops it), the light's position,
+/// direction or cone, the map size, or the tessellation of shadow-casting spheres (which follows
+/// the camera under flat and Gouraud shading). A change of colour or intensity keeps every map.
+/// `shared` (supersampling's passes) keeps the maps of the first pass for the others. `stats`,
+/// when given, counts the faces and texels drawn and the maps kept.
+std::shared_ptr<const ShadowMaps> shadow_maps_for_render(const Scene& scene,
+                                                         const RasterScene& raster, int size,
+                                                         BuildCache* cache,
+                                                         SharedShadowMaps* shared,
+                                                         RenderStats* stats);
 
 /// Whether `p` (a visible point with unit normal `n` on the side the light may reach) is
 /// lit according to `map`. The comparison allows a depth bias of one texel plus the slope
