@@ -42,6 +42,8 @@ void print_raster_stats(const std::string& prefix, const RenderStats& stats, con
                             covered ? double(work) / double(covered) : 0.0);
     if (const uint64_t splits = stats.depth_sort_splits.load(); splits > 0 || method.stats.splits)
         text += fmt::format("; {} depth-sort splits", splits);
+    if (const uint64_t polygons = stats.depth_sort_polygons.load(); polygons > 0)
+        text += fmt::format("; {} polygons in the painting order", polygons);
     print_err("{}\n", text);
 }
 

@@ -148,6 +148,24 @@ std::optional<double> ServeApi::progress(const std::string& client) {
     return it->second.fraction->load();
 }
 
+namespace {
+
+/// What the page shows beside a frame: its time, size, an algorithm picture's reading, and the
+/// depth sort's painting order (Fig 4.6) for the step-through: how many polygons (pieces of cut
+/// ones included) the order holds, and how many cuts made them.
+void frame_headers(const RenderResult& result, const Camera& camera,
+                   std::map<std::string, std::string>& headers) {
+    headers["X-Hikari-Seconds"] = fmt::format("{:.4f}", result.seconds);
+    headers["X-Hikari-Size"] = fmt::format("{}x{}", camera.width, camera.height);
+    if (!result.algorithm_summary.empty()) headers["X-Hikari-Summary"] = result.algorithm_summary;
+    if (const uint64_t polygons = result.stats->depth_sort_polygons.load(); polygons > 0) {
+        headers["X-Hikari-Paint-Order"] = std::to_string(polygons);
+        headers["X-Hikari-Splits"] = std::to_string(result.stats->depth_sort_splits.load());
+    }
+}
+
+}  // namespace
+
 std::string ServeApi::render(const std::string& text, std::string& content_type,
                              std::map<std::string, std::string>& headers) {
     const Json body = request_json(text);
@@ -199,10 +217,7 @@ std::string ServeApi::render(const std::string& text, std::string& content_type,
         throw;
     }
     finish(client, running);
-    const Camera camera = loaded->session->camera_for(request);
-    headers["X-Hikari-Seconds"] = fmt::format("{:.4f}", result.seconds);
-    headers["X-Hikari-Size"] = fmt::format("{}x{}", camera.width, camera.height);
-    if (!result.algorithm_summary.empty()) headers["X-Hikari-Summary"] = result.algorithm_summary;
+    frame_headers(result, loaded->session->camera_for(request), headers);
     content_type = format == "png"   ? "image/png"
                    : format == "exr" ? "image/x-exr"
                                      : "image/x-portable-floatmap";

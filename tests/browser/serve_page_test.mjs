@@ -43,13 +43,13 @@ function startServer() {
 }
 
 // `hikari render` of the view the page reports, as 8-bit sRGB bytes (binary PPM).
-function cliPixels(view) {
+function cliPixels(view, extra = []) {
   const out = join(mkdtempSync(join(tmpdir(), "hikari-")), "view.ppm");
   const c = view.camera;
   const args = ["render", view.scene || "", "-m", view.method, "--width", String(view.width),
                 "--height", String(view.height), "--camera-from", c.eye.join(","),
                 "--look-at", c.look_at.join(","), "--set", `camera.up=[${c.up.join(",")}]`,
-                "--set", `camera.fov_y=${c.fov_y}`, "-o", out, "-q"].filter((a) => a !== "");
+                "--set", `camera.fov_y=${c.fov_y}`, ...extra, "-o", out, "-q"].filter((a) => a !== "");
   execFileSync(cli, args, { cwd: source });
   const bytes = readFileSync(out);
   // P6\n<w> <h>\n255\n then RGB
@@ -122,6 +122,30 @@ try {
   check(explained.startsWith("Z-buffer (Alg 4.2) at pixel (110, 130)"), "clicking a pixel explains it");
   if (screenshot) await page.screenshot({ path: screenshot });
   await page.uncheck("#compare");
+
+  // The depth sort's step-through (Fig 4.6): one polygon fewer paints the order but its last,
+  // and the page's frame is hikari render's with that --paint-steps.
+  await page.selectOption("#method", "depthsort");
+  await settled();
+  check(await page.locator("#steps").isVisible(), "the depth sort shows its painting-order slider");
+  const order = await page.evaluate(() => window.hikariView.paintOrder);
+  check(order > 1, `the server reports the painting order's length (${order})`);
+  await page.click("#step-back");
+  await page.waitForFunction((n) => window.hikariView.options.paint_steps === n - 1 &&
+                             !window.hikariView.busy, order, { timeout: 120000 });
+  check((await page.textContent("#step-text")).startsWith(`${order - 1} of ${order} polygons`),
+        "the slider says how many polygons are painted");
+  const stepped = await page.evaluate(() => window.hikariView.last);
+  const steppedPixels = cliPixels(Object.assign({}, stepped, { scene: view.scene }),
+                                  ["--paint-steps", String(order - 1)]);
+  const shown = await page.evaluate(() => {
+    const c = document.getElementById("frame");
+    return Array.from(c.getContext("2d").getImageData(0, 0, c.width, c.height).data)
+        .filter((_, i) => i % 4 !== 3);
+  });
+  let stepDiffer = 0;
+  for (let i = 0; i < steppedPixels.length; ++i) if (steppedPixels[i] !== shown[i]) stepDiffer++;
+  check(stepDiffer === 0, `the stepped frame is hikari render --paint-steps's (${stepDiffer} values differ)`);
 
   // Switch to the ray tracer: progressive passes end in a full frame.
   await page.selectOption("#method", "raytrace");

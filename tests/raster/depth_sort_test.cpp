@@ -46,6 +46,32 @@ TEST(DepthSort, ATangleOfLargePiercingTrianglesIsGivenUpOnAfterBoundedWork) {
     EXPECT_EQ(got.triangle.size(), 64u * 64u);
 }
 
+TEST(DepthSort, PaintLimitPaintsAPrefixOfTheOrder) {
+    // --paint-steps (Fig 4.6 part-way): painting k polygons of the order shows a prefix; the
+    // whole order paints what no limit paints, and more steps never uncover a painted pixel.
+    const std::vector<ScreenTriangle> bars = testing::three_bars();
+    DepthSortCounts full_counts;
+    const VisibilityBuffer full = depth_sort_visibility_counted(bars, k_size, k_size, full_counts);
+    ASSERT_GT(full_counts.polygons, 3u);  // the cycle was cut, so its pieces join the order
+    int64_t covered_before = 0;
+    for (uint32_t k = 1; k <= full_counts.polygons; ++k) {
+        DepthSortCounts counts;
+        const VisibilityBuffer part =
+            depth_sort_visibility_counted(bars, k_size, k_size, counts, k);
+        EXPECT_EQ(counts.polygons, full_counts.polygons) << k;
+        EXPECT_LE(counts.paints, full_counts.paints) << k;
+        int64_t covered = 0;
+        for (const uint32_t t : part.triangle) covered += t != k_no_triangle;
+        EXPECT_GE(covered, covered_before) << k;
+        covered_before = covered;
+        if (k == full_counts.polygons) {
+            EXPECT_EQ(mismatches(part, full), 0);
+        }
+    }
+    DepthSortCounts one;
+    EXPECT_GT(mismatches(depth_sort_visibility_counted(bars, k_size, k_size, one, 1), full), 0);
+}
+
 TEST(DepthSort, ResolvesCyclicOverlapBySplitting) {
     EXPECT_LE(depth_sort_errors(testing::three_bars()), k_allowed);
 }

@@ -82,6 +82,30 @@ def test_raster_frames_are_the_command_lines_png_byte_for_byte(server, tmp_path,
     assert body == expected
 
 
+def test_the_depth_sort_steps_through_its_painting_order(server, tmp_path):
+    # Fig 4.6 part-way: the server says how long the order is, and paint_steps = k paints the
+    # first k polygons of it, as `hikari render -m depthsort --paint-steps k` does.
+    def frame(options):
+        status, body, headers = server.post("/api/render", {
+            "scene": "scenes/teapot.json", "method": "depthsort", "width": 64, "height": 48,
+            "camera": CAMERA, "options": options})
+        assert status == 200, body
+        return body, headers
+    whole, headers = frame({})
+    order = int(headers["X-Hikari-Paint-Order"])
+    assert order > 100 and int(headers["X-Hikari-Splits"]) >= 0
+    part, headers = frame({"paint_steps": order // 3})
+    assert int(headers["X-Hikari-Paint-Order"]) == order
+    assert part != whole
+    assert part == cli_file(tmp_path, ".png", "scenes/teapot.json", "-m", "depthsort",
+                            "--width", "64", "--height", "48", "--paint-steps",
+                            str(order // 3), *CAMERA_ARGS)
+    assert frame({"paint_steps": order})[0] == whole
+    status, _, headers = server.post("/api/render", {
+        "scene": "scenes/teapot.json", "method": "zbuffer", "width": 32, "height": 24})
+    assert status == 200 and "X-Hikari-Paint-Order" not in headers
+
+
 def test_float_frames_and_options_are_the_command_lines(server, tmp_path):
     status, body, headers = server.post("/api/render", {
         "method": "raytrace", "width": 64, "height": 48, "format": "pfm",

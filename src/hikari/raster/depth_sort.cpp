@@ -666,7 +666,12 @@ Framebuffer render_depth_sort(const Scene& scene, Film film, const RenderSetting
             if (settings.stats) {
                 settings.stats->raster_fragments += counts.paints;
                 settings.stats->depth_sort_splits += counts.splits;
-                settings.stats->depth_sort_polygons += counts.polygons;
+                // The longest order of any sample (supersampling paints one order per sample).
+                uint64_t longest = settings.stats->depth_sort_polygons.load();
+                while (counts.polygons > longest &&
+                       !settings.stats->depth_sort_polygons.compare_exchange_weak(
+                           longest, counts.polygons)) {
+                }
                 if (counts.gave_up) settings.stats->depth_sort_gave_up = 1;
             }
             return vis;

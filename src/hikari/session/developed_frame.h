@@ -16,7 +16,7 @@ namespace hikari {
 
 /// How a render is developed into its output.
 struct Development {
-    Aov aov = Aov::color;  ///< the buffer shown
+    Aov aov = Aov::color;   ///< the buffer shown
     float exposure = 0.0f;  ///< stops, applied to colour
     ToneMap tone_map = ToneMap::clamp;
     std::optional<DepthRange> depth_range;  ///< of a depth picture; default: what is visible
