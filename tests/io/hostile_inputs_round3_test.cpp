@@ -82,8 +82,8 @@ TEST_F(HostileRound3, ObjTextAndItsTableAreCheckedAgainstTheMemoryLimit) {
     EXPECT_LT(run.extra_peak_bytes, 64.0 * (1 << 20));
     EXPECT_EQ(input_error_of([&] { load_obj(file); }),
               "reading the OBJ file " + file.string() +
-                  " (1.0 GiB) needs about 2.0 GiB, more than the limit of 1.5 GiB (raise it "
-                  "with --max-memory)");
+                  " (1 GiB) needs about 2 GiB, more than the limit of 1.5 GiB (raise it "
+                  "with --max-memory 2 or more)");
 }
 
 TEST(QuoteToken, ShortTokensAreQuotedWhole) {
