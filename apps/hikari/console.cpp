@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -13,6 +14,10 @@ namespace {
 
 /// The errno of the first write to stdout that failed; 0: none did.
 int g_stdout_error = 0;
+
+/// Whether a write to stderr failed (a line lost: the exit status says so, as GNU's
+/// close_stdout does, since no line can).
+std::atomic<bool> g_stderr_failed{false};
 
 /// Writes `text` to `stream`, the errno of the failure or 0.
 int write_to(std::FILE* stream, std::string_view text) noexcept {
@@ -33,7 +38,9 @@ void reserve_standard_streams() noexcept {
     }
 }
 
-void write_err(std::string_view text) noexcept { write_to(stderr, text); }
+void write_err(std::string_view text) noexcept {
+    if (write_to(stderr, text) != 0) g_stderr_failed.store(true);
+}
 
 void write_out(std::string_view text) noexcept {
     if (const int error = write_to(stdout, text); error != 0) note_stdout_failure(error);
@@ -49,7 +56,8 @@ int finish_standard_output(int status) noexcept {
     // error flag but not its reason.
     if (std::fflush(stdout) != 0 || std::ferror(stdout))
         note_stdout_failure(errno != 0 ? errno : -1);
-    if (g_stdout_error == 0 || status != 0) return status;
+    if (status != 0) return status;
+    if (g_stdout_error == 0) return g_stderr_failed.load() ? 1 : 0;
     if (g_stdout_error < 0)
         print_err("hikari: error: cannot write to standard output\n");
     else

@@ -1,9 +1,10 @@
 #pragma once
 // The program's two streams. Every line hikari prints goes through here, so that a closed or full
 // stdout or stderr never aborts it (the formatting library throws on a failed write): a line that
-// cannot reach stderr is dropped, as there is nowhere left to say so; a report that cannot reach
-// stdout (`info`, `compare`, `explain`, `bench`, `--print-matrices`) ends the command with exit
-// status 1 and, where stderr still works, a line saying why.
+// cannot reach stderr is dropped, as there is nowhere left to say so, and the command's work goes
+// on but it ends with exit status 1; a report that cannot reach stdout (`info`, `compare`,
+// `explain`, `bench`, `--print-matrices`) ends the command with exit status 1 and, where stderr
+// still works, a line saying why.
 
 #include <cerrno>
 #include <string_view>
@@ -18,7 +19,7 @@ namespace hikari::cli {
 /// opens later gets a standard stream's number and receives its lines.
 void reserve_standard_streams() noexcept;
 
-/// Writes `text` to stderr; a failed write is dropped.
+/// Writes `text` to stderr; a failed write is dropped and remembered for finish_standard_output.
 void write_err(std::string_view text) noexcept;
 
 /// Writes `text` to stdout; a failed write is remembered for finish_standard_output.
@@ -47,8 +48,8 @@ void print_out(fmt::format_string<Args...> format, Args&&... args) noexcept {
 }
 
 /// Flushes stdout and returns the command's exit status: `status`, or 1 when a command that
-/// otherwise succeeded could not write all it printed there (with `hikari: error: cannot write
-/// to standard output: <reason>` on stderr, the reason where it is known).
+/// otherwise succeeded could not write all it printed on stdout (with `hikari: error: cannot
+/// write to standard output: <reason>` on stderr, the reason where it is known) or on stderr.
 int finish_standard_output(int status) noexcept;
 
 }  // namespace hikari::cli

@@ -20,6 +20,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "console.h"
 #include "data_folder.h"
 #include "gallery_figures.h"
 #include "hikari/core/cancel.h"
@@ -271,9 +272,9 @@ std::string copy_model(const fs::path& model, const fs::path& scenes) {
 void progress(size_t i, size_t n, const Figure& f) {
     static const bool terminal = ::isatty(2) != 0;
     if (terminal)
-        fmt::print(stderr, "\rhikari: gallery {}/{}: {} {}\x1b[K", i + 1, n, f.figure, f.image);
+        cli::print_err("\rhikari: gallery {}/{}: {} {}\x1b[K", i + 1, n, f.figure, f.image);
     else
-        fmt::print(stderr, "hikari: gallery {}/{}: {} {}\n", i + 1, n, f.figure, f.image);
+        cli::print_err("hikari: gallery {}/{}: {} {}\n", i + 1, n, f.figure, f.image);
 }
 
 }  // namespace
@@ -314,8 +315,8 @@ int run_gallery(const GalleryOptions& o, const std::string& program) {
     const std::string html = index_html(g, model.filename().string());
     write_file_atomically(g.dir / "index.html",
                           {reinterpret_cast<const uint8_t*>(html.data()), html.size()});
-    fmt::print(stderr, "{}hikari: gallery: {} figures in {}\n", ::isatty(2) ? "\r\x1b[K" : "",
-               g.figures.size(), (g.dir / "index.html").string());
+    cli::print_err("{}hikari: gallery: {} figures in {}\n", ::isatty(2) ? "\r\x1b[K" : "",
+                   g.figures.size(), (g.dir / "index.html").string());
     return 0;
 }
 

@@ -103,7 +103,7 @@ class HostileMethods : public ::testing::Test {
         EXPECT_EQ(m.result.status, 1) << args << ": " << m.result.output;
         EXPECT_EQ(m.result.output.rfind("hikari: error: ", 0), 0u) << m.result.output;
         EXPECT_NE(m.result.output.find(what), std::string::npos) << m.result.output;
-        EXPECT_NE(m.result.output.find("(raise it with --max-memory)"), std::string::npos)
+        EXPECT_NE(m.result.output.find("(raise it with --max-memory "), std::string::npos)
             << m.result.output;
         EXPECT_EQ(std::count(m.result.output.begin(), m.result.output.end(), '\n'), 1)
             << m.result.output;
@@ -229,20 +229,20 @@ TEST_F(HostileMethods, ExplainCompareAndInfoTakeTheMemoryLimit) {
                                 std::to_string(8.0 / 1024) + " " + path("tree.json"));
     EXPECT_EQ(e.status, 1) << e.output;
     EXPECT_NE(e.output.find("the ray tree"), std::string::npos) << e.output;
-    EXPECT_NE(e.output.find("(raise it with --max-memory)"), std::string::npos) << e.output;
+    EXPECT_NE(e.output.find("(raise it with --max-memory "), std::string::npos) << e.output;
     // compare: two 1024x1024 images, 12 MiB each decoded, under 16 MiB together.
     const std::string big = path("big.pfm");
     ASSERT_EQ(run_hikari("render -q --width 1024 --height 1024 -o " + big).status, 0);
     const Result c =
         run_hikari("compare --max-memory " + std::to_string(16.0 / 1024) + " " + big + " " + big);
     EXPECT_EQ(c.status, 1) << c.output;
-    EXPECT_NE(c.output.find("(raise it with --max-memory)"), std::string::npos) << c.output;
+    EXPECT_NE(c.output.find("(raise it with --max-memory "), std::string::npos) << c.output;
     // info reads the model under the limit.
     const Result i =
         run_hikari("info --max-memory " + std::to_string(1.0 / (1 << 20)) + " " +
                    (fs::path(HIKARI_SOURCE_DIR) / "scenes/models/teapot.obj").string());
     EXPECT_EQ(i.status, 1) << i.output;
-    EXPECT_NE(i.output.find("(raise it with --max-memory)"), std::string::npos) << i.output;
+    EXPECT_NE(i.output.find("(raise it with --max-memory "), std::string::npos) << i.output;
 }
 
 TEST_F(HostileMethods, TexturesTheRenderReadsAreNeverOverwritten) {

@@ -1,6 +1,7 @@
 // A full or closed stdout or stderr (issue 41, item 1): the program never aborts; a report that
 // cannot reach stdout ends with exit status 1 and a line on stderr saying why; a line that
-// cannot reach stderr is dropped and the work is done as usual.
+// cannot reach stderr is dropped, the work is done as usual, and the exit status is 1 (as GNU's
+// close_stdout does: the status is all that can still say a line was lost).
 
 #include <filesystem>
 #include <string>
@@ -43,17 +44,33 @@ class OutputStreams : public ::testing::Test {
          std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
 };
 
-TEST_F(OutputStreams, FullStderrDoesNotStopARender) {
+TEST_F(OutputStreams, FullStderrDoesNotStopARenderButFailsIt) {
     const RunResult r =
         run_hikari_redirected("render -o " + path("x.png") + " --width 8 --stats", "2>/dev/full");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_TRUE(fs::exists(path("x.png")));
+}
+
+TEST_F(OutputStreams, QuietRenderWithAFullStderrSucceeds) {
+    // Nothing is lost where nothing is said.
+    const RunResult r =
+        run_hikari_redirected("render -o " + path("x.png") + " --width 8 -q", "2>/dev/full");
     EXPECT_EQ(r.status, 0);
+    EXPECT_TRUE(fs::exists(path("x.png")));
+}
+
+TEST_F(OutputStreams, WarningsOnAFullStderrFailTheRender) {
+    // --ground on a scene file (not a model) is ignored with a warning, even with -q.
+    const RunResult r = run_hikari_redirected(
+        "render -o " + path("x.png") + " --width 8 -q --ground", "2>/dev/full");
+    EXPECT_EQ(r.status, 1);
     EXPECT_TRUE(fs::exists(path("x.png")));
 }
 
 TEST_F(OutputStreams, ClosedStderrDoesNotStopARenderNorReceiveItsFile) {
     const RunResult r =
         run_hikari_redirected("render -o " + path("x.png") + " --width 8 --stats", "2>&-");
-    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.status, 1);
     ASSERT_TRUE(fs::exists(path("x.png")));
     // Had a file the render writes taken descriptor 2, the lines for stderr would be in it.
     const RunResult cmp =

@@ -272,8 +272,10 @@ TEST_F(HostileObj, ManyFacesAreRefusedBeforeTheyAreParsed) {
     const std::string e = obj_error(faces);
     EXPECT_EQ(e.rfind((m_dir / "o.obj").string() + ": loading 20000 faces needs about ", 0), 0u)
         << e;
-    EXPECT_TRUE(e.ends_with(" MiB, more than the limit of 1.0 MiB (raise it with --max-memory)"))
+    EXPECT_NE(e.find(" MiB, more than the limit of 1 MiB (raise it with --max-memory 0.0"),
+              std::string::npos)
         << e;
+    EXPECT_TRUE(e.ends_with(" or more)")) << e;
 }
 
 TEST_F(HostileInput, PlyHeaderCountsAreCheckedAgainstMemory) {
@@ -293,8 +295,10 @@ TEST_F(HostileInput, ImagesAreCheckedAgainstMemoryBeforeDecoding) {
     set_memory_limit(1 << 20);
     const std::string e = input_error_of([&] { read_image(file); });
     EXPECT_EQ(e.rfind(file.string() + ": decoding a 512x512 image needs about ", 0), 0u) << e;
-    EXPECT_TRUE(e.ends_with(" MiB, more than the limit of 1.0 MiB (raise it with --max-memory)"))
+    EXPECT_NE(e.find(" MiB, more than the limit of 1 MiB (raise it with --max-memory 0.0"),
+              std::string::npos)
         << e;
+    EXPECT_TRUE(e.ends_with(" or more)")) << e;
 }
 
 }  // namespace

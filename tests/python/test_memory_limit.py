@@ -49,6 +49,16 @@ def test_the_ray_tree_counts_against_the_limit(limit_restored):
     assert scene.render("raytrace", max_depth=12, max_memory=0.25).shape == (24, 32, 3)
 
 
+def test_the_ray_tree_listing_counts_against_the_limit(limit_restored):
+    # Under the breadth cap, a 32x24 mirror/glass scene's tree at depth 30 lists 65534 rays
+    # (40 MB of text): refused under 0.05 GiB, explained under 0.25.
+    scene = hikari.Scene.from_dict(RAY_TREE)
+    with pytest.raises(hikari.InputError, match="listing the ray tree .*max_memory="):
+        hikari.explain(scene, "raytrace", pixel=(16, 12), max_depth=30, max_memory=0.05)
+    assert "#65533" in str(hikari.explain(scene, "raytrace", pixel=(16, 12), max_depth=30,
+                                          max_memory=0.25))
+
+
 def test_set_max_memory_holds_for_every_later_call(limit_restored):
     hikari.set_max_memory(1 / 1024)
     assert math.isclose(hikari.max_memory(), 1 / 1024)

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <mutex>
 
@@ -59,8 +60,27 @@ ScopeState& scope() {
 std::atomic<double> g_scope_start{-1.0};  ///< the outermost scope's start; < 0: none open
 
 std::string& limit_hint() {
-    static std::string hint = "--max-memory";
+    static std::string hint = "--max-memory GIB";
     return hint;
+}
+
+/// `value` rounded up to `digits` significant digits (value > 0), so that a need or a limit
+/// to ask for never reads smaller than it is.
+double round_up(double value, int digits) {
+    if (!(value > 0) || !std::isfinite(value)) return value;
+    const double scale = std::pow(10.0, digits - 1 - std::floor(std::log10(value)));
+    const double rounded = std::ceil(value * scale * (1 - 1e-12)) / scale;
+    return std::max(rounded, value);
+}
+
+/// How to raise the limit to `bytes`: the hint with GIB replaced by that many GiB, rounded up
+/// to two significant digits (the value to pass, not the limit's own rounding).
+std::string raise_hint(double bytes) {
+    const std::string gib = fmt::format("{:g}", round_up(bytes / double(1 << 30), 2));
+    std::string hint = limit_hint();
+    if (const size_t at = hint.find("GIB"); at != std::string::npos)
+        return hint.replace(at, 3, gib) + " or more";
+    return fmt::format("{}, to {} GiB or more", hint, gib);
 }
 
 }  // namespace
@@ -103,8 +123,15 @@ void set_memory_limit_hint(std::string hint) { limit_hint() = std::move(hint); }
 
 std::string memory_size_text(double bytes) {
     constexpr double mib = 1 << 20, gib = 1 << 30;
-    if (bytes >= 0.1 * gib) return fmt::format("{:.1f} GiB", bytes / gib);
-    return fmt::format("{:.1f} MiB", bytes / mib);
+    const bool in_gib = bytes >= 0.1 * gib;
+    return fmt::format("{:g} {}", round_up(bytes / (in_gib ? gib : mib), 3),
+                       in_gib ? "GiB" : "MiB");
+}
+
+std::string memory_limit_text(double bytes) {
+    constexpr double mib = 1 << 20, gib = 1 << 30;
+    if (bytes >= 0.1 * gib) return fmt::format("{:.6g} GiB", bytes / gib);
+    return fmt::format("{:.6g} MiB", bytes / mib);
 }
 
 double memory_limit() { return limit().load(); }
@@ -120,9 +147,9 @@ void check_memory_need(double bytes, std::string_view what) {
     if (!(bytes + kept > cap)) return;
     const std::string besides =
         kept > 0 ? fmt::format(" besides the {} already held", memory_size_text(kept)) : "";
-    throw InputError(
-        fmt::format("{} needs about {}{}, more than the limit of {} (raise it with {})", what,
-                    memory_size_text(bytes), besides, memory_size_text(cap), limit_hint()));
+    throw InputError(fmt::format(
+        "{} needs about {}{}, more than the limit of {} (raise it with {})", what,
+        memory_size_text(bytes), besides, memory_limit_text(cap), raise_hint(bytes + kept)));
 }
 
 MemoryHeld::MemoryHeld(double bytes) : m_bytes(bytes) { held().fetch_add(bytes); }

@@ -9,8 +9,13 @@
 
 namespace hikari {
 
-/// "1.5 GiB", or "12.0 MiB" below a tenth of a GiB: a size for messages.
+/// "1.51 GiB", or "12.1 MiB" below a tenth of a GiB: a size for messages, rounded up to three
+/// significant digits (a need never reads smaller than it is).
 std::string memory_size_text(double bytes);
+
+/// "0.25 GiB" (or "16 MiB" below a tenth of a GiB): a limit to six significant digits, so that
+/// it reads as it was given and a need just above it never reads equal to it.
+std::string memory_limit_text(double bytes);
 
 /// The limit in bytes; by default half the machine's physical memory (4 GiB when unknown).
 double memory_limit();
@@ -20,15 +25,16 @@ double memory_limit();
 void set_memory_limit(double bytes);
 
 /// Throws InputError "WHAT needs about N GiB, more than the limit of M GiB (raise it with
-/// --max-memory)" when `bytes` exceed the limit. Call it with the size an allocation is about to
-/// take, computed from the counts that decide it (in double, so it cannot overflow). What is
+/// --max-memory K or more)" when `bytes` exceed the limit, K being what it needs with what is
+/// held, in GiB rounded up to two significant digits. Call it with the size an allocation is about
+/// to take, computed from the counts that decide it (in double, so it cannot overflow). What is
 /// already held counts with it: every MemoryHeld, and inside a MemoryScope what the process's
 /// memory has grown since the scope began, so the buffers of one render are checked together
 /// (its image, BVH, shadow maps, tessellation, ray tree), not each alone.
 void check_memory_need(double bytes, std::string_view what);
 
-/// How the refusal says to raise the limit: "--max-memory" (the command line) by default; the
-/// Python module says its own keyword.
+/// How the refusal says to raise the limit: "--max-memory GIB" (the command line) by default,
+/// GIB standing for the number of GiB needed; the Python module says its own keyword.
 void set_memory_limit_hint(std::string hint);
 
 /// The memory the process holds now: its resident set (Linux /proc/self/statm); under

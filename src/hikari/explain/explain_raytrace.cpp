@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "hikari/core/error.h"
+#include "hikari/core/memory_budget.h"
 #include "hikari/explain/explain.h"
 #include "hikari/explain/primitive_names.h"
 #include "hikari/shading/lights.h"
@@ -27,6 +28,21 @@ std::string_view kind_text(RayTreeNode::Kind k) {
     return "";
 }
 
+/// About how many bytes the listing of `tree` takes: each node's lines, indented two spaces a
+/// level, at most some 120 characters besides. A deep tree between mirrors and glass lists a
+/// hundred thousand rays (40 MB at --max-depth 30), which must count against the limit too.
+double listing_bytes(const Scene& scene, const std::vector<RayTreeNode>& tree) {
+    size_t sampled_lights = 0;
+    for (const Light& light : scene.lights) sampled_lights += is_delta_light(light) ? 0 : 1;
+    constexpr double k_line_bytes = 120;
+    double bytes = 0;
+    for (const RayTreeNode& node : tree) {
+        const double lines = 4.0 + static_cast<double>(node.shadow_rays.size() + sampled_lights);
+        bytes += lines * (k_line_bytes + 2.0 * node.depth);
+    }
+    return bytes;
+}
+
 }  // namespace
 
 std::string explain_raytrace_pixel(const Scene& scene, const WhittedSettings& whitted, int x,
@@ -36,7 +52,14 @@ std::string explain_raytrace_pixel(const Scene& scene, const WhittedSettings& wh
                                      scene.camera.width, scene.camera.height));
     const std::vector<RayTreeNode> tree = whitted_ray_tree(scene, whitted, x, y);
     const PrimitiveNames names(scene);
-    std::string out = fmt::format(
+    // The listing, and its copy where a front end takes it (a Python string).
+    const double listing = listing_bytes(scene, tree);
+    check_memory_need(2 * listing, fmt::format("listing the ray tree of pixel ({}, {}) ({} rays "
+                                               "to --max-depth {})",
+                                               x, y, tree.size(), whitted.max_depth));
+    std::string out;
+    out.reserve(static_cast<size_t>(listing));
+    out += fmt::format(
         "Ray tracing (Alg 4.3, Whitted 1980) at pixel ({}, {}): the ray tree of its centre ray, "
         "at most {} ray segments\n"
         "Each ray returns local + reflectivity × (mirror ray) + transparency × (refracted ray);\n"

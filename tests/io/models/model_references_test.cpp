@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "../temp_dir.h"
+#include "hikari/core/memory_budget.h"
 
 namespace hikari {
 namespace {
@@ -34,6 +35,18 @@ TEST(ModelReferences, AnObjNamesItsLibrariesAndTheirTextures) {
     EXPECT_TRUE(names(files, dir / "mtl/tex/kd.png"));
     EXPECT_TRUE(names(files, dir / "mtl/b.png"));
     EXPECT_EQ(files.size(), 4u);
+}
+
+TEST(ModelReferences, AnObjTheLoaderRefusesBySizeIsNotScanned) {
+    // A 4 GiB OBJ under --max-memory 1 took half a minute to scan before the load refused it.
+    const testing::TempDir dir;
+    testing::write_text(dir / "m.obj", "mtllib m.mtl\n" + std::string(4000, '#') + "\n");
+    const double saved = memory_limit();
+    set_memory_limit(4000);  // less than the text and its line table, twice the file
+    const std::vector<fs::path> refused = model_references(dir / "m.obj");
+    set_memory_limit(saved);
+    EXPECT_TRUE(refused.empty());
+    EXPECT_TRUE(names(model_references(dir / "m.obj"), dir / "m.mtl"));
 }
 
 TEST(ModelReferences, AGltfNamesItsExternalImagesAndBuffers) {

@@ -52,7 +52,9 @@ TEST_F(ObjStreaming, DegenerateFloodIsRefusedUnderASmallMemoryLimit) {
     const std::string e = obj_load_error(m_dir / "d.obj");
     EXPECT_EQ(e.rfind((m_dir / "d.obj").string() + ": loading 1000000 faces needs about ", 0), 0u)
         << e;
-    EXPECT_TRUE(e.ends_with("more than the limit of 16.0 MiB (raise it with --max-memory)")) << e;
+    EXPECT_NE(e.find("more than the limit of 16 MiB (raise it with --max-memory "),
+              std::string::npos)
+        << e;
 }
 
 TEST_F(ObjStreaming, RefusedUpFrontWhenBuildingTheMeshWouldPassTheLimit) {

@@ -116,6 +116,28 @@ TEST(HiddenLine, BoxBehindABoxLosesWhatTheFrontOneCovers) {
         }
 }
 
+TEST(HiddenLine, ATinyImageHidesAsALargeOneDoes) {
+    // Occluders are looked for within a grid cell of each line where cells are under a pixel
+    // (a whole pixel around every line of a 1x1 image made every line meet every face: the
+    // bunny took 85 s). The drawing of a 4x3 image is the 320x240 one, 80 times smaller.
+    testing::TempDir dir;
+    const Vec3 lo_a{-1, -1, -1}, hi_a{1, 1, 1}, lo_b{0.2f, -0.5f, -4}, hi_b{2.5f, 1.5f, -2};
+    testing::write_text(dir / "a.obj", testing::box_obj(lo_a, hi_a));
+    testing::write_text(dir / "b.obj", testing::box_obj(lo_b, hi_b));
+    const auto scene_of = [&](int width, int height) {
+        return testing::raster_scene_from(
+            R"({"camera": {"eye": [1.5, 1.8, 5], "look_at": [0.5, 0, -1], "fov_y": 55,
+                           "width": )" +
+            std::to_string(width) + R"(, "height": )" + std::to_string(height) + R"(},
+                "objects": [)" +
+            mesh_object(dir / "a.obj") + ", " + mesh_object(dir / "b.obj") + "]}");
+    };
+    const std::vector<std::pair<Vec3, Vec3>> boxes = {{lo_a, hi_a}, {lo_b, hi_b}};
+    const double want = sampled_visible_length(scene_of(320, 240).camera, boxes, true) / 80.0;
+    const LineDrawing tiny = draw_hidden_lines(scene_of(4, 3), {});
+    EXPECT_NEAR(testing::total_length(tiny), want, 0.01 * want);
+}
+
 TEST(HiddenLine, InterpenetratingBoxesAgreeWithRayCastingFromSeveralViewpoints) {
     // Two boxes that pierce each other: a non-convex union with intersection lines. Reference:
     // a point is visible when the segment from the eye to it passes through neither box's

@@ -673,7 +673,12 @@ std::vector<RayTreeNode> whitted_ray_tree(const Scene& scene, const WhittedSetti
         RayTreeNode::Kind kind = RayTreeNode::Kind::camera;
         float weight = 1.0f;
     };
+    size_t nodes = 0;
+    for (const auto& level : record.rays) nodes += level.size();
+    check_memory_need(static_cast<double>(nodes) * (sizeof(RayTreeNode) + sizeof(Link)),
+                      fmt::format("the ray tree of one pixel ({} rays)", nodes));
     std::vector<RayTreeNode> tree;
+    tree.reserve(nodes);
     std::vector<std::vector<Link>> links(record.rays.size());
     for (size_t d = 0; d < record.rays.size(); ++d) links[d].resize(record.rays[d].size());
     for (size_t d = 0; d < record.rays.size(); ++d)

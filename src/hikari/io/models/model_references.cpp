@@ -10,6 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hikari/core/memory_budget.h"
+#include "hikari/io/files/input_limits.h"
+
 namespace hikari {
 
 namespace {
@@ -94,7 +97,18 @@ void add_mtl_textures(const fs::path& library, std::vector<fs::path>& out) {
     }
 }
 
+/// Whether the OBJ loader refuses `obj` from its size alone (the mesh input limit, or its text
+/// and line table, twice the file, over --max-memory; obj_loader.cpp): a file it never reads
+/// is not scanned for its libraries either, which for a 4 GiB file took half a minute.
+bool obj_refused_by_size(const fs::path& obj) {
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(obj, ec);
+    return !ec && (size > input_limit(InputKind::mesh) ||
+                   2.0 * static_cast<double>(size) > memory_limit());
+}
+
 void add_obj_references(const fs::path& obj, std::vector<fs::path>& out) {
+    if (obj_refused_by_size(obj)) return;
     std::vector<fs::path> libraries;
     for_each_line(obj, [&](std::string_view line) {
         while (!line.empty() && is_blank(line.front())) line.remove_prefix(1);

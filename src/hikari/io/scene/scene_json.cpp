@@ -12,6 +12,7 @@
 
 #include "hikari/core/error.h"
 #include "hikari/core/mat4.h"
+#include "hikari/core/memory_budget.h"
 #include "hikari/io/files/printable_text.h"
 #include "hikari/io/files/read_file.h"
 #include "hikari/io/images/image_read.h"
@@ -39,6 +40,9 @@ struct SceneBuilder {
     const SceneLoadOptions& options;
     /// The first camera a model file (glTF) holds, in world space.
     std::optional<Camera> file_camera;
+    /// The models the mesh objects have loaded, by file and crease angle: a file that many
+    /// objects name is read and built once, not once per object.
+    std::map<std::pair<std::filesystem::path, float>, MeshData> models;
 };
 
 CheckerTexture parse_checker_texture(const JsonNode& node) {
@@ -456,6 +460,56 @@ void parse_triangle(SceneBuilder& b, const JsonNode& node) {
     add_uvs(b.scene.triangles, base, uvs);
 }
 
+/// The model `file` loaded with `options` (once per scene: b.models keeps it); `first` is set
+/// when this call loaded it. A load error is reported at `file_node`.
+const MeshData& loaded_model(SceneBuilder& b, const JsonNode& file_node,
+                             const std::filesystem::path& file, const MeshOptions& options,
+                             bool& first) {
+    const auto key = std::pair{file.lexically_normal(), options.crease_angle_degrees};
+    first = false;
+    if (const auto it = b.models.find(key); it != b.models.end()) return it->second;
+    try {
+        first = true;
+        return b.models.emplace(key, load_model(file, options)).first->second;
+    } catch (const InputError& e) {
+        file_node.fail(e.what());
+    }
+}
+
+/// Makes room in `t` for a mesh object of `vertices` and `triangles` (with uvs, colours), its
+/// memory checked first: a model many objects name is stored once per object, so 300 objects of
+/// one scan grow the scene's arrays without any file being large. The arrays grow by at least
+/// half their size each time (no quadratic copying); the need is what the grown arrays take
+/// (the current ones count as held while they are copied).
+void reserve_mesh_object(TriangleSet& t, size_t vertices, size_t triangles, bool uvs, bool colours,
+                         const std::string& what) {
+    double need = 0;
+    const auto grown = [&need](auto& array, size_t more) {
+        const size_t wanted = array.size() + more;
+        if (wanted <= array.capacity()) return size_t{0};
+        const size_t capacity = std::max(wanted, array.capacity() + array.capacity() / 2);
+        need += static_cast<double>(capacity) * sizeof(array[0]);
+        return capacity;
+    };
+    const std::array<size_t, 4> vertex_capacity = {
+        grown(t.positions, vertices), grown(t.normals, vertices),
+        uvs ? grown(t.uvs, vertices + t.positions.size() - t.uvs.size()) : 0,
+        colours ? grown(t.colors, vertices + t.positions.size() - t.colors.size()) : 0};
+    const std::array<size_t, 5> triangle_capacity = {
+        grown(t.indices, triangles), grown(t.material, triangles), grown(t.id, triangles),
+        grown(t.casts_shadow, triangles), grown(t.edge_flags, triangles)};
+    check_memory_need(need, what);
+    if (vertex_capacity[0]) t.positions.reserve(vertex_capacity[0]);
+    if (vertex_capacity[1]) t.normals.reserve(vertex_capacity[1]);
+    if (vertex_capacity[2]) t.uvs.reserve(vertex_capacity[2]);
+    if (vertex_capacity[3]) t.colors.reserve(vertex_capacity[3]);
+    if (triangle_capacity[0]) t.indices.reserve(triangle_capacity[0]);
+    if (triangle_capacity[1]) t.material.reserve(triangle_capacity[1]);
+    if (triangle_capacity[2]) t.id.reserve(triangle_capacity[2]);
+    if (triangle_capacity[3]) t.casts_shadow.reserve(triangle_capacity[3]);
+    if (triangle_capacity[4]) t.edge_flags.reserve(triangle_capacity[4]);
+}
+
 void parse_mesh(SceneBuilder& b, const JsonNode& node) {
     node.expect_object(
         {"type", "name", "file", "material", "transform", "casts_shadow", "crease_angle"});
@@ -470,18 +524,16 @@ void parse_mesh(SceneBuilder& b, const JsonNode& node) {
             crease.fail("expected an angle from 0 to 180 degrees");
     }
     if (b.options.crease_angle) mesh_options.crease_angle_degrees = *b.options.crease_angle;
-    MeshData loaded;
     const bool preloaded = b.options.preloaded && file == b.options.preloaded_file;
-    try {
-        if (!preloaded) loaded = load_model(file, mesh_options);
-    } catch (const InputError& e) {
-        file_node.fail(e.what());
+    bool first = preloaded;
+    const MeshData& mesh =
+        preloaded ? *b.options.preloaded : loaded_model(b, file_node, file, mesh_options, first);
+    if (first) {  // said once, however many objects name the file
+        for (const std::string& w : mesh.warnings) b.warnings.push_back(w);
+        if (mesh.degenerate_skipped > 0)
+            b.warnings.push_back(fmt::format("{}: skipped {} degenerate triangle(s)", file.string(),
+                                             mesh.degenerate_skipped));
     }
-    const MeshData& mesh = preloaded ? *b.options.preloaded : loaded;
-    for (const std::string& w : mesh.warnings) b.warnings.push_back(w);
-    if (mesh.degenerate_skipped > 0)
-        b.warnings.push_back(fmt::format("{}: skipped {} degenerate triangle(s)", file.string(),
-                                         mesh.degenerate_skipped));
 
     const Mat4 world_from_model =
         node.has("transform") ? parse_transform(node.at("transform")) : Mat4::identity();
@@ -516,6 +568,15 @@ void parse_mesh(SceneBuilder& b, const JsonNode& node) {
         }
 
     TriangleSet& t = b.scene.triangles;
+    try {
+        reserve_mesh_object(
+            t, mesh.positions.size(), mesh.indices.size(), !mesh.uvs.empty() || !t.uvs.empty(),
+            !mesh.colors.empty(),
+            fmt::format("{} triangles of {} after the scene's {}", mesh.indices.size(),
+                        quote_token(file.filename().string(), '"'), t.size()));
+    } catch (const InputError& e) {
+        file_node.fail(e.what());
+    }
     const auto base = static_cast<uint32_t>(t.positions.size());
     for (size_t k = 0; k < mesh.positions.size(); ++k) {
         t.positions.push_back(transform_point(world_from_model, mesh.positions[k]));
@@ -602,7 +663,7 @@ Scene parse_scene_document(nlohmann::json doc, const std::string& file,
     const JsonNode root(doc, file, "");
     root.expect_object({"description", "camera", "background", "sky", "ambient", "depth_cue",
                         "materials", "lights", "objects", "animation"});
-    SceneBuilder b{Scene{}, {}, base_dir, warnings, {}, options, std::nullopt};
+    SceneBuilder b{Scene{}, {}, base_dir, warnings, {}, options, std::nullopt, {}};
     if (root.has("description")) root.at("description").as_string();
     if (root.has("camera")) b.scene.camera = parse_camera(root.at("camera"));
     if (root.has("background")) b.scene.background = root.at("background").as_colour();

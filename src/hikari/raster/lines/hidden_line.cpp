@@ -117,20 +117,24 @@ Scratch& thread_scratch_for(size_t occluders) {
 struct Context {
     std::vector<Occluder> occluders;
     ScreenGrid grid;
+    /// How near a line an occluder is looked for, in pixels: a pixel, or one grid cell where
+    /// cells are smaller (an image under 64 pixels). A whole pixel around every line of a 1x1
+    /// image is the whole image: every line met every face, 85 s for the bunny instead of 0.5.
+    float reach;
 };
 
 /// The occluders that can hide part of `line`: near enough, not its own faces, listed once.
 void find_candidates(const Context& ctx, const Line& line, Scratch& s) {
     s.candidates.clear();
     const float z_far = std::max(line.za, line.zb);
-    ctx.grid.for_each_along(line.seg.a, line.seg.b, 1.0f, [&](uint32_t i) {
+    ctx.grid.for_each_along(line.seg.a, line.seg.b, ctx.reach, [&](uint32_t i) {
         if (s.stamp[i] == s.epoch) return;
         s.stamp[i] = s.epoch;
         const Occluder& o = ctx.occluders[i];
         if (o.area2 == 0.0f || o.source == line.own_faces[0] || o.source == line.own_faces[1])
             return;
         if (!(o.z_min < z_far)) return;  // wholly behind the line's farthest point
-        if (!boxes_overlap(o.lo, o.hi, line.seg.a, line.seg.b, 0.5f)) return;
+        if (!boxes_overlap(o.lo, o.hi, line.seg.a, line.seg.b, 0.5f * ctx.reach)) return;
         s.candidates.push_back(i);
     });
 }
@@ -301,11 +305,12 @@ std::vector<Line> intersection_lines(const Scene& scene, const LineScene& ls, co
 LineDrawing draw_hidden_lines(const Scene& scene, const LineSettings& lines) {
     const LineScene ls = prepare_line_scene(scene, lines);
     const std::vector<ScreenTriangle>& screen = ls.projected.triangles;
+    const float cell = std::min(
+        k_cell_pixels,
+        static_cast<float>(std::max(scene.camera.width, scene.camera.height)) / k_min_cells_across);
     Context ctx{std::vector<Occluder>(screen.size()),
-                ScreenGrid(screen, scene.camera.width, scene.camera.height,
-                           std::min(k_cell_pixels, static_cast<float>(std::max(
-                                                       scene.camera.width, scene.camera.height)) /
-                                                       k_min_cells_across))};
+                ScreenGrid(screen, scene.camera.width, scene.camera.height, cell),
+                std::min(1.0f, cell)};
     hikari::parallel_for(size_t{0}, screen.size(),
                          [&](size_t i) { ctx.occluders[i] = make_occluder(screen[i]); });
 
