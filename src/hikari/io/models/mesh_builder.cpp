@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <optional>
 #include <tuple>
@@ -14,6 +16,7 @@
 #include "hikari/core/cancel.h"
 #include "hikari/core/error.h"
 #include "hikari/core/memory_budget.h"
+#include "hikari/core/parallel.h"
 #include "hikari/geometry/polygon_triangulation.h"
 
 namespace hikari {
@@ -37,19 +40,28 @@ std::string face_where(const std::filesystem::path& file, const PolygonMesh& mes
 /// not finite for a triangle that cannot be drawn.
 float doubled_area(Vec3 p1, Vec3 p2, Vec3 p3) { return length(cross(p2 - p1, p3 - p2)); }
 
-/// Every face split into triangles, in face order; degenerate triangles dropped and counted.
-std::vector<PendingTriangle> triangulate_faces(const std::filesystem::path& file,
-                                               const PolygonMesh& mesh, MeshData& out) {
-    const size_t vertex_count = mesh.positions.size();
+/// Faces per chunk of the parallel passes: fixed, so what the chunks find, joined in chunk
+/// order, does not depend on the thread count.
+constexpr size_t k_chunk_faces = 16384;
+
+/// What one chunk of faces gives: its triangles, and what it has to report.
+struct TriangulatedChunk {
     std::vector<PendingTriangle> triangles;
-    triangles.reserve(mesh.corners.size() >= 2 * mesh.face_count()
-                          ? mesh.corners.size() - 2 * mesh.face_count()
-                          : 0);
+    size_t degenerate = 0;
+    std::vector<size_t> crossing_faces;  ///< faces that cross themselves, in order
+};
+
+/// Faces [f0, f1) split into triangles, in face order; degenerate triangles dropped and counted.
+void triangulate_chunk(const std::filesystem::path& file, const PolygonMesh& mesh, size_t f0,
+                       size_t f1, TriangulatedChunk& out) {
+    const size_t vertex_count = mesh.positions.size();
+    const uint32_t corner_begin = mesh.face_start[f0], corner_end = mesh.face_start[f1];
+    out.triangles.reserve(
+        corner_end - corner_begin >= 2 * (f1 - f0) ? corner_end - corner_begin - 2 * (f1 - f0) : 0);
     std::vector<PolygonTriangle> local;
     std::vector<Vec3> outline;
-    size_t crossing_faces = 0;
-    for (size_t f = 0; f < mesh.face_count(); ++f) {
-        if (f % 65536 == 0) throw_if_cancelled();  // SIGINT / SIGTERM
+    throw_if_cancelled();  // SIGINT / SIGTERM
+    for (size_t f = f0; f < f1; ++f) {
         const uint32_t begin = mesh.face_start[f], end = mesh.face_start[f + 1];
         const uint32_t n = end - begin;
         if (n < 3 || n > k_max_face_corners)
@@ -69,15 +81,8 @@ std::vector<PendingTriangle> triangulate_faces(const std::filesystem::path& file
             outline.clear();
             for (uint32_t k = begin; k < end; ++k)
                 outline.push_back(mesh.positions[mesh.corners[k]]);
-            if (triangulate_polygon(outline, local) == PolygonShape::SelfIntersecting) {
-                if (crossing_faces < 3)
-                    out.warnings.push_back(
-                        face_where(file, mesh, f) +
-                        fmt::format("face {} crosses itself; its triangles may cover area outside "
-                                    "its outline",
-                                    f + 1));
-                ++crossing_faces;
-            }
+            if (triangulate_polygon(outline, local) == PolygonShape::SelfIntersecting)
+                out.crossing_faces.push_back(f);
         }
         for (const PolygonTriangle& t : local) {
             const PendingTriangle p{
@@ -88,10 +93,44 @@ std::vector<PendingTriangle> triangulate_faces(const std::filesystem::path& file
             const float area2 = doubled_area(mesh.positions[p.v[0]], mesh.positions[p.v[1]],
                                              mesh.positions[p.v[2]]);
             if (!(area2 > 0.0f) || !std::isfinite(area2)) {
-                ++out.degenerate_skipped;
+                ++out.degenerate;
                 continue;
             }
-            triangles.push_back(p);
+            out.triangles.push_back(p);
+        }
+    }
+}
+
+/// Every face split into triangles, in face order; degenerate triangles dropped and counted.
+/// Chunks of faces are triangulated in parallel and joined in order; the first bad face in file
+/// order is the one reported, as a loop over the faces would.
+std::vector<PendingTriangle> triangulate_faces(const std::filesystem::path& file,
+                                               const PolygonMesh& mesh, MeshData& out) {
+    const size_t faces = mesh.face_count();
+    std::vector<TriangulatedChunk> chunks((faces + k_chunk_faces - 1) / k_chunk_faces);
+    parallel_chunks(faces, k_chunk_faces, [&](size_t c, size_t f0, size_t f1) {
+        triangulate_chunk(file, mesh, f0, f1, chunks[c]);
+    });
+    std::vector<size_t> offset(chunks.size() + 1, 0);
+    for (size_t c = 0; c < chunks.size(); ++c)
+        offset[c + 1] = offset[c] + chunks[c].triangles.size();
+    std::vector<PendingTriangle> triangles(offset.back());
+    hikari::parallel_for(size_t{0}, chunks.size(), [&](size_t c) {
+        std::copy(chunks[c].triangles.begin(), chunks[c].triangles.end(),
+                  triangles.begin() + static_cast<std::ptrdiff_t>(offset[c]));
+        chunks[c].triangles = {};
+    });
+    size_t crossing_faces = 0;
+    for (const TriangulatedChunk& chunk : chunks) {
+        out.degenerate_skipped += chunk.degenerate;
+        for (const size_t f : chunk.crossing_faces) {
+            if (crossing_faces < 3)
+                out.warnings.push_back(
+                    face_where(file, mesh, f) +
+                    fmt::format("face {} crosses itself; its triangles may cover area outside "
+                                "its outline",
+                                f + 1));
+            ++crossing_faces;
         }
     }
     if (crossing_faces > 3)
@@ -112,9 +151,12 @@ constexpr uint32_t k_crowded_vertex = 64;
 /// for an 800 × 600 image); a repeat draws nothing the first copy does not. Repeats at
 /// uncrowded vertices cost little and are kept, so ordinary meshes are not searched.
 size_t drop_repeated_triangles(const PolygonMesh& mesh, std::vector<PendingTriangle>& triangles) {
+    // How many triangle corners each vertex has (exact integer sums: any order gives them).
     std::vector<uint32_t> sharing(mesh.positions.size(), 0);
-    for (const PendingTriangle& t : triangles)
-        for (const uint32_t v : t.v) sharing[v] = std::min(sharing[v] + 1, k_crowded_vertex + 1);
+    hikari::parallel_for(size_t{0}, triangles.size(), [&](size_t t) {
+        for (const uint32_t v : triangles[t].v)
+            std::atomic_ref<uint32_t>(sharing[v]).fetch_add(1, std::memory_order_relaxed);
+    });
     std::vector<uint32_t> crowded;
     for (size_t i = 0; i < triangles.size(); ++i) {
         const std::array<uint32_t, 3>& v = triangles[i].v;
@@ -236,8 +278,8 @@ class CornerNormals {
         : m_mesh(mesh), m_triangles(triangles) {
         m_unit_normal.resize(triangles.size());
         m_corner_angle.resize(triangles.size());
-        for (size_t t = 0; t < triangles.size(); ++t) {
-            if (t % 65536 == 0) throw_if_cancelled();  // SIGINT / SIGTERM
+        throw_if_cancelled();  // SIGINT / SIGTERM
+        hikari::parallel_for(size_t{0}, triangles.size(), [&](size_t t) {
             const auto& v = triangles[t].v;
             const Vec3 p[3] = {mesh.positions[v[0]], mesh.positions[v[1]], mesh.positions[v[2]]};
             m_unit_normal[t] = normalize(cross(p[1] - p[0], p[2] - p[1]));
@@ -246,7 +288,7 @@ class CornerNormals {
                            b = normalize(p[(k + 2) % 3] - p[k]);
                 m_corner_angle[t][k] = std::acos(std::clamp(dot(a, b), -1.0f, 1.0f));
             }
-        }
+        });
         m_by_groups = std::any_of(mesh.smoothing_group.begin(), mesh.smoothing_group.end(),
                                   [](uint32_t g) { return g != 0; });
         const float crease = std::clamp(options.crease_angle_degrees, 0.0f, 180.0f);
@@ -338,7 +380,8 @@ class CornerNormals {
             std::memcpy(b.data(), &m_mesh.positions[i], sizeof(Vec3));
             return b;
         };
-        std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+        // a strict total order (ties broken by index): the same result on any thread count
+        hikari::parallel_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
             return std::pair(bits(a), a) < std::pair(bits(b), b);
         });
         m_point.resize(n);
@@ -524,9 +567,10 @@ class CornerNormals {
 
 double mesh_build_bytes(double triangles, double vertices) {
     // Per triangle the pending one, its output indices, material and edge flags, and the
-    // computed normals' face normal, corner angles and shared sums; per vertex its output
-    // attributes and the bookkeeping of normal variants (about 40 bytes).
-    return triangles * (sizeof(PendingTriangle) + 53.0) + 40.0 * vertices;
+    // computed normals' face normal, corner angles and shared sums, and the three corner normals
+    // made in parallel; per vertex its output attributes and the bookkeeping of normal variants
+    // (about 40 bytes).
+    return triangles * (sizeof(PendingTriangle) + 53.0 + 3.0 * sizeof(Vec3)) + 40.0 * vertices;
 }
 
 MeshData build_mesh(const std::filesystem::path& file, PolygonMesh mesh,
@@ -565,6 +609,17 @@ MeshData build_mesh(const std::filesystem::path& file, PolygonMesh mesh,
     }
     std::optional<CornerNormals> computed;
     if (any_computed) computed.emplace(mesh, triangles, options);
+    // Every corner's normal, in parallel (each is a function of the mesh alone); the walk below
+    // that numbers the output vertices in order of first use stays sequential.
+    std::vector<Vec3> corner_normal(3 * triangles.size());
+    throw_if_cancelled();  // SIGINT / SIGTERM
+    hikari::parallel_for(size_t{0}, triangles.size(), [&](size_t t) {
+        for (int slot = 0; slot < 3; ++slot) {
+            const uint32_t v = triangles[t].v[slot];
+            corner_normal[3 * t + slot] =
+                has_own_normal[v] ? normalize(mesh.normals[v]) : computed->normal(t, slot);
+        }
+    });
 
     // Output vertices in order of first use: one per input vertex with its own normal, one per
     // distinct computed normal of an input vertex otherwise (split along creases). The variants
@@ -587,8 +642,7 @@ MeshData build_mesh(const std::filesystem::path& file, PolygonMesh mesh,
         std::array<uint32_t, 3> index{};
         for (int slot = 0; slot < 3; ++slot) {
             const uint32_t v = tri.v[slot];
-            const Vec3 n =
-                has_own_normal[v] ? normalize(mesh.normals[v]) : computed->normal(t, slot);
+            const Vec3 n = corner_normal[3 * t + slot];
             // Walk the chain; `last` is the variant whose link is followed (k_none: the head).
             uint32_t last = k_none, at = first_variant[v];
             while (at != k_none && !same_bits(out.normals[at], n)) {
