@@ -313,6 +313,45 @@ class CornerNormals {
         return is_usable_normal(sum) ? normalize(sum) : m_unit_normal[t];
     }
 
+    /// Every corner's normal(t, slot) into normals[3 t + slot], point by point in parallel:
+    /// the faces around a point are gathered once for all its corners (a corner by corner walk
+    /// gathers them again for each), and each sum runs in the same corner order as normal()'s.
+    void all_normals(std::vector<Vec3>& normals) const {
+        normals.resize(3 * m_triangles.size());
+        hikari::parallel_for(
+            tbb::blocked_range<size_t>(0, m_start.size() - 1, 1024),
+            [&](const tbb::blocked_range<size_t>& points) {
+                std::vector<Vec3> unit, weighted;
+                for (size_t p = points.begin(); p != points.end(); ++p) {
+                    const uint32_t begin = m_start[p], end = m_start[p + 1];
+                    unit.clear();
+                    weighted.clear();
+                    for (uint32_t k = begin; k < end; ++k) {
+                        unit.push_back(m_unit_normal[m_around[k] / 3]);
+                        weighted.push_back(weighted_normal(m_around[k]));
+                    }
+                    for (uint32_t k = begin; k < end; ++k) {
+                        const uint32_t corner = m_around[k];
+                        const size_t t = corner / 3;
+                        if (!m_shared_sum_of.empty() &&
+                            m_shared_sum_of[corner] != k_sum_at_corner) {
+                            normals[corner] = normal(t, int(corner % 3));
+                            continue;
+                        }
+                        Vec3 sum(0.0f);
+                        for (uint32_t o = begin; o < end; ++o) {
+                            const uint32_t other = m_around[o] / 3;
+                            if (other == t ||
+                                (m_by_groups ? smoothed_together(t, other)
+                                             : within_crease(unit[k - begin], unit[o - begin])))
+                                sum += weighted[o - begin];
+                        }
+                        normals[corner] = is_usable_normal(sum) ? normalize(sum) : m_unit_normal[t];
+                    }
+                }
+            });
+    }
+
   private:
     /// m_shared_sum_of: the corner's own face alone (a face outside every smoothing group).
     static constexpr uint32_t k_sum_own_face = UINT32_MAX;
@@ -567,11 +606,100 @@ class CornerNormals {
 
 double mesh_build_bytes(double triangles, double vertices) {
     // Per triangle the pending one, its output indices, material and edge flags, and the
-    // computed normals' face normal, corner angles and shared sums, and the three corner normals
-    // made in parallel; per vertex its output attributes and the bookkeeping of normal variants
-    // (about 40 bytes).
-    return triangles * (sizeof(PendingTriangle) + 53.0 + 3.0 * sizeof(Vec3)) + 40.0 * vertices;
+    // computed normals' face normal, corner angles and shared sums, and per corner its normal,
+    // variant, number and a flag (the parallel numbering of output vertices); per vertex its
+    // output attributes and the bookkeeping of normal variants (about 40 bytes).
+    return triangles * (sizeof(PendingTriangle) + 53.0 + 3.0 * (sizeof(Vec3) + 9.0)) +
+           40.0 * vertices;
 }
+
+namespace {
+
+/// The output vertices, in order of first use: one per distinct (input vertex, normal) pair (a
+/// vertex is split along creases), numbered as a walk over the corners in order would number
+/// them when it met each pair the first time; and each triangle's indices, material and edge
+/// flags. In parallel: a corner whose normal equals that of its vertex's first corner (all but
+/// the crease corners of a smooth mesh) is that variant at once; the rest are sorted out by a
+/// walk over them alone, in corner order.
+void number_output_vertices(const PolygonMesh& mesh, const std::vector<PendingTriangle>& triangles,
+                            const std::vector<Vec3>& corner_normal, MeshData& out) {
+    constexpr uint32_t k_none = UINT32_MAX;
+    const size_t corners = 3 * triangles.size();
+    const auto vertex_of = [&](size_t c) { return triangles[c / 3].v[c % 3]; };
+    // the first corner of each vertex
+    std::vector<uint32_t> first_corner(mesh.positions.size(), k_none);
+    hikari::parallel_for(size_t{0}, corners, [&](size_t c) {
+        std::atomic_ref<uint32_t> first(first_corner[vertex_of(c)]);
+        uint32_t seen = first.load(std::memory_order_relaxed);
+        while (c < seen &&
+               !first.compare_exchange_weak(seen, uint32_t(c), std::memory_order_relaxed)) {
+        }
+    });
+    // variant[c]: the corner that first used c's pair (itself where c is a first use)
+    std::vector<uint32_t> variant(corners);
+    std::vector<uint8_t> other_normal(corners, 0);
+    hikari::parallel_for(size_t{0}, corners, [&](size_t c) {
+        const uint32_t head = first_corner[vertex_of(c)];
+        if (same_bits(corner_normal[c], corner_normal[head]))
+            variant[c] = head;
+        else
+            other_normal[c] = 1;
+    });
+    // Corners with another normal than their vertex's first: each vertex's further variants in
+    // a short chain, met in corner order.
+    std::vector<uint32_t> chain_head(mesh.positions.size(), k_none), chain_next;
+    std::vector<uint32_t> chain_corner;
+    for (size_t c = 0; c < corners; ++c) {
+        if (!other_normal[c]) continue;
+        if (c % 65536 == 0) throw_if_cancelled();  // SIGINT / SIGTERM
+        const uint32_t v = vertex_of(c);
+        uint32_t last = k_none, at = chain_head[v];
+        while (at != k_none && !same_bits(corner_normal[chain_corner[at]], corner_normal[c])) {
+            last = at;
+            at = chain_next[at];
+        }
+        if (at == k_none) {
+            at = uint32_t(chain_corner.size());
+            (last == k_none ? chain_head[v] : chain_next[last]) = at;
+            chain_next.push_back(k_none);
+            chain_corner.push_back(uint32_t(c));
+        }
+        variant[c] = chain_corner[at];
+    }
+    // number the first uses in corner order (a prefix sum), then fill everything in parallel
+    std::vector<uint32_t> number(corners);
+    uint32_t count = 0;
+    for (size_t c = 0; c < corners; ++c) {
+        number[c] = count;
+        count += variant[c] == c;
+    }
+    const bool has_uvs = !mesh.uvs.empty(), has_colors = !mesh.colors.empty();
+    out.positions.resize(count);
+    out.normals.resize(count);
+    if (has_uvs) out.uvs.resize(count);
+    if (has_colors) out.colors.resize(count);
+    out.indices.resize(triangles.size());
+    out.material.resize(triangles.size());
+    out.edge_flags.resize(triangles.size());
+    hikari::parallel_for(size_t{0}, triangles.size(), [&](size_t t) {
+        const PendingTriangle& tri = triangles[t];
+        for (int slot = 0; slot < 3; ++slot) {
+            const size_t c = 3 * t + slot;
+            const uint32_t v = tri.v[slot];
+            out.indices[t][slot] = number[variant[c]];
+            if (variant[c] != c) continue;
+            const uint32_t n = number[c];
+            out.positions[n] = mesh.positions[v];
+            out.normals[n] = corner_normal[c];
+            if (has_uvs) out.uvs[n] = mesh.uvs[v];
+            if (has_colors) out.colors[n] = mesh.colors[v];
+        }
+        out.material[t] = mesh.face_material.empty() ? -1 : mesh.face_material[tri.face];
+        out.edge_flags[t] = tri.edge_flags;
+    });
+}
+
+}  // namespace
 
 MeshData build_mesh(const std::filesystem::path& file, PolygonMesh mesh,
                     const MeshOptions& options) {
@@ -600,70 +728,34 @@ MeshData build_mesh(const std::filesystem::path& file, PolygonMesh mesh,
 
     const size_t vertex_count = mesh.positions.size();
     std::vector<uint8_t> has_own_normal(vertex_count, 0);
-    bool any_computed = false;
-    for (const PendingTriangle& t : triangles) {
-        for (uint32_t v : t.v) {
-            has_own_normal[v] = !mesh.normals.empty() && is_usable_normal(mesh.normals[v]);
-            any_computed |= !has_own_normal[v];
-        }
+    std::atomic<bool> any_computed = mesh.normals.empty();
+    if (!mesh.normals.empty()) {
+        hikari::parallel_for(size_t{0}, vertex_count, [&](size_t v) {
+            has_own_normal[v] = is_usable_normal(mesh.normals[v]);
+        });
+        hikari::parallel_for(size_t{0}, triangles.size(), [&](size_t t) {
+            for (uint32_t v : triangles[t].v)
+                if (!has_own_normal[v]) any_computed.store(true, std::memory_order_relaxed);
+        });
     }
     std::optional<CornerNormals> computed;
     if (any_computed) computed.emplace(mesh, triangles, options);
-    // Every corner's normal, in parallel (each is a function of the mesh alone); the walk below
-    // that numbers the output vertices in order of first use stays sequential.
-    std::vector<Vec3> corner_normal(3 * triangles.size());
+    // Every corner's normal, in parallel (each is a function of the mesh alone).
+    std::vector<Vec3> corner_normal;
     throw_if_cancelled();  // SIGINT / SIGTERM
-    hikari::parallel_for(size_t{0}, triangles.size(), [&](size_t t) {
-        for (int slot = 0; slot < 3; ++slot) {
-            const uint32_t v = triangles[t].v[slot];
-            corner_normal[3 * t + slot] =
-                has_own_normal[v] ? normalize(mesh.normals[v]) : computed->normal(t, slot);
-        }
-    });
-
-    // Output vertices in order of first use: one per input vertex with its own normal, one per
-    // distinct computed normal of an input vertex otherwise (split along creases). The variants
-    // of one input vertex form a chain through next_variant.
-    constexpr uint32_t k_none = UINT32_MAX;
-    std::vector<uint32_t> first_variant(vertex_count, k_none);
-    std::vector<uint32_t> next_variant;
-    const bool has_uvs = !mesh.uvs.empty();
-    out.positions.reserve(vertex_count);
-    out.normals.reserve(vertex_count);
-    if (has_uvs) out.uvs.reserve(vertex_count);
-    const bool has_colors = !mesh.colors.empty();
-    if (has_colors) out.colors.reserve(vertex_count);
-    out.indices.reserve(triangles.size());
-    out.material.reserve(triangles.size());
-    out.edge_flags.reserve(triangles.size());
-    for (size_t t = 0; t < triangles.size(); ++t) {
-        if (t % 65536 == 0) throw_if_cancelled();  // SIGINT / SIGTERM
-        const PendingTriangle& tri = triangles[t];
-        std::array<uint32_t, 3> index{};
-        for (int slot = 0; slot < 3; ++slot) {
-            const uint32_t v = tri.v[slot];
-            const Vec3 n = corner_normal[3 * t + slot];
-            // Walk the chain; `last` is the variant whose link is followed (k_none: the head).
-            uint32_t last = k_none, at = first_variant[v];
-            while (at != k_none && !same_bits(out.normals[at], n)) {
-                last = at;
-                at = next_variant[at];
+    if (computed)
+        computed->all_normals(corner_normal);
+    else
+        corner_normal.resize(3 * triangles.size());
+    if (!mesh.normals.empty())
+        hikari::parallel_for(size_t{0}, triangles.size(), [&](size_t t) {
+            for (int slot = 0; slot < 3; ++slot) {
+                const uint32_t v = triangles[t].v[slot];
+                if (has_own_normal[v]) corner_normal[3 * t + slot] = normalize(mesh.normals[v]);
             }
-            if (at == k_none) {
-                at = static_cast<uint32_t>(out.positions.size());
-                (last == k_none ? first_variant[v] : next_variant[last]) = at;
-                next_variant.push_back(k_none);
-                out.positions.push_back(mesh.positions[v]);
-                out.normals.push_back(n);
-                if (has_uvs) out.uvs.push_back(mesh.uvs[v]);
-                if (has_colors) out.colors.push_back(mesh.colors[v]);
-            }
-            index[slot] = at;
-        }
-        out.indices.push_back(index);
-        out.material.push_back(mesh.face_material.empty() ? -1 : mesh.face_material[tri.face]);
-        out.edge_flags.push_back(tri.edge_flags);
-    }
+        });
+    throw_if_cancelled();  // SIGINT / SIGTERM
+    number_output_vertices(mesh, triangles, corner_normal, out);
     out.materials = std::move(mesh.materials);
     return out;
 }

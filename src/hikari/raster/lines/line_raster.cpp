@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include "hikari/core/color.h"
 #include "hikari/core/parallel.h"
 #include "hikari/core/ray.h"
@@ -142,15 +144,24 @@ Framebuffer rasterize_lines(const LineDrawing& d, Film film, bool aov_buffers,
     Framebuffer fb(std::move(film), d.width, d.height, aov_buffers);
     const int bands = (d.height + k_band_rows - 1) / k_band_rows;
     const std::vector<std::vector<uint32_t>> bins = bin_segments(d, bands);
+    // Each thread reuses one band's buffers from band to band: no allocation (and no page faults
+    // of fresh memory) per band.
+    const Vec3 background = encode_srgb(d.background);
+    tbb::enumerable_thread_specific<BandAccumulator> accumulators;
+    tbb::enumerable_thread_specific<std::vector<Vec3>> rows;
     hikari::parallel_for(0, bands, [&](int band) {
         const int row0 = band * k_band_rows, row1 = std::min(d.height, row0 + k_band_rows);
         const size_t n = static_cast<size_t>(row1 - row0) * d.width;
-        BandAccumulator acc{std::vector<Vec3>(n, encode_srgb(d.background)),
-                            std::vector<float>(n, 0.0f), std::vector<float>(n, k_infinity),
-                            std::vector<uint32_t>(n, k_background_id), occlusion};
+        BandAccumulator& acc = accumulators.local();
+        acc.color.assign(n, background);
+        acc.best_coverage.assign(n, 0.0f);
+        acc.best_depth.assign(n, k_infinity);
+        acc.best_id.assign(n, k_background_id);
+        acc.occlusion = occlusion;
         for (const uint32_t k : bins[static_cast<size_t>(band)])
             draw_segment(d, d.segments[k], row0, row1, acc);
-        std::vector<Vec3> row(static_cast<size_t>(d.width));
+        std::vector<Vec3>& row = rows.local();
+        row.resize(static_cast<size_t>(d.width));
         for (int y = row0; y < row1; ++y) {
             const size_t first = static_cast<size_t>(y - row0) * d.width;
             const size_t pixel = static_cast<size_t>(y) * d.width;
