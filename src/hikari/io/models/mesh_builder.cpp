@@ -15,8 +15,10 @@
 
 #include "hikari/core/cancel.h"
 #include "hikari/core/error.h"
+#include "hikari/core/huge_page_allocator.h"
 #include "hikari/core/memory_budget.h"
 #include "hikari/core/parallel.h"
+#include "hikari/core/parallel_pages.h"
 #include "hikari/geometry/polygon_triangulation.h"
 
 namespace hikari {
@@ -28,6 +30,22 @@ struct PendingTriangle {
     uint32_t face;
     uint8_t edge_flags;
 };
+
+/// A large working array whose elements are all written (in parallel) before they are read:
+/// left unwritten when made (no zero pass by one thread), in huge pages where the system grants
+/// them (fewer page faults).
+template <class T>
+using WorkArray = std::vector<T, UninitializedHugePageAllocator<T>>;
+using PendingTriangles = WorkArray<PendingTriangle>;
+
+/// v.resize(n), its new pages mapped first, by all threads (populate_pages) rather than faulted in
+/// one by one as the resize writes them: on a virtual machine a fault costs several times more.
+template <class T>
+void mapped_resize(std::vector<T>& v, size_t n) {
+    v.reserve(n);
+    populate_pages_in_parallel(v.data() + v.size(), (n - std::min(n, v.size())) * sizeof(T));
+    v.resize(n);
+}
 
 /// "FILE:LINE: " where the face's line is known, else "FILE: ".
 std::string face_where(const std::filesystem::path& file, const PolygonMesh& mesh, size_t face) {
@@ -104,8 +122,8 @@ void triangulate_chunk(const std::filesystem::path& file, const PolygonMesh& mes
 /// Every face split into triangles, in face order; degenerate triangles dropped and counted.
 /// Chunks of faces are triangulated in parallel and joined in order; the first bad face in file
 /// order is the one reported, as a loop over the faces would.
-std::vector<PendingTriangle> triangulate_faces(const std::filesystem::path& file,
-                                               const PolygonMesh& mesh, MeshData& out) {
+PendingTriangles triangulate_faces(const std::filesystem::path& file, const PolygonMesh& mesh,
+                                   MeshData& out) {
     const size_t faces = mesh.face_count();
     std::vector<TriangulatedChunk> chunks((faces + k_chunk_faces - 1) / k_chunk_faces);
     parallel_chunks(faces, k_chunk_faces, [&](size_t c, size_t f0, size_t f1) {
@@ -114,7 +132,7 @@ std::vector<PendingTriangle> triangulate_faces(const std::filesystem::path& file
     std::vector<size_t> offset(chunks.size() + 1, 0);
     for (size_t c = 0; c < chunks.size(); ++c)
         offset[c + 1] = offset[c] + chunks[c].triangles.size();
-    std::vector<PendingTriangle> triangles(offset.back());
+    PendingTriangles triangles(offset.back());
     hikari::parallel_for(size_t{0}, chunks.size(), [&](size_t c) {
         std::copy(chunks[c].triangles.begin(), chunks[c].triangles.end(),
                   triangles.begin() + static_cast<std::ptrdiff_t>(offset[c]));
@@ -150,7 +168,7 @@ constexpr uint32_t k_crowded_vertex = 64;
 /// 100,000 copies of one triangle (800 KB) made every ray that meets it test all of them (48 s
 /// for an 800 × 600 image); a repeat draws nothing the first copy does not. Repeats at
 /// uncrowded vertices cost little and are kept, so ordinary meshes are not searched.
-size_t drop_repeated_triangles(const PolygonMesh& mesh, std::vector<PendingTriangle>& triangles) {
+size_t drop_repeated_triangles(const PolygonMesh& mesh, PendingTriangles& triangles) {
     // How many triangle corners each vertex has (exact integer sums: any order gives them).
     std::vector<uint32_t> sharing(mesh.positions.size(), 0);
     hikari::parallel_for(size_t{0}, triangles.size(), [&](size_t t) {
@@ -273,7 +291,7 @@ std::array<uint32_t, 3> normal_key(Vec3 n) {
 /// linear time, within a cell's width of the exact rule.
 class CornerNormals {
   public:
-    CornerNormals(const PolygonMesh& mesh, const std::vector<PendingTriangle>& triangles,
+    CornerNormals(const PolygonMesh& mesh, const PendingTriangles& triangles,
                   const MeshOptions& options)
         : m_mesh(mesh), m_triangles(triangles) {
         m_unit_normal.resize(triangles.size());
@@ -316,7 +334,7 @@ class CornerNormals {
     /// Every corner's normal(t, slot) into normals[3 t + slot], point by point in parallel:
     /// the faces around a point are gathered once for all its corners (a corner by corner walk
     /// gathers them again for each), and each sum runs in the same corner order as normal()'s.
-    void all_normals(std::vector<Vec3>& normals) const {
+    void all_normals(WorkArray<Vec3>& normals) const {
         normals.resize(3 * m_triangles.size());
         hikari::parallel_for(
             tbb::blocked_range<size_t>(0, m_start.size() - 1, 1024),
@@ -585,10 +603,11 @@ class CornerNormals {
     }
 
     const PolygonMesh& m_mesh;
-    const std::vector<PendingTriangle>& m_triangles;
-    std::vector<Vec3> m_unit_normal;
-    std::vector<std::array<float, 3>> m_corner_angle;
-    std::vector<uint32_t> m_point, m_start, m_around;
+    const PendingTriangles& m_triangles;
+    WorkArray<Vec3> m_unit_normal;
+    WorkArray<std::array<float, 3>> m_corner_angle;
+    WorkArray<uint32_t> m_point, m_around;
+    std::vector<uint32_t> m_start;
     bool m_by_groups = false;
     float m_min_cos = -1.0f;
     /// Per corner (3 × triangle + corner): an index into m_shared_sums, or k_sum_own_face or
@@ -621,13 +640,15 @@ namespace {
 /// flags. In parallel: a corner whose normal equals that of its vertex's first corner (all but
 /// the crease corners of a smooth mesh) is that variant at once; the rest are sorted out by a
 /// walk over them alone, in corner order.
-void number_output_vertices(const PolygonMesh& mesh, const std::vector<PendingTriangle>& triangles,
-                            const std::vector<Vec3>& corner_normal, MeshData& out) {
+void number_output_vertices(const PolygonMesh& mesh, const PendingTriangles& triangles,
+                            const WorkArray<Vec3>& corner_normal, MeshData& out) {
     constexpr uint32_t k_none = UINT32_MAX;
     const size_t corners = 3 * triangles.size();
     const auto vertex_of = [&](size_t c) { return triangles[c / 3].v[c % 3]; };
     // the first corner of each vertex
-    std::vector<uint32_t> first_corner(mesh.positions.size(), k_none);
+    WorkArray<uint32_t> first_corner(mesh.positions.size());
+    hikari::parallel_for(size_t{0}, first_corner.size(),
+                         [&](size_t v) { first_corner[v] = k_none; });
     hikari::parallel_for(size_t{0}, corners, [&](size_t c) {
         std::atomic_ref<uint32_t> first(first_corner[vertex_of(c)]);
         uint32_t seen = first.load(std::memory_order_relaxed);
@@ -636,14 +657,12 @@ void number_output_vertices(const PolygonMesh& mesh, const std::vector<PendingTr
         }
     });
     // variant[c]: the corner that first used c's pair (itself where c is a first use)
-    std::vector<uint32_t> variant(corners);
-    std::vector<uint8_t> other_normal(corners, 0);
+    WorkArray<uint32_t> variant(corners);
+    WorkArray<uint8_t> other_normal(corners);
     hikari::parallel_for(size_t{0}, corners, [&](size_t c) {
         const uint32_t head = first_corner[vertex_of(c)];
-        if (same_bits(corner_normal[c], corner_normal[head]))
-            variant[c] = head;
-        else
-            other_normal[c] = 1;
+        other_normal[c] = !same_bits(corner_normal[c], corner_normal[head]);
+        variant[c] = head;
     });
     // Corners with another normal than their vertex's first: each vertex's further variants in
     // a short chain, met in corner order.
@@ -667,20 +686,20 @@ void number_output_vertices(const PolygonMesh& mesh, const std::vector<PendingTr
         variant[c] = chain_corner[at];
     }
     // number the first uses in corner order (a prefix sum), then fill everything in parallel
-    std::vector<uint32_t> number(corners);
+    WorkArray<uint32_t> number(corners);
     uint32_t count = 0;
     for (size_t c = 0; c < corners; ++c) {
         number[c] = count;
         count += variant[c] == c;
     }
     const bool has_uvs = !mesh.uvs.empty(), has_colors = !mesh.colors.empty();
-    out.positions.resize(count);
-    out.normals.resize(count);
-    if (has_uvs) out.uvs.resize(count);
-    if (has_colors) out.colors.resize(count);
-    out.indices.resize(triangles.size());
-    out.material.resize(triangles.size());
-    out.edge_flags.resize(triangles.size());
+    mapped_resize(out.positions, count);
+    mapped_resize(out.normals, count);
+    if (has_uvs) mapped_resize(out.uvs, count);
+    if (has_colors) mapped_resize(out.colors, count);
+    mapped_resize(out.indices, triangles.size());
+    mapped_resize(out.material, triangles.size());
+    mapped_resize(out.edge_flags, triangles.size());
     hikari::parallel_for(size_t{0}, triangles.size(), [&](size_t t) {
         const PendingTriangle& tri = triangles[t];
         for (int slot = 0; slot < 3; ++slot) {
@@ -710,7 +729,7 @@ MeshData build_mesh(const std::filesystem::path& file, PolygonMesh mesh,
         corners >= 2 * faces ? static_cast<double>(corners - 2 * faces) : 0.0;
     check_memory_need(mesh_build_bytes(triangle_count, static_cast<double>(mesh.positions.size())),
                       fmt::format("{}: building {:.0f} triangles", file.string(), triangle_count));
-    std::vector<PendingTriangle> triangles = triangulate_faces(file, mesh, out);
+    PendingTriangles triangles = triangulate_faces(file, mesh, out);
     if (const size_t repeats = drop_repeated_triangles(mesh, triangles); repeats > 0) {
         out.warnings.push_back(fmt::format(
             "{}: skipped {} repeated triangle(s) (the same corners and material as an earlier one)",
@@ -741,7 +760,7 @@ MeshData build_mesh(const std::filesystem::path& file, PolygonMesh mesh,
     std::optional<CornerNormals> computed;
     if (any_computed) computed.emplace(mesh, triangles, options);
     // Every corner's normal, in parallel (each is a function of the mesh alone).
-    std::vector<Vec3> corner_normal;
+    WorkArray<Vec3> corner_normal;
     throw_if_cancelled();  // SIGINT / SIGTERM
     if (computed)
         computed->all_normals(corner_normal);

@@ -20,8 +20,10 @@
 #include "hikari/core/cancel.h"
 #include "hikari/core/color.h"
 #include "hikari/core/error.h"
+#include "hikari/core/huge_page_allocator.h"
 #include "hikari/core/memory_budget.h"
 #include "hikari/core/parallel.h"
+#include "hikari/core/parallel_pages.h"
 #include "hikari/io/files/printable_text.h"
 #include "hikari/io/files/read_file.h"
 #include "hikari/io/models/text_number.h"
@@ -733,29 +735,58 @@ bool read_packed_faces(BinaryBody& body, const PlyElement& e, uint64_t vertex_co
     const PlyProperty& p = e.properties[0];
     if (p.count_type != PlyType::uint8 || (p.type != PlyType::int32 && p.type != PlyType::uint32))
         return false;
-    std::vector<const char*> indices;
-    indices.reserve(e.count);
     const size_t first_face = mesh.face_start.size() - 1;
+    const char* const base = body.data() + body.pos();
+    // Where every face is a triangle (a 3 before every 12 bytes, checked in parallel: the common
+    // case), each face's place in the file is known at once; otherwise a first pass walks the
+    // list lengths.
+    const bool all_triangles =
+        e.count <= body.left() / 13 &&
+        mesh.face_start.back() + 3 * e.count <= std::numeric_limits<uint32_t>::max() &&
+        hikari::parallel_reduce(
+            tbb::blocked_range<size_t>(0, e.count, 65536), true,
+            [&](const tbb::blocked_range<size_t>& r, bool all) {
+                for (size_t i = r.begin(); all && i != r.end(); ++i) all = base[13 * i] == 3;
+                return all;
+            },
+            [](bool a, bool b) { return a && b; });
+    std::vector<const char*> indices;
     // A face the first pass cannot take (too few corners, the file ends) is reported after the
     // faces before it are checked: an earlier bad index comes first, as in file order.
     std::exception_ptr stopped;
-    try {
-        for (uint64_t i = 0; i < e.count; ++i) {
-            body.begin_item("face", i);
-            const auto n = static_cast<uint8_t>(*body.take(1));
-            if (n < 3) body.fail(fmt::format("it has {} corners; a face needs at least 3", n));
-            const char* face_indices = body.take(4 * size_t{n});
-            if (mesh.face_start.back() + uint64_t{n} > std::numeric_limits<uint32_t>::max())
-                body.fail("more than 2^32 - 1 face corners in all");
-            indices.push_back(face_indices);
-            mesh.face_start.push_back(mesh.face_start.back() + n);
+    size_t taken = e.count;
+    if (all_triangles) {
+        const uint32_t start = mesh.face_start.back();
+        mesh.face_start.resize(first_face + 1 + e.count);
+        hikari::parallel_for(size_t{0}, size_t(e.count), [&](size_t i) {
+            mesh.face_start[first_face + 1 + i] = start + 3 * uint32_t(i + 1);
+        });
+        body.begin_item("face", 0);
+        body.take(13 * e.count);
+    } else {
+        indices.reserve(e.count);
+        try {
+            for (uint64_t i = 0; i < e.count; ++i) {
+                body.begin_item("face", i);
+                const auto n = static_cast<uint8_t>(*body.take(1));
+                if (n < 3) body.fail(fmt::format("it has {} corners; a face needs at least 3", n));
+                const char* face_indices = body.take(4 * size_t{n});
+                if (mesh.face_start.back() + uint64_t{n} > std::numeric_limits<uint32_t>::max())
+                    body.fail("more than 2^32 - 1 face corners in all");
+                indices.push_back(face_indices);
+                mesh.face_start.push_back(mesh.face_start.back() + n);
+            }
+        } catch (...) {
+            stopped = std::current_exception();
         }
-    } catch (...) {
-        stopped = std::current_exception();
+        taken = indices.size();
     }
+    const auto face_bytes = [&](size_t i) {
+        return all_triangles ? base + 13 * i + 1 : indices[i];
+    };
     const size_t corner0 = mesh.corners.size();
     mesh.corners.resize(mesh.face_start.back());
-    parallel_chunks(indices.size(), 65536, [&](size_t, size_t f0, size_t f1) {
+    parallel_chunks(taken, 65536, [&](size_t, size_t f0, size_t f1) {
         throw_if_cancelled();  // SIGINT / SIGTERM
         for (size_t i = f0; i < f1; ++i) {
             const size_t n = mesh.face_start[first_face + i + 1] - mesh.face_start[first_face + i];
@@ -765,13 +796,13 @@ bool read_packed_faces(BinaryBody& body, const PlyElement& e, uint64_t vertex_co
             // whose start-up cost is several times that of copying 12 bytes.
             for (size_t j = 0; j < n; ++j) {
                 uint32_t corner;
-                std::memcpy(&corner, indices[i] + 4 * j, 4);
+                std::memcpy(&corner, face_bytes(i) + 4 * j, 4);
                 if (corner >= vertex_count) {
                     const int64_t index = p.type == PlyType::int32
                                               ? int64_t{std::bit_cast<int32_t>(corner)}
                                               : int64_t{corner};
                     BinaryBody at = body;  // each chunk names its own item
-                    at.point_at("face", i, static_cast<size_t>(indices[i] - 1 - body.data()));
+                    at.point_at("face", i, static_cast<size_t>(face_bytes(i) - 1 - body.data()));
                     at.fail(
                         fmt::format("corner index {} is out of range (the file has {} "
                                     "vertices)",
@@ -902,13 +933,19 @@ void reserve(const fs::path& file, const PlyHeader& header, const PlyPlan& plan,
     check_memory_need(2.0 * (44.0 * static_cast<double>(plan.vertex_count) + 16.0 * faces),
                       fmt::format("{}: loading {} vertices and {} faces", file.string(),
                                   plan.vertex_count, face ? face->count : 0));
-    mesh.positions.reserve(plan.vertex_count);
-    if (plan.slots.has_normals()) mesh.normals.reserve(plan.vertex_count);
-    if (plan.slots.has_uvs()) mesh.uvs.reserve(plan.vertex_count);
-    if (plan.slots.has_colors()) mesh.colors.reserve(plan.vertex_count);
+    // Each array's pages mapped in one call (populate_pages), not faulted in one by one as they
+    // are filled: on a virtual machine a fault costs several times more.
+    auto reserve_mapped = [](auto& v, size_t n) {
+        v.reserve(n);
+        populate_pages_in_parallel(v.data(), n * sizeof(v[0]));
+    };
+    reserve_mapped(mesh.positions, plan.vertex_count);
+    if (plan.slots.has_normals()) reserve_mapped(mesh.normals, plan.vertex_count);
+    if (plan.slots.has_uvs()) reserve_mapped(mesh.uvs, plan.vertex_count);
+    if (plan.slots.has_colors()) reserve_mapped(mesh.colors, plan.vertex_count);
     if (face) {
-        mesh.face_start.reserve(face->count + 1);
-        mesh.corners.reserve(3 * face->count);
+        reserve_mapped(mesh.face_start, face->count + 1);
+        reserve_mapped(mesh.corners, 3 * face->count);
     }
 }
 
