@@ -4,7 +4,9 @@
 #include <bit>
 #include <utility>
 
+#include "hikari/core/huge_page_allocator.h"
 #include "hikari/core/parallel.h"
+#include "hikari/core/parallel_pages.h"
 
 namespace hikari {
 
@@ -45,7 +47,8 @@ std::vector<uint32_t> position_ranks(const std::vector<Vec3>& positions) {
 
 std::vector<ModelEdge> model_edges(const TriangleSet& triangles) {
     const std::vector<uint32_t> rank = position_ranks(triangles.positions);
-    std::vector<HalfEdge> half(3 * triangles.size());
+    // every element written below: no zero pass first, and huge pages where granted
+    std::vector<HalfEdge, UninitializedHugePageAllocator<HalfEdge>> half(3 * triangles.size());
     hikari::parallel_for(size_t{0}, triangles.size(), [&](size_t f) {
         for (uint32_t k = 0; k < 3; ++k) {
             uint64_t p = rank[triangles.indices[f][k]];
@@ -60,6 +63,8 @@ std::vector<ModelEdge> model_edges(const TriangleSet& triangles) {
         return x.ends != y.ends ? x.ends < y.ends : x.face_corner < y.face_corner;
     });
     std::vector<ModelEdge> edges;
+    edges.reserve(half.size() / 2 + 1);  // a closed mesh's edges; more grow the list
+    populate_pages_in_parallel(edges.data(), edges.capacity() * sizeof(ModelEdge));
     for (size_t i = 0; i < half.size();) {
         size_t j = i;
         ModelEdge e;
