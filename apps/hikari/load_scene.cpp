@@ -2,10 +2,12 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
+#include <tbb/global_control.h>
 
 #include "console.h"
 #include "hikari/core/memory_budget.h"
@@ -66,6 +68,11 @@ std::unique_ptr<Session> load_render_session(const RenderOptions& o) {
     set_limits(o);
     std::unique_ptr<Session> session;
     {
+        // --threads holds for loading too (the parsers and the mesh builder run in parallel)
+        std::optional<tbb::global_control> thread_limit;
+        if (o.threads > 0)
+            thread_limit.emplace(tbb::global_control::max_allowed_parallelism,
+                                 static_cast<size_t>(o.threads));
         ProgressReporter progress(!o.quiet, "loading " + o.scene_file, 0.0);
         session = std::make_unique<Session>(scene_source(o));
     }

@@ -1,6 +1,7 @@
 #include "hikari/raster/depth_sort.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <vector>
 
@@ -70,6 +71,36 @@ TEST(DepthSort, PaintLimitPaintsAPrefixOfTheOrder) {
     }
     DepthSortCounts one;
     EXPECT_GT(mismatches(depth_sort_visibility_counted(bars, k_size, k_size, one, 1), full), 0);
+}
+
+TEST(DepthSort, PaintingInBandsIsThePainterGoingDownTheOrderOnAnyThreadCount) {
+    // The paint runs bands of rows at the same time. Painting the first k + 1 polygons of the
+    // order differs from painting the first k exactly where polygon k covers (and shows it),
+    // whatever the thread count, and the paint counts add up the same way.
+    const std::vector<ScreenTriangle> tris = testing::random_triangles(3, 60, 90);
+    DepthSortTrace trace;
+    const VisibilityBuffer full = depth_sort_visibility_traced(tris, 97, 83, trace);
+    ASSERT_GT(trace.painted.size(), 20u);
+    DepthSortCounts all_counts;
+    EXPECT_EQ(depth_sort_visibility_counted(tris, 97, 83, all_counts).triangle, full.triangle);
+    VisibilityBuffer before = depth_sort_visibility_counted(tris, 97, 83, all_counts, 0);
+    EXPECT_EQ(all_counts.paints, 0u);
+    for (uint32_t k = 0; k < trace.painted.size(); ++k) {
+        DepthSortCounts counts, one_counts;
+        const VisibilityBuffer after = depth_sort_visibility_counted(tris, 97, 83, counts, k + 1);
+        VisibilityBuffer one;
+        {
+            const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+            one = depth_sort_visibility_counted(tris, 97, 83, one_counts, k + 1);
+        }
+        EXPECT_EQ(one.triangle, after.triangle) << k;
+        EXPECT_EQ(one_counts.paints, counts.paints) << k;
+        const uint32_t source = trace.source[trace.painted[k]];
+        for (size_t i = 0; i < after.triangle.size(); ++i)
+            if (after.triangle[i] != before.triangle[i]) EXPECT_EQ(after.triangle[i], source);
+        before = after;
+    }
+    EXPECT_EQ(before.triangle, full.triangle);
 }
 
 TEST(DepthSort, ResolvesCyclicOverlapBySplitting) {

@@ -5,12 +5,17 @@
 // happen. On std::threads TSan sees every fork and join and still reports any real race between
 // two tasks of a loop.
 
+#include <algorithm>
+#include <cstddef>
+#include <exception>
 #include <utility>
+#include <vector>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 #include <tbb/parallel_reduce.h>
+#include <tbb/parallel_sort.h>
 
 #if defined(__SANITIZE_THREAD__)
 #define HIKARI_TSAN 1
@@ -50,6 +55,13 @@ template <class Range, class Value, class Body, class Join>
 Value parallel_reduce(const Range& range, const Value& identity, const Body& body,
                       const Join& join) {
     return tbb::parallel_reduce(range, identity, body, join);
+}
+
+/// Sorts [first, last) by `less` on all threads. Not stable: for a result independent of the
+/// thread count, `less` must be a strict total order on the values (break ties by an index).
+template <class Iterator, class Less>
+void parallel_sort(Iterator first, Iterator last, const Less& less) {
+    tbb::parallel_sort(first, last, less);
 }
 
 #else
@@ -110,6 +122,11 @@ Value parallel_reduce(const Range& range, const Value& identity, const Body& bod
     return result;
 }
 
+template <class Iterator, class Less>
+void parallel_sort(Iterator first, Iterator last, const Less& less) {
+    std::sort(first, last, less);
+}
+
 #endif
 
 /// Calls `body(i)` for every i in [first, last) on all threads of the current arena.
@@ -119,6 +136,30 @@ void parallel_for(Index first, Index last, const Body& body) {
                          [&](const tbb::blocked_range<Index>& r) {
                              for (Index i = r.begin(); i != r.end(); ++i) body(i);
                          });
+}
+
+/// Calls `body(chunk, begin, end)` for the chunks [begin, end) of [0, count), `chunk_size` items
+/// each (the last may be shorter), on all threads. The chunks do not depend on the thread count,
+/// so per-chunk results joined in chunk order do not either. An exception thrown by a chunk
+/// stops no other; once all have run, the one thrown by the first chunk in order is rethrown
+/// (as a loop over the items in order would have thrown it).
+template <class Body>
+void parallel_chunks(size_t count, size_t chunk_size, const Body& body) {
+    chunk_size = std::max<size_t>(chunk_size, 1);
+    const size_t chunks = (count + chunk_size - 1) / chunk_size;
+    std::vector<std::exception_ptr> failed(chunks);
+    hikari::parallel_for(tbb::blocked_range<size_t>(0, chunks, 1),
+                         [&](const tbb::blocked_range<size_t>& r) {
+                             for (size_t c = r.begin(); c != r.end(); ++c) {
+                                 try {
+                                     body(c, c * chunk_size, std::min(count, (c + 1) * chunk_size));
+                                 } catch (...) {
+                                     failed[c] = std::current_exception();
+                                 }
+                             }
+                         });
+    for (const std::exception_ptr& e : failed)
+        if (e) std::rethrow_exception(e);
 }
 
 }  // namespace hikari

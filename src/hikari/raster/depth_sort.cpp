@@ -5,8 +5,10 @@
 #include <cstdint>
 #include <optional>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
+#include "hikari/core/parallel.h"
 #include "hikari/raster/box_grid.h"
 #include "hikari/raster/polygon_fill.h"
 #include "hikari/raster/shade_visibility.h"
@@ -27,6 +29,9 @@ constexpr int64_t k_splits_per_polygon = 4;
 constexpr int64_t k_work_base = int64_t{1} << 24;
 constexpr int64_t k_work_base_traced = int64_t{1} << 21;
 constexpr int64_t k_work_per_polygon = 64;
+
+/// Rows per band of the parallel paint.
+constexpr int k_paint_band_rows = 8;
 
 /// Relative tolerance of the plane-side and projection tests: a vertex this close to a plane counts
 /// as on it, so neighbours sharing an edge or a vertex never count as straddling each other.
@@ -543,17 +548,52 @@ void DepthSorter::paint(VisibilityBuffer& out, uint32_t limit) const {
         m_trace->paint_count.assign(out.triangle.size(), 0);
     }
     counts.polygons = m_order.size();
-    // painter's algorithm: later (nearer) polygons overwrite
-    const uint32_t painted = std::min<size_t>(m_order.size(), limit);
+    const auto painted = static_cast<uint32_t>(std::min<size_t>(m_order.size(), limit));
+    // Painter's algorithm (Fig 4.6): later (nearer) polygons overwrite. Bands of rows are
+    // independent (each pixel lies in one), so they are painted at the same time, each band
+    // taking the first `painted` polygons of the order that reach it, in that order: every pixel
+    // ends as one painter going down the whole order would leave it.
+    const int bands = (out.height + k_paint_band_rows - 1) / k_paint_band_rows;
+    std::vector<uint32_t> band_begin(static_cast<size_t>(bands) + 1, 0);
+    auto band_range = [&](const Polygon& p) {
+        const PixelRange rows = centre_range(p.y_min, p.y_max, out.height);
+        return rows.empty() ? std::pair{0, 0}
+                            : std::pair{rows.begin / k_paint_band_rows,
+                                        (rows.end - 1) / k_paint_band_rows + 1};
+    };
     for (uint32_t k = 0; k < painted; ++k) {
-        const Polygon& p = m_polygons[m_order[k]];
-        fill_convex_polygon(vertices(p), out.width, out.height, [&](int i, int j) {
-            const size_t pixel = static_cast<size_t>(j) * out.width + i;
-            out.triangle[pixel] = p.source;
-            ++counts.paints;
-            if (m_trace) m_trace->visible_paint[pixel] = k, ++m_trace->paint_count[pixel];
-        });
+        const auto [b0, b1] = band_range(m_polygons[m_order[k]]);
+        for (int b = b0; b < b1; ++b) ++band_begin[b + 1];
     }
+    for (int b = 0; b < bands; ++b) band_begin[b + 1] += band_begin[b];
+    std::vector<uint32_t> in_band(band_begin[bands]);  // positions in the order, band by band
+    std::vector<uint32_t> fill(band_begin.begin(), band_begin.end() - 1);
+    for (uint32_t k = 0; k < painted; ++k) {
+        const auto [b0, b1] = band_range(m_polygons[m_order[k]]);
+        for (int b = b0; b < b1; ++b) in_band[fill[b]++] = k;
+    }
+    std::vector<uint64_t> band_paints(static_cast<size_t>(bands), 0);
+    hikari::parallel_for(0, bands, [&](int b) {
+        const int row0 = b * k_paint_band_rows;
+        const int row1 = std::min(out.height, row0 + k_paint_band_rows);
+        uint64_t paints = 0;
+        for (uint32_t e = band_begin[b]; e < band_begin[b + 1]; ++e) {
+            const uint32_t k = in_band[e];
+            const Polygon& p = m_polygons[m_order[k]];
+            fill_convex_polygon_rows(
+                vertices(p), out.width, out.height, row0, row1, [&](int i, int j) {
+                    const size_t pixel = static_cast<size_t>(j) * out.width + i;
+                    out.triangle[pixel] = p.source;
+                    ++paints;
+                    if (m_trace) {
+                        m_trace->visible_paint[pixel] = k;
+                        ++m_trace->paint_count[pixel];
+                    }
+                });
+        }
+        band_paints[b] = paints;
+    });
+    for (const uint64_t n : band_paints) counts.paints += n;
 }
 
 VisibilityBuffer empty_buffer(int width, int height) {

@@ -57,9 +57,12 @@ inline double signed_area2(PolygonVertex a, PolygonVertex b, PolygonVertex c) {
 }
 
 /// Calls `fn(i, j)` for every pixel centre (i + 0.5, j + 0.5) of a width × height image that the
-/// convex polygon `poly` covers under the top-left rule. Vertices may be in either winding order.
+/// convex polygon `poly` covers under the top-left rule, on rows [row_begin, row_end) only (a band
+/// of the image: the pixels are those fill_convex_polygon gives on these rows). Vertices may be in
+/// either winding order.
 template <class Fn>
-void fill_convex_polygon(std::span<const PolygonVertex> poly, int width, int height, Fn&& fn) {
+void fill_convex_polygon_rows(std::span<const PolygonVertex> poly, int width, int height,
+                              int row_begin, int row_end, Fn&& fn) {
     const size_t n = poly.size();
     if (n < 3) return;
     double y_min = std::numeric_limits<double>::infinity();
@@ -69,7 +72,7 @@ void fill_convex_polygon(std::span<const PolygonVertex> poly, int width, int hei
         y_max = std::max(y_max, v.y);
     }
     const PixelRange rows = centre_range(y_min, y_max, height);
-    for (int j = rows.begin; j < rows.end; ++j) {
+    for (int j = std::max(rows.begin, row_begin); j < std::min(rows.end, row_end); ++j) {
         const double y = j + 0.5;
         double x_left = std::numeric_limits<double>::infinity();
         double x_right = -x_left;
@@ -84,6 +87,13 @@ void fill_convex_polygon(std::span<const PolygonVertex> poly, int width, int hei
         const PixelRange cols = centre_range(x_left, x_right, width);
         for (int i = cols.begin; i < cols.end; ++i) fn(i, j);
     }
+}
+
+/// Calls `fn(i, j)` for every pixel centre (i + 0.5, j + 0.5) of a width × height image that the
+/// convex polygon `poly` covers under the top-left rule. Vertices may be in either winding order.
+template <class Fn>
+void fill_convex_polygon(std::span<const PolygonVertex> poly, int width, int height, Fn&& fn) {
+    fill_convex_polygon_rows(poly, width, height, 0, height, std::forward<Fn>(fn));
 }
 
 }  // namespace hikari

@@ -3,6 +3,7 @@
 // faces can hide a line, or pierce a face, are among those in the cells the line or face
 // crosses.
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -14,10 +15,23 @@ namespace hikari {
 
 class ScreenGrid {
   public:
+    ScreenGrid() = default;
     /// Bins each of `triangles` into the cells (of `cell` pixels, > 0; fractions of a pixel
     /// allowed, for small images) its bounding box overlaps, in index order; the grid covers a
     /// width × height image, and what lies beyond it goes to the border cells.
     ScreenGrid(std::span<const ScreenTriangle> triangles, int width, int height, float cell);
+
+    /// Bins `triangles` into about `cells` cells over the box [lo, hi] of the image plane
+    /// (pixels), each triangle's box widened by `widen` × its larger side (so that a point just
+    /// outside a triangle, within a tolerance relative to its size, still finds it); triangles
+    /// whose widened box misses [lo, hi] are left out, the rest beyond it go to the border cells.
+    /// The cells follow the scene, not the pixels: the same triangles give the same grid at any
+    /// image size.
+    ScreenGrid(std::span<const ScreenTriangle> triangles, Vec2 lo, Vec2 hi, size_t cells,
+               float widen);
+
+    /// The smaller side of a cell, in pixels.
+    float cell_size() const { return std::min(m_cell_w, m_cell_h); }
 
     /// Calls visit(triangle index) for every triangle binned in a cell that the segment (a, b)
     /// passes within `reach` pixels of; a triangle in several such cells is visited once per
@@ -51,7 +65,12 @@ class ScreenGrid {
         for (uint32_t k = m_first[c]; k < m_first[c + 1]; ++k) visit(m_items[k]);
     }
 
-    float m_cell = 8;
+    /// Fills the cells with the triangles whose (widened) boxes `keep` accepts.
+    template <class Keep>
+    void bin(std::span<const ScreenTriangle> triangles, float widen, const Keep& keep);
+
+    Vec2 m_origin{0.0f, 0.0f};  ///< the corner of cell (0, 0), in pixels
+    float m_cell_w = 8, m_cell_h = 8;
     int m_columns = 1, m_rows = 1;
     std::vector<uint32_t> m_first;  ///< per cell, where its triangles start in m_items
     std::vector<uint32_t> m_items;  ///< triangle indices, cell after cell

@@ -1,6 +1,7 @@
 #include "hikari/io/models/mesh_builder.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <bit>
 #include <cmath>
@@ -232,4 +233,72 @@ TEST(MeshBuilder, VertexColoursFollowTheirVerticesThroughSplits) {
     EXPECT_TRUE(build_mesh("cube.ply", cube()).colors.empty());
 }
 
+namespace {
+
+/// A wavy grid of n × n quads (some concave, a bow tie in every few rows), a fan of 100
+/// triangles round one vertex (a crowded point), a repeated triangle there and a degenerate
+/// triangle: every path of build_mesh, over several of its chunks of faces.
+PolygonMesh busy_mesh(int n) {
+    PolygonMesh m;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i)
+            m.positions.push_back(
+                {float(i), float(j), 0.3f * std::sin(0.7f * float(i)) * std::cos(0.4f * float(j))});
+    const auto at = [&](int i, int j) { return uint32_t(j * (n + 1) + i); };
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            if ((i + j) % 7 == 0) {  // a concave pentagon: a corner pushed into the quad
+                m.positions.push_back({float(i) + 0.5f, float(j) + 0.6f, 0.0f});
+                const auto inner = uint32_t(m.positions.size() - 1);
+                m.add_face({at(i, j), at(i + 1, j), at(i + 1, j + 1), inner, at(i, j + 1)});
+            } else if (i == 3 && j % 5 == 0) {  // a bow tie
+                m.add_face({at(i, j), at(i + 1, j + 1), at(i + 1, j), at(i, j + 1)});
+            } else {
+                m.add_face({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+            }
+        }
+    const auto centre = uint32_t(m.positions.size());
+    m.positions.push_back({-5, -5, 1});
+    for (int k = 0; k < 100; ++k) {
+        const float a = 0.0628f * float(k), b = 0.0628f * float(k + 1);
+        m.positions.push_back({-5 + std::cos(a), -5 + std::sin(a), 1 + 0.1f * float(k % 3)});
+        m.positions.push_back({-5 + std::cos(b), -5 + std::sin(b), 1 + 0.1f * float(k % 2)});
+        m.add_face({centre, uint32_t(m.positions.size() - 2), uint32_t(m.positions.size() - 1)});
+    }
+    m.add_face({centre, uint32_t(m.positions.size() - 2), uint32_t(m.positions.size() - 1)});
+    m.add_face({0, 1, 0});  // a repeated corner: no area
+    return m;
+}
+
+TEST(MeshBuilder, SameMeshOnOneThreadAsOnAll) {
+    // triangulation, normals and welding run in parallel chunks: the result, its warnings and
+    // its counts must not depend on the thread count
+    const PolygonMesh mesh = busy_mesh(190);
+    ASSERT_GT(mesh.face_count(), 2u * 16384u);
+    MeshData one;
+    {
+        const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+        one = build_mesh("busy.obj", mesh);
+    }
+    const MeshData all = build_mesh("busy.obj", mesh);
+    EXPECT_EQ(one.positions, all.positions);
+    EXPECT_EQ(one.normals, all.normals);
+    EXPECT_EQ(one.indices, all.indices);
+    EXPECT_EQ(one.edge_flags, all.edge_flags);
+    EXPECT_EQ(one.warnings, all.warnings);
+    EXPECT_EQ(one.degenerate_skipped, all.degenerate_skipped);
+    EXPECT_EQ(all.degenerate_skipped, 1u);
+    ASSERT_FALSE(all.warnings.empty());  // the bow ties and the repeated triangle
+}
+
+TEST(MeshBuilder, TheFirstBadFaceInFileOrderIsReported) {
+    // chunks of faces are checked in parallel; a later chunk failing first must not win
+    PolygonMesh mesh = busy_mesh(190);
+    mesh.corners[mesh.face_start[34000] + 1] = 999999999;  // in a late chunk
+    mesh.corners[mesh.face_start[20000] + 2] = 888888888;  // in an earlier one
+    const std::string e = input_error_of([&] { build_mesh("busy.obj", mesh); });
+    EXPECT_NE(e.find("face 20001 refers to vertex 888888888"), std::string::npos) << e;
+}
+
+}  // namespace
 }  // namespace hikari

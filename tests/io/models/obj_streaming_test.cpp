@@ -59,14 +59,15 @@ TEST_F(ObjStreaming, DegenerateFloodIsRefusedUnderASmallMemoryLimit) {
 
 TEST_F(ObjStreaming, RefusedUpFrontWhenBuildingTheMeshWouldPassTheLimit) {
     // 100,000 triangles: the loader's arrays (about 7.6 MiB) fit under 12 MiB, but build_mesh
-    // runs while they are held and needs about 7 MiB more. The file is refused from the scan's
-    // counts, not after the seconds of loading it.
+    // runs while they are held and needs about 13 MiB more (its parallel passes keep every
+    // corner's normal and variant). The file is refused from the scan's counts, not after the
+    // seconds of loading it.
     write_text(m_dir / "t.obj", std::string(k_obj_quad) + repeated("f 1 2 3\n", 100000));
     set_memory_limit(12 << 20);
     const std::string e = obj_load_error(m_dir / "t.obj");
-    EXPECT_EQ(e.rfind((m_dir / "t.obj").string() + ": loading 100000 faces needs about 14.", 0), 0u)
+    EXPECT_EQ(e.rfind((m_dir / "t.obj").string() + ": loading 100000 faces needs about 20.", 0), 0u)
         << e;
-    set_memory_limit(16 << 20);
+    set_memory_limit(22 << 20);
     EXPECT_EQ(obj_load_error(m_dir / "t.obj"), "");
 }
 

@@ -1,6 +1,7 @@
 #include "hikari/io/models/ply_loader.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <fmt/format.h>
 
@@ -413,6 +414,71 @@ TEST(PlyLoader, MalformedBinaryBodiesNameTheByte) {
     EXPECT_NE(e.find(fmt::format("bad.ply: byte {}: vertex 3: position", body + 36)),
               std::string::npos)
         << e;
+}
+
+/// A binary strip of n × 1 quads as triangles: 2 (n + 1) vertices, 2 n faces.
+std::string binary_strip(int n) {
+    BinaryWriter w{
+        fmt::format("ply\nformat binary_little_endian 1.0\nelement vertex {}\n"
+                    "property float x\nproperty float y\nproperty float z\n"
+                    "element face {}\nproperty list uchar int vertex_indices\n"
+                    "end_header\n",
+                    2 * (n + 1), 2 * n)};
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; j < 2; ++j) w.put(float(i)).put(float(j)).put(0.01f * float(i % 7));
+    for (int i = 0; i < n; ++i) {
+        w.put(uint8_t{3}).put(2 * i).put(2 * i + 2).put(2 * i + 3);
+        w.put(uint8_t{3}).put(2 * i).put(2 * i + 3).put(2 * i + 1);
+    }
+    return w.bytes;
+}
+
+TEST(PlyLoader, BinaryBodiesReadTheSameOnOneThreadAsOnAll) {
+    // vertices and faces are copied and checked in parallel chunks
+    const std::string bytes = binary_strip(100000);
+    PolygonMesh one;
+    {
+        const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+        one = read_ply("strip.ply", bytes);
+    }
+    const PolygonMesh all = read_ply("strip.ply", bytes);
+    EXPECT_EQ(one.positions, all.positions);
+    EXPECT_EQ(one.corners, all.corners);
+    EXPECT_EQ(one.face_start, all.face_start);
+    ASSERT_EQ(all.face_count(), 200000u);
+    // face 150001 is the second of quad 75000: corners 150000, 150003, 150001
+    EXPECT_EQ(all.corners[3 * 150001 + 2], 150001u);
+}
+
+TEST(PlyLoader, TheFirstBadItemOfABinaryBodyIsReported) {
+    // a bad index in a late chunk, another in an early one, and a face of two corners after
+    // both: the error is the earliest in the file, as a reader going face by face finds it
+    const std::string good = binary_strip(100000);
+    const size_t body = good.find("end_header\n") + 11;
+    const size_t faces = body + 200002 * 12;
+    auto corrupt = [&](std::string bytes, size_t face, int corner, int value) {
+        std::memcpy(&bytes[faces + 13 * face + 1 + 4 * corner], &value, 4);
+        return bytes;
+    };
+    std::string bad = corrupt(corrupt(good, 190000, 1, 500000), 70000, 2, -4);
+    std::string e = ply_error(bad);
+    EXPECT_NE(e.find(fmt::format("byte {}: face 70000: corner index -4", faces + 13 * 70000)),
+              std::string::npos)
+        << e;
+    bad[faces + 13 * 180000] = 2;
+    e = ply_error(bad);
+    EXPECT_NE(e.find("face 70000: corner index -4"), std::string::npos) << e;
+    std::string two = good;
+    two[faces + 13 * 180000] = 2;
+    e = ply_error(two);
+    EXPECT_NE(e.find("face 180000: it has 2 corners"), std::string::npos) << e;
+    // the first non-finite vertex of several
+    std::string nan = good;
+    const float not_a_number = std::nanf("");
+    std::memcpy(&nan[body + 150000 * 12], &not_a_number, 4);
+    std::memcpy(&nan[body + 90000 * 12 + 8], &not_a_number, 4);
+    e = ply_error(nan);
+    EXPECT_NE(e.find("vertex 90000: position"), std::string::npos) << e;
 }
 
 TEST(PlyLoader, BadListLengthsInTheGenericBinaryPath) {

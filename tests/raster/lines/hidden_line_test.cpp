@@ -1,5 +1,6 @@
 #include "hikari/raster/lines/hidden_line.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
@@ -270,6 +271,32 @@ TEST(HiddenLine, ResultDoesNotDependOnThreadCount) {
     for (size_t k = 0; k < one.segments.size(); ++k) {
         EXPECT_EQ(one.segments[k].a.x, all.segments[k].a.x);
         EXPECT_EQ(one.segments[k].b.y, all.segments[k].b.y);
+    }
+}
+
+TEST(HiddenLine, ATinyImageOfADenseMeshTakesNoMoreWorkThanALargeOne) {
+    // The candidate grid follows the projected scene, not the pixels. At 1 × 1, where the model
+    // overflows the image, 8-pixel cells (or cells of 1/64 pixel over the image) once put most
+    // faces into the border cells, and every line near the border was tested against all of
+    // them: minutes for the bunny (past this test's time limit), where 1920 × 1080 takes a
+    // fraction of a second. Now both take the same work.
+    auto scene_of = [](int size) {
+        return testing::raster_scene_from(fmt::format(R"({{
+          "camera": {{"eye": [-0.02, 0.11, 0.3], "look_at": [-0.02, 0.11, 0], "fov_y": 20,
+                      "width": {0}, "height": {0}}},
+          "objects": [{{"type": "mesh", "file": "scenes/models/stanford-bunny.obj"}}]}})",
+                                                      size));
+    };
+    for (const int size : {1, 3, 200}) {
+        const LineDrawing d = draw_hidden_lines(scene_of(size), {});
+        EXPECT_EQ(d.width, size);
+        // every segment lies in the view widened by the line width (1 pixel) it was clipped to
+        for (const LineSegment& s : d.segments)
+            for (const Vec2 p : {s.a, s.b}) {
+                EXPECT_GE(p.x, -1.01f) << size;
+                EXPECT_LE(p.x, float(size) + 1.01f) << size;
+            }
+        if (size == 200) EXPECT_GT(d.segments.size(), 1000u);
     }
 }
 

@@ -1,6 +1,7 @@
 #include "hikari/raster/lines/wireframe.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include "../../io/temp_dir.h"
 #include "../raster_test_util.h"
@@ -75,6 +76,31 @@ TEST(Wireframe, RasterizedLinesCarryColourDepthAndId) {
     EXPECT_NEAR(fb.depth[i], std::sqrt(4.0f + 1.0f), 1e-3f);  // the point (0, −1, −2)
     EXPECT_EQ(fb.id[i], 1u);
     EXPECT_EQ(fb.id[0], k_background_id);
+}
+
+TEST(Wireframe, SameBytesOnOneThreadAsOnAll) {
+    // the edges are found, sorted and rasterized in parallel (bands of rows, each taking its
+    // segments in drawing order): the image does not depend on the thread count
+    const Scene scene = testing::raster_scene_from(R"({
+      "camera": {"eye": [0, 1, 4], "look_at": [0, 0, 0], "width": 150, "height": 110},
+      "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1},
+                  {"type": "sphere", "center": [0.8, 0, 0.3], "radius": 0.6}]})");
+    auto render = [&] {
+        return render_wireframe(scene, Film(150, 110, FilmFormat::linear), {}, {}).film.linear();
+    };
+    Image one;
+    {
+        const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+        one = render();
+    }
+    const Image all = render();
+    ASSERT_EQ(one.pixels.size(), all.pixels.size());
+    size_t drawn = 0;
+    for (size_t i = 0; i < one.pixels.size(); ++i) {
+        EXPECT_EQ(one.pixels[i], all.pixels[i]) << i;
+        drawn += all.pixels[i] != all.pixels[0];
+    }
+    EXPECT_GT(drawn, 500u);
 }
 
 }  // namespace

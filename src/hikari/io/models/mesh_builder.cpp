@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <optional>
 #include <tuple>
@@ -13,7 +15,10 @@
 
 #include "hikari/core/cancel.h"
 #include "hikari/core/error.h"
+#include "hikari/core/huge_page_allocator.h"
 #include "hikari/core/memory_budget.h"
+#include "hikari/core/parallel.h"
+#include "hikari/core/parallel_pages.h"
 #include "hikari/geometry/polygon_triangulation.h"
 
 namespace hikari {
@@ -26,6 +31,22 @@ struct PendingTriangle {
     uint8_t edge_flags;
 };
 
+/// A large working array whose elements are all written (in parallel) before they are read:
+/// left unwritten when made (no zero pass by one thread), in huge pages where the system grants
+/// them (fewer page faults).
+template <class T>
+using WorkArray = std::vector<T, UninitializedHugePageAllocator<T>>;
+using PendingTriangles = WorkArray<PendingTriangle>;
+
+/// v.resize(n), its new pages mapped first, by all threads (populate_pages) rather than faulted in
+/// one by one as the resize writes them: on a virtual machine a fault costs several times more.
+template <class T>
+void mapped_resize(std::vector<T>& v, size_t n) {
+    v.reserve(n);
+    populate_pages_in_parallel(v.data() + v.size(), (n - std::min(n, v.size())) * sizeof(T));
+    v.resize(n);
+}
+
 /// "FILE:LINE: " where the face's line is known, else "FILE: ".
 std::string face_where(const std::filesystem::path& file, const PolygonMesh& mesh, size_t face) {
     if (face < mesh.face_line.size() && mesh.face_line[face] > 0)
@@ -37,19 +58,28 @@ std::string face_where(const std::filesystem::path& file, const PolygonMesh& mes
 /// not finite for a triangle that cannot be drawn.
 float doubled_area(Vec3 p1, Vec3 p2, Vec3 p3) { return length(cross(p2 - p1, p3 - p2)); }
 
-/// Every face split into triangles, in face order; degenerate triangles dropped and counted.
-std::vector<PendingTriangle> triangulate_faces(const std::filesystem::path& file,
-                                               const PolygonMesh& mesh, MeshData& out) {
-    const size_t vertex_count = mesh.positions.size();
+/// Faces per chunk of the parallel passes: fixed, so what the chunks find, joined in chunk
+/// order, does not depend on the thread count.
+constexpr size_t k_chunk_faces = 16384;
+
+/// What one chunk of faces gives: its triangles, and what it has to report.
+struct TriangulatedChunk {
     std::vector<PendingTriangle> triangles;
-    triangles.reserve(mesh.corners.size() >= 2 * mesh.face_count()
-                          ? mesh.corners.size() - 2 * mesh.face_count()
-                          : 0);
+    size_t degenerate = 0;
+    std::vector<size_t> crossing_faces;  ///< faces that cross themselves, in order
+};
+
+/// Faces [f0, f1) split into triangles, in face order; degenerate triangles dropped and counted.
+void triangulate_chunk(const std::filesystem::path& file, const PolygonMesh& mesh, size_t f0,
+                       size_t f1, TriangulatedChunk& out) {
+    const size_t vertex_count = mesh.positions.size();
+    const uint32_t corner_begin = mesh.face_start[f0], corner_end = mesh.face_start[f1];
+    out.triangles.reserve(
+        corner_end - corner_begin >= 2 * (f1 - f0) ? corner_end - corner_begin - 2 * (f1 - f0) : 0);
     std::vector<PolygonTriangle> local;
     std::vector<Vec3> outline;
-    size_t crossing_faces = 0;
-    for (size_t f = 0; f < mesh.face_count(); ++f) {
-        if (f % 65536 == 0) throw_if_cancelled();  // SIGINT / SIGTERM
+    throw_if_cancelled();  // SIGINT / SIGTERM
+    for (size_t f = f0; f < f1; ++f) {
         const uint32_t begin = mesh.face_start[f], end = mesh.face_start[f + 1];
         const uint32_t n = end - begin;
         if (n < 3 || n > k_max_face_corners)
@@ -69,15 +99,8 @@ std::vector<PendingTriangle> triangulate_faces(const std::filesystem::path& file
             outline.clear();
             for (uint32_t k = begin; k < end; ++k)
                 outline.push_back(mesh.positions[mesh.corners[k]]);
-            if (triangulate_polygon(outline, local) == PolygonShape::SelfIntersecting) {
-                if (crossing_faces < 3)
-                    out.warnings.push_back(
-                        face_where(file, mesh, f) +
-                        fmt::format("face {} crosses itself; its triangles may cover area outside "
-                                    "its outline",
-                                    f + 1));
-                ++crossing_faces;
-            }
+            if (triangulate_polygon(outline, local) == PolygonShape::SelfIntersecting)
+                out.crossing_faces.push_back(f);
         }
         for (const PolygonTriangle& t : local) {
             const PendingTriangle p{
@@ -88,10 +111,44 @@ std::vector<PendingTriangle> triangulate_faces(const std::filesystem::path& file
             const float area2 = doubled_area(mesh.positions[p.v[0]], mesh.positions[p.v[1]],
                                              mesh.positions[p.v[2]]);
             if (!(area2 > 0.0f) || !std::isfinite(area2)) {
-                ++out.degenerate_skipped;
+                ++out.degenerate;
                 continue;
             }
-            triangles.push_back(p);
+            out.triangles.push_back(p);
+        }
+    }
+}
+
+/// Every face split into triangles, in face order; degenerate triangles dropped and counted.
+/// Chunks of faces are triangulated in parallel and joined in order; the first bad face in file
+/// order is the one reported, as a loop over the faces would.
+PendingTriangles triangulate_faces(const std::filesystem::path& file, const PolygonMesh& mesh,
+                                   MeshData& out) {
+    const size_t faces = mesh.face_count();
+    std::vector<TriangulatedChunk> chunks((faces + k_chunk_faces - 1) / k_chunk_faces);
+    parallel_chunks(faces, k_chunk_faces, [&](size_t c, size_t f0, size_t f1) {
+        triangulate_chunk(file, mesh, f0, f1, chunks[c]);
+    });
+    std::vector<size_t> offset(chunks.size() + 1, 0);
+    for (size_t c = 0; c < chunks.size(); ++c)
+        offset[c + 1] = offset[c] + chunks[c].triangles.size();
+    PendingTriangles triangles(offset.back());
+    hikari::parallel_for(size_t{0}, chunks.size(), [&](size_t c) {
+        std::copy(chunks[c].triangles.begin(), chunks[c].triangles.end(),
+                  triangles.begin() + static_cast<std::ptrdiff_t>(offset[c]));
+        chunks[c].triangles = {};
+    });
+    size_t crossing_faces = 0;
+    for (const TriangulatedChunk& chunk : chunks) {
+        out.degenerate_skipped += chunk.degenerate;
+        for (const size_t f : chunk.crossing_faces) {
+            if (crossing_faces < 3)
+                out.warnings.push_back(
+                    face_where(file, mesh, f) +
+                    fmt::format("face {} crosses itself; its triangles may cover area outside "
+                                "its outline",
+                                f + 1));
+            ++crossing_faces;
         }
     }
     if (crossing_faces > 3)
@@ -111,10 +168,13 @@ constexpr uint32_t k_crowded_vertex = 64;
 /// 100,000 copies of one triangle (800 KB) made every ray that meets it test all of them (48 s
 /// for an 800 × 600 image); a repeat draws nothing the first copy does not. Repeats at
 /// uncrowded vertices cost little and are kept, so ordinary meshes are not searched.
-size_t drop_repeated_triangles(const PolygonMesh& mesh, std::vector<PendingTriangle>& triangles) {
+size_t drop_repeated_triangles(const PolygonMesh& mesh, PendingTriangles& triangles) {
+    // How many triangle corners each vertex has (exact integer sums: any order gives them).
     std::vector<uint32_t> sharing(mesh.positions.size(), 0);
-    for (const PendingTriangle& t : triangles)
-        for (const uint32_t v : t.v) sharing[v] = std::min(sharing[v] + 1, k_crowded_vertex + 1);
+    hikari::parallel_for(size_t{0}, triangles.size(), [&](size_t t) {
+        for (const uint32_t v : triangles[t].v)
+            std::atomic_ref<uint32_t>(sharing[v]).fetch_add(1, std::memory_order_relaxed);
+    });
     std::vector<uint32_t> crowded;
     for (size_t i = 0; i < triangles.size(); ++i) {
         const std::array<uint32_t, 3>& v = triangles[i].v;
@@ -231,13 +291,13 @@ std::array<uint32_t, 3> normal_key(Vec3 n) {
 /// linear time, within a cell's width of the exact rule.
 class CornerNormals {
   public:
-    CornerNormals(const PolygonMesh& mesh, const std::vector<PendingTriangle>& triangles,
+    CornerNormals(const PolygonMesh& mesh, const PendingTriangles& triangles,
                   const MeshOptions& options)
         : m_mesh(mesh), m_triangles(triangles) {
         m_unit_normal.resize(triangles.size());
         m_corner_angle.resize(triangles.size());
-        for (size_t t = 0; t < triangles.size(); ++t) {
-            if (t % 65536 == 0) throw_if_cancelled();  // SIGINT / SIGTERM
+        throw_if_cancelled();  // SIGINT / SIGTERM
+        hikari::parallel_for(size_t{0}, triangles.size(), [&](size_t t) {
             const auto& v = triangles[t].v;
             const Vec3 p[3] = {mesh.positions[v[0]], mesh.positions[v[1]], mesh.positions[v[2]]};
             m_unit_normal[t] = normalize(cross(p[1] - p[0], p[2] - p[1]));
@@ -246,7 +306,7 @@ class CornerNormals {
                            b = normalize(p[(k + 2) % 3] - p[k]);
                 m_corner_angle[t][k] = std::acos(std::clamp(dot(a, b), -1.0f, 1.0f));
             }
-        }
+        });
         m_by_groups = std::any_of(mesh.smoothing_group.begin(), mesh.smoothing_group.end(),
                                   [](uint32_t g) { return g != 0; });
         const float crease = std::clamp(options.crease_angle_degrees, 0.0f, 180.0f);
@@ -269,6 +329,45 @@ class CornerNormals {
             sum = m_shared_sums[shared];
         }
         return is_usable_normal(sum) ? normalize(sum) : m_unit_normal[t];
+    }
+
+    /// Every corner's normal(t, slot) into normals[3 t + slot], point by point in parallel:
+    /// the faces around a point are gathered once for all its corners (a corner by corner walk
+    /// gathers them again for each), and each sum runs in the same corner order as normal()'s.
+    void all_normals(WorkArray<Vec3>& normals) const {
+        normals.resize(3 * m_triangles.size());
+        hikari::parallel_for(
+            tbb::blocked_range<size_t>(0, m_start.size() - 1, 1024),
+            [&](const tbb::blocked_range<size_t>& points) {
+                std::vector<Vec3> unit, weighted;
+                for (size_t p = points.begin(); p != points.end(); ++p) {
+                    const uint32_t begin = m_start[p], end = m_start[p + 1];
+                    unit.clear();
+                    weighted.clear();
+                    for (uint32_t k = begin; k < end; ++k) {
+                        unit.push_back(m_unit_normal[m_around[k] / 3]);
+                        weighted.push_back(weighted_normal(m_around[k]));
+                    }
+                    for (uint32_t k = begin; k < end; ++k) {
+                        const uint32_t corner = m_around[k];
+                        const size_t t = corner / 3;
+                        if (!m_shared_sum_of.empty() &&
+                            m_shared_sum_of[corner] != k_sum_at_corner) {
+                            normals[corner] = normal(t, int(corner % 3));
+                            continue;
+                        }
+                        Vec3 sum(0.0f);
+                        for (uint32_t o = begin; o < end; ++o) {
+                            const uint32_t other = m_around[o] / 3;
+                            if (other == t ||
+                                (m_by_groups ? smoothed_together(t, other)
+                                             : within_crease(unit[k - begin], unit[o - begin])))
+                                sum += weighted[o - begin];
+                        }
+                        normals[corner] = is_usable_normal(sum) ? normalize(sum) : m_unit_normal[t];
+                    }
+                }
+            });
     }
 
   private:
@@ -338,7 +437,8 @@ class CornerNormals {
             std::memcpy(b.data(), &m_mesh.positions[i], sizeof(Vec3));
             return b;
         };
-        std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+        // a strict total order (ties broken by index): the same result on any thread count
+        hikari::parallel_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
             return std::pair(bits(a), a) < std::pair(bits(b), b);
         });
         m_point.resize(n);
@@ -503,10 +603,11 @@ class CornerNormals {
     }
 
     const PolygonMesh& m_mesh;
-    const std::vector<PendingTriangle>& m_triangles;
-    std::vector<Vec3> m_unit_normal;
-    std::vector<std::array<float, 3>> m_corner_angle;
-    std::vector<uint32_t> m_point, m_start, m_around;
+    const PendingTriangles& m_triangles;
+    WorkArray<Vec3> m_unit_normal;
+    WorkArray<std::array<float, 3>> m_corner_angle;
+    WorkArray<uint32_t> m_point, m_around;
+    std::vector<uint32_t> m_start;
     bool m_by_groups = false;
     float m_min_cos = -1.0f;
     /// Per corner (3 × triangle + corner): an index into m_shared_sums, or k_sum_own_face or
@@ -524,10 +625,100 @@ class CornerNormals {
 
 double mesh_build_bytes(double triangles, double vertices) {
     // Per triangle the pending one, its output indices, material and edge flags, and the
-    // computed normals' face normal, corner angles and shared sums; per vertex its output
-    // attributes and the bookkeeping of normal variants (about 40 bytes).
-    return triangles * (sizeof(PendingTriangle) + 53.0) + 40.0 * vertices;
+    // computed normals' face normal, corner angles and shared sums, and per corner its normal,
+    // variant, number and a flag (the parallel numbering of output vertices); per vertex its
+    // output attributes and the bookkeeping of normal variants (about 40 bytes).
+    return triangles * (sizeof(PendingTriangle) + 53.0 + 3.0 * (sizeof(Vec3) + 9.0)) +
+           40.0 * vertices;
 }
+
+namespace {
+
+/// The output vertices, in order of first use: one per distinct (input vertex, normal) pair (a
+/// vertex is split along creases), numbered as a walk over the corners in order would number
+/// them when it met each pair the first time; and each triangle's indices, material and edge
+/// flags. In parallel: a corner whose normal equals that of its vertex's first corner (all but
+/// the crease corners of a smooth mesh) is that variant at once; the rest are sorted out by a
+/// walk over them alone, in corner order.
+void number_output_vertices(const PolygonMesh& mesh, const PendingTriangles& triangles,
+                            const WorkArray<Vec3>& corner_normal, MeshData& out) {
+    constexpr uint32_t k_none = UINT32_MAX;
+    const size_t corners = 3 * triangles.size();
+    const auto vertex_of = [&](size_t c) { return triangles[c / 3].v[c % 3]; };
+    // the first corner of each vertex
+    WorkArray<uint32_t> first_corner(mesh.positions.size());
+    hikari::parallel_for(size_t{0}, first_corner.size(),
+                         [&](size_t v) { first_corner[v] = k_none; });
+    hikari::parallel_for(size_t{0}, corners, [&](size_t c) {
+        std::atomic_ref<uint32_t> first(first_corner[vertex_of(c)]);
+        uint32_t seen = first.load(std::memory_order_relaxed);
+        while (c < seen &&
+               !first.compare_exchange_weak(seen, uint32_t(c), std::memory_order_relaxed)) {
+        }
+    });
+    // variant[c]: the corner that first used c's pair (itself where c is a first use)
+    WorkArray<uint32_t> variant(corners);
+    WorkArray<uint8_t> other_normal(corners);
+    hikari::parallel_for(size_t{0}, corners, [&](size_t c) {
+        const uint32_t head = first_corner[vertex_of(c)];
+        other_normal[c] = !same_bits(corner_normal[c], corner_normal[head]);
+        variant[c] = head;
+    });
+    // Corners with another normal than their vertex's first: each vertex's further variants in
+    // a short chain, met in corner order.
+    std::vector<uint32_t> chain_head(mesh.positions.size(), k_none), chain_next;
+    std::vector<uint32_t> chain_corner;
+    for (size_t c = 0; c < corners; ++c) {
+        if (!other_normal[c]) continue;
+        if (c % 65536 == 0) throw_if_cancelled();  // SIGINT / SIGTERM
+        const uint32_t v = vertex_of(c);
+        uint32_t last = k_none, at = chain_head[v];
+        while (at != k_none && !same_bits(corner_normal[chain_corner[at]], corner_normal[c])) {
+            last = at;
+            at = chain_next[at];
+        }
+        if (at == k_none) {
+            at = uint32_t(chain_corner.size());
+            (last == k_none ? chain_head[v] : chain_next[last]) = at;
+            chain_next.push_back(k_none);
+            chain_corner.push_back(uint32_t(c));
+        }
+        variant[c] = chain_corner[at];
+    }
+    // number the first uses in corner order (a prefix sum), then fill everything in parallel
+    WorkArray<uint32_t> number(corners);
+    uint32_t count = 0;
+    for (size_t c = 0; c < corners; ++c) {
+        number[c] = count;
+        count += variant[c] == c;
+    }
+    const bool has_uvs = !mesh.uvs.empty(), has_colors = !mesh.colors.empty();
+    mapped_resize(out.positions, count);
+    mapped_resize(out.normals, count);
+    if (has_uvs) mapped_resize(out.uvs, count);
+    if (has_colors) mapped_resize(out.colors, count);
+    mapped_resize(out.indices, triangles.size());
+    mapped_resize(out.material, triangles.size());
+    mapped_resize(out.edge_flags, triangles.size());
+    hikari::parallel_for(size_t{0}, triangles.size(), [&](size_t t) {
+        const PendingTriangle& tri = triangles[t];
+        for (int slot = 0; slot < 3; ++slot) {
+            const size_t c = 3 * t + slot;
+            const uint32_t v = tri.v[slot];
+            out.indices[t][slot] = number[variant[c]];
+            if (variant[c] != c) continue;
+            const uint32_t n = number[c];
+            out.positions[n] = mesh.positions[v];
+            out.normals[n] = corner_normal[c];
+            if (has_uvs) out.uvs[n] = mesh.uvs[v];
+            if (has_colors) out.colors[n] = mesh.colors[v];
+        }
+        out.material[t] = mesh.face_material.empty() ? -1 : mesh.face_material[tri.face];
+        out.edge_flags[t] = tri.edge_flags;
+    });
+}
+
+}  // namespace
 
 MeshData build_mesh(const std::filesystem::path& file, PolygonMesh mesh,
                     const MeshOptions& options) {
@@ -538,7 +729,7 @@ MeshData build_mesh(const std::filesystem::path& file, PolygonMesh mesh,
         corners >= 2 * faces ? static_cast<double>(corners - 2 * faces) : 0.0;
     check_memory_need(mesh_build_bytes(triangle_count, static_cast<double>(mesh.positions.size())),
                       fmt::format("{}: building {:.0f} triangles", file.string(), triangle_count));
-    std::vector<PendingTriangle> triangles = triangulate_faces(file, mesh, out);
+    PendingTriangles triangles = triangulate_faces(file, mesh, out);
     if (const size_t repeats = drop_repeated_triangles(mesh, triangles); repeats > 0) {
         out.warnings.push_back(fmt::format(
             "{}: skipped {} repeated triangle(s) (the same corners and material as an earlier one)",
@@ -556,60 +747,34 @@ MeshData build_mesh(const std::filesystem::path& file, PolygonMesh mesh,
 
     const size_t vertex_count = mesh.positions.size();
     std::vector<uint8_t> has_own_normal(vertex_count, 0);
-    bool any_computed = false;
-    for (const PendingTriangle& t : triangles) {
-        for (uint32_t v : t.v) {
-            has_own_normal[v] = !mesh.normals.empty() && is_usable_normal(mesh.normals[v]);
-            any_computed |= !has_own_normal[v];
-        }
+    std::atomic<bool> any_computed = mesh.normals.empty();
+    if (!mesh.normals.empty()) {
+        hikari::parallel_for(size_t{0}, vertex_count, [&](size_t v) {
+            has_own_normal[v] = is_usable_normal(mesh.normals[v]);
+        });
+        hikari::parallel_for(size_t{0}, triangles.size(), [&](size_t t) {
+            for (uint32_t v : triangles[t].v)
+                if (!has_own_normal[v]) any_computed.store(true, std::memory_order_relaxed);
+        });
     }
     std::optional<CornerNormals> computed;
     if (any_computed) computed.emplace(mesh, triangles, options);
-
-    // Output vertices in order of first use: one per input vertex with its own normal, one per
-    // distinct computed normal of an input vertex otherwise (split along creases). The variants
-    // of one input vertex form a chain through next_variant.
-    constexpr uint32_t k_none = UINT32_MAX;
-    std::vector<uint32_t> first_variant(vertex_count, k_none);
-    std::vector<uint32_t> next_variant;
-    const bool has_uvs = !mesh.uvs.empty();
-    out.positions.reserve(vertex_count);
-    out.normals.reserve(vertex_count);
-    if (has_uvs) out.uvs.reserve(vertex_count);
-    const bool has_colors = !mesh.colors.empty();
-    if (has_colors) out.colors.reserve(vertex_count);
-    out.indices.reserve(triangles.size());
-    out.material.reserve(triangles.size());
-    out.edge_flags.reserve(triangles.size());
-    for (size_t t = 0; t < triangles.size(); ++t) {
-        if (t % 65536 == 0) throw_if_cancelled();  // SIGINT / SIGTERM
-        const PendingTriangle& tri = triangles[t];
-        std::array<uint32_t, 3> index{};
-        for (int slot = 0; slot < 3; ++slot) {
-            const uint32_t v = tri.v[slot];
-            const Vec3 n =
-                has_own_normal[v] ? normalize(mesh.normals[v]) : computed->normal(t, slot);
-            // Walk the chain; `last` is the variant whose link is followed (k_none: the head).
-            uint32_t last = k_none, at = first_variant[v];
-            while (at != k_none && !same_bits(out.normals[at], n)) {
-                last = at;
-                at = next_variant[at];
+    // Every corner's normal, in parallel (each is a function of the mesh alone).
+    WorkArray<Vec3> corner_normal;
+    throw_if_cancelled();  // SIGINT / SIGTERM
+    if (computed)
+        computed->all_normals(corner_normal);
+    else
+        corner_normal.resize(3 * triangles.size());
+    if (!mesh.normals.empty())
+        hikari::parallel_for(size_t{0}, triangles.size(), [&](size_t t) {
+            for (int slot = 0; slot < 3; ++slot) {
+                const uint32_t v = triangles[t].v[slot];
+                if (has_own_normal[v]) corner_normal[3 * t + slot] = normalize(mesh.normals[v]);
             }
-            if (at == k_none) {
-                at = static_cast<uint32_t>(out.positions.size());
-                (last == k_none ? first_variant[v] : next_variant[last]) = at;
-                next_variant.push_back(k_none);
-                out.positions.push_back(mesh.positions[v]);
-                out.normals.push_back(n);
-                if (has_uvs) out.uvs.push_back(mesh.uvs[v]);
-                if (has_colors) out.colors.push_back(mesh.colors[v]);
-            }
-            index[slot] = at;
-        }
-        out.indices.push_back(index);
-        out.material.push_back(mesh.face_material.empty() ? -1 : mesh.face_material[tri.face]);
-        out.edge_flags.push_back(tri.edge_flags);
-    }
+        });
+    throw_if_cancelled();  // SIGINT / SIGTERM
+    number_output_vertices(mesh, triangles, corner_normal, out);
     out.materials = std::move(mesh.materials);
     return out;
 }

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <exception>
 #include <limits>
 #include <optional>
 #include <string>
@@ -19,7 +20,10 @@
 #include "hikari/core/cancel.h"
 #include "hikari/core/color.h"
 #include "hikari/core/error.h"
+#include "hikari/core/huge_page_allocator.h"
 #include "hikari/core/memory_budget.h"
+#include "hikari/core/parallel.h"
+#include "hikari/core/parallel_pages.h"
 #include "hikari/io/files/printable_text.h"
 #include "hikari/io/files/read_file.h"
 #include "hikari/io/models/text_number.h"
@@ -468,6 +472,7 @@ class BinaryBody {
     uint32_t line() const { return 0; }
     bool swap() const { return m_swap; }
     size_t pos() const { return m_pos; }
+    const char* data() const { return m_bytes.data(); }
     size_t left() const { return m_bytes.size() - m_pos; }
 
   private:
@@ -650,18 +655,22 @@ void read_fixed_vertices(BinaryBody& body, const PlyElement& e, const VertexSlot
         // Fast path: memcpy straight into the mesh, checking finiteness as we go.
         mesh.positions.resize(e.count);
         if (slots.has_normals()) mesh.normals.resize(e.count);
-        for (uint64_t i = 0; i < e.count; ++i) {
-            if (i % 65536 == 0) throw_if_cancelled();  // SIGINT / SIGTERM
-            const char* r = data + i * record;
-            Vec3& p = mesh.positions[i];
-            std::memcpy(&p, r + offsets[slots.position[0]], sizeof(Vec3));
-            if (slots.has_normals())
-                std::memcpy(&mesh.normals[i], r + offsets[slots.normal[0]], sizeof(Vec3));
-            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-                body.point_at("vertex", i, start + i * record);
-                body.fail(fmt::format("position ({}, {}, {}) is not finite", p.x, p.y, p.z));
+        // in parallel chunks; the first vertex that is not finite, in file order, is reported
+        parallel_chunks(e.count, 65536, [&](size_t, size_t i0, size_t i1) {
+            throw_if_cancelled();  // SIGINT / SIGTERM
+            for (size_t i = i0; i < i1; ++i) {
+                const char* r = data + i * record;
+                Vec3& p = mesh.positions[i];
+                std::memcpy(&p, r + offsets[slots.position[0]], sizeof(Vec3));
+                if (slots.has_normals())
+                    std::memcpy(&mesh.normals[i], r + offsets[slots.normal[0]], sizeof(Vec3));
+                if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+                    BinaryBody at = body;  // each chunk names its own item
+                    at.point_at("vertex", i, start + i * record);
+                    at.fail(fmt::format("position ({}, {}, {}) is not finite", p.x, p.y, p.z));
+                }
             }
-        }
+        });
         return;
     }
     std::vector<double> values(e.properties.size());
@@ -717,34 +726,93 @@ void read_faces(Body& body, const PlyElement& e, int list, uint64_t vertex_count
 }
 
 /// Binary faces stored as the common `property list uchar int|uint vertex_indices` and nothing
-/// else, in the machine's byte order: each face's indices are one memcpy.
+/// else, in the machine's byte order. A first pass walks the list lengths (each face's place in
+/// the file and in `corners`); then chunks of faces copy and check their indices in parallel.
+/// The first bad index in file order is the one reported.
 bool read_packed_faces(BinaryBody& body, const PlyElement& e, uint64_t vertex_count,
                        PolygonMesh& mesh) {
     if (e.properties.size() != 1 || body.swap()) return false;
     const PlyProperty& p = e.properties[0];
     if (p.count_type != PlyType::uint8 || (p.type != PlyType::int32 && p.type != PlyType::uint32))
         return false;
-    for (uint64_t i = 0; i < e.count; ++i) {
-        body.begin_item("face", i);
-        const auto n = static_cast<uint8_t>(*body.take(1));
-        if (n < 3) body.fail(fmt::format("it has {} corners; a face needs at least 3", n));
-        // One fixed-size memcpy per corner: a variable-length one compiles to `rep movs`,
-        // whose start-up cost is several times that of copying 12 bytes.
-        const char* indices = body.take(4 * size_t{n});
-        for (size_t j = 0; j < n; ++j) {
-            uint32_t corner;
-            std::memcpy(&corner, indices + 4 * j, 4);
-            if (corner >= vertex_count) {
-                const int64_t index = p.type == PlyType::int32
-                                          ? int64_t{std::bit_cast<int32_t>(corner)}
-                                          : int64_t{corner};
-                body.fail(fmt::format("corner index {} is out of range (the file has {} vertices)",
-                                      index, vertex_count));
+    const size_t first_face = mesh.face_start.size() - 1;
+    const char* const base = body.data() + body.pos();
+    // Where every face is a triangle (a 3 before every 12 bytes, checked in parallel: the common
+    // case), each face's place in the file is known at once; otherwise a first pass walks the
+    // list lengths.
+    const bool all_triangles =
+        e.count <= body.left() / 13 &&
+        mesh.face_start.back() + 3 * e.count <= std::numeric_limits<uint32_t>::max() &&
+        hikari::parallel_reduce(
+            tbb::blocked_range<size_t>(0, e.count, 65536), true,
+            [&](const tbb::blocked_range<size_t>& r, bool all) {
+                for (size_t i = r.begin(); all && i != r.end(); ++i) all = base[13 * i] == 3;
+                return all;
+            },
+            [](bool a, bool b) { return a && b; });
+    std::vector<const char*> indices;
+    // A face the first pass cannot take (too few corners, the file ends) is reported after the
+    // faces before it are checked: an earlier bad index comes first, as in file order.
+    std::exception_ptr stopped;
+    size_t taken = e.count;
+    if (all_triangles) {
+        const uint32_t start = mesh.face_start.back();
+        mesh.face_start.resize(first_face + 1 + e.count);
+        hikari::parallel_for(size_t{0}, size_t(e.count), [&](size_t i) {
+            mesh.face_start[first_face + 1 + i] = start + 3 * uint32_t(i + 1);
+        });
+        body.begin_item("face", 0);
+        body.take(13 * e.count);
+    } else {
+        indices.reserve(e.count);
+        try {
+            for (uint64_t i = 0; i < e.count; ++i) {
+                body.begin_item("face", i);
+                const auto n = static_cast<uint8_t>(*body.take(1));
+                if (n < 3) body.fail(fmt::format("it has {} corners; a face needs at least 3", n));
+                const char* face_indices = body.take(4 * size_t{n});
+                if (mesh.face_start.back() + uint64_t{n} > std::numeric_limits<uint32_t>::max())
+                    body.fail("more than 2^32 - 1 face corners in all");
+                indices.push_back(face_indices);
+                mesh.face_start.push_back(mesh.face_start.back() + n);
             }
-            mesh.corners.push_back(corner);
+        } catch (...) {
+            stopped = std::current_exception();
         }
-        end_face(body, mesh);
+        taken = indices.size();
     }
+    const auto face_bytes = [&](size_t i) {
+        return all_triangles ? base + 13 * i + 1 : indices[i];
+    };
+    const size_t corner0 = mesh.corners.size();
+    mesh.corners.resize(mesh.face_start.back());
+    parallel_chunks(taken, 65536, [&](size_t, size_t f0, size_t f1) {
+        throw_if_cancelled();  // SIGINT / SIGTERM
+        for (size_t i = f0; i < f1; ++i) {
+            const size_t n = mesh.face_start[first_face + i + 1] - mesh.face_start[first_face + i];
+            uint32_t* out = mesh.corners.data() + corner0 +
+                            (mesh.face_start[first_face + i] - mesh.face_start[first_face]);
+            // One fixed-size memcpy per corner: a variable-length one compiles to `rep movs`,
+            // whose start-up cost is several times that of copying 12 bytes.
+            for (size_t j = 0; j < n; ++j) {
+                uint32_t corner;
+                std::memcpy(&corner, face_bytes(i) + 4 * j, 4);
+                if (corner >= vertex_count) {
+                    const int64_t index = p.type == PlyType::int32
+                                              ? int64_t{std::bit_cast<int32_t>(corner)}
+                                              : int64_t{corner};
+                    BinaryBody at = body;  // each chunk names its own item
+                    at.point_at("face", i, static_cast<size_t>(face_bytes(i) - 1 - body.data()));
+                    at.fail(
+                        fmt::format("corner index {} is out of range (the file has {} "
+                                    "vertices)",
+                                    index, vertex_count));
+                }
+                out[j] = corner;
+            }
+        }
+    });
+    if (stopped) std::rethrow_exception(stopped);
     return true;
 }
 
@@ -865,13 +933,19 @@ void reserve(const fs::path& file, const PlyHeader& header, const PlyPlan& plan,
     check_memory_need(2.0 * (44.0 * static_cast<double>(plan.vertex_count) + 16.0 * faces),
                       fmt::format("{}: loading {} vertices and {} faces", file.string(),
                                   plan.vertex_count, face ? face->count : 0));
-    mesh.positions.reserve(plan.vertex_count);
-    if (plan.slots.has_normals()) mesh.normals.reserve(plan.vertex_count);
-    if (plan.slots.has_uvs()) mesh.uvs.reserve(plan.vertex_count);
-    if (plan.slots.has_colors()) mesh.colors.reserve(plan.vertex_count);
+    // Each array's pages mapped in one call (populate_pages), not faulted in one by one as they
+    // are filled: on a virtual machine a fault costs several times more.
+    auto reserve_mapped = [](auto& v, size_t n) {
+        v.reserve(n);
+        populate_pages_in_parallel(v.data(), n * sizeof(v[0]));
+    };
+    reserve_mapped(mesh.positions, plan.vertex_count);
+    if (plan.slots.has_normals()) reserve_mapped(mesh.normals, plan.vertex_count);
+    if (plan.slots.has_uvs()) reserve_mapped(mesh.uvs, plan.vertex_count);
+    if (plan.slots.has_colors()) reserve_mapped(mesh.colors, plan.vertex_count);
     if (face) {
-        mesh.face_start.reserve(face->count + 1);
-        mesh.corners.reserve(3 * face->count);
+        reserve_mapped(mesh.face_start, face->count + 1);
+        reserve_mapped(mesh.corners, 3 * face->count);
     }
 }
 

@@ -16,12 +16,19 @@ namespace hikari {
 
 namespace {
 
-/// Grid cell size in pixels: small cells keep the candidate lists of dense meshes short.
-constexpr float k_cell_pixels = 8.0f;
-/// The fewest grid cells across the image's larger side: a small image gets cells of a
-/// fraction of a pixel, so the work of finding candidates is the same at 1 × 1 as at 512 ×
-/// 512 (the candidates found do not depend on the grid, only how many are looked at).
-constexpr float k_min_cells_across = 64.0f;
+/// Grid cells per projected triangle. The grid covers the part of the projected scene that lines
+/// can be drawn in, in about this many cells per triangle, whatever the image size: the work of
+/// finding candidates is the same at 1 × 1 as at 1920 × 1080 (the candidates that matter do not
+/// depend on the grid, only how many others are looked at).
+constexpr double k_cells_per_triangle = 1.0;
+/// The most cells of the grid.
+constexpr size_t k_max_cells = size_t{1} << 22;
+/// Each triangle is binned by its box widened by this fraction of its larger side: the tests
+/// below count a point as behind a face up to 1e-4 of the face's size outside it.
+constexpr float k_bin_widening = 1e-3f;
+/// How far from a line, in cells, the grid looks for its candidates (float noise only: the
+/// widened boxes carry the tests' tolerances).
+constexpr float k_reach_cells = 0.01f;
 /// Relative depth margin: a face hides a point only when nearer by more than this (float noise
 /// on a face through the point itself, e.g. a third face on an edge, must not hide it).
 constexpr float k_depth_margin = 1e-5f;
@@ -117,24 +124,54 @@ Scratch& thread_scratch_for(size_t occluders) {
 struct Context {
     std::vector<Occluder> occluders;
     ScreenGrid grid;
-    /// How near a line an occluder is looked for, in pixels: a pixel, or one grid cell where
-    /// cells are smaller (an image under 64 pixels). A whole pixel around every line of a 1x1
-    /// image is the whole image: every line met every face, 85 s for the bunny instead of 0.5.
-    float reach;
+    Vec2 lo, hi;  ///< the part of the image plane lines can be drawn in (pixels)
 };
+
+/// The part of the image plane where a line of `lines.width` can lie (project_segment clips to
+/// the view widened by a line width), and a pixel more, cut to the projected triangles' boxes.
+void line_domain(const std::vector<ScreenTriangle>& screen, int width, int height, float line_width,
+                 Vec2& lo, Vec2& hi) {
+    const float side = static_cast<float>(std::max(1, std::min(width, height)));
+    const float pad_x = std::abs(line_width) * float(width) / side + 1.0f;
+    const float pad_y = std::abs(line_width) * float(height) / side + 1.0f;
+    Vec2 t_lo{INFINITY, INFINITY}, t_hi{-INFINITY, -INFINITY};
+    for (const ScreenTriangle& t : screen)
+        for (const ScreenVertex& v : t.v) {
+            t_lo = {std::min(t_lo.x, v.position.x), std::min(t_lo.y, v.position.y)};
+            t_hi = {std::max(t_hi.x, v.position.x), std::max(t_hi.y, v.position.y)};
+        }
+    lo = {std::max(-pad_x, t_lo.x), std::max(-pad_y, t_lo.y)};
+    hi = {std::min(float(width) + pad_x, t_hi.x), std::min(float(height) + pad_y, t_hi.y)};
+    if (!(lo.x <= hi.x) || !(lo.y <= hi.y)) hi = lo = {0.0f, 0.0f};
+}
+
+/// The occluders and their grid over the lines' domain.
+Context make_context(const std::vector<ScreenTriangle>& screen, int width, int height,
+                     float line_width) {
+    Context ctx;
+    line_domain(screen, width, height, line_width, ctx.lo, ctx.hi);
+    const size_t cells = std::min<size_t>(
+        k_max_cells, static_cast<size_t>(k_cells_per_triangle * double(screen.size())) + 1);
+    ctx.grid = ScreenGrid(screen, ctx.lo, ctx.hi, cells, k_bin_widening);
+    ctx.occluders.resize(screen.size());
+    hikari::parallel_for(size_t{0}, screen.size(),
+                         [&](size_t i) { ctx.occluders[i] = make_occluder(screen[i]); });
+    return ctx;
+}
 
 /// The occluders that can hide part of `line`: near enough, not its own faces, listed once.
 void find_candidates(const Context& ctx, const Line& line, Scratch& s) {
     s.candidates.clear();
     const float z_far = std::max(line.za, line.zb);
-    ctx.grid.for_each_along(line.seg.a, line.seg.b, ctx.reach, [&](uint32_t i) {
+    const float reach = k_reach_cells * ctx.grid.cell_size();
+    ctx.grid.for_each_along(line.seg.a, line.seg.b, reach, [&](uint32_t i) {
         if (s.stamp[i] == s.epoch) return;
         s.stamp[i] = s.epoch;
         const Occluder& o = ctx.occluders[i];
         if (o.area2 == 0.0f || o.source == line.own_faces[0] || o.source == line.own_faces[1])
             return;
         if (!(o.z_min < z_far)) return;  // wholly behind the line's farthest point
-        if (!boxes_overlap(o.lo, o.hi, line.seg.a, line.seg.b, 0.5f * ctx.reach)) return;
+        if (!boxes_overlap(o.lo, o.hi, line.seg.a, line.seg.b, 0.5f)) return;
         s.candidates.push_back(i);
     });
 }
@@ -268,6 +305,8 @@ std::vector<Line> intersection_lines(const Scene& scene, const LineScene& ls, co
                 lo = {std::min(lo.x, v.position.x), std::min(lo.y, v.position.y)};
                 hi = {std::max(hi.x, v.position.x), std::max(hi.y, v.position.y)};
             }
+        // a crossing outside the lines' domain would be clipped away
+        if (hi.x < ctx.lo.x || lo.x > ctx.hi.x || hi.y < ctx.lo.y || lo.y > ctx.hi.y) return;
         Scratch& s = thread_scratch_for(ctx.occluders.size());
         s.candidates.clear();
         ctx.grid.for_each_in_box(lo, hi, [&](uint32_t j) {
@@ -305,14 +344,7 @@ std::vector<Line> intersection_lines(const Scene& scene, const LineScene& ls, co
 LineDrawing draw_hidden_lines(const Scene& scene, const LineSettings& lines) {
     const LineScene ls = prepare_line_scene(scene, lines);
     const std::vector<ScreenTriangle>& screen = ls.projected.triangles;
-    const float cell = std::min(
-        k_cell_pixels,
-        static_cast<float>(std::max(scene.camera.width, scene.camera.height)) / k_min_cells_across);
-    Context ctx{std::vector<Occluder>(screen.size()),
-                ScreenGrid(screen, scene.camera.width, scene.camera.height, cell),
-                std::min(1.0f, cell)};
-    hikari::parallel_for(size_t{0}, screen.size(),
-                         [&](size_t i) { ctx.occluders[i] = make_occluder(screen[i]); });
+    const Context ctx = make_context(screen, scene.camera.width, scene.camera.height, lines.width);
 
     std::vector<Line> all = edge_lines(scene, ls, lines);
     std::vector<Line> crossings = intersection_lines(scene, ls, ctx, lines);

@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include "hikari/core/color.h"
 #include "hikari/core/parallel.h"
 #include "hikari/core/ray.h"
@@ -61,8 +63,11 @@ bool slab_range(float kx, float ky, float yc, float lo, float hi, float& x0, flo
 }
 
 /// One band of rows being drawn: the colour so far, and the segment covering most of each pixel.
+/// A pixel is touched once its best coverage is above 0; its colour, depth and id are set when it
+/// is first touched (so only the coverage is cleared from band to band).
 struct BandAccumulator {
-    std::vector<Vec3> color;  ///< sRGB-encoded; starts as the background
+    Vec3 background;          ///< sRGB-encoded
+    std::vector<Vec3> color;  ///< sRGB-encoded; the background where first touched
     std::vector<float> best_coverage, best_depth;
     std::vector<uint32_t> best_id;
     LineOcclusion occlusion;  ///< the surfaces lines may be hidden behind (none when empty)
@@ -101,6 +106,11 @@ void draw_segment(const LineDrawing& d, const LineSegment& seg, int row0, int ro
                 if (depth > surface * (1.0f + acc.occlusion.tolerance)) continue;
             }
             const size_t i = static_cast<size_t>(y - row0) * d.width + x;
+            if (acc.best_coverage[i] == 0.0f) {  // first touched: start from the background
+                acc.color[i] = acc.background;
+                acc.best_depth[i] = k_infinity;
+                acc.best_id[i] = k_background_id;
+            }
             // Porter & Duff's "over", segment after segment, on sRGB-encoded colour: what SVG
             // renderers do with strokes, so that the SVG file shows this image.
             acc.color[i] += c * (color - acc.color[i]);
@@ -142,15 +152,25 @@ Framebuffer rasterize_lines(const LineDrawing& d, Film film, bool aov_buffers,
     Framebuffer fb(std::move(film), d.width, d.height, aov_buffers);
     const int bands = (d.height + k_band_rows - 1) / k_band_rows;
     const std::vector<std::vector<uint32_t>> bins = bin_segments(d, bands);
+    // Each thread reuses one band's buffers from band to band: no allocation (and no page faults
+    // of fresh memory) per band.
+    const Vec3 background = encode_srgb(d.background);
+    tbb::enumerable_thread_specific<BandAccumulator> accumulators;
+    tbb::enumerable_thread_specific<std::vector<Vec3>> rows;
     hikari::parallel_for(0, bands, [&](int band) {
         const int row0 = band * k_band_rows, row1 = std::min(d.height, row0 + k_band_rows);
         const size_t n = static_cast<size_t>(row1 - row0) * d.width;
-        BandAccumulator acc{std::vector<Vec3>(n, encode_srgb(d.background)),
-                            std::vector<float>(n, 0.0f), std::vector<float>(n, k_infinity),
-                            std::vector<uint32_t>(n, k_background_id), occlusion};
+        BandAccumulator& acc = accumulators.local();
+        acc.background = background;
+        acc.color.resize(n);
+        acc.best_coverage.assign(n, 0.0f);
+        acc.best_depth.resize(n);
+        acc.best_id.resize(n);
+        acc.occlusion = occlusion;
         for (const uint32_t k : bins[static_cast<size_t>(band)])
             draw_segment(d, d.segments[k], row0, row1, acc);
-        std::vector<Vec3> row(static_cast<size_t>(d.width));
+        std::vector<Vec3>& row = rows.local();
+        row.resize(static_cast<size_t>(d.width));
         for (int y = row0; y < row1; ++y) {
             const size_t first = static_cast<size_t>(y - row0) * d.width;
             const size_t pixel = static_cast<size_t>(y) * d.width;
@@ -160,8 +180,11 @@ Framebuffer rasterize_lines(const LineDrawing& d, Film film, bool aov_buffers,
             }
             fb.set_colors(pixel, row.data(), row.size());
             if (!aov_buffers) continue;
-            std::copy_n(acc.best_depth.begin() + first, d.width, fb.depth.begin() + pixel);
-            std::copy_n(acc.best_id.begin() + first, d.width, fb.id.begin() + pixel);
+            for (int x = 0; x < d.width; ++x) {
+                const bool touched = acc.best_coverage[first + x] > 0.0f;
+                fb.depth[pixel + x] = touched ? acc.best_depth[first + x] : k_infinity;
+                fb.id[pixel + x] = touched ? acc.best_id[first + x] : k_background_id;
+            }
         }
     });
     return fb;

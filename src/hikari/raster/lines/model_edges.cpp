@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <bit>
-#include <tuple>
+#include <utility>
+
+#include "hikari/core/huge_page_allocator.h"
+#include "hikari/core/parallel.h"
+#include "hikari/core/parallel_pages.h"
 
 namespace hikari {
 
@@ -14,42 +18,72 @@ std::array<uint32_t, 3> position_bits(Vec3 p) {
     return {bits(p.x), bits(p.y), bits(p.z)};
 }
 
-/// One triangle edge, keyed by its two ends' positions, the smaller first.
+/// One triangle edge, keyed by the ranks of its two ends' positions, the smaller first.
 struct HalfEdge {
-    std::array<uint32_t, 3> lo, hi;
-    uint32_t face;
-    uint8_t corner;  ///< the edge runs from corner `corner` to (corner + 1) % 3
+    uint64_t ends;         ///< rank of the smaller end << 32 | rank of the larger
+    uint64_t face_corner;  ///< 3 × face + corner: the edge runs from that corner to the next
 };
+
+/// Per vertex, the rank of its position among the distinct positions in the order of their bits
+/// (x, then y, then z): comparing ranks is comparing the bits, in one integer compare.
+std::vector<uint32_t> position_ranks(const std::vector<Vec3>& positions) {
+    std::vector<uint32_t> order(positions.size());
+    for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    hikari::parallel_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+        const auto pa = position_bits(positions[a]), pb = position_bits(positions[b]);
+        return pa != pb ? pa < pb : a < b;
+    });
+    std::vector<uint32_t> rank(positions.size());
+    uint32_t r = 0;
+    for (size_t k = 0; k < order.size(); ++k) {
+        if (k > 0 && position_bits(positions[order[k]]) != position_bits(positions[order[k - 1]]))
+            ++r;
+        rank[order[k]] = r;
+    }
+    return rank;
+}
 
 }  // namespace
 
 std::vector<ModelEdge> model_edges(const TriangleSet& triangles) {
-    std::vector<HalfEdge> half(3 * triangles.size());
-    for (uint32_t f = 0; f < triangles.size(); ++f)
-        for (uint8_t k = 0; k < 3; ++k) {
-            auto p = position_bits(triangles.positions[triangles.indices[f][k]]);
-            auto q = position_bits(triangles.positions[triangles.indices[f][(k + 1) % 3]]);
+    const std::vector<uint32_t> rank = position_ranks(triangles.positions);
+    // every element written below: no zero pass first, and huge pages where granted
+    std::vector<HalfEdge, UninitializedHugePageAllocator<HalfEdge>> half(3 * triangles.size());
+    hikari::parallel_for(size_t{0}, triangles.size(), [&](size_t f) {
+        for (uint32_t k = 0; k < 3; ++k) {
+            uint64_t p = rank[triangles.indices[f][k]];
+            uint64_t q = rank[triangles.indices[f][(k + 1) % 3]];
             if (q < p) std::swap(p, q);
-            half[3 * f + k] = {p, q, f, k};
+            half[3 * f + k] = {p << 32 | q, 3 * uint64_t{f} + k};
         }
+    });
     // Sorting by (ends, face, corner) groups the triangle edges of one model edge, in an order
-    // that depends on nothing but the mesh.
-    std::sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
-        return std::tie(x.lo, x.hi, x.face, x.corner) < std::tie(y.lo, y.hi, y.face, y.corner);
+    // that depends on nothing but the mesh (each key is distinct, so on no thread count either).
+    hikari::parallel_sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
+        return x.ends != y.ends ? x.ends < y.ends : x.face_corner < y.face_corner;
     });
     std::vector<ModelEdge> edges;
+    edges.reserve(half.size() / 2 + 1);  // a closed mesh's edges; more grow the list
+    populate_pages_in_parallel(edges.data(), edges.capacity() * sizeof(ModelEdge));
     for (size_t i = 0; i < half.size();) {
         size_t j = i;
         ModelEdge e;
-        const auto& idx = triangles.indices[half[i].face];
-        e.v0 = idx[half[i].corner];
-        e.v1 = idx[(half[i].corner + 1) % 3];
-        for (; j < half.size() && half[j].lo == half[i].lo && half[j].hi == half[i].hi; ++j) {
-            const HalfEdge& h = half[j];
-            if (j - i < 2) e.faces[j - i] = h.face;
-            e.own |= triangles.edge_flags.empty() || (triangles.edge_flags[h.face] >> h.corner) & 1;
+        const auto face_of = [&](size_t h) {
+            return static_cast<uint32_t>(half[h].face_corner / 3);
+        };
+        const auto corner_of = [&](size_t h) {
+            return static_cast<uint32_t>(half[h].face_corner % 3);
+        };
+        const auto& idx = triangles.indices[face_of(i)];
+        e.v0 = idx[corner_of(i)];
+        e.v1 = idx[(corner_of(i) + 1) % 3];
+        for (; j < half.size() && half[j].ends == half[i].ends; ++j) {
+            if (j - i < 2) e.faces[j - i] = face_of(j);
+            e.own |= triangles.edge_flags.empty() ||
+                     (triangles.edge_flags[face_of(j)] >> corner_of(j)) & 1;
         }
-        if (half[i].lo != half[i].hi) edges.push_back(e);  // a zero-length edge draws nothing
+        // a zero-length edge draws nothing
+        if ((half[i].ends >> 32) != (half[i].ends & 0xffffffffu)) edges.push_back(e);
         i = j;
     }
     return edges;

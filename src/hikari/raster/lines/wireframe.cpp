@@ -1,5 +1,7 @@
 #include "hikari/raster/lines/wireframe.h"
 
+#include <algorithm>
+#include <cstddef>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -14,21 +16,32 @@ namespace hikari {
 LineDrawing draw_wireframe(const Scene& scene, const LineSettings& lines) {
     const LineScene ls = prepare_line_scene(scene, lines);
     const TriangleSet& tris = ls.projected.scene.triangles;
-    std::vector<std::optional<LineSegment>> projected(ls.edges.size());
-    hikari::parallel_for(size_t{0}, ls.edges.size(), [&](size_t k) {
-        const ModelEdge& e = ls.edges[k];
-        if (!(e.own || lines.triangle_edges) ||
-            !edge_has_kept_face(e, ls.back_facing, lines.cull_back_faces))
-            return;
-        projected[k] = project_segment(ls.projected.view, tris.positions[e.v0],
-                                       tris.positions[e.v1], lines.width);
-        if (!projected[k]) return;
-        projected[k]->color = line_color(scene, tris.material[e.faces[0]], lines);
-        projected[k]->id = tris.id[e.faces[0]];
+    // Chunks of edges projected in parallel, each into its own list, then joined in edge order
+    // into the drawing (sized once): the order does not depend on the thread count.
+    constexpr size_t k_chunk = 8192;
+    std::vector<std::vector<LineSegment>> chunks((ls.edges.size() + k_chunk - 1) / k_chunk);
+    parallel_chunks(ls.edges.size(), k_chunk, [&](size_t c, size_t k0, size_t k1) {
+        for (size_t k = k0; k < k1; ++k) {
+            const ModelEdge& e = ls.edges[k];
+            if (!(e.own || lines.triangle_edges) ||
+                !edge_has_kept_face(e, ls.back_facing, lines.cull_back_faces))
+                continue;
+            std::optional<LineSegment> segment = project_segment(
+                ls.projected.view, tris.positions[e.v0], tris.positions[e.v1], lines.width);
+            if (!segment) continue;
+            segment->color = line_color(scene, tris.material[e.faces[0]], lines);
+            segment->id = tris.id[e.faces[0]];
+            chunks[c].push_back(*segment);
+        }
     });
+    std::vector<size_t> offset(chunks.size() + 1, 0);
+    for (size_t c = 0; c < chunks.size(); ++c) offset[c + 1] = offset[c] + chunks[c].size();
     LineDrawing drawing = empty_drawing(scene, lines);
-    for (const std::optional<LineSegment>& s : projected)
-        if (s) drawing.segments.push_back(*s);
+    drawing.segments.resize(offset.back());
+    hikari::parallel_for(size_t{0}, chunks.size(), [&](size_t c) {
+        std::copy(chunks[c].begin(), chunks[c].end(),
+                  drawing.segments.begin() + static_cast<std::ptrdiff_t>(offset[c]));
+    });
     return drawing;
 }
 
