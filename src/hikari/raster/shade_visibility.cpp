@@ -511,6 +511,13 @@ struct ShadePass {
     /// Triangles' pixels are shaded in SIMD lanes (raster/shade_lanes.h): per-pixel (Phong)
     /// interpolation and delta lights only, which is what the lanes evaluate.
     bool lanes = false;
+    SimdLevel simd = best_simd_level();  ///< the lanes' kernel
+    /// Screen triangle t is source triangle t (nothing culled or clipped: a model in view), so
+    /// its 52 bytes need not be read for the index.
+    bool same_order = false;
+
+    /// The source triangle of screen triangle `t`.
+    uint32_t source_of(uint32_t t) const { return same_order ? t : ctx.ps.triangles[t].source; }
 
     ShadePass(const Scene& scene, const ProjectedScene& ps, const RasterSettings& raster, int width,
               int height)
@@ -541,6 +548,9 @@ struct ShadePass {
             ctx.environment = find_environment(scene.lights);
             ctx.has_area_lights = has_area_light(scene.lights);
         }
+        simd = raster.simd;
+        same_order = ps.triangles.size() == ps.scene.triangles.size() && ps.counts.culled == 0 &&
+                     ps.counts.clipped_away == 0 && ps.counts.cut == 0;
         lanes = raster.interp == Interpolation::phong &&
                 std::all_of(scene.lights.begin(), scene.lights.end(), is_delta_light);
     }
@@ -679,6 +689,24 @@ size_t shade_tile_seen(const ShadePass& pass, const Tile& tile, const uint32_t* 
     std::array<Vec3, SurfaceLanes::k_capacity>& colour = gathered.colour;
     SourceTriangle tri;
     size_t covered = 0;
+    if (!ctx.has_area_lights && !ctx.environment &&
+        std::all_of(seen, seen + SurfaceLanes::k_capacity,
+                    [](uint32_t t) { return t == k_no_triangle; })) {
+        // Nothing in the tile (a partial tile's values past its edge are k_no_triangle too):
+        // the background, a row at a time.
+        std::fill(colour.begin(), colour.end(), ctx.scene.background);
+        for (int y = tile.y0; y < tile.y1; ++y)
+            fb.set_colors(static_cast<size_t>(y) * ctx.width + tile.x0, colour.data(),
+                          static_cast<size_t>(tile.x1 - tile.x0));
+        return 0;
+    }
+    // Start loading every triangle the tile sees: they lie far apart in memory.
+    const size_t screen_triangles = ctx.ps.triangles.size();
+    for (int k = 0, last = -1; k < SurfaceLanes::k_capacity; ++k)
+        if (seen[k] != static_cast<uint32_t>(last) && seen[k] < screen_triangles) {
+            last = static_cast<int>(seen[k]);
+            __builtin_prefetch(&ctx.tris.indices[pass.source_of(seen[k])]);
+        }
     for (int y = tile.y0; y < tile.y1; ++y)
         for (int x = tile.x0; x < tile.x1; ++x) {
             const size_t pixel = static_cast<size_t>(y) * ctx.width + x;
@@ -695,7 +723,7 @@ size_t shade_tile_seen(const ShadePass& pass, const Tile& tile, const uint32_t* 
                 colour[local] = shade_sphere_pixel(ctx, *sphere, x, y, pixel, fb);
                 continue;
             }
-            tri.load(ctx, ctx.ps.triangles[t].source);
+            tri.load(ctx, pass.source_of(t));
             const PixelSurface s = surface_at(ctx, tri, x, y);
             write_surface_aovs(ctx, s, pixel, fb);
             if (pass.lanes) {
@@ -717,12 +745,12 @@ size_t shade_tile_seen(const ShadePass& pass, const Tile& tile, const uint32_t* 
             lighting.context = &gathered;
         }
         SurfaceLanes& lanes = gathered.lanes;
-        shade_surface_lanes(lighting, gathered.count, lanes);
+        shade_surface_lanes(lighting, gathered.count, lanes, pass.simd);
         for (int k = 0; k < gathered.count; ++k) {
             const int local = gathered.local[k];
             if (lanes.scalar_only[k]) {
                 const int x = gathered.x[k], y = gathered.y[k];
-                tri.load(ctx, ctx.ps.triangles[seen[local]].source);
+                tri.load(ctx, pass.source_of(seen[local]));
                 colour[local] = shade_surface(ctx, surface_at(ctx, tri, x, y), gathered.pixel[k]);
                 continue;
             }
@@ -754,6 +782,7 @@ Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
     for_each_tile(vis.width, vis.height, settings.control, [&](const Tile& tile) {
         // The tile's values, k_tile_size wide, as a per-tile visibility method leaves them.
         std::array<uint32_t, k_tile_size * k_tile_size> seen;
+        seen.fill(k_no_triangle);
         for (int y = tile.y0; y < tile.y1; ++y)
             std::copy_n(vis.triangle.data() + static_cast<size_t>(y) * vis.width + tile.x0,
                         tile.x1 - tile.x0, seen.data() + (y - tile.y0) * k_tile_size);

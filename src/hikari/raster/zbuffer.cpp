@@ -226,7 +226,7 @@ Framebuffer render_zbuffer(const Scene& scene, Film film, const RenderSettings& 
     // Alg 4.2 tile by tile, each tile shaded as soon as its Z-buffer is done.
     ZBufferWorkspace ws;
     zbuffer_setup(std::span<const ScreenTriangle>(ps.triangles), width, height, ws);
-    ZBufferTileKernel* const kernel = zbuffer_tile_kernel(best_simd_level());
+    ZBufferTileKernel* const kernel = zbuffer_tile_kernel(raster.simd);
     // Exact spheres' fragments are counted per pixel (draw_spheres_in_tile), triangles' by the
     // kernel.
     std::vector<uint32_t> sphere_fragments;
