@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <memory>
+#include <mutex>
 #include <vector>
 
+#include "hikari/core/build_cache.h"
 #include "hikari/core/parallel.h"
 #include "hikari/core/ray.h"
 #include "hikari/frame/tiles.h"
@@ -45,6 +48,13 @@ struct FragmentCounts {
         ++count[static_cast<size_t>(y) * width + x];
     }
     uint32_t* sphere_fragment_counts() const { return count; }
+};
+
+/// The workspace a render session keeps for its Z-buffer renders (a BuildCache entry depends on
+/// no scene part: it holds no result, only room). The render that holds the lock uses it.
+struct KeptZBufferWorkspace {
+    std::unique_ptr<std::mutex> lock = std::make_unique<std::mutex>();
+    std::unique_ptr<ZBufferWorkspace> workspace = std::make_unique<ZBufferWorkspace>();
 };
 
 /// Counts exact spheres' fragments per pixel and nothing else: triangles take the SIMD kernel,
@@ -223,8 +233,14 @@ Framebuffer render_zbuffer(const Scene& scene, Film film, const RenderSettings& 
         }
         return shade_visibility(scene, ps, vis, std::move(film), settings, raster);
     }
-    // Alg 4.2 tile by tile, each tile shaded as soon as its Z-buffer is done.
-    ZBufferWorkspace ws;
+    // Alg 4.2 tile by tile, each tile shaded as soon as its Z-buffer is done. A session keeps
+    // the workspace, so that its next render allocates none (unless two renders overlap).
+    ZBufferWorkspace local;
+    const std::shared_ptr<const KeptZBufferWorkspace> kept = cached_or_built<KeptZBufferWorkspace>(
+        settings.cache, &scene, "zbuffer workspace", SceneParts::none,
+        [] { return KeptZBufferWorkspace{}; });
+    const std::unique_lock hold(*kept->lock, std::try_to_lock);
+    ZBufferWorkspace& ws = hold.owns_lock() ? *kept->workspace : local;
     zbuffer_setup(std::span<const ScreenTriangle>(ps.triangles), width, height, ws);
     ZBufferTileKernel* const kernel = zbuffer_tile_kernel(raster.simd);
     // Exact spheres' fragments are counted per pixel (draw_spheres_in_tile), triangles' by the
