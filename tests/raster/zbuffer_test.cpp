@@ -3,9 +3,12 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
+#include <algorithm>
 
 #include "hikari/core/rng.h"
 #include "hikari/integrators/whitted/whitted.h"
+#include "hikari/raster/shade_visibility.h"
+#include "hikari/raster/vertex_pipeline.h"
 #include "raster_test_util.h"
 
 namespace hikari {
@@ -108,6 +111,80 @@ TEST(ZBuffer, ImageDoesNotDependOnThreadCount) {
     EXPECT_EQ(one.id, many.id);
     EXPECT_EQ(one.film.linear().pixels, many.film.linear().pixels);
     EXPECT_EQ(one.depth, many.depth);
+}
+
+/// The bunny on its floor under a point light and a directional light, small.
+Scene small_bunny() { return testing::scene_file("bunny.json", 160, 120); }
+
+TEST(ZBuffer, TiledShadingMatchesTheVisibilityBufferPass) {
+    // render_zbuffer shades each tile as soon as its Z-buffer is done, in lanes; drawing the
+    // whole visibility buffer first and shading it after must give the same bits.
+    const Scene scene = small_bunny();
+    for (const ShadowMode mode : {ShadowMode::none, ShadowMode::map, ShadowMode::pcf}) {
+        RasterSettings raster;
+        raster.shadows = mode;
+        raster.shadow_map_size = 256;
+        const Framebuffer tiled = render_zbuffer(scene, Film(scene.camera), {}, raster);
+        const ProjectedScene ps = project_scene(scene, raster, SphereGeometry::exact);
+        const VisibilityBuffer vis =
+            zbuffer_visibility(ps.triangles, scene.camera.width, scene.camera.height);
+        const Framebuffer whole = shade_visibility(scene, ps, vis, Film(scene.camera), {}, raster);
+        EXPECT_EQ(tiled.film.linear().pixels, whole.film.linear().pixels);
+        EXPECT_EQ(tiled.id, whole.id);
+        EXPECT_EQ(tiled.depth, whole.depth);
+        EXPECT_EQ(tiled.normal, whole.normal);
+    }
+}
+
+TEST(ZBuffer, ShadowedImageDoesNotDependOnThreadsOrSimdLevel) {
+    const Scene scene = small_bunny();
+    RasterSettings raster;
+    raster.shadows = ShadowMode::map;
+    raster.shadow_map_size = 256;
+    Framebuffer reference;
+    {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+        raster.simd = SimdLevel::portable;
+        reference = render_zbuffer(scene, Film(scene.camera), {}, raster);
+    }
+    for (const SimdLevel level : supported_simd_levels()) {
+        raster.simd = level;
+        const Framebuffer fb = render_zbuffer(scene, Film(scene.camera), {}, raster);
+        EXPECT_EQ(fb.film.linear().pixels, reference.film.linear().pixels)
+            << simd_level_name(level);
+        EXPECT_EQ(fb.id, reference.id) << simd_level_name(level);
+    }
+}
+
+TEST(ZBuffer, AovBuffersOnlyWhenAsked) {
+    const Scene scene = small_bunny();
+    RenderSettings colour_only;
+    colour_only.aov_buffers = false;
+    const Framebuffer lean = render_zbuffer(scene, Film(scene.camera), colour_only);
+    EXPECT_TRUE(lean.depth.empty());
+    EXPECT_TRUE(lean.id.empty());
+    EXPECT_TRUE(lean.normal.empty());
+    const Framebuffer full = render_zbuffer(scene, Film(scene.camera));
+    ASSERT_EQ(full.id.size(), static_cast<size_t>(160 * 120));
+    EXPECT_EQ(lean.film.linear().pixels, full.film.linear().pixels);
+    EXPECT_GT(std::count_if(full.id.begin(), full.id.end(), [](uint32_t id) { return id != 0; }),
+              1000);
+}
+
+TEST(ZBuffer, StatsCountTheKernelsFragments) {
+    // --stats counts fragments in the SIMD kernel: at least one per covered pixel, and the
+    // picture is the one drawn without stats.
+    const Scene scene = small_bunny();
+    RenderStats stats;
+    RenderSettings settings;
+    settings.stats = &stats;
+    const Framebuffer counted = render_zbuffer(scene, Film(scene.camera), settings);
+    const Framebuffer plain = render_zbuffer(scene, Film(scene.camera));
+    EXPECT_EQ(counted.film.linear().pixels, plain.film.linear().pixels);
+    const uint64_t covered = stats.raster_covered_pixels.load();
+    EXPECT_EQ(covered, static_cast<uint64_t>(std::count_if(plain.id.begin(), plain.id.end(),
+                                                           [](uint32_t id) { return id != 0; })));
+    EXPECT_GE(stats.raster_fragments.load(), covered);
 }
 
 }  // namespace

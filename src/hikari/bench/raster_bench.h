@@ -1,9 +1,10 @@
 #pragma once
 // `hikari bench B4`: the rasterization benchmark of ../bench/SPEC.md §6, the frame llvmpipe draws
-// through OSMesa, done by hikari's own raster pipeline: the B1 camera at 1920 × 1080, vertex
-// stage and clipping (raster/vertex_pipeline.h), binned SIMD Z-buffer (raster/zbuffer.h) with no
-// culling, deferred per-pixel Phong shading of the SPEC's light, and with `shadow` a 2048²
-// orthographic shadow-map pass by the same Z-buffer (depth only) and one tap with its bias.
+// through OSMesa, done by the path `hikari render -m zbuffer` takes: the SPEC's mesh, material,
+// light and B1 camera at 1920 × 1080 as a scene, rendered by the `zbuffer` method (vertex stage,
+// binned SIMD Z-buffer with no culling, deferred Phong shading in lanes), and with `shadow` its
+// 2048² shadow map drawn before every frame. The linear colours are then gamma-encoded to the
+// 8-bit frame llvmpipe's fragment shader writes.
 
 #include <cstdint>
 #include <string>
@@ -23,7 +24,7 @@ struct RasterBenchSettings {
     int timed_frames = 20;  ///< the SPEC's 20
     int width = 1920, height = 1080;
     int shadow_map_size = 2048;
-    SimdLevel simd = best_simd_level();
+    SimdLevel simd = best_simd_level();  ///< the Z-buffer's and the shading lanes' kernels
 };
 
 /// What a B4 run measured.

@@ -3,6 +3,7 @@
 
 #include <memory>
 
+#include "hikari/core/simd_level.h"
 #include "hikari/core/vec.h"
 #include "hikari/frame/render_settings.h"
 
@@ -37,6 +38,9 @@ struct RasterSettings {
     /// `--paint-steps` (depthsort): paint only the first N polygons of the painting order, to
     /// watch the painter's algorithm of Fig 4.6 part-way; 0 paints them all.
     int paint_steps = 0;
+    /// The SIMD kernels of the Z-buffer's tiles and of the shading lanes (every level gives the
+    /// same image).
+    SimdLevel simd = best_simd_level();
 };
 
 }  // namespace hikari

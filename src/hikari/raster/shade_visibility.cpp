@@ -1,8 +1,11 @@
 #include "hikari/raster/shade_visibility.h"
 
 #include <algorithm>
+#include <atomic>
+#include <bit>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <utility>
 
@@ -10,6 +13,7 @@
 #include "hikari/geometry/ray_offset.h"
 #include "hikari/geometry/surface_uv.h"
 #include "hikari/raster/cull.h"
+#include "hikari/raster/shade_lanes.h"
 #include "hikari/raster/shadow_map.h"
 #include "hikari/raster/shadow_volume.h"
 #include "hikari/raster/sphere_raster.h"
@@ -21,6 +25,45 @@
 #include "hikari/shading/spherical_harmonics.h"
 
 namespace hikari {
+
+namespace {
+
+/// The planes of a triangle's perspective-correct weights (barycentric_planes).
+using BarycentricPlanes = std::array<std::array<double, 3>, 3>;
+
+/// The vectors k_i = col_j × col_k of the columns (x, y, w) of the three clip-space corners:
+/// Cramer's rule gives the point projecting to q = (ndc_x, ndc_y, 1) the weights λ_i ∝ q · k_i.
+BarycentricPlanes barycentric_planes(Vec4 c0, Vec4 c1, Vec4 c2) {
+    const double col[3][3] = {{c0.x, c0.y, c0.w}, {c1.x, c1.y, c1.w}, {c2.x, c2.y, c2.w}};
+    BarycentricPlanes k{};
+    for (int i = 0; i < 3; ++i) {
+        const double* a = col[(i + 1) % 3];
+        const double* b = col[(i + 2) % 3];
+        k[i] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    }
+    return k;
+}
+
+double dot3(const std::array<double, 3>& a, const double (&q)[3]) {
+    return a[0] * q[0] + a[1] * q[1] + a[2] * q[2];
+}
+
+/// The weights λ_i = q·k_i / Σ q·k_j at q = (ndc_x, ndc_y, 1) (perspective_barycentrics); false
+/// (weights untouched) for a triangle seen edge-on.
+bool barycentric_weights(const BarycentricPlanes& k, double ndc_x, double ndc_y,
+                         std::array<float, 3>& weights) {
+    const double q[3] = {ndc_x, ndc_y, 1.0};
+    double l[3], sum = 0;
+    for (int i = 0; i < 3; ++i) {
+        l[i] = dot3(k[i], q);
+        sum += l[i];
+    }
+    if (!(std::abs(sum) > 0.0) || !std::isfinite(sum)) return false;
+    for (int i = 0; i < 3; ++i) weights[i] = static_cast<float>(l[i] / sum);
+    return true;
+}
+
+}  // namespace
 
 namespace {
 
@@ -216,47 +259,82 @@ void report_shadow_pass(const std::vector<std::vector<uint8_t>>& in_volume,
         if (!stencil.empty()) ++stats.shadow_volume_stencils;
 }
 
-/// What the centre of pixel (x, y) sees of source triangle `src`.
-PixelSurface surface_at(const ShadeContext& ctx, uint32_t src, int x, int y) {
+/// What every pixel of one source triangle shares: its corners and their attributes, the
+/// planes of its perspective-correct weights, its face normal. Pixels of a tile mostly see the
+/// triangle their neighbour saw, so the pass keeps the last one.
+struct SourceTriangle {
+    uint32_t src = k_no_triangle;
+    Vec3 p[3], n[3];
+    Vec3 c[3] = {Vec3(1.0f), Vec3(1.0f), Vec3(1.0f)};
+    BarycentricPlanes planes;
+    bool textured = false;
+    Vec3 face;  ///< face_normal(p[0], p[1], p[2]), not normalized
+    float face_length = 0;
+
+    /// Makes this triangle `src` (nothing to do when it already is).
+    void load(const ShadeContext& ctx, uint32_t source) {
+        if (source == src) return;
+        src = source;
+        const auto& idx = ctx.tris.indices[src];
+        for (int k = 0; k < 3; ++k) {
+            p[k] = ctx.tris.positions[idx[k]];
+            n[k] = ctx.tris.normals[idx[k]];
+        }
+        planes = barycentric_planes(ctx.ps.clip_positions[idx[0]], ctx.ps.clip_positions[idx[1]],
+                                    ctx.ps.clip_positions[idx[2]]);
+        const Material& material = ctx.scene.materials[ctx.tris.material[src]];
+        textured = static_cast<bool>(material.texture);
+        const bool coloured = !ctx.tris.colors.empty() && material.vertex_colours;
+        for (int k = 0; k < 3; ++k) c[k] = coloured ? ctx.tris.colors[idx[k]] : Vec3(1.0f);
+        face = face_normal(p[0], p[1], p[2]);
+        face_length = length(face);
+    }
+};
+
+/// What the centre of pixel (x, y) sees of the source triangle `tri` holds.
+PixelSurface surface_at(const ShadeContext& ctx, const SourceTriangle& tri, int x, int y) {
     PixelSurface s;
-    s.src = src;
-    const auto& idx = ctx.tris.indices[src];
+    s.src = tri.src;
     for (int k = 0; k < 3; ++k) {
-        s.p[k] = ctx.tris.positions[idx[k]];
-        s.n[k] = ctx.tris.normals[idx[k]];
+        s.p[k] = tri.p[k];
+        s.n[k] = tri.n[k];
+        s.c[k] = tri.c[k];
     }
     // Perspective-correct weights of the pixel centre on the source triangle.
     const double ndc_x = 2.0 * (x + 0.5) / ctx.width - 1.0;
     const double ndc_y = 1.0 - 2.0 * (y + 0.5) / ctx.height;
     s.b = {1.0f / 3, 1.0f / 3, 1.0f / 3};
-    perspective_barycentrics(ctx.ps.clip_positions[idx[0]], ctx.ps.clip_positions[idx[1]],
-                             ctx.ps.clip_positions[idx[2]], ndc_x, ndc_y, s.b);
+    barycentric_weights(tri.planes, ndc_x, ndc_y, s.b);
     s.point = s.b[0] * s.p[0] + s.b[1] * s.p[1] + s.b[2] * s.p[2];
     s.n_interp = s.b[0] * s.n[0] + s.b[1] * s.n[1] + s.b[2] * s.n[2];
-    // Texture coordinates where a texture will read them.
-    if (!ctx.tris.uvs.empty() && ctx.scene.materials[ctx.tris.material[src]].texture) {
-        const std::array<Vec4, 3> clip{ctx.ps.clip_positions[idx[0]], ctx.ps.clip_positions[idx[1]],
-                                       ctx.ps.clip_positions[idx[2]]};
-        s.tex =
-            perspective_uv(clip, {ctx.tris.uvs[idx[0]], ctx.tris.uvs[idx[1]], ctx.tris.uvs[idx[2]]},
-                           ndc_x, ndc_y, ctx.width, ctx.height);
+    if (tri.textured) {
+        // Texture coordinates where a texture will read them.
+        if (!ctx.tris.uvs.empty()) {
+            const auto& idx = ctx.tris.indices[tri.src];
+            const std::array<Vec4, 3> clip{ctx.ps.clip_positions[idx[0]],
+                                           ctx.ps.clip_positions[idx[1]],
+                                           ctx.ps.clip_positions[idx[2]]};
+            s.tex = perspective_uv(
+                clip, {ctx.tris.uvs[idx[0]], ctx.tris.uvs[idx[1]], ctx.tris.uvs[idx[2]]}, ndc_x,
+                ndc_y, ctx.width, ctx.height);
+        }
+        s.tex.dp_dx = tangent_plane_step(ctx, s.point, tri.face, x, y, 1, 0);
+        s.tex.dp_dy = tangent_plane_step(ctx, s.point, tri.face, x, y, 0, 1);
     }
-    if (ctx.scene.materials[ctx.tris.material[src]].texture) {
-        const Vec3 n = face_normal(s.p[0], s.p[1], s.p[2]);
-        s.tex.dp_dx = tangent_plane_step(ctx, s.point, n, x, y, 1, 0);
-        s.tex.dp_dy = tangent_plane_step(ctx, s.point, n, x, y, 0, 1);
-    }
-    if (!ctx.tris.colors.empty() && ctx.scene.materials[ctx.tris.material[src]].vertex_colours)
-        for (int k = 0; k < 3; ++k) s.c[k] = ctx.tris.colors[idx[k]];
     s.dir = camera_ray(ctx.frame, x + 0.5f, y + 0.5f).direction;
 
     // Two-sided, as in the ray tracer: the side the eye sees is the front.
-    s.ng = face_normal(s.p[0], s.p[1], s.p[2]);
-    const float ng_len = length(s.ng);
-    s.ng = ng_len > 0.0f ? s.ng / ng_len : -s.dir;
+    s.ng = tri.face_length > 0.0f ? tri.face / tri.face_length : -s.dir;
     s.entering = dot(s.ng, s.dir) < 0.0f;
     s.ng_front = s.entering ? s.ng : -s.ng;
     return s;
+}
+
+/// The same for source triangle `src`.
+PixelSurface surface_at(const ShadeContext& ctx, uint32_t src, int x, int y) {
+    SourceTriangle tri;
+    tri.load(ctx, src);
+    return surface_at(ctx, tri, x, y);
 }
 
 /// The colour of `s`, seen at `pixel`, interpolated as ctx.interp says. Textures are looked up
@@ -321,68 +399,46 @@ PixelUv sphere_pixel_uv(const ShadeContext& ctx, const Sphere& s, Vec3 p, Vec3 n
     return out;
 }
 
-/// Colour and AOVs of a pixel that sees exact sphere `s`: shaded per pixel (it has no polygons
-/// to be flat or Gouraud shaded) by the code that shades triangles.
-void shade_sphere_pixel(const ShadeContext& ctx, const Sphere& s, int x, int y, size_t pixel,
+/// The colour (returned) and AOVs of a pixel that sees exact sphere `s`: shaded per pixel (it has
+/// no polygons to be flat or Gouraud shaded) by the code that shades triangles.
+Vec3 shade_sphere_pixel(const ShadeContext& ctx, const Sphere& s, int x, int y, size_t pixel,
                         Framebuffer& fb) {
     const SpherePixel sp = sphere_pixel(ctx, s, x, y);
     const float eye_distance = camera_distance(ctx.frame, sp.point);
     const std::optional<Vec3> light =
         ctx.has_area_lights ? light_face_at(ctx, x, y, eye_distance) : std::nullopt;
+    Vec3 colour;
     if (light) {
-        fb.set_color(pixel, *light);
+        colour = *light;
     } else {
         const PixelUv tex = ctx.scene.materials[s.material].texture
                                 ? sphere_pixel_uv(ctx, s, sp.point, sp.normal_front, x, y)
                                 : PixelUv{};
         const ShadowQuery shadow{sp.point, sp.normal_front, pixel};
-        fb.set_color(pixel, shade_point(ctx, s.material, sp.point, sp.normal_front,
-                                        -sp.ray.direction, tex, Vec3(1.0f), shadow));
+        colour = shade_point(ctx, s.material, sp.point, sp.normal_front, -sp.ray.direction, tex,
+                             Vec3(1.0f), shadow);
     }
-    fb.depth[pixel] = eye_distance;
-    fb.id[pixel] = s.id + 1;
-    fb.normal[pixel] = sp.normal_front;
-}
-
-/// Colour and AOVs of every pixel of `tile`.
-void shade_tile(const ShadeContext& ctx, const VisibilityBuffer& vis, const Tile& tile,
-                Framebuffer& fb) {
-    for (int y = tile.y0; y < tile.y1; ++y)
-        for (int x = tile.x0; x < tile.x1; ++x) {
-            const size_t pixel = static_cast<size_t>(y) * ctx.width + x;
-            const uint32_t t = vis.triangle[pixel];
-            if (t == k_no_triangle) {
-                const std::optional<Vec3> light =
-                    ctx.has_area_lights ? light_face_at(ctx, x, y, k_infinity) : std::nullopt;
-                fb.set_color(pixel, light ? *light : background_at(ctx, x, y));
-                continue;
-            }
-            if (const Sphere* sphere = sphere_named(ctx, t)) {
-                shade_sphere_pixel(ctx, *sphere, x, y, pixel, fb);
-                continue;
-            }
-            const PixelSurface s = surface_at(ctx, ctx.ps.triangles[t].source, x, y);
-            const float eye_distance = camera_distance(ctx.frame, s.point);
-            const std::optional<Vec3> light =
-                ctx.has_area_lights ? light_face_at(ctx, x, y, eye_distance) : std::nullopt;
-            fb.set_color(pixel, light ? *light : shade_surface(ctx, s, pixel));
-            fb.depth[pixel] = eye_distance;
-            fb.id[pixel] = ctx.tris.id[s.src] + 1;
-            const float nl = length(s.n_interp);
-            const Vec3 sn = nl > 0.0f ? s.n_interp / nl : s.ng;
-            fb.normal[pixel] = dot(sn, s.dir) < 0.0f ? sn : -sn;
-        }
+    if (!fb.depth.empty()) {
+        fb.depth[pixel] = eye_distance;
+        fb.id[pixel] = s.id + 1;
+        fb.normal[pixel] = sp.normal_front;
+    }
+    return colour;
 }
 
 }  // namespace
 
-void report_raster_stats(const ProjectedScene& ps, const VisibilityBuffer& vis,
-                         RenderStats& stats) {
+void add_vertex_stage_stats(const ProjectedScene& ps, RenderStats& stats) {
     stats.raster_triangles += ps.counts.triangles_in;
     stats.raster_culled += ps.counts.culled;
     stats.raster_clipped_away += ps.counts.clipped_away;
     stats.raster_cut += ps.counts.cut;
     stats.raster_screen_triangles += ps.triangles.size();
+}
+
+void report_raster_stats(const ProjectedScene& ps, const VisibilityBuffer& vis,
+                         RenderStats& stats) {
+    add_vertex_stage_stats(ps, stats);
     stats.raster_covered_pixels += static_cast<uint64_t>(std::count_if(
         vis.triangle.begin(), vis.triangle.end(), [](uint32_t t) { return t != k_no_triangle; }));
 }
@@ -412,39 +468,9 @@ std::vector<float> visible_depth(const ShadeContext& ctx, const VisibilityBuffer
 
 }  // namespace
 
-namespace {
-
-/// The vectors k_i = col_j × col_k of the columns (x, y, w) of the three clip-space corners:
-/// Cramer's rule gives the point projecting to q = (ndc_x, ndc_y, 1) the weights λ_i ∝ q · k_i.
-std::array<std::array<double, 3>, 3> barycentric_planes(Vec4 c0, Vec4 c1, Vec4 c2) {
-    const double col[3][3] = {{c0.x, c0.y, c0.w}, {c1.x, c1.y, c1.w}, {c2.x, c2.y, c2.w}};
-    std::array<std::array<double, 3>, 3> k{};
-    for (int i = 0; i < 3; ++i) {
-        const double* a = col[(i + 1) % 3];
-        const double* b = col[(i + 2) % 3];
-        k[i] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-    }
-    return k;
-}
-
-double dot3(const std::array<double, 3>& a, const double (&q)[3]) {
-    return a[0] * q[0] + a[1] * q[1] + a[2] * q[2];
-}
-
-}  // namespace
-
 bool perspective_barycentrics(Vec4 c0, Vec4 c1, Vec4 c2, double ndc_x, double ndc_y,
                               std::array<float, 3>& weights) {
-    const auto k = barycentric_planes(c0, c1, c2);
-    const double q[3] = {ndc_x, ndc_y, 1.0};
-    double l[3], sum = 0;
-    for (int i = 0; i < 3; ++i) {
-        l[i] = dot3(k[i], q);
-        sum += l[i];
-    }
-    if (!(std::abs(sum) > 0.0) || !std::isfinite(sum)) return false;
-    for (int i = 0; i < 3; ++i) weights[i] = static_cast<float>(l[i] / sum);
-    return true;
+    return barycentric_weights(barycentric_planes(c0, c1, c2), ndc_x, ndc_y, weights);
 }
 
 PixelUv perspective_uv(const std::array<Vec4, 3>& clip, const std::array<Vec2, 3>& uv, double ndc_x,
@@ -471,73 +497,315 @@ PixelUv perspective_uv(const std::array<Vec4, 3>& clip, const std::array<Vec2, 3
     return out;
 }
 
-Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
-                             const VisibilityBuffer& vis, Film film, const RenderSettings& settings,
-                             const RasterSettings& raster) {
-    Framebuffer fb(std::move(film), vis.width, vis.height, true);
-    ShadeContext ctx{scene,
-                     ps,
-                     ps.scene.triangles,
-                     raster.interp,
-                     make_camera_frame(scene.camera),
-                     vis.width,
-                     vis.height,
-                     {scene.lights.data(), scene.lights.size(), scene.ambient},
-                     scene.lights.empty() ? ShadowMode::none : raster.shadows,
-                     nullptr,
-                     nullptr,
-                     nullptr,
-                     nullptr,
-                     raster.light_samples};
+namespace {
+
+/// A shading pass over one frame: its context and what the context points to (the shadow
+/// pass's maps, stencils or occluders, the environment lights' irradiance). Not movable: the
+/// context points into it.
+struct ShadePass {
     std::vector<std::optional<IrradianceSh>> environment_sh;
-    for (const Light& light : scene.lights) {
-        const auto* env = light_as<EnvironmentLight>(light);
-        environment_sh.push_back(env ? std::optional(project_environment(*env)) : std::nullopt);
-    }
-    ctx.environment_sh = &environment_sh;
-    ctx.sphere_rays = camera_pixel_rays(scene.camera, ps.view);
-    if (scene.show_background) {
-        ctx.environment = find_environment(scene.lights);
-        ctx.has_area_lights = has_area_light(scene.lights);
-    }
-    // The shadow pass, shared by every visibility method: maps from the lights, or a stencil
-    // per light counted against the depth of each pixel's visible point.
     std::shared_ptr<const ShadowMaps> maps;
     std::vector<std::vector<uint8_t>> in_volume;
     std::shared_ptr<const OccluderSet> occluders;
-    const auto shadow_pass_start = std::chrono::steady_clock::now();
-    if (ctx.shadows == ShadowMode::analytic) {
-        occluders = shadow_occluders(scene, settings.cache);
-        ctx.occluders = occluders.get();
-    } else if (ctx.shadows == ShadowMode::map || ctx.shadows == ShadowMode::pcf ||
-               ctx.shadows == ShadowMode::pcss) {
-        // Kept by a session, or shared by supersampling's passes (raster/shadow_map.h).
-        maps = shadow_maps_for_render(scene, ps.scene, raster.shadow_map_size, settings.cache,
-                                      raster.shared_shadow_maps.get(), settings.stats);
-        ctx.shadow_maps = maps.get();
-    } else if (ctx.shadows == ShadowMode::volume) {
-        const std::vector<float> depth = visible_depth(ctx, vis);
-        // Shadow volumes are built from polygon silhouettes: exact spheres cast theirs through
-        // their tessellation.
-        std::optional<RasterScene> tessellated;
-        if (!ps.scene.spheres.empty()) tessellated.emplace(tessellate_scene(scene));
-        const RasterScene& volume_scene = tessellated ? *tessellated : ps.scene;
-        const std::vector<uint8_t> casters = shadow_casting_triangles(scene, volume_scene);
+    ShadeContext ctx;
+    /// Triangles' pixels are shaded in SIMD lanes (raster/shade_lanes.h): per-pixel (Phong)
+    /// interpolation and delta lights only, which is what the lanes evaluate.
+    bool lanes = false;
+    SimdLevel simd = best_simd_level();  ///< the lanes' kernel
+    /// Screen triangle t is source triangle t (nothing culled or clipped: a model in view), so
+    /// its 52 bytes need not be read for the index.
+    bool same_order = false;
+
+    /// The source triangle of screen triangle `t`.
+    uint32_t source_of(uint32_t t) const { return same_order ? t : ctx.ps.triangles[t].source; }
+
+    ShadePass(const Scene& scene, const ProjectedScene& ps, const RasterSettings& raster, int width,
+              int height)
+        : ctx{scene,
+              ps,
+              ps.scene.triangles,
+              raster.interp,
+              make_camera_frame(scene.camera),
+              width,
+              height,
+              {scene.lights.data(), scene.lights.size(), scene.ambient},
+              scene.lights.empty() ? ShadowMode::none : raster.shadows,
+              nullptr,
+              nullptr,
+              nullptr,
+              nullptr,
+              raster.light_samples,
+              false,
+              nullptr,
+              {}} {
         for (const Light& light : scene.lights) {
-            if (shadow_view(light).projection == ShadowProjection::none) {
-                in_volume.emplace_back();  // lit unshadowed: never asked
+            const auto* env = light_as<EnvironmentLight>(light);
+            environment_sh.push_back(env ? std::optional(project_environment(*env)) : std::nullopt);
+        }
+        ctx.environment_sh = &environment_sh;
+        ctx.sphere_rays = camera_pixel_rays(scene.camera, ps.view);
+        if (scene.show_background) {
+            ctx.environment = find_environment(scene.lights);
+            ctx.has_area_lights = has_area_light(scene.lights);
+        }
+        simd = raster.simd;
+        same_order = ps.triangles.size() == ps.scene.triangles.size() && ps.counts.culled == 0 &&
+                     ps.counts.clipped_away == 0 && ps.counts.cut == 0;
+        lanes = raster.interp == Interpolation::phong &&
+                std::all_of(scene.lights.begin(), scene.lights.end(), is_delta_light);
+    }
+    ShadePass(const ShadePass&) = delete;
+    ShadePass& operator=(const ShadePass&) = delete;
+
+    /// The shadow pass, shared by every visibility method: maps from the lights, or a stencil
+    /// per light counted against the depth of each pixel's visible point (`vis` must then be
+    /// given).
+    void draw_shadows(const RenderSettings& settings, const RasterSettings& raster,
+                      const VisibilityBuffer* vis) {
+        const Scene& scene = ctx.scene;
+        const ProjectedScene& ps = ctx.ps;
+        const auto shadow_pass_start = std::chrono::steady_clock::now();
+        if (ctx.shadows == ShadowMode::analytic) {
+            occluders = shadow_occluders(scene, settings.cache);
+            ctx.occluders = occluders.get();
+        } else if (ctx.shadows == ShadowMode::map || ctx.shadows == ShadowMode::pcf ||
+                   ctx.shadows == ShadowMode::pcss) {
+            // Kept by a session, or shared by supersampling's passes (raster/shadow_map.h).
+            maps = shadow_maps_for_render(scene, ps.scene, raster.shadow_map_size, settings.cache,
+                                          raster.shared_shadow_maps.get(), settings.stats);
+            ctx.shadow_maps = maps.get();
+        } else if (ctx.shadows == ShadowMode::volume) {
+            const std::vector<float> depth = visible_depth(ctx, *vis);
+            // Shadow volumes are built from polygon silhouettes: exact spheres cast theirs
+            // through their tessellation.
+            std::optional<RasterScene> tessellated;
+            if (!ps.scene.spheres.empty()) tessellated.emplace(tessellate_scene(scene));
+            const RasterScene& volume_scene = tessellated ? *tessellated : ps.scene;
+            const std::vector<uint8_t> casters = shadow_casting_triangles(scene, volume_scene);
+            for (const Light& light : scene.lights) {
+                if (shadow_view(light).projection == ShadowProjection::none) {
+                    in_volume.emplace_back();  // lit unshadowed: never asked
+                    continue;
+                }
+                const std::vector<VolumePolygon> volume =
+                    shadow_volume_polygons(volume_scene.triangles, casters, light);
+                in_volume.push_back(stencil_shadow_mask(volume, ps.view, ctx.frame, depth));
+            }
+            ctx.in_volume = &in_volume;
+        }
+        if (settings.stats && ctx.shadows != ShadowMode::none)
+            report_shadow_pass(in_volume, shadow_pass_start, *settings.stats);
+    }
+};
+
+/// The AOVs of a pixel that sees triangle point `s`, when the framebuffer keeps them.
+void write_surface_aovs(const ShadeContext& ctx, const PixelSurface& s, size_t pixel,
+                        Framebuffer& fb) {
+    if (fb.depth.empty()) return;
+    fb.depth[pixel] = camera_distance(ctx.frame, s.point);
+    fb.id[pixel] = ctx.tris.id[s.src] + 1;
+    const float nl = length(s.n_interp);
+    const Vec3 sn = nl > 0.0f ? s.n_interp / nl : s.ng;
+    fb.normal[pixel] = dot(sn, s.dir) < 0.0f ? sn : -sn;
+}
+
+/// The visible triangle points of one tile, gathered for the lanes, and where they came from.
+struct TileLanes {
+    SurfaceLanes lanes;
+    std::array<int32_t, SurfaceLanes::k_capacity> x, y;
+    std::array<size_t, SurfaceLanes::k_capacity> pixel;
+    std::array<float, 3 * SurfaceLanes::k_capacity> shadow_normal;  ///< ShadowQuery::ng
+    std::array<int32_t, SurfaceLanes::k_capacity> local;            ///< pixel index inside the tile
+    /// The tile's colours, k_tile_size wide, written to the film a row at a time.
+    std::array<Vec3, SurfaceLanes::k_capacity> colour;
+    int count = 0;
+    const ShadeContext* ctx = nullptr;
+
+    /// Lane `count` := the Phong-shaded point of `s` (shade_surface's Interpolation::phong).
+    void add(const PixelSurface& s, int px, int py, size_t at, int in_tile) {
+        const int k = count++;
+        const Vec3 n = facing(s.n_interp, s.entering, s.ng_front, s.dir);
+        const Vec3 to_eye = -s.dir;
+        for (int a = 0; a < 3; ++a) {
+            lanes.position[a][k] = s.point[a];
+            lanes.normal[a][k] = n[a];
+            lanes.to_eye[a][k] = to_eye[a];
+            lanes.dp_dx[a][k] = s.tex.dp_dx[a];
+            lanes.dp_dy[a][k] = s.tex.dp_dy[a];
+            shadow_normal[3 * k + a] = s.ng_front[a];
+        }
+        lanes.material[k] = static_cast<int32_t>(ctx->tris.material[s.src]);
+        lanes.u[k] = s.tex.uv.x, lanes.v[k] = s.tex.uv.y;
+        lanes.du_dx[k] = s.tex.du_dx, lanes.dv_dx[k] = s.tex.dv_dx;
+        lanes.du_dy[k] = s.tex.du_dy, lanes.dv_dy[k] = s.tex.dv_dy;
+        x[k] = px, y[k] = py, pixel[k] = at, local[k] = in_tile;
+    }
+
+    /// Lanes past `count` up to a whole group: copies of lane 0, so that every lane the
+    /// kernel reads holds a real point (its texture lookups stay in range).
+    void pad() {
+        const int end = (count + SurfaceLanes::k_lane_group - 1) / SurfaceLanes::k_lane_group *
+                        SurfaceLanes::k_lane_group;
+        for (int k = count; k < end; ++k) {
+            for (int a = 0; a < 3; ++a) {
+                lanes.position[a][k] = lanes.position[a][0];
+                lanes.normal[a][k] = lanes.normal[a][0];
+                lanes.to_eye[a][k] = lanes.to_eye[a][0];
+                lanes.dp_dx[a][k] = lanes.dp_dx[a][0];
+                lanes.dp_dy[a][k] = lanes.dp_dy[a][0];
+            }
+            lanes.material[k] = lanes.material[0];
+            lanes.u[k] = lanes.u[0], lanes.v[k] = lanes.v[0];
+            lanes.du_dx[k] = lanes.du_dx[0], lanes.dv_dx[k] = lanes.dv_dx[0];
+            lanes.du_dy[k] = lanes.du_dy[0], lanes.dv_dy[k] = lanes.dv_dy[0];
+        }
+    }
+
+    /// LaneLighting::fractions: light_fraction at each asked lane's point.
+    static void fractions(const void* self, size_t light, int first, uint32_t asked,
+                          float* fraction) {
+        const auto& t = *static_cast<const TileLanes*>(self);
+        for (; asked; asked &= asked - 1) {
+            const int j = std::countr_zero(asked), k = first + j;
+            const ShadowQuery q{
+                Vec3(t.lanes.position[0][k], t.lanes.position[1][k], t.lanes.position[2][k]),
+                Vec3(t.shadow_normal[3 * k], t.shadow_normal[3 * k + 1],
+                     t.shadow_normal[3 * k + 2]),
+                t.pixel[k]};
+            fraction[j] = light_fraction(*t.ctx, light, q);
+        }
+    }
+};
+
+/// Colour and AOVs of every pixel of `tile`, whose visibility values are `seen` (k_tile_size
+/// wide from the tile's corner). Triangle pixels are shaded in lanes when the pass allows it,
+/// each lane as shade_surface would shade it alone; lanes whose material has no lane form are
+/// shaded again one at a time. Returns the pixels that show a triangle or sphere.
+size_t shade_tile_seen(const ShadePass& pass, const Tile& tile, const uint32_t* seen,
+                       Framebuffer& fb, TileLanes& gathered) {
+    const ShadeContext& ctx = pass.ctx;
+    gathered.count = 0;
+    gathered.ctx = &ctx;
+    std::array<Vec3, SurfaceLanes::k_capacity>& colour = gathered.colour;
+    SourceTriangle tri;
+    size_t covered = 0;
+    if (!ctx.has_area_lights && !ctx.environment &&
+        std::all_of(seen, seen + SurfaceLanes::k_capacity,
+                    [](uint32_t t) { return t == k_no_triangle; })) {
+        // Nothing in the tile (a partial tile's values past its edge are k_no_triangle too):
+        // the background, a row at a time.
+        std::fill(colour.begin(), colour.end(), ctx.scene.background);
+        for (int y = tile.y0; y < tile.y1; ++y)
+            fb.set_colors(static_cast<size_t>(y) * ctx.width + tile.x0, colour.data(),
+                          static_cast<size_t>(tile.x1 - tile.x0));
+        return 0;
+    }
+    // Start loading every triangle the tile sees: they lie far apart in memory.
+    const size_t screen_triangles = ctx.ps.triangles.size();
+    for (int k = 0, last = -1; k < SurfaceLanes::k_capacity; ++k)
+        if (seen[k] != static_cast<uint32_t>(last) && seen[k] < screen_triangles) {
+            last = static_cast<int>(seen[k]);
+            __builtin_prefetch(&ctx.tris.indices[pass.source_of(seen[k])]);
+        }
+    for (int y = tile.y0; y < tile.y1; ++y)
+        for (int x = tile.x0; x < tile.x1; ++x) {
+            const size_t pixel = static_cast<size_t>(y) * ctx.width + x;
+            const int local = (y - tile.y0) * k_tile_size + (x - tile.x0);
+            const uint32_t t = seen[local];
+            if (t == k_no_triangle) {
+                const std::optional<Vec3> light =
+                    ctx.has_area_lights ? light_face_at(ctx, x, y, k_infinity) : std::nullopt;
+                colour[local] = light ? *light : background_at(ctx, x, y);
                 continue;
             }
-            const std::vector<VolumePolygon> volume =
-                shadow_volume_polygons(volume_scene.triangles, casters, light);
-            in_volume.push_back(stencil_shadow_mask(volume, ps.view, ctx.frame, depth));
+            ++covered;
+            if (const Sphere* sphere = sphere_named(ctx, t)) {
+                colour[local] = shade_sphere_pixel(ctx, *sphere, x, y, pixel, fb);
+                continue;
+            }
+            tri.load(ctx, pass.source_of(t));
+            const PixelSurface s = surface_at(ctx, tri, x, y);
+            write_surface_aovs(ctx, s, pixel, fb);
+            if (pass.lanes) {
+                gathered.add(s, x, y, pixel, local);
+                continue;
+            }
+            const std::optional<Vec3> light =
+                ctx.has_area_lights ? light_face_at(ctx, x, y, camera_distance(ctx.frame, s.point))
+                                    : std::nullopt;
+            colour[local] = light ? *light : shade_surface(ctx, s, pixel);
         }
-        ctx.in_volume = &in_volume;
+    if (gathered.count > 0) {
+        gathered.pad();
+        LaneLighting lighting;
+        lighting.lighting = ctx.lighting;
+        lighting.materials = ctx.scene.materials.data();
+        if (ctx.shadows != ShadowMode::none) {
+            lighting.fractions = &TileLanes::fractions;
+            lighting.context = &gathered;
+        }
+        SurfaceLanes& lanes = gathered.lanes;
+        shade_surface_lanes(lighting, gathered.count, lanes, pass.simd);
+        for (int k = 0; k < gathered.count; ++k) {
+            const int local = gathered.local[k];
+            if (lanes.scalar_only[k]) {
+                const int x = gathered.x[k], y = gathered.y[k];
+                tri.load(ctx, pass.source_of(seen[local]));
+                colour[local] = shade_surface(ctx, surface_at(ctx, tri, x, y), gathered.pixel[k]);
+                continue;
+            }
+            colour[local] = Vec3(lanes.colour[0][k], lanes.colour[1][k], lanes.colour[2][k]);
+        }
     }
-    if (settings.stats && ctx.shadows != ShadowMode::none)
-        report_shadow_pass(in_volume, shadow_pass_start, *settings.stats);
-    for_each_tile(vis.width, vis.height, settings.control,
-                  [&](const Tile& tile) { shade_tile(ctx, vis, tile, fb); });
+    for (int y = tile.y0; y < tile.y1; ++y)
+        fb.set_colors(static_cast<size_t>(y) * ctx.width + tile.x0,
+                      colour.data() + (y - tile.y0) * k_tile_size,
+                      static_cast<size_t>(tile.x1 - tile.x0));
+    return covered;
+}
+
+/// Each thread's lanes, made once per thread and kept (a tile's gathered points are 50 KB:
+/// too much for every tile's stack frame to clear, and no allocation per frame).
+TileLanes& thread_tile_lanes() {
+    thread_local std::unique_ptr<TileLanes> lanes = std::make_unique<TileLanes>();
+    return *lanes;
+}
+
+}  // namespace
+
+Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& ps,
+                             const VisibilityBuffer& vis, Film film, const RenderSettings& settings,
+                             const RasterSettings& raster) {
+    Framebuffer fb(std::move(film), vis.width, vis.height, settings.aov_buffers);
+    ShadePass pass(scene, ps, raster, vis.width, vis.height);
+    pass.draw_shadows(settings, raster, &vis);
+    for_each_tile(vis.width, vis.height, settings.control, [&](const Tile& tile) {
+        // The tile's values, k_tile_size wide, as a per-tile visibility method leaves them.
+        std::array<uint32_t, k_tile_size * k_tile_size> seen;
+        seen.fill(k_no_triangle);
+        for (int y = tile.y0; y < tile.y1; ++y)
+            std::copy_n(vis.triangle.data() + static_cast<size_t>(y) * vis.width + tile.x0,
+                        tile.x1 - tile.x0, seen.data() + (y - tile.y0) * k_tile_size);
+        shade_tile_seen(pass, tile, seen.data(), fb, thread_tile_lanes());
+    });
+    return fb;
+}
+
+Framebuffer shade_tiles(const Scene& scene, const ProjectedScene& ps, Film film,
+                        const RenderSettings& settings, const RasterSettings& raster,
+                        const TileVisibility& visible) {
+    const int width = scene.camera.width, height = scene.camera.height;
+    Framebuffer fb(std::move(film), width, height, settings.aov_buffers);
+    ShadePass pass(scene, ps, raster, width, height);
+    pass.draw_shadows(settings, raster, nullptr);
+    std::atomic<uint64_t> covered{0};
+    for_each_tile(width, height, settings.control, [&](const Tile& tile) {
+        std::array<uint32_t, k_tile_size * k_tile_size> seen;
+        visible(tile, seen.data());
+        covered.fetch_add(shade_tile_seen(pass, tile, seen.data(), fb, thread_tile_lanes()),
+                          std::memory_order_relaxed);
+    });
+    if (settings.stats) settings.stats->raster_covered_pixels += covered.load();
     return fb;
 }
 

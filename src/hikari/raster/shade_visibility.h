@@ -3,12 +3,14 @@
 // triangle each pixel centre sees, this pass interpolates that triangle's attributes and applies
 // the lecture's one shading model (shading/phong.h, Fig 4.29).
 
+#include <functional>
 #include <span>
 #include <utility>
 
 #include "hikari/frame/film.h"
 #include "hikari/frame/framebuffer.h"
 #include "hikari/frame/render_settings.h"
+#include "hikari/frame/tiles.h"
 #include "hikari/raster/raster_settings.h"
 #include "hikari/raster/screen_triangle.h"
 #include "hikari/raster/vertex_pipeline.h"
@@ -53,12 +55,30 @@ PixelUv perspective_uv(const std::array<Vec4, 3>& clip, const std::array<Vec2, 3
 /// as `raster.interp` says, with the shadows `raster.shadows` asks for (none, or shadow maps of
 /// `raster.shadow_map_size`: raster/shadow_map.h); normals are turned toward the eye as the ray
 /// tracer turns them, so both pipelines shade a surface alike. Parallel over tiles; reports to
-/// `settings.control`. The AOV buffers are always filled (the methods need depth anyway).
+/// `settings.control`. The AOV buffers are made and filled only when `settings.aov_buffers`.
 /// Visibility values past the screen triangles name the exact spheres of `projected.scene`
 /// (raster/sphere_raster.h): their pixels show the ray tracer's hit, shaded per pixel.
 Framebuffer shade_visibility(const Scene& scene, const ProjectedScene& projected,
                              const VisibilityBuffer& visibility, Film film,
                              const RenderSettings& settings, const RasterSettings& raster);
+
+/// A visibility method that decides one tile at a time: fills `seen`, the tile's k_tile_size ×
+/// k_tile_size visibility values (VisibilityBuffer's) row-major from its top-left pixel,
+/// k_tile_size wide whatever the tile's size. Called on many threads at once.
+using TileVisibility = std::function<void(const Tile& tile, uint32_t* seen)>;
+
+/// shade_visibility fused with a visibility method that works tile by tile: each tile is shaded
+/// as soon as `visible` has decided it, while its values are in cache, and no visibility buffer
+/// is made. For every shadow mode but volume (whose stencils need every pixel's depth first).
+/// Adds the covered pixels to `settings.stats`. Triangle pixels are shaded in SIMD lanes
+/// (raster/shade_lanes.h) when the interpolation is Phong and every light a delta light; the
+/// colours are bit-identical to shading each pixel alone, and to shade_visibility's.
+Framebuffer shade_tiles(const Scene& scene, const ProjectedScene& projected, Film film,
+                        const RenderSettings& settings, const RasterSettings& raster,
+                        const TileVisibility& visible);
+
+/// Adds the vertex stage's counts to `stats`.
+void add_vertex_stage_stats(const ProjectedScene& ps, RenderStats& stats);
 
 /// Adds the vertex stage's counts and the pixels `vis` covers to `stats`.
 void report_raster_stats(const ProjectedScene& ps, const VisibilityBuffer& vis, RenderStats& stats);

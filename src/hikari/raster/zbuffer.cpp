@@ -2,8 +2,12 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <memory>
+#include <mutex>
 #include <vector>
 
+#include "hikari/core/build_cache.h"
 #include "hikari/core/parallel.h"
 #include "hikari/core/ray.h"
 #include "hikari/frame/tiles.h"
@@ -46,13 +50,26 @@ struct FragmentCounts {
     uint32_t* sphere_fragment_counts() const { return count; }
 };
 
-/// Alg 4.2 over every tile of the image, into `nearest_out` and `depth_out` (row-major, either
-/// may be null). The render's pass runs the SIMD tile kernel; an observer that must see every
-/// fragment gets the per-pixel loop, which computes the same buffer.
-template <class Triangles, class Observer>
-void zbuffer_pass(const Triangles& triangles, int width, int height, ZBufferWorkspace& ws,
-                  uint32_t* nearest_out, float* depth_out, RenderControl* control,
-                  const Observer& observer, const SphereRaster* spheres, SimdLevel level) {
+/// The workspace a render session keeps for its Z-buffer renders (a BuildCache entry depends on
+/// no scene part: it holds no result, only room). The render that holds the lock uses it.
+struct KeptZBufferWorkspace {
+    std::unique_ptr<std::mutex> lock = std::make_unique<std::mutex>();
+    std::unique_ptr<ZBufferWorkspace> workspace = std::make_unique<ZBufferWorkspace>();
+};
+
+/// Counts exact spheres' fragments per pixel and nothing else: triangles take the SIMD kernel,
+/// which counts its own.
+struct SphereFragments {
+    static constexpr bool k_active = false;
+    FragmentCounts counts;
+    void fragment(int, int, uint32_t, float, float, bool) const {}
+    uint32_t* sphere_fragment_counts() const { return counts.count; }
+};
+
+/// The whole-frame half of Alg 4.2 that precedes the tiles: each triangle's edge functions
+/// and depth plane, and the tiles it is binned to (in triangle order).
+template <class Triangles>
+void zbuffer_setup(const Triangles& triangles, int width, int height, ZBufferWorkspace& ws) {
     ws.setup.resize(triangles.size());
     ws.home.resize(triangles.size());
     hikari::parallel_for(tbb::blocked_range<size_t>(0, triangles.size(), 1024),
@@ -64,41 +81,65 @@ void zbuffer_pass(const Triangles& triangles, int width, int height, ZBufferWork
                                          : k_no_tile;
                          });
     bin_triangles(ws.setup, ws.home, width, height, ws.bins);
-    ZBufferTileKernel* const kernel = zbuffer_tile_kernel(level);
+}
 
+/// Alg 4.2 over one tile into its own `depth` and `nearest` (k_tile_size wide, from the tile's
+/// corner; nearest may be null without spheres): Z = ∞ everywhere, then the tile's triangles
+/// in order, then the exact spheres. The render's pass runs the SIMD tile kernel; an observer
+/// that must see every fragment gets the per-pixel loop, which computes the same buffer.
+/// Returns the fragments the kernel depth-tested (0 under an observer, which counts its own).
+template <class Observer>
+uint64_t zbuffer_tile(const ZBufferWorkspace& ws, const Tile& tile, ZBufferTileKernel* kernel,
+                      float* depth, uint32_t* nearest, const Observer& observer,
+                      const SphereRaster* spheres, int width) {
+    constexpr size_t k_pixels = size_t{k_tile_size} * k_tile_size;
+    // Alg 4.2: Z(i, j) = ∞ for every pixel of the tile.
+    std::fill_n(depth, k_pixels, k_infinity);
+    if (nearest) std::fill_n(nearest, k_pixels, k_no_triangle);
+    const size_t tile_index = ws.bins.tile_at(tile.x0, tile.y0);
+    uint64_t tested = 0;
+    if constexpr (Observer::k_active) {
+        ws.bins.for_each(tile_index, [&](uint32_t t) {
+            const HalfSpaceTriangle& h = ws.setup[t];
+            for_each_covered_pixel(h, tile.x0, tile.y0, tile.x1, tile.y1,
+                                   [&](int x, int y, float b0, float b1, float b2) {
+                                       const float z = interpolated_depth(h, b0, b1, b2);
+                                       const int i = (y - tile.y0) * k_tile_size + (x - tile.x0);
+                                       observer.fragment(x, y, t, z, depth[i], z < depth[i]);
+                                       // Alg 4.2: the depth test; nearer fragments replace.
+                                       if (z < depth[i]) {
+                                           depth[i] = z;
+                                           nearest[i] = t;
+                                       }
+                                   });
+        });
+    } else {
+        TileDepth target{&tile, depth, nearest, k_infinity};
+        ws.bins.for_each_run(tile_index, [&](const uint32_t* run, size_t count) {
+            kernel(ws.setup.data(), run, count, target);
+        });
+        tested = target.tested;
+    }
+    if (spheres)
+        draw_spheres_in_tile(*spheres, tile, depth, nearest, observer.sphere_fragment_counts(),
+                             width);
+    return tested;
+}
+
+/// Alg 4.2 over every tile of the image, into `nearest_out` and `depth_out` (row-major, either
+/// may be null).
+template <class Triangles, class Observer>
+void zbuffer_pass(const Triangles& triangles, int width, int height, ZBufferWorkspace& ws,
+                  uint32_t* nearest_out, float* depth_out, RenderControl* control,
+                  const Observer& observer, const SphereRaster* spheres, SimdLevel level) {
+    zbuffer_setup(triangles, width, height, ws);
+    ZBufferTileKernel* const kernel = zbuffer_tile_kernel(level);
     for_each_tile(width, height, control, [&](const Tile& tile) {
-        // Alg 4.2: Z(i, j) = ∞ for every pixel of the tile.
         std::array<float, k_tile_size * k_tile_size> depth;
         std::array<uint32_t, k_tile_size * k_tile_size> nearest;
-        depth.fill(k_infinity);
-        nearest.fill(k_no_triangle);
-        const size_t tile_index = ws.bins.tile_at(tile.x0, tile.y0);
-        if constexpr (Observer::k_active) {
-            ws.bins.for_each(tile_index, [&](uint32_t t) {
-                const HalfSpaceTriangle& h = ws.setup[t];
-                for_each_covered_pixel(h, tile.x0, tile.y0, tile.x1, tile.y1,
-                                       [&](int x, int y, float b0, float b1, float b2) {
-                                           const float z = interpolated_depth(h, b0, b1, b2);
-                                           const int i =
-                                               (y - tile.y0) * k_tile_size + (x - tile.x0);
-                                           observer.fragment(x, y, t, z, depth[i], z < depth[i]);
-                                           // Alg 4.2: the depth test; nearer fragments replace.
-                                           if (z < depth[i]) {
-                                               depth[i] = z;
-                                               nearest[i] = t;
-                                           }
-                                       });
-            });
-        } else {
-            TileDepth target{&tile, depth.data(), nearest_out || spheres ? nearest.data() : nullptr,
-                             k_infinity};
-            ws.bins.for_each_run(tile_index, [&](const uint32_t* run, size_t count) {
-                kernel(ws.setup.data(), run, count, target);
-            });
-        }
-        if (spheres)
-            draw_spheres_in_tile(*spheres, tile, depth.data(), nearest.data(),
-                                 observer.sphere_fragment_counts(), width);
+        zbuffer_tile(ws, tile, kernel, depth.data(),
+                     nearest_out || spheres || Observer::k_active ? nearest.data() : nullptr,
+                     observer, spheres, width);
         for (int y = tile.y0; y < tile.y1; ++y) {
             const size_t row = static_cast<size_t>(y) * width + tile.x0;
             const size_t local = static_cast<size_t>(y - tile.y0) * k_tile_size;
@@ -168,19 +209,65 @@ Framebuffer render_zbuffer(const Scene& scene, Film film, const RenderSettings& 
     const SphereRaster spheres =
         prepare_sphere_raster(ps.scene.spheres, ps.view, camera_pixel_rays(scene.camera, ps.view),
                               static_cast<uint32_t>(ps.triangles.size()));
-    VisibilityBuffer vis;
-    if (!settings.stats) {
-        vis = zbuffer_visibility(ps.triangles, width, height, settings.control, &spheres);
-    } else {
-        std::vector<uint32_t> fragments;
-        vis = zbuffer_visibility_counted(ps.triangles, width, height, fragments, &spheres);
-        uint64_t total = 0;
-        for (const uint32_t f : fragments) total += f;
-        settings.stats->raster_fragments += total;
+    const bool any_spheres = !spheres.spheres.empty();
+    if (settings.stats) {
+        add_vertex_stage_stats(ps, *settings.stats);
         settings.stats->raster_exact_spheres += spheres.spheres.size();
-        report_raster_stats(ps, vis, *settings.stats);
     }
-    return shade_visibility(scene, ps, vis, std::move(film), settings, raster);
+    if (raster.shadows == ShadowMode::volume && !scene.lights.empty()) {
+        // The stencils count against every pixel's depth: visibility first, then shading.
+        VisibilityBuffer vis;
+        if (!settings.stats) {
+            vis = zbuffer_visibility(ps.triangles, width, height, settings.control,
+                                     any_spheres ? &spheres : nullptr);
+        } else {
+            std::vector<uint32_t> fragments;
+            vis = zbuffer_visibility_counted(ps.triangles, width, height, fragments,
+                                             any_spheres ? &spheres : nullptr);
+            uint64_t total = 0;
+            for (const uint32_t f : fragments) total += f;
+            settings.stats->raster_fragments += total;
+            settings.stats->raster_covered_pixels +=
+                static_cast<uint64_t>(std::count_if(vis.triangle.begin(), vis.triangle.end(),
+                                                    [](uint32_t t) { return t != k_no_triangle; }));
+        }
+        return shade_visibility(scene, ps, vis, std::move(film), settings, raster);
+    }
+    // Alg 4.2 tile by tile, each tile shaded as soon as its Z-buffer is done. A session keeps
+    // the workspace, so that its next render allocates none (unless two renders overlap).
+    ZBufferWorkspace local;
+    const std::shared_ptr<const KeptZBufferWorkspace> kept = cached_or_built<KeptZBufferWorkspace>(
+        settings.cache, &scene, "zbuffer workspace", SceneParts::none,
+        [] { return KeptZBufferWorkspace{}; });
+    const std::unique_lock hold(*kept->lock, std::try_to_lock);
+    ZBufferWorkspace& ws = hold.owns_lock() ? *kept->workspace : local;
+    zbuffer_setup(std::span<const ScreenTriangle>(ps.triangles), width, height, ws);
+    ZBufferTileKernel* const kernel = zbuffer_tile_kernel(raster.simd);
+    // Exact spheres' fragments are counted per pixel (draw_spheres_in_tile), triangles' by the
+    // kernel.
+    std::vector<uint32_t> sphere_fragments;
+    if (settings.stats && any_spheres)
+        sphere_fragments.assign(static_cast<size_t>(width) * height, 0);
+    std::atomic<uint64_t> tested{0};
+    const FragmentCounts sphere_counts{width, sphere_fragments.data()};
+    Framebuffer fb = shade_tiles(
+        scene, ps, std::move(film), settings, raster, [&](const Tile& tile, uint32_t* seen) {
+            std::array<float, k_tile_size * k_tile_size> depth;
+            uint64_t n = 0;
+            if (sphere_fragments.empty())
+                n = zbuffer_tile(ws, tile, kernel, depth.data(), seen, NoFragmentObserver{},
+                                 any_spheres ? &spheres : nullptr, width);
+            else
+                n = zbuffer_tile(ws, tile, kernel, depth.data(), seen,
+                                 SphereFragments{sphere_counts}, &spheres, width);
+            if (settings.stats) tested.fetch_add(n, std::memory_order_relaxed);
+        });
+    if (settings.stats) {
+        uint64_t total = tested.load();
+        for (const uint32_t f : sphere_fragments) total += f;
+        settings.stats->raster_fragments += total;
+    }
+    return fb;
 }
 
 }  // namespace hikari

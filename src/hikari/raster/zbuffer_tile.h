@@ -22,6 +22,9 @@ struct TileDepth {
     float* depth = nullptr;
     uint32_t* nearest = nullptr;  ///< may be null: a depth-only pass (shadow maps)
     float farthest = 0;           ///< ≥ every depth of the tile's pixels
+    /// Fragments depth-tested so far (pixel centres covered by a triangle not rejected whole):
+    /// Alg 4.2's inner loop count for `--stats`.
+    uint64_t tested = 0;
 };
 
 /// Depth-tests the triangles `triangles[0, count)` (indices into `setup`, drawn in that order)

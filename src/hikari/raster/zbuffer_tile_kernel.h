@@ -39,6 +39,7 @@ void draw_per_pixel(const HalfSpaceTriangle& h, uint32_t id, TileDepth& target) 
                            [&](int x, int y, float b0, float b1, float b2) {
                                const float z = interpolated_depth(h, b0, b1, b2);
                                const int i = (y - tile.y0) * k_tile_size + (x - tile.x0);
+                               ++target.tested;
                                if (z < target.depth[i]) {
                                    target.depth[i] = z;
                                    if (target.nearest) target.nearest[i] = id;
@@ -114,6 +115,7 @@ void draw_lanes(const HalfSpaceTriangle& h, uint32_t id, TileDepth& target) {
             const __mmask8 inside = static_cast<__mmask8>(
                 _mm512_cmpge_epi64_mask(any_sign, _mm512_setzero_si512()) & s.column_bits(g));
             if (!inside) continue;
+            target.tested += static_cast<uint64_t>(std::popcount(static_cast<unsigned>(inside)));
             const __m256 b0 =
                 _mm256_mul_ps(_mm512_cvtepi64_ps(_mm512_sub_epi64(e0, bias0)), inv_area);
             const __m256 b1 =
@@ -190,6 +192,7 @@ void draw_lanes(const HalfSpaceTriangle& h, uint32_t id, TileDepth& target) {
                     << 4;
             const unsigned inside_bits = sign_bits & s.column_bits(g);
             if (!inside_bits) continue;
+            target.tested += static_cast<uint64_t>(std::popcount(inside_bits));
             const __m256i inside = _mm256_cmpeq_epi32(
                 _mm256_and_si256(_mm256_set1_epi32(static_cast<int>(inside_bits)), lane_bit),
                 lane_bit);
@@ -238,6 +241,7 @@ void draw_lanes(const HalfSpaceTriangle& h, uint32_t id, TileDepth& target) {
                 const int64_t e1 = base[1] + s.step_x[1] * k;
                 const int64_t e2 = base[2] + s.step_x[2] * k;
                 if ((e0 | e1 | e2) < 0 || !(columns >> k & 1u)) continue;
+                ++target.tested;
                 const float b0 = exact_to_float(e0 - h.bias[0]) * s.inv_area;
                 const float b1 = exact_to_float(e1 - h.bias[1]) * s.inv_area;
                 const float b2 = exact_to_float(e2 - h.bias[2]) * s.inv_area;

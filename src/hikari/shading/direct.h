@@ -61,6 +61,14 @@ HIKARI_INLINE DirectLighting<F> direct_lighting(const LightingEnvironment& env,
             // A fraction of the light gets through (filtered shadow maps); one point only.
             if (!(reach > 0.0f)) continue;
             out.colour = out.colour + phong_reflected(m, s, light, cos_alpha, specular) * reach;
+        } else if constexpr (std::is_same_v<std::decay_t<decltype(reach)>, F>) {
+            // The same per lane (the raster shading pass's lanes): lane for lane what one point
+            // gets.
+            const MaskOf<F> lit = facing & (reach > F(0.0f));
+            if (!any(lit)) continue;
+            out.colour =
+                select(lit, out.colour + phong_reflected(m, s, light, cos_alpha, specular) * reach,
+                       out.colour);
         } else {
             const MaskOf<F> lit = facing & reach;
             if (!any(lit)) continue;
