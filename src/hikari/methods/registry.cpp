@@ -166,6 +166,7 @@ constexpr MethodOption k_ray_tracing_options[] = {
 constexpr MethodOption k_path_options[] = {
     k_spp_option,
     k_max_depth_option,
+    k_device_option,
     {"--clamp",
      "Scale each sample's radiance down to at most this per channel (removes fireflies, "
      "biased; default 0 = off)",
