@@ -5,11 +5,13 @@
 #include <chrono>
 #include <set>
 #include <span>
+#include <thread>
 #include <variant>
 #include <vector>
 
 #include "cli_options.h"
 #include "console.h"
+#include "hikari/core/cuda_devices.h"
 #include "hikari/io/models/model_file.h"
 #include "hikari/io/scene/scene_json.h"
 
@@ -121,21 +123,43 @@ std::string info_report(const std::filesystem::path& file) {
     return text;
 }
 
+std::string devices_report() {
+    std::string text = fmt::format("cpu: {} threads (--device cpu, the default)\n",
+                                   std::thread::hardware_concurrency());
+    const CudaDevices cuda = find_cuda_devices();
+    for (size_t d = 0; d < cuda.devices.size(); ++d) {
+        const CudaDevice& device = cuda.devices[d];
+        text += fmt::format(
+            "cuda {}: {}, compute capability {}.{}, {} multiprocessors, {:.1f} GiB "
+            "(--device cuda)\n",
+            d, device.name, device.compute_major, device.compute_minor, device.multiprocessors,
+            static_cast<double>(device.memory_bytes) / (1024.0 * 1024.0 * 1024.0));
+    }
+    if (!cuda.problem.empty()) text += fmt::format("cuda: {}\n", cuda.problem);
+    return text;
+}
+
 namespace cli {
 
-CLI::App* add_info_command(CLI::App& app, std::string& file) {
+CLI::App* add_info_command(CLI::App& app, std::string& file, bool& devices) {
     CLI::App* info = app.add_subcommand(
         "info",
         "Print what a model or scene file holds: triangles, vertices, bounds, materials, "
-        "textures, lights, cameras, and the load time.");
-    info->add_option("file", file, "Model (.obj, .ply, .gltf, .glb) or scene (.json) file")
-        ->required();
+        "textures, lights, cameras, and the load time; or, with --devices, the devices a render "
+        "can run on.");
+    info->add_option("file", file, "Model (.obj, .ply, .gltf, .glb) or scene (.json) file");
+    info->add_flag("--devices", devices,
+                   "List the devices --device can name: the CPU, and the CUDA GPUs found (or why "
+                   "there are none)");
     add_max_memory_option(*info, "files");
     return info;
 }
 
-int run_info(const std::string& file) {
-    print_out("{}", info_report(file));
+int run_info(const std::string& file, bool devices) {
+    if (devices) print_out("{}", devices_report());
+    if (!file.empty()) print_out("{}", info_report(file));
+    if (!devices && file.empty())
+        throw UsageError("info: give a model or scene FILE, or --devices");
     return 0;
 }
 

@@ -51,6 +51,7 @@ struct CommandLine {
     CompareOptions compare;
     ExplainOptions explain;
     std::string info_file;
+    bool info_devices = false;
     ServeOptions serve;
 };
 
@@ -102,7 +103,9 @@ std::vector<Subcommand> add_subcommands(CLI::App& app, CommandLine& c, std::stri
          [&c, program] { return run_gallery(c.gallery, program); }},
         {add_compare_command(app, c.compare), {}, [&c] { return run_compare(c.compare); }},
         {add_explain_command(app, c.explain), {}, [&c] { return run_explain(c.explain); }},
-        {add_info_command(app, c.info_file), {}, [&c] { return run_info(c.info_file); }},
+        {add_info_command(app, c.info_file, c.info_devices),
+         {},
+         [&c] { return run_info(c.info_file, c.info_devices); }},
         {add_serve_command(app, c.serve), {}, [&c] { return run_serve(c.serve); }},
     };
 }

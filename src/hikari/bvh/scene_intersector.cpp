@@ -56,67 +56,15 @@ bool SceneIntersector::closest(const Ray& ray, Interval range, SurfaceHit& hit) 
 
 void SceneIntersector::describe_hit(const Ray& ray, float t, HitKind kind, size_t index,
                                     const TriangleHit& triangle, SurfaceHit& hit) const {
-    hit.t = t;
-    hit.position = ray.at(t);
-    hit.kind = kind;
-    const bool on_triangle = kind == HitKind::triangle;
-    hit.index = on_triangle ? triangle.triangle : static_cast<uint32_t>(index);
-    hit.bary_u = on_triangle ? triangle.u : 0.0f;
-    hit.bary_v = on_triangle ? triangle.v : 0.0f;
-    if (kind == HitKind::sphere) {
-        const Sphere& s = m_scene.spheres[index];
-        hit.geometric_normal = (hit.position - s.center) / s.radius;
-        hit.shading_normal = hit.geometric_normal;
-        hit.material = s.material;
-        hit.id = s.id;
-        return;
-    }
-    if (kind == HitKind::plane) {
-        const Plane& p = m_scene.planes[index];
-        hit.geometric_normal = p.normal;
-        hit.shading_normal = hit.geometric_normal;
-        hit.material = p.material;
-        hit.id = p.id;
-        return;
-    }
-    const TriangleSet& tris = m_scene.triangles;
-    const auto& [i0, i1, i2] = tris.indices[triangle.triangle];
-    const Vec3 p0 = tris.positions[i0], p1 = tris.positions[i1], p2 = tris.positions[i2];
-    // The lecture's N = (P2 − P1) × (P3 − P2) (Fig 4.5).
-    hit.geometric_normal = normalize(cross(p1 - p0, p2 - p1));
-    const float w = 1.0f - triangle.u - triangle.v;
-    // From the barycentrics rather than origin + t·direction: closer to the surface, which the
-    // ray-offset of secondary rays relies on (Wächter & Binder 2019).
-    hit.position = p0 * w + p1 * triangle.u + p2 * triangle.v;
-    const Vec3 n =
-        tris.normals[i0] * w + tris.normals[i1] * triangle.u + tris.normals[i2] * triangle.v;
-    const float len2 = dot(n, n);
-    hit.shading_normal = len2 > 0.0f ? n / std::sqrt(len2) : hit.geometric_normal;
-    hit.material = tris.material[triangle.triangle];
-    hit.id = tris.id[triangle.triangle];
+    describe_surface_hit(FlatGeometry(m_scene), ray, t, kind, index, triangle, hit);
 }
 
 SurfaceUv SceneIntersector::surface_uv(const SurfaceHit& hit) const {
-    if (hit.kind == HitKind::sphere) return sphere_uv(m_scene.spheres[hit.index], hit.position);
-    if (hit.kind == HitKind::plane) return plane_uv(m_scene.planes[hit.index], hit.position);
-    const TriangleSet& tris = m_scene.triangles;
-    if (hit.kind != HitKind::triangle || tris.uvs.empty()) return {};
-    const auto& [i0, i1, i2] = tris.indices[hit.index];
-    const std::array<Vec2, 3> t{tris.uvs[i0], tris.uvs[i1], tris.uvs[i2]};
-    SurfaceUv out =
-        triangle_uv_gradients({tris.positions[i0], tris.positions[i1], tris.positions[i2]}, t);
-    const float w = 1.0f - hit.bary_u - hit.bary_v;
-    out.uv = {t[0].x * w + t[1].x * hit.bary_u + t[2].x * hit.bary_v,
-              t[0].y * w + t[1].y * hit.bary_u + t[2].y * hit.bary_v};
-    return out;
+    return surface_uv_of(FlatGeometry(m_scene), hit);
 }
 
 Vec3 SceneIntersector::surface_colour(const SurfaceHit& hit) const {
-    const TriangleSet& tris = m_scene.triangles;
-    if (hit.kind != HitKind::triangle || tris.colors.empty()) return Vec3(1.0f);
-    const auto& [i0, i1, i2] = tris.indices[hit.index];
-    const float w = 1.0f - hit.bary_u - hit.bary_v;
-    return w * tris.colors[i0] + hit.bary_u * tris.colors[i1] + hit.bary_v * tris.colors[i2];
+    return surface_colour_of(FlatGeometry(m_scene), hit);
 }
 
 bool SceneIntersector::occluded_by_triangles(const Ray& ray, Interval range) const {

@@ -4,7 +4,9 @@
 // triangle as its limit; infinite planes, which no box holds, tested directly. Built once per
 // render, read by all threads.
 
+#include "hikari/bvh/flat_intersector.h"
 #include "hikari/bvh/sphere_bvh.h"
+#include "hikari/bvh/surface_hit.h"
 #include "hikari/bvh/triangle_hit.h"
 #include "hikari/bvh/wide_bvh.h"
 #include "hikari/bvh/wide_bvh_packet.h"
@@ -15,22 +17,6 @@
 #include "hikari/scene/scene.h"
 
 namespace hikari {
-
-/// Which kind of primitive a nearest-hit search found.
-enum class HitKind : uint8_t { none, triangle, sphere, plane };
-
-/// Where a ray meets a surface, with what the shading of that point needs.
-struct SurfaceHit {
-    float t = k_infinity;   ///< distance along the ray
-    Vec3 position;          ///< world space
-    Vec3 geometric_normal;  ///< unit, as the primitive defines it (not flipped)
-    Vec3 shading_normal;    ///< unit, interpolated for meshes; same side as geometric
-    uint32_t material = 0;  ///< index into Scene::materials
-    PrimitiveId id = 0;     ///< the primitive hit
-    HitKind kind = HitKind::none;
-    uint32_t index = 0;            ///< into Scene::triangles, spheres or planes, by `kind`
-    float bary_u = 0, bary_v = 0;  ///< triangles: the weights of corners 1 and 2
-};
 
 class SceneIntersector {
   public:
@@ -74,6 +60,10 @@ class SceneIntersector {
 
     /// The wide BVH over the scene's triangles.
     const WideBvh& bvh() const { return m_bvh; }
+    /// The wide BVH shadow rays traverse: over the shadow-casting triangles (bvh() when all cast).
+    const WideBvh& shadow_bvh() const { return m_all_cast ? m_bvh : m_shadow_bvh; }
+    /// The scene's geometry as flat views, read now (what the kernels read; describe_hit too).
+    FlatGeometry geometry() const { return FlatGeometry(m_scene); }
     /// The wide BVH over the scene's spheres.
     const SphereBvh& sphere_bvh() const { return m_spheres; }
     /// Wall time the BVH builds took, in milliseconds.

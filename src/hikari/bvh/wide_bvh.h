@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "hikari/core/aabb.h"
+#include "hikari/core/host_device.h"
 #include "hikari/core/huge_page_allocator.h"
 
 namespace hikari {
@@ -86,8 +87,8 @@ struct WideBvh {
 
 /// Triangle i of a leaf's block (the `count` triangles at WideBvh::triangle_data[9 first ...]),
 /// its vertices as given, for the reference tests.
-inline void load_leaf_triangle(const float* block, uint32_t count, uint32_t i, Vec3& p0, Vec3& p1,
-                               Vec3& p2) {
+HIKARI_HD inline void load_leaf_triangle(const float* block, uint32_t count, uint32_t i, Vec3& p0,
+                                         Vec3& p1, Vec3& p2) {
     p0 = {block[0 * count + i], block[1 * count + i], block[2 * count + i]};
     p1 = {block[3 * count + i], block[4 * count + i], block[5 * count + i]};
     p2 = {block[6 * count + i], block[7 * count + i], block[8 * count + i]};

@@ -16,6 +16,8 @@
 #include <cstring>
 #include <type_traits>
 
+#include "hikari/core/host_device.h"
+
 #define HIKARI_INLINE [[gnu::always_inline]] inline
 
 namespace hikari {
@@ -182,9 +184,9 @@ template <class F>
 inline constexpr bool k_is_scalar = std::is_same_v<F, float>;
 
 /// `a` where `m`, else `b`.
-HIKARI_INLINE float select(bool m, float a, float b) { return m ? a : b; }
-HIKARI_INLINE int32_t select(bool m, int32_t a, int32_t b) { return m ? a : b; }
-HIKARI_INLINE bool select(bool m, bool a, bool b) { return m ? a : b; }
+HIKARI_INLINE HIKARI_HD float select(bool m, float a, float b) { return m ? a : b; }
+HIKARI_INLINE HIKARI_HD int32_t select(bool m, int32_t a, int32_t b) { return m ? a : b; }
+HIKARI_INLINE HIKARI_HD bool select(bool m, bool a, bool b) { return m ? a : b; }
 template <class Isa>
 HIKARI_INLINE LaneFloat<Isa> select(const LaneMask<Isa>& m, const LaneFloat<Isa>& a,
                                     const LaneFloat<Isa>& b) {
@@ -224,14 +226,14 @@ HIKARI_INLINE int32_t or_lanes(const typename detail::LaneVectors<Width>::Int& v
 }
 
 /// Whether any lane is true.
-HIKARI_INLINE bool any(bool m) { return m; }
+HIKARI_INLINE HIKARI_HD bool any(bool m) { return m; }
 template <class Isa>
 HIKARI_INLINE bool any(const LaneMask<Isa>& m) {
     return or_lanes<Isa::k_width>(m.v) != 0;
 }
 
 /// The correctly rounded square root (the SIMD instruction rounds as sqrtf does).
-HIKARI_INLINE float sqrt_of(float a) { return std::sqrt(a); }
+HIKARI_INLINE HIKARI_HD float sqrt_of(float a) { return std::sqrt(a); }
 template <class Isa>
 HIKARI_INLINE LaneFloat<Isa> sqrt_of(const LaneFloat<Isa>& a) {
     LaneFloat<Isa> r;
@@ -240,7 +242,7 @@ HIKARI_INLINE LaneFloat<Isa> sqrt_of(const LaneFloat<Isa>& a) {
 }
 
 /// |a|.
-HIKARI_INLINE float abs_of(float a) { return std::fabs(a); }
+HIKARI_INLINE HIKARI_HD float abs_of(float a) { return std::fabs(a); }
 template <class Isa>
 HIKARI_INLINE LaneFloat<Isa> abs_of(const LaneFloat<Isa>& a) {
     using Bits = typename LaneInt<Isa>::Vector;
@@ -249,32 +251,44 @@ HIKARI_INLINE LaneFloat<Isa> abs_of(const LaneFloat<Isa>& a) {
 }
 
 /// static_cast<int32_t>(a): truncation toward zero (a must be in int32_t's range).
-HIKARI_INLINE int32_t truncate_to_int(float a) { return static_cast<int32_t>(a); }
+HIKARI_INLINE HIKARI_HD int32_t truncate_to_int(float a) { return static_cast<int32_t>(a); }
 template <class Isa>
 HIKARI_INLINE LaneInt<Isa> truncate_to_int(const LaneFloat<Isa>& a) {
     return LaneInt<Isa>(__builtin_convertvector(a.v, typename LaneInt<Isa>::Vector));
 }
 /// static_cast<float>(a).
-HIKARI_INLINE float to_float(int32_t a) { return static_cast<float>(a); }
+HIKARI_INLINE HIKARI_HD float to_float(int32_t a) { return static_cast<float>(a); }
 template <class Isa>
 HIKARI_INLINE LaneFloat<Isa> to_float(const LaneInt<Isa>& a) {
     return LaneFloat<Isa>(__builtin_convertvector(a.v, typename LaneFloat<Isa>::Vector));
 }
 
 /// The bits of a float as an integer, and back (std::bit_cast, lane by lane).
-HIKARI_INLINE int32_t float_bits(float a) { return __builtin_bit_cast(int32_t, a); }
+HIKARI_INLINE HIKARI_HD int32_t float_bits(float a) {
+#if HIKARI_DEVICE_PASS
+    return __float_as_int(a);
+#else
+    return __builtin_bit_cast(int32_t, a);
+#endif
+}
 template <class Isa>
 HIKARI_INLINE LaneInt<Isa> float_bits(const LaneFloat<Isa>& a) {
     return LaneInt<Isa>(reinterpret_cast<typename LaneInt<Isa>::Vector>(a.v));
 }
-HIKARI_INLINE float bits_float(int32_t a) { return __builtin_bit_cast(float, a); }
+HIKARI_INLINE HIKARI_HD float bits_float(int32_t a) {
+#if HIKARI_DEVICE_PASS
+    return __int_as_float(a);
+#else
+    return __builtin_bit_cast(float, a);
+#endif
+}
 template <class Isa>
 HIKARI_INLINE LaneFloat<Isa> bits_float(const LaneInt<Isa>& a) {
     return LaneFloat<Isa>(reinterpret_cast<typename LaneFloat<Isa>::Vector>(a.v));
 }
 
 /// A mask as the integer 1 (true) or 0 (false) in each lane.
-HIKARI_INLINE int32_t mask_to_int(bool m) { return m ? 1 : 0; }
+HIKARI_INLINE HIKARI_HD int32_t mask_to_int(bool m) { return m ? 1 : 0; }
 template <class Isa>
 HIKARI_INLINE LaneInt<Isa> mask_to_int(const LaneMask<Isa>& m) {
     return LaneInt<Isa>(m.v & 1);
@@ -286,7 +300,7 @@ HIKARI_INLINE LaneInt<Isa> mask_to_int(const LaneMask<Isa>& m) {
 /// a scalar, once with `true, true`. GCC vectorises such selects but emulates table lookups one
 /// lane at a time.
 template <class Function>
-HIKARI_INLINE void for_each_distinct(int32_t index, Function&& f) {
+HIKARI_INLINE HIKARI_HD void for_each_distinct(int32_t index, Function&& f) {
     f(index, true, true);
 }
 /// Bit i set where lane i is true.

@@ -14,8 +14,8 @@ namespace hikari {
 
 namespace detail {
 template <class Variant, class Function, size_t... Kind>
-HIKARI_INLINE decltype(auto) visit_kind(const Variant& v, Function&& f,
-                                        std::index_sequence<Kind...>) {
+HIKARI_INLINE HIKARI_HD decltype(auto) visit_kind(const Variant& v, Function&& f,
+                                                  std::index_sequence<Kind...>) {
     using Result = decltype(f(*std::get_if<0>(&v)));
     if constexpr (std::is_void_v<Result>) {
         ((v.index() == Kind ? (f(*std::get_if<Kind>(&v)), 0) : 0), ...);
@@ -29,7 +29,7 @@ HIKARI_INLINE decltype(auto) visit_kind(const Variant& v, Function&& f,
 
 /// `f(alternative)` for the alternative `v` holds; every alternative must give the same type.
 template <class Variant, class Function>
-HIKARI_INLINE decltype(auto) visit_kind(const Variant& v, Function&& f) {
+HIKARI_INLINE HIKARI_HD decltype(auto) visit_kind(const Variant& v, Function&& f) {
     return detail::visit_kind(v, std::forward<Function>(f),
                               std::make_index_sequence<std::variant_size_v<Variant>>());
 }

@@ -14,7 +14,7 @@ namespace hikari {
 /// (Ray Tracing Gems, ch. 7): the discriminant from the perpendicular distance to the centre
 /// (no catastrophic cancellation for far spheres) and the second root as C/q (none for near
 /// roots of opposite sign).
-inline float intersect_sphere(const Ray& ray, Vec3 center, float radius, Interval range) {
+HIKARI_HD inline float intersect_sphere(const Ray& ray, Vec3 center, float radius, Interval range) {
     const Vec3 f = ray.origin - center;
     const float b = -dot(f, ray.direction);  // −B/2
     const Vec3 perpendicular = f + b * ray.direction;
@@ -37,7 +37,7 @@ inline float intersect_sphere(const Ray& ray, Vec3 center, float radius, Interva
 
 /// t of `ray` with the infinite plane through `point` with normal `normal`, or NaN when the ray
 /// is parallel to it or the hit is outside `range`.
-inline float intersect_plane(const Ray& ray, Vec3 point, Vec3 normal, Interval range) {
+HIKARI_HD inline float intersect_plane(const Ray& ray, Vec3 point, Vec3 normal, Interval range) {
     const float denom = dot(normal, ray.direction);
     if (denom == 0.0f) return NAN;
     const float t = dot(point - ray.origin, normal) / denom;

@@ -13,7 +13,7 @@ namespace hikari {
 /// Avoiding Self-Intersection" (Ray Tracing Gems, ch. 6). A fixed epsilon would be too large
 /// for small models and too small far from the origin. Generic over the number type.
 template <class F>
-HIKARI_INLINE F offset_ray_coordinate(F p, F n) {
+HIKARI_INLINE HIKARI_HD F offset_ray_coordinate(F p, F n) {
     constexpr float k_origin = 1.0f / 32.0f;
     constexpr float k_float_scale = 1.0f / 65536.0f;
     constexpr float k_int_scale = 256.0f;
@@ -24,7 +24,7 @@ HIKARI_INLINE F offset_ray_coordinate(F p, F n) {
 }
 
 template <class F>
-HIKARI_INLINE Vec3T<F> offset_ray_origin(const Vec3T<F>& p, const Vec3T<F>& n) {
+HIKARI_INLINE HIKARI_HD Vec3T<F> offset_ray_origin(const Vec3T<F>& p, const Vec3T<F>& n) {
     return {offset_ray_coordinate(p.x, n.x), offset_ray_coordinate(p.y, n.y),
             offset_ray_coordinate(p.z, n.z)};
 }

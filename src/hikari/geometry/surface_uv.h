@@ -29,7 +29,7 @@ struct SurfaceUv {
 /// seen from outside; the seam u = 0 ≡ 1 faces −z, away from a camera looking down −z) and
 /// v = 1/2 + asin(d.y) / π (0 at the south pole, 1 at the north pole). At the poles, where u is
 /// undefined, the gradients are capped.
-inline SurfaceUv sphere_uv(const Sphere& s, Vec3 p) {
+HIKARI_HD inline SurfaceUv sphere_uv(const Sphere& s, Vec3 p) {
     constexpr float k_pi = std::numbers::pi_v<float>;
     const Vec3 d = (p - s.center) / s.radius;
     const float dy = std::clamp(d.y, -1.0f, 1.0f);
@@ -46,7 +46,7 @@ inline SurfaceUv sphere_uv(const Sphere& s, Vec3 p) {
 /// The plane's texture axes (unit, in the plane, (u_axis, v_axis, normal) right-handed): u_axis
 /// is world x projected onto the plane, or y × normal for planes facing (nearly) ±x, so a floor
 /// (normal +y) has u along +x and v along −z, a wall facing +z has u along +x and v along +y.
-inline std::array<Vec3, 2> plane_uv_axes(const Plane& plane) {
+HIKARI_HD inline std::array<Vec3, 2> plane_uv_axes(const Plane& plane) {
     const Vec3 n = plane.normal;
     Vec3 u = Vec3(1.0f, 0.0f, 0.0f) - n.x * n;
     if (dot(u, u) < 1e-6f) u = cross(Vec3(0.0f, 1.0f, 0.0f), n);
@@ -56,7 +56,7 @@ inline std::array<Vec3, 2> plane_uv_axes(const Plane& plane) {
 
 /// The plane's planar mapping at point `p`: (u, v) = ((p − point)·u_axis, (p − point)·v_axis) /
 /// uv_scale, so the texture repeats every uv_scale world units and (0, 0) sits at `point`.
-inline SurfaceUv plane_uv(const Plane& plane, Vec3 p) {
+HIKARI_HD inline SurfaceUv plane_uv(const Plane& plane, Vec3 p) {
     const auto [u_axis, v_axis] = plane_uv_axes(plane);
     const Vec3 q = p - plane.point;
     const float inverse_scale = 1.0f / plane.uv_scale;
@@ -68,7 +68,8 @@ inline SurfaceUv plane_uv(const Plane& plane, Vec3 p) {
 /// The gradients of (u, v) over the triangle (p0, p1, p2) with corner coordinates (t0, t1, t2),
 /// in the triangle's plane: the solution of du_dp·e_k = Δu_k for its edges e_k. Zero for a
 /// degenerate triangle or mapping.
-inline SurfaceUv triangle_uv_gradients(const std::array<Vec3, 3>& p, const std::array<Vec2, 3>& t) {
+HIKARI_HD inline SurfaceUv triangle_uv_gradients(const std::array<Vec3, 3>& p,
+                                                 const std::array<Vec2, 3>& t) {
     const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
     const Vec3 n = cross(e1, e2);
     const float n2 = dot(n, n);

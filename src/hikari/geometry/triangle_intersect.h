@@ -35,7 +35,7 @@ struct WatertightRay {
     WatertightRay() = default;
     /// Precomputes the permutation and shear for `ray`. The direction need not be unit length
     /// but must be finite and non-zero; otherwise every test misses.
-    explicit WatertightRay(const Ray& ray) : origin(ray.origin) {
+    HIKARI_HD explicit WatertightRay(const Ray& ray) : origin(ray.origin) {
         const Vec3 d = ray.direction;
         const Vec3 a{std::abs(d.x), std::abs(d.y), std::abs(d.z)};
         // Sec 3: kz is the dominant axis, kx and ky follow it cyclically.
@@ -72,9 +72,10 @@ struct ScaledTriangleHit {
 /// Steps 1-5 of the watertight test for triangle p0 p1 p2, both sides (no culling), up to the
 /// division: nothing when the ray's line misses it; degenerate (zero-area) triangles and NaN
 /// inputs never hit.
-inline std::optional<ScaledTriangleHit> scaled_triangle_hit(const WatertightRay& ray,
-                                                            const Vec3& p0, const Vec3& p1,
-                                                            const Vec3& p2) {
+HIKARI_HD inline std::optional<ScaledTriangleHit> scaled_triangle_hit(const WatertightRay& ray,
+                                                                      const Vec3& p0,
+                                                                      const Vec3& p1,
+                                                                      const Vec3& p2) {
     // Steps 1-2: vertices relative to the origin, sheared so the ray runs along +z.
     const Vec3& o = ray.origin;
     const float az = p0.*ray.kz - o.*ray.kz;
@@ -120,9 +121,8 @@ inline std::optional<ScaledTriangleHit> scaled_triangle_hit(const WatertightRay&
 /// Intersects a ray (as its precomputed WatertightRay) with triangle p0 p1 p2, both sides
 /// (no culling). Returns the hit when its distance lies inside the open interval `valid`;
 /// degenerate (zero-area) triangles and NaN inputs never hit.
-inline std::optional<TriangleIntersection> intersect_triangle(const WatertightRay& ray,
-                                                              const Vec3& p0, const Vec3& p1,
-                                                              const Vec3& p2, Interval valid) {
+HIKARI_HD inline std::optional<TriangleIntersection> intersect_triangle(
+    const WatertightRay& ray, const Vec3& p0, const Vec3& p1, const Vec3& p2, Interval valid) {
     const auto hit = scaled_triangle_hit(ray, p0, p1, p2);
     if (!hit) return std::nullopt;
     const float inv_det = 1.0f / hit->det;
@@ -136,7 +136,7 @@ inline std::optional<TriangleIntersection> intersect_triangle(const WatertightRa
 /// times |det|. A shadow ray needs no distance, and most triangles its line meets lie outside
 /// its interval. Up to rounding the same answer as dividing; at a bound the two may differ by
 /// an ulp of t.
-inline bool scaled_distance_inside(float t_scaled, float det, Interval valid) {
+HIKARI_HD inline bool scaled_distance_inside(float t_scaled, float det, Interval valid) {
     const float abs_det = std::abs(det);
     const float t_signed = det < 0.0f ? -t_scaled : t_scaled;
     return valid.min * abs_det < t_signed && t_signed < valid.max * abs_det;
@@ -145,16 +145,15 @@ inline bool scaled_distance_inside(float t_scaled, float det, Interval valid) {
 /// The any-hit form of intersect_triangle (shadow rays): whether the ray meets triangle p0 p1
 /// p2 inside `valid`, with the distance compared before the division, not computed
 /// (scaled_distance_inside).
-inline bool triangle_occludes(const WatertightRay& ray, const Vec3& p0, const Vec3& p1,
-                              const Vec3& p2, Interval valid) {
+HIKARI_HD inline bool triangle_occludes(const WatertightRay& ray, const Vec3& p0, const Vec3& p1,
+                                        const Vec3& p2, Interval valid) {
     const auto hit = scaled_triangle_hit(ray, p0, p1, p2);
     return hit && scaled_distance_inside(hit->t_scaled, hit->det, valid);
 }
 
 /// Convenience form for a single test: precomputes the WatertightRay for `ray` first.
-inline std::optional<TriangleIntersection> intersect_triangle(const Ray& ray, const Vec3& p0,
-                                                              const Vec3& p1, const Vec3& p2,
-                                                              Interval valid) {
+HIKARI_HD inline std::optional<TriangleIntersection> intersect_triangle(
+    const Ray& ray, const Vec3& p0, const Vec3& p1, const Vec3& p2, Interval valid) {
     return intersect_triangle(WatertightRay(ray), p0, p1, p2, valid);
 }
 

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <variant>
 
+#include "hikari/core/cuda_devices.h"
 #include "hikari/core/vec.h"
 #include "hikari/frame/framebuffer.h"
 #include "hikari/frame/tone_map.h"
@@ -37,6 +38,8 @@ struct MethodSettings {
     std::optional<ShadowMode> shadows;
     /// `--light-samples`: samples per area or environment light per point, for every method.
     int light_samples = k_default_light_samples;
+    /// `--device`: where raytrace, path and zbuffer run (docs/gpu.md).
+    ExecutionDevice device = ExecutionDevice::cpu;
 };
 
 /// A word an option takes and the value it stands for (`--interp gouraud`).
@@ -108,6 +111,10 @@ inline constexpr Choice<bool> k_cull_choices[] = {{"back", true}, {"none", false
 /// path (found by the path tracer alone).
 inline constexpr Choice<bool> k_caustic_choices[] = {{"light", true}, {"path", false}};
 
+/// `--device`: the CPU's threads, or a CUDA GPU (core/device_launch.h).
+inline constexpr Choice<ExecutionDevice> k_device_choices[] = {{"cpu", ExecutionDevice::cpu},
+                                                               {"cuda", ExecutionDevice::cuda}};
+
 /// Where an option's value goes: one field of MethodSettings.
 template <class T>
 using SettingsField = T& (*)(MethodSettings&);
@@ -153,7 +160,8 @@ struct MethodOption {
     /// The values it takes and the field they go to.
     std::variant<IntegerOption, OptionalIntegerOption, RealOption, ColorOption,
                  ChoiceOption<Interpolation>, ChoiceOption<bool>,
-                 ChoiceOption<std::optional<ShadowMode>>, ChoiceOption<PixelFilterKind>>
+                 ChoiceOption<std::optional<ShadowMode>>, ChoiceOption<PixelFilterKind>,
+                 ChoiceOption<ExecutionDevice>>
         value;
 };
 

@@ -11,6 +11,7 @@
 #include "hikari/frame/depth_cue.h"
 #include "hikari/frame/subpixel.h"
 #include "hikari/integrators/whitted/whitted.h"
+#include "hikari/integrators/whitted/whitted_kernels.h"
 #include "hikari/raster/depth_sort.h"
 #include "hikari/raster/lines/hidden_line.h"
 #include "hikari/raster/lines/wireframe.h"
@@ -33,7 +34,20 @@ Framebuffer ray_trace(const Scene& scene, Film film, const RenderSettings& setti
     whitted.shadow_rays = mode != ShadowMode::none;
     whitted.analytic_area_shadows = mode == ShadowMode::analytic;
     whitted.light_samples = own.light_samples;
+    if (own.device == ExecutionDevice::cuda)
+        return render_whitted_kernels(scene, std::move(film), settings, whitted, own.device);
     return render_whitted(scene, std::move(film), settings, whitted);
+}
+
+/// `--device cuda` for a method whose GPU kernels are not written yet (docs/gpu.md): no device,
+/// or no kernels, said in one line.
+void refuse_gpu_method(const MethodSettings& own, std::string_view method) {
+    if (own.device != ExecutionDevice::cuda) return;
+    require_cuda_device("--device cuda");
+    throw InputError(
+        fmt::format("--device cuda: method {} has no GPU kernels yet (raytrace has; "
+                    "docs/gpu.md)",
+                    method));
 }
 
 /// Anti-aliasing by supersampling (`--spp N` for the raster methods): N whole renders, each
@@ -68,6 +82,7 @@ Framebuffer supersample(Film film, const RenderSettings& settings, int spp, Rend
 /// the time is up.
 Framebuffer path_trace(const Scene& scene, Film film, const RenderSettings& settings,
                        const MethodSettings& own) {
+    refuse_gpu_method(own, "path");
     PathSettings path = own.path;
     const bool timed = path.time_limit_seconds > 0.0f;
     path.samples_per_pixel =
@@ -91,6 +106,13 @@ Framebuffer rasterize(const Scene& scene, Film film, const RenderSettings& setti
         raster.sample_offset = offset;
         return render(scene, std::move(pass), s, raster);
     });
+}
+
+/// The Z-buffer, on the CPU (`--device cuda` refused until its GPU rasterizer is written).
+Framebuffer zbuffer(const Scene& scene, Film film, const RenderSettings& settings,
+                    const MethodSettings& own) {
+    refuse_gpu_method(own, "zbuffer");
+    return rasterize<&render_zbuffer>(scene, std::move(film), settings, own);
 }
 
 constexpr ShadowMode k_ray_shadow_modes[] = {ShadowMode::ray, ShadowMode::analytic,
@@ -130,16 +152,21 @@ constexpr MethodOption k_max_depth_option = {
     OptionalIntegerOption{0, 64,
                           [](MethodSettings& s) -> std::optional<int>& { return s.max_depth; }}};
 
+constexpr MethodOption k_device_option = {
+    "--device",
+    "Where the render runs: cpu (default) or cuda (an NVIDIA GPU; raytrace's kernels, "
+    "docs/gpu.md)",
+    ChoiceOption<ExecutionDevice>{k_device_choices,
+                                  [](MethodSettings& s) -> ExecutionDevice& { return s.device; }}};
+
 constexpr MethodOption k_ray_tracing_options[] = {
-    k_spp_option,
-    k_max_depth_option,
-    k_shadows_option,
-    k_light_samples_option,
+    k_spp_option, k_max_depth_option, k_shadows_option, k_light_samples_option, k_device_option,
 };
 
 constexpr MethodOption k_path_options[] = {
     k_spp_option,
     k_max_depth_option,
+    k_device_option,
     {"--clamp",
      "Scale each sample's radiance down to at most this per channel (removes fireflies, "
      "biased; default 0 = off)",
@@ -189,6 +216,12 @@ constexpr MethodOption k_raster_options[] = {
     {"--shadow-map-size", "Texels per side of each shadow map (a cube map has six faces)",
      IntegerOption{16, 16384, [](MethodSettings& s) -> int& { return s.raster.shadow_map_size; }}},
     k_light_samples_option,
+};
+
+/// The raster options and --device (the Z-buffer's).
+constexpr MethodOption k_zbuffer_options[] = {
+    k_raster_options[0], k_raster_options[1], k_raster_options[2], k_raster_options[3],
+    k_raster_options[4], k_raster_options[5], k_device_option,
 };
 
 /// The raster options, and the depth sort's own step through its painting.
@@ -361,8 +394,8 @@ constexpr std::array k_methods = {
            .warnings = &path_scene_warnings},
     raster_method("zbuffer",
                   "Z-buffer (Alg 4.2): rasterize every triangle, keep the nearest per pixel",
-                  k_raster<&render_zbuffer>, {k_zbuffer_aovs, &zbuffer_algorithm_aov},
-                  {.pixel = &explain_zbuffer}, {.work = "fragments depth-tested"}),
+                  &zbuffer, {k_zbuffer_aovs, &zbuffer_algorithm_aov}, {.pixel = &explain_zbuffer},
+                  {.work = "fragments depth-tested"}, k_zbuffer_options),
     raster_method("scanline",
                   "scanline (Alg 4.1): edge table, active edges, nearest segment per sample span",
                   k_raster<&render_scanline>, {k_scanline_aovs, &scanline_algorithm_aov},

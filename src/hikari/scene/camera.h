@@ -43,7 +43,7 @@ CameraFrame make_camera_frame(const Camera& camera);
 /// Perspective: from the eye through x·right + y·up + forward on the plane one unit in front of
 /// it. Orthographic: from eye + x·right + y·up (on the plane through the eye) along forward.
 /// x = (2px/W − 1)·h·W/H and y = (1 − 2py/H)·h, h = tan_half_fov_y.
-inline Ray camera_ray(const CameraFrame& f, float px, float py) {
+HIKARI_HD inline Ray camera_ray(const CameraFrame& f, float px, float py) {
     const float x = (2.0f * px / static_cast<float>(f.width) - 1.0f) * f.tan_half_fov_y * f.aspect;
     const float y = (1.0f - 2.0f * py / static_cast<float>(f.height)) * f.tan_half_fov_y;
     if (f.orthographic) return {f.eye + x * f.right + y * f.up, f.forward};

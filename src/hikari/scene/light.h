@@ -52,9 +52,9 @@ struct AreaLight {
     Vec3 radiance;  ///< L, the same at every point and in every direction it emits
     bool two_sided = false;
 
-    Vec3 centre() const { return corner + 0.5f * (edge1 + edge2); }
+    HIKARI_HD Vec3 centre() const { return corner + 0.5f * (edge1 + edge2); }
     /// edge1 × edge2: the emitting side's normal, its length the light's area.
-    Vec3 area_normal() const { return cross(edge1, edge2); }
+    HIKARI_HD Vec3 area_normal() const { return cross(edge1, edge2); }
 
     void move(const LightMove& m) {
         corner = m.point(corner);
@@ -109,7 +109,7 @@ using Light = std::variant<PointLight, SpotLight, DirectionalLight, AreaLight, E
 /// lambda per kind, or a generic lambda calling a per-kind function): a kind it cannot take is a
 /// compile error here.
 template <class Function>
-decltype(auto) visit_light(const Light& light, Function&& f) {
+HIKARI_HD decltype(auto) visit_light(const Light& light, Function&& f) {
     return visit_kind(light, std::forward<Function>(f));
 }
 /// Moves `light` with its scene (every kind's `move`).

@@ -86,12 +86,14 @@ struct Sky {
     /// The colour seen along unit direction `dir` (each lane's, for a pack), or `background`
     /// without a gradient.
     template <class F>
-    HIKARI_INLINE Vec3T<F> colour_toward(const Vec3T<F>& dir, Vec3 background) const {
+    HIKARI_INLINE HIKARI_HD Vec3T<F> colour_toward(const Vec3T<F>& dir, Vec3 background) const {
         if (!gradient) return Vec3T<F>(background);
         const F t = select(dir.y < F(0.0f), F(0.0f), select(dir.y > F(1.0f), F(1.0f), dir.y));
         return Vec3T<F>(horizon) * (F(1.0f) - t) + Vec3T<F>(zenith) * t;
     }
-    Vec3 colour(Vec3 dir, Vec3 background) const { return colour_toward<float>(dir, background); }
+    HIKARI_HD Vec3 colour(Vec3 dir, Vec3 background) const {
+        return colour_toward<float>(dir, background);
+    }
 };
 
 /// Depth cueing, the lecture's Fig 4.1b (近：明るい、はっきり / 遠：暗い、ぼやけ): the colour of a

@@ -36,10 +36,9 @@ struct DirectLighting {
 /// asks `visible`); they are shaded one point at a time, and packs of lanes never meet them (the
 /// ray tracer shades the hits of scenes that have them one ray at a time).
 template <class F, class Visible, class Extended = SampledLights>
-HIKARI_INLINE DirectLighting<F> direct_lighting(const LightingEnvironment& env,
-                                                const SurfacePoint<F>& s,
-                                                const MaterialSample<F>& m, const MaskOf<F>& active,
-                                                Visible&& visible, const Extended& extended = {}) {
+HIKARI_INLINE HIKARI_HD DirectLighting<F> direct_lighting(
+    const LightingEnvironment& env, const SurfacePoint<F>& s, const MaterialSample<F>& m,
+    const MaskOf<F>& active, Visible&& visible, const Extended& extended = {}) {
     DirectLighting<F> out{m.ka * Vec3T<F>(env.ambient), IntOf<F>(0)};
     // Skipping the highlight where no lane is shiny changes no bit (ks · anything = 0).
     const MaskOf<F> shiny = (m.ks.x != F(0.0f)) | (m.ks.y != F(0.0f)) | (m.ks.z != F(0.0f));

@@ -34,7 +34,7 @@ struct IncidentSample {
 
 /// A light at one point or in one direction, chosen with probability `choice`, as the path
 /// tracer's sample: all of what it delivers, from its one direction.
-inline IncidentSample delta_incident(const LightSample& light, float choice) {
+HIKARI_HD inline IncidentSample delta_incident(const LightSample& light, float choice) {
     return {light.to_light, light.distance, light.irradiance, choice, true};
 }
 

@@ -31,7 +31,7 @@ namespace hikari {
 /// What `light` delivers to world-space point `p` (each lane's, for a pack). An environment
 /// light has no one direction: it delivers nothing here (sample_light_at samples it).
 template <class F>
-HIKARI_INLINE LightSampleT<F> sample_light(const Light& light, const Vec3T<F>& p) {
+HIKARI_INLINE HIKARI_HD LightSampleT<F> sample_light(const Light& light, const Vec3T<F>& p) {
     return visit_light(light, [&](const auto& kind) { return sample_light<F>(kind, p); });
 }
 
@@ -76,7 +76,7 @@ inline LightShadowView shadow_view(const Light& light) {
 
 /// Whether `light` is one point or one direction (point, spot, directional), which a single
 /// shadow ray or shadow-map lookup answers; area and environment lights are integrated over many.
-inline bool is_delta_light(const Light& light) {
+HIKARI_HD inline bool is_delta_light(const Light& light) {
     return visit_light(light, [](const auto& kind) { return is_delta(kind); });
 }
 

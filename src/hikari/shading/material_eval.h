@@ -18,8 +18,8 @@ namespace detail {
 /// One material's coefficients at `point`, the same in every lane: its texture's colour scales
 /// ka and kd. `scalar_only` is set when a pack meets a texture kind without a lane form.
 template <class F>
-HIKARI_INLINE MaterialSample<F> evaluate_one_material(const Material& m,
-                                                      const SurfacePoint<F>& point) {
+HIKARI_INLINE HIKARI_HD MaterialSample<F> evaluate_one_material(const Material& m,
+                                                                const SurfacePoint<F>& point) {
     MaterialSample<F> s;
     s.ka = Vec3T<F>(m.ka);
     s.kd = Vec3T<F>(m.kd);
@@ -59,8 +59,8 @@ HIKARI_INLINE MaterialSample<F> evaluate_one_material(const Material& m,
 }
 
 template <class F>
-HIKARI_INLINE void select_into(const MaskOf<F>& lanes, const MaterialSample<F>& a,
-                               MaterialSample<F>& out) {
+HIKARI_INLINE HIKARI_HD void select_into(const MaskOf<F>& lanes, const MaterialSample<F>& a,
+                                         MaterialSample<F>& out) {
     out.ka = select(lanes, a.ka, out.ka);
     out.kd = select(lanes, a.kd, out.kd);
     out.ks = select(lanes, a.ks, out.ks);
@@ -76,8 +76,9 @@ HIKARI_INLINE void select_into(const MaskOf<F>& lanes, const MaterialSample<F>& 
 /// Material `index` of `materials` at `point` (each lane its own material, for a pack: each
 /// material present is evaluated once over all lanes and kept where it belongs).
 template <class F>
-HIKARI_INLINE MaterialSample<F> evaluate_material(const Material* materials, IntOf<F> index,
-                                                  const SurfacePoint<F>& point) {
+HIKARI_INLINE HIKARI_HD MaterialSample<F> evaluate_material(const Material* materials,
+                                                            IntOf<F> index,
+                                                            const SurfacePoint<F>& point) {
     if constexpr (k_is_scalar<F>) {
         return detail::evaluate_one_material<F>(materials[index], point);
     } else {

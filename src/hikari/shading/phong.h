@@ -24,7 +24,7 @@ inline constexpr int k_exponent_bits =
 
 /// The Phong exponent n as the integer phong_power raises by repeated squaring (n an integer in
 /// [0, k_max_integer_exponent]), or -1 where it calls std::pow instead.
-HIKARI_INLINE int32_t phong_integer_exponent(float n) {
+HIKARI_INLINE HIKARI_HD int32_t phong_integer_exponent(float n) {
     if (!(n >= 0.0f && n <= static_cast<float>(k_max_integer_exponent)) ||
         n != static_cast<float>(static_cast<unsigned>(n)))
         return -1;
@@ -39,7 +39,7 @@ HIKARI_INLINE int32_t phong_integer_exponent(float n) {
 /// Other exponents go through std::pow, which has no lane form: a pack's lanes with exponent -1
 /// are shaded by the scalar code instead (MaterialSample::scalar_only).
 template <class F>
-HIKARI_INLINE F phong_power(F cos_gamma, IntOf<F> exponent, F shininess) {
+HIKARI_INLINE HIKARI_HD F phong_power(F cos_gamma, IntOf<F> exponent, F shininess) {
     if constexpr (k_is_scalar<F>)
         if (exponent < 0) return std::pow(cos_gamma, shininess);
     F power = F(1.0f), squared = cos_gamma;
@@ -53,7 +53,7 @@ HIKARI_INLINE F phong_power(F cos_gamma, IntOf<F> exponent, F shininess) {
 }
 
 /// phong_power for a float exponent n.
-HIKARI_INLINE float phong_power(float cos_gamma, float n) {
+HIKARI_INLINE HIKARI_HD float phong_power(float cos_gamma, float n) {
     return phong_power<float>(cos_gamma, phong_integer_exponent(n), n);
 }
 
@@ -61,8 +61,8 @@ HIKARI_INLINE float phong_power(float cos_gamma, float n) {
 /// read literally: with n = 0 it is 1 wherever the light reaches the point (x⁰ = 1, also for
 /// x = 0, as C's pow has it), not a disc where R·V > 0; for n > 0, 0 where R·V ≤ 0.
 template <class F>
-HIKARI_INLINE F phong_specular(const MaterialSample<F>& m, const SurfacePoint<F>& s,
-                               const Vec3T<F>& to_light) {
+HIKARI_INLINE HIKARI_HD F phong_specular(const MaterialSample<F>& m, const SurfacePoint<F>& s,
+                                         const Vec3T<F>& to_light) {
     // R = L_in + 2aN with L_in = −L and a = −L_in·N = N·L: the mirror direction of the light.
     const Vec3T<F> r = reflect(-to_light, s.normal);
     const F cos_gamma = dot(r, s.to_eye);
@@ -77,8 +77,10 @@ HIKARI_INLINE F phong_specular(const MaterialSample<F>& m, const SurfacePoint<F>
 /// Lambert diffuse I0 kd cos α plus Phong specular I0 ks cos^n γ. `specular` false skips the
 /// highlight where no lane's ks is nonzero (ks · anything = 0 then: the same bits).
 template <class F>
-HIKARI_INLINE Vec3T<F> phong_reflected(const MaterialSample<F>& m, const SurfacePoint<F>& s,
-                                       const LightSampleT<F>& light, F cos_alpha, bool specular) {
+HIKARI_INLINE HIKARI_HD Vec3T<F> phong_reflected(const MaterialSample<F>& m,
+                                                 const SurfacePoint<F>& s,
+                                                 const LightSampleT<F>& light, F cos_alpha,
+                                                 bool specular) {
     const F spec = specular ? phong_specular(m, s, light.to_light) : F(0.0f);
     return light.irradiance * (m.kd * cos_alpha + m.ks * spec);
 }

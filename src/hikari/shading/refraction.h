@@ -20,7 +20,8 @@ struct Refraction {
 /// unit normal on the incident side (dot(incident, n) ≤ 0) and `eta` = n_incident /
 /// n_transmitted. Snell: η_i sin θ_i = η_t sin θ_t.
 template <class F>
-HIKARI_INLINE Refraction<F> refract_ray(const Vec3T<F>& incident, const Vec3T<F>& n, F eta) {
+HIKARI_INLINE HIKARI_HD Refraction<F> refract_ray(const Vec3T<F>& incident, const Vec3T<F>& n,
+                                                  F eta) {
     const F cos_i = -dot(incident, n);
     const F sin2_i = F(1.0f) - cos_i * cos_i;
     // std::max(0, sin2_i), NaN included.
@@ -31,7 +32,7 @@ HIKARI_INLINE Refraction<F> refract_ray(const Vec3T<F>& incident, const Vec3T<F>
 }
 
 /// The scalar form: the direction, or nothing on total internal reflection.
-HIKARI_INLINE std::optional<Vec3> refract(Vec3 incident, Vec3 n, float eta) {
+HIKARI_INLINE HIKARI_HD std::optional<Vec3> refract(Vec3 incident, Vec3 n, float eta) {
     const Refraction<float> r = refract_ray<float>(incident, n, eta);
     if (r.total_internal) return std::nullopt;
     return r.direction;

@@ -15,7 +15,7 @@ namespace hikari {
 /// Whether packs of number type F evaluate `texture` themselves; where not, their lanes fall
 /// back to the scalar code (MaterialSample::scalar_only); see k_texture_has_lane_form.
 template <class F>
-HIKARI_INLINE bool texture_has_lanes(const Texture& texture) {
+HIKARI_INLINE HIKARI_HD bool texture_has_lanes(const Texture& texture) {
     if constexpr (k_is_scalar<F>) return true;
     return visit_kind(texture, [](const auto& kind) {
         return k_texture_has_lane_form<std::decay_t<decltype(kind)>>;
@@ -24,9 +24,16 @@ HIKARI_INLINE bool texture_has_lanes(const Texture& texture) {
 
 /// The texture's linear RGB colour at `point`.
 template <class F>
-HIKARI_INLINE Vec3T<F> texture_colour(const Texture& texture, const SurfacePoint<F>& point) {
+HIKARI_INLINE HIKARI_HD Vec3T<F> texture_colour(const Texture& texture,
+                                                const SurfacePoint<F>& point) {
     return visit_kind(texture, [&](const auto& kind) {
-        if constexpr (k_is_scalar<F> || k_texture_has_lane_form<std::decay_t<decltype(kind)>>)
+        using Kind = std::decay_t<decltype(kind)>;
+        // Image textures live in host vectors: scenes that have them never reach the GPU
+        // (integrators/whitted/whitted_kernels.cpp refuses them), so the device pass has no image
+        // lookup to compile.
+        if constexpr (HIKARI_DEVICE_PASS && std::is_same_v<Kind, ImageTexture>)
+            return Vec3T<F>(F(1.0f));
+        else if constexpr (k_is_scalar<F> || k_texture_has_lane_form<Kind>)
             return texture_colour<F>(kind, point);
         else
             return Vec3T<F>(F(0.0f));  // never used: texture_has_lanes is false

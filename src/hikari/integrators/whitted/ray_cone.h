@@ -25,7 +25,7 @@ struct RayCone {
     float spread = 0.0f;
 
     /// The cone's width at distance `t` along its ray.
-    float width_at(float t) const { return width + spread * t; }
+    HIKARI_HD float width_at(float t) const { return width + spread * t; }
 };
 
 /// The angle one pixel subtends at the eye: α = atan(2 tan(fov_y / 2) / height) (RTG ch. 20,
@@ -55,7 +55,7 @@ struct CameraCones {
                           : 0.0f) {}
 
     /// The cone of the camera ray along unit `direction`.
-    RayCone operator()(Vec3 direction) const {
+    HIKARI_HD RayCone operator()(Vec3 direction) const {
         return {pixel_width, spread_on_axis * std::max(dot(direction, forward), 0.0f)};
     }
 };
@@ -64,7 +64,8 @@ struct CameraCones {
 /// edge, how fast the normal turns per unit length, (n_j − n_i)·(p_j − p_i) / |p_j − p_i|², the
 /// mean of the three edges. 1/r on any triangle of a sphere of radius r whose normals point out;
 /// 0 with flat normals. Positive where the surface bulges toward the normals' side.
-inline float triangle_curvature(const std::array<Vec3, 3>& p, const std::array<Vec3, 3>& n) {
+HIKARI_HD inline float triangle_curvature(const std::array<Vec3, 3>& p,
+                                          const std::array<Vec3, 3>& n) {
     float sum = 0.0f;
     for (int i = 0; i < 3; ++i) {
         const int j = (i + 1) % 3;
@@ -80,7 +81,7 @@ inline float triangle_curvature(const std::array<Vec3, 3>& p, const std::array<V
 /// sphere seen from outside; 0 for planes and flat triangles). The normal turns by curvature·width
 /// across the footprint and the mirror direction by twice that: spread' = spread + 2·κ·width
 /// (RTG ch. 20's β, from the curvature rather than from G-buffer normals).
-inline RayCone reflected_cone(const RayCone& incoming, float width, float curvature) {
+HIKARI_HD inline RayCone reflected_cone(const RayCone& incoming, float width, float curvature) {
     return {width, incoming.spread + 2.0f * curvature * width};
 }
 
@@ -89,8 +90,8 @@ inline RayCone reflected_cone(const RayCone& incoming, float width, float curvat
 /// dθ_t/dθ_i = η cos θ_i / cos θ_t (Snell's law, differentiated), and the normal's turn across
 /// the footprint (curvature·width) turns the refracted ray by (η cos θ_i − cos θ_t) times it:
 /// a glass sphere (η < 1 entering) focuses.
-inline RayCone refracted_cone(const RayCone& incoming, float width, float curvature, float eta,
-                              float cos_in, float cos_out) {
+HIKARI_HD inline RayCone refracted_cone(const RayCone& incoming, float width, float curvature,
+                                        float eta, float cos_in, float cos_out) {
     const float cos_t = std::max(cos_out, 1e-4f);
     return {width,
             incoming.spread * eta * cos_in / cos_t + (eta * cos_in - cos_out) * curvature * width};
@@ -108,7 +109,8 @@ struct UvFootprint {
 /// an ellipse with axes |width| across the plane of incidence and |width| / |cos θ| along it
 /// (RTG ch. 20's 1/|n·d| term, kept anisotropic); each axis goes through the gradients. The
 /// first axis (the "x" fields) is the long one. Grazing angles are capped at |cos θ| = 10⁻⁴.
-inline UvFootprint cone_footprint(float width, Vec3 direction, Vec3 normal, const SurfaceUv& uv) {
+HIKARI_HD inline UvFootprint cone_footprint(float width, Vec3 direction, Vec3 normal,
+                                            const SurfaceUv& uv) {
     const float w = std::abs(width);
     const float cos_theta = dot(direction, normal);
     const float stretch = 1.0f / std::max(std::abs(cos_theta), 1e-4f);

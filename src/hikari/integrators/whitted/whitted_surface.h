@@ -51,7 +51,8 @@ struct WhittedShading {
 /// Step 1: the hit as a surface point with its normals facing the ray; a shading normal
 /// interpolated to face away falls back to the geometric one.
 template <class F>
-HIKARI_INLINE SurfacePoint<F> face_the_ray(const WhittedHit<F>& hit, MaskOf<F>& entering) {
+HIKARI_INLINE HIKARI_HD SurfacePoint<F> face_the_ray(const WhittedHit<F>& hit,
+                                                     MaskOf<F>& entering) {
     entering = dot(hit.geometric_normal, hit.direction) < F(0.0f);
     SurfacePoint<F> s;
     s.position = hit.position;
@@ -66,23 +67,33 @@ HIKARI_INLINE SurfacePoint<F> face_the_ray(const WhittedHit<F>& hit, MaskOf<F>& 
     return s;
 }
 
-/// Steps 1 and 2 for the lanes in `active`: the local illumination of the hit. `visible` is
-/// direct_lighting's shadow test; shadow rays leave from offset_ray_origin(position,
-/// point.geometric_normal).
+/// Steps 1 and 2 for the lanes in `active`: the local illumination of the hit, area and
+/// environment lights integrated by `extended` (shading/direct.h). `visible` is direct_lighting's
+/// shadow test; shadow rays leave from offset_ray_origin(position, point.geometric_normal).
+template <class F, class Visible, class Extended>
+HIKARI_INLINE HIKARI_HD WhittedShading<F> shade_whitted_hit(const WhittedScene& scene,
+                                                            const WhittedHit<F>& hit,
+                                                            const MaskOf<F>& active,
+                                                            Visible&& visible,
+                                                            const Extended& extended) {
+    WhittedShading<F> out;
+    out.point = face_the_ray(hit, out.entering);
+    out.material = evaluate_material<F>(scene.materials, hit.material, out.point);
+    out.direct =
+        direct_lighting<F>(scene.lighting, out.point, out.material, active, visible, extended);
+    return out;
+}
+
+/// Steps 1 and 2 with the scene's way of integrating area lights: sampled, or in closed form
+/// over the occluders where the scene has them (`--shadows analytic`).
 template <class F, class Visible>
 HIKARI_INLINE WhittedShading<F> shade_whitted_hit(const WhittedScene& scene,
                                                   const WhittedHit<F>& hit, const MaskOf<F>& active,
                                                   Visible&& visible) {
-    WhittedShading<F> out;
-    out.point = face_the_ray(hit, out.entering);
-    out.material = evaluate_material<F>(scene.materials, hit.material, out.point);
     if (scene.occluders)
-        out.direct = direct_lighting<F>(scene.lighting, out.point, out.material, active, visible,
-                                        AnalyticAreaLights{scene.light_samples, scene.occluders});
-    else
-        out.direct = direct_lighting<F>(scene.lighting, out.point, out.material, active, visible,
-                                        SampledLights{scene.light_samples});
-    return out;
+        return shade_whitted_hit<F>(scene, hit, active, visible,
+                                    AnalyticAreaLights{scene.light_samples, scene.occluders});
+    return shade_whitted_hit<F>(scene, hit, active, visible, SampledLights{scene.light_samples});
 }
 
 /// The secondary rays of a hit; a weight of 0 means no such ray.
@@ -98,9 +109,9 @@ struct SecondaryRays {
 /// transmitted weight and the reflectivity term is dropped (POV-Ray's rule), so the mirror ray
 /// is traced once.
 template <class F>
-HIKARI_INLINE SecondaryRays<F> whitted_secondary_rays(const WhittedShading<F>& shaded,
-                                                      const Vec3T<F>& direction,
-                                                      const MaskOf<F>& active) {
+HIKARI_INLINE HIKARI_HD SecondaryRays<F> whitted_secondary_rays(const WhittedShading<F>& shaded,
+                                                                const Vec3T<F>& direction,
+                                                                const MaskOf<F>& active) {
     const MaterialSample<F>& m = shaded.material;
     const SurfacePoint<F>& s = shaded.point;
     const MaskOf<F> transparent = active & (m.transparency > F(0.0f));

@@ -25,8 +25,8 @@ namespace hikari {
 /// weighted by 1 / pdf = A: irradiance L·A·cos θ′ / r², zero where p is behind a one-sided
 /// light.
 template <class F>
-HIKARI_INLINE LightSampleT<F> sample_area_light(const AreaLight& light, const Vec3T<F>& p,
-                                                const F& u, const F& v) {
+HIKARI_INLINE HIKARI_HD LightSampleT<F> sample_area_light(const AreaLight& light, const Vec3T<F>& p,
+                                                          const F& u, const F& v) {
     const Vec3T<F> y =
         Vec3T<F>(light.corner) + Vec3T<F>(light.edge1) * u + Vec3T<F>(light.edge2) * v;
     const Vec3T<F> d = y - p;
@@ -43,7 +43,8 @@ HIKARI_INLINE LightSampleT<F> sample_area_light(const AreaLight& light, const Ve
 /// Where the ray from `origin` along unit `direction` meets the emitting side of `light` (either
 /// side when two-sided) strictly between 0 and `t_max`: the distance, or t_max when it does not.
 /// What camera rays see of the light: its radiance L.
-inline float area_light_hit(const AreaLight& light, Vec3 origin, Vec3 direction, float t_max) {
+HIKARI_HD inline float area_light_hit(const AreaLight& light, Vec3 origin, Vec3 direction,
+                                      float t_max) {
     const Vec3 n = light.area_normal();
     const float facing = dot(n, direction);
     if (facing == 0.0f || (!light.two_sided && facing > 0.0f)) return t_max;
@@ -59,7 +60,7 @@ inline float area_light_hit(const AreaLight& light, Vec3 origin, Vec3 direction,
 /// The area light as one point light at its centre (what a light far away and small is; also
 /// what shadow maps and shadow volumes, which see from one point, take it for).
 template <class F>
-HIKARI_INLINE LightSampleT<F> sample_light(const AreaLight& light, const Vec3T<F>& p) {
+HIKARI_INLINE HIKARI_HD LightSampleT<F> sample_light(const AreaLight& light, const Vec3T<F>& p) {
     return sample_area_light<F>(light, p, F(0.5f), F(0.5f));
 }
 
@@ -127,10 +128,10 @@ constexpr bool is_delta(const AreaLight&) { return false; }
 constexpr std::string_view light_kind_name(const AreaLight&) { return "area"; }
 
 /// What camera, mirror and refracted rays see of the light: its face (area_light_hit).
-inline float face_hit(const AreaLight& light, Vec3 origin, Vec3 direction, float t_max) {
+HIKARI_HD inline float face_hit(const AreaLight& light, Vec3 origin, Vec3 direction, float t_max) {
     return area_light_hit(light, origin, direction, t_max);
 }
-inline Vec3 face_radiance(const AreaLight& light) { return light.radiance; }
+HIKARI_HD inline Vec3 face_radiance(const AreaLight& light) { return light.radiance; }
 constexpr bool has_face(const AreaLight&) { return true; }
 
 }  // namespace hikari

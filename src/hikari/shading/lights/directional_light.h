@@ -17,7 +17,8 @@ namespace hikari {
 
 /// What `light` delivers to any point: light from -direction, at infinite distance.
 template <class F>
-HIKARI_INLINE LightSampleT<F> sample_light(const DirectionalLight& light, const Vec3T<F>&) {
+HIKARI_INLINE HIKARI_HD LightSampleT<F> sample_light(const DirectionalLight& light,
+                                                     const Vec3T<F>&) {
     return {Vec3T<F>(-light.direction), F(std::numeric_limits<float>::infinity()),
             Vec3T<F>(light.intensity)};
 }

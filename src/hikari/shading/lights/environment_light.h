@@ -46,7 +46,7 @@ inline LightSample sample_environment(const EnvironmentLight& light, Vec3 n, flo
 /// An environment light has no one direction: as a single sample it delivers nothing (it is
 /// integrated over many, sample_light_at).
 template <class F>
-HIKARI_INLINE LightSampleT<F> sample_light(const EnvironmentLight&, const Vec3T<F>&) {
+HIKARI_INLINE HIKARI_HD LightSampleT<F> sample_light(const EnvironmentLight&, const Vec3T<F>&) {
     return {Vec3T<F>(Vec3(0, 1, 0)), F(std::numeric_limits<float>::infinity()), Vec3T<F>(0.0f)};
 }
 

@@ -16,7 +16,7 @@ namespace hikari {
 
 /// What `light` delivers to world-space point `p`.
 template <class F>
-HIKARI_INLINE LightSampleT<F> sample_light(const PointLight& light, const Vec3T<F>& p) {
+HIKARI_INLINE HIKARI_HD LightSampleT<F> sample_light(const PointLight& light, const Vec3T<F>& p) {
     const Vec3T<F> d = Vec3T<F>(light.position) - p;
     const F d2 = dot(d, d);
     const F distance = sqrt_of(d2);

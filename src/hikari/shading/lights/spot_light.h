@@ -20,14 +20,14 @@
 namespace hikari {
 
 /// cos of an angle in degrees.
-inline float cos_degrees(float degrees) {
+HIKARI_HD inline float cos_degrees(float degrees) {
     return std::cos(degrees * (std::numbers::pi_v<float> / 180.0f));
 }
 
 /// The cone's falloff s(c) at c = cos θ (each lane's): 1 inside the inner cone, 0 outside the
 /// outer one, the smoothstep of c between; a hard edge at cos θo when the two are equal.
 template <class F>
-HIKARI_INLINE F spot_falloff(const SpotLight& light, const F& cos_theta) {
+HIKARI_INLINE HIKARI_HD F spot_falloff(const SpotLight& light, const F& cos_theta) {
     const float cos_inner = cos_degrees(light.inner_angle);
     const float cos_outer = cos_degrees(light.outer_angle);
     if (!(cos_inner > cos_outer)) return select(cos_theta >= F(cos_outer), F(1.0f), F(0.0f));
@@ -39,7 +39,7 @@ HIKARI_INLINE F spot_falloff(const SpotLight& light, const F& cos_theta) {
 
 /// What `light` delivers to world-space point `p`.
 template <class F>
-HIKARI_INLINE LightSampleT<F> sample_light(const SpotLight& light, const Vec3T<F>& p) {
+HIKARI_INLINE HIKARI_HD LightSampleT<F> sample_light(const SpotLight& light, const Vec3T<F>& p) {
     const Vec3T<F> d = Vec3T<F>(light.position) - p;
     const F d2 = dot(d, d);
     const F distance = sqrt_of(d2);

@@ -13,7 +13,7 @@ namespace hikari {
 /// The parity of floor(v): 1 where odd. Floats of 2^31 or more in magnitude are multiples of
 /// 256, so even; below that floor is truncation stepped down for negative non-integers.
 template <class F>
-HIKARI_INLINE IntOf<F> floor_parity(F v) {
+HIKARI_INLINE HIKARI_HD IntOf<F> floor_parity(F v) {
     const F w = select(abs_of(v) < F(2147483648.0f), v, F(0.0f));
     const IntOf<F> truncated = truncate_to_int(w);
     const IntOf<F> floor = truncated - select(w < to_float(truncated), IntOf<F>(1), IntOf<F>(0));
@@ -22,7 +22,7 @@ HIKARI_INLINE IntOf<F> floor_parity(F v) {
 
 /// ∫₀ˣ s(t) dt for the square wave s(t) = (−1)^⌊t⌋: a triangle wave of period 2 (0 at even
 /// integers, 1 at odd ones). `x` already reduced to [0, 2) keeps the difference below exact.
-inline float square_wave_integral(float x) {
+HIKARI_HD inline float square_wave_integral(float x) {
     const float m = x - 2.0f * std::floor(0.5f * x);
     return 1.0f - std::abs(1.0f - m);
 }
@@ -31,7 +31,7 @@ inline float square_wave_integral(float x) {
 /// footprint w cells wide (Heckbert 1989's integrated square wave; Quilez's "filtered
 /// checkerboard"). A footprint of many cells averages to 0, so far checkers fade to the mean
 /// colour instead of beating into moiré; w = 0 is the sharp wave.
-inline float filtered_square_wave(float x, float w) {
+HIKARI_HD inline float filtered_square_wave(float x, float w) {
     const float sharp = floor_parity(x) != 0 ? -1.0f : 1.0f;
     // A box inside one cell averages the cell's own value: exactly, not by rounding.
     if (!(w > 1e-4f) || std::floor(x - 0.5f * w) == std::floor(x + 0.5f * w)) return sharp;
@@ -50,7 +50,8 @@ inline constexpr bool k_texture_has_lane_form<CheckerTexture> = false;
 /// bounds, in cells). In ±1 form the checker is the product s(x)·s(y)·s(z), so the box filter
 /// is the product of the three filtered square waves, and the colour the mix of a and b by it.
 template <class F>
-HIKARI_INLINE Vec3T<F> texture_colour(const CheckerTexture& t, const SurfacePoint<F>& point) {
+HIKARI_INLINE HIKARI_HD Vec3T<F> texture_colour(const CheckerTexture& t,
+                                                const SurfacePoint<F>& point) {
     static_assert(k_is_scalar<F>, "the checker has no lane form");
     const float inverse_size = 1.0f / t.size;
     const Vec3 q = (point.position + Vec3(t.offset)) * inverse_size;

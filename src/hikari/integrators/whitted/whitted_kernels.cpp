@@ -1,0 +1,155 @@
+#include "hikari/integrators/whitted/whitted_kernels.h"
+
+#include <algorithm>
+#include <optional>
+#include <span>
+#include <variant>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "hikari/bvh/scene_intersector.h"
+#include "hikari/core/error.h"
+#include "hikari/frame/subpixel.h"
+#include "hikari/integrators/hit_aovs.h"
+#include "hikari/integrators/whitted/whitted_kernel.h"
+#include "hikari/shading/lights.h"
+
+namespace hikari {
+
+namespace {
+
+/// `scene` with no primitive casting a shadow (`--shadows none`), as render_whitted takes it.
+Scene without_shadow_casters(Scene scene) {
+    for (Sphere& s : scene.spheres) s.casts_shadow = false;
+    for (Plane& p : scene.planes) p.casts_shadow = false;
+    scene.triangles.casts_shadow.assign(scene.triangles.size(), 0);
+    return scene;
+}
+
+/// The materials as the device reads them: the plain fields and checker textures (names, which
+/// the kernels never read, cleared so that a bytewise copy holds no host pointer worth following;
+/// image textures are refused before).
+std::vector<Material> device_materials(const Scene& scene) {
+    std::vector<Material> out = scene.materials;
+    for (Material& m : out) m.name.clear();
+    return out;
+}
+
+/// The kernel's views: of the scene and its BVHs on the CPU, of their copies on a GPU.
+WhittedPixelKernel make_kernel(const Scene& scene, const SceneIntersector& intersector,
+                               const WhittedScene& shading, const std::vector<Material>& materials,
+                               std::span<const Vec2> samples, int max_depth, DeviceArena& arena) {
+    const auto bvh = [&](const WideBvh& tree) {
+        FlatBvh flat;
+        flat.nodes = arena.hold(std::span<const WideBvhNode>(tree.nodes.data(), tree.nodes.size()));
+        flat.triangle_data = arena.hold(
+            std::span<const float>(tree.triangle_data.data(), tree.triangle_data.size()));
+        flat.triangle_ids = arena.hold(
+            std::span<const uint32_t>(tree.triangle_ids.data(), tree.triangle_ids.size()));
+        flat.root = tree.root;
+        return flat;
+    };
+    WhittedPixelKernel k{.shading = shading,
+                         .frame = make_camera_frame(scene.camera),
+                         .camera_cones = CameraCones(scene.camera)};
+    k.textured = std::any_of(scene.materials.begin(), scene.materials.end(),
+                             [](const Material& m) { return m.texture.has_value(); });
+    const FlatGeometry g = intersector.geometry();
+    k.scene.geometry.spheres = arena.hold(std::span(g.spheres.data, g.spheres.count));
+    k.scene.geometry.planes = arena.hold(std::span(g.planes.data, g.planes.count));
+    k.scene.geometry.positions = arena.hold(std::span(g.positions.data, g.positions.count));
+    k.scene.geometry.normals = arena.hold(std::span(g.normals.data, g.normals.count));
+    k.scene.geometry.indices = arena.hold(std::span(g.indices.data, g.indices.count));
+    k.scene.geometry.material = arena.hold(std::span(g.material.data, g.material.count));
+    k.scene.geometry.id = arena.hold(std::span(g.id.data, g.id.count));
+    k.scene.geometry.uvs = arena.hold(std::span(g.uvs.data, g.uvs.count));
+    k.scene.geometry.colors = arena.hold(std::span(g.colors.data, g.colors.count));
+    k.scene.triangles = bvh(intersector.bvh());
+    k.scene.shadow_triangles = bvh(intersector.shadow_bvh());
+    k.shading.lighting.lights = arena.hold(std::span<const Light>(scene.lights)).data;
+    k.shading.materials = arena.hold(std::span<const Material>(materials)).data;
+    k.shading.sky = arena.hold_one(scene.sky);
+    k.samples = arena.hold(samples);
+    k.max_depth = max_depth;
+    return k;
+}
+
+}  // namespace
+
+std::string whitted_kernel_refusal(const Scene& scene, const WhittedSettings& whitted) {
+    for (const Light& light : scene.lights)
+        if (!is_delta_light(light))
+            return fmt::format(
+                "{} lights are not in the kernels yet (point, spot and directional "
+                "lights are)",
+                light_kind_name(light));
+    for (const Material& m : scene.materials)
+        for (const std::optional<Texture>* t : {&m.texture, &m.ambient_texture})
+            if (*t && std::holds_alternative<ImageTexture>(**t))
+                return fmt::format(
+                    "material \"{}\": image textures are not in the kernels yet "
+                    "(checker textures are)",
+                    m.name);
+    if (whitted.analytic_area_shadows) return "--shadows analytic is not in the kernels yet";
+    if (whitted.max_depth + 1 > k_whitted_kernel_stack)
+        return fmt::format("--max-depth {} is past the kernels' {}", whitted.max_depth,
+                           k_whitted_kernel_stack - 1);
+    return {};
+}
+
+Framebuffer render_whitted_kernels(const Scene& scene, Film film, const RenderSettings& settings,
+                                   const WhittedSettings& whitted, ExecutionDevice device) {
+    if (!whitted.shadow_rays) {
+        WhittedSettings with_rays = whitted;
+        with_rays.shadow_rays = true;
+        return render_whitted_kernels(without_shadow_casters(scene), std::move(film), settings,
+                                      with_rays, device);
+    }
+    if (device == ExecutionDevice::cuda) require_cuda_device("--device cuda");
+    if (const std::string refusal = whitted_kernel_refusal(scene, whitted); !refusal.empty())
+        throw InputError(fmt::format("{} raytrace: {}",
+                                     device == ExecutionDevice::cuda ? "--device cuda" : "kernels",
+                                     refusal));
+    const Camera& cam = scene.camera;
+    Framebuffer fb(std::move(film), cam.width, cam.height, settings.aov_buffers);
+    const std::shared_ptr<const SceneIntersector> intersector =
+        scene_intersector(scene, settings.cache);
+    // The sample points of render_whitted: the centre, or stratified jittered points.
+    std::vector<Vec2> samples;
+    if (whitted.samples_per_pixel == 1)
+        samples.push_back({0.5f, 0.5f});
+    else
+        for (int s = 0; s < whitted.samples_per_pixel; ++s)
+            samples.push_back(subpixel_sample(s, whitted.samples_per_pixel));
+
+    DeviceArena arena(device);
+    const WhittedScene shading(scene, whitted.light_samples);
+    const std::vector<Material> materials = device_materials(scene);
+    WhittedPixelKernel kernel =
+        make_kernel(scene, *intersector, shading, materials, samples, whitted.max_depth, arena);
+    const size_t pixels = static_cast<size_t>(cam.width) * static_cast<size_t>(cam.height);
+    kernel.colours = arena.output<Vec3>(pixels);
+    if (settings.aov_buffers) kernel.first_hits = arena.output<SurfaceHit>(pixels);
+    launch_whitted_kernel(device, pixels, kernel);
+
+    for (size_t i = 0; i < pixels; ++i) fb.set_color(i, kernel.colours[i]);
+    if (settings.aov_buffers) {
+        const CameraFrame& frame = kernel.frame;
+        for (size_t i = 0; i < pixels; ++i) {
+            if (kernel.first_hits[i].kind == HitKind::none) continue;
+            const int x = static_cast<int>(i % static_cast<size_t>(cam.width));
+            const int y = static_cast<int>(i / static_cast<size_t>(cam.width));
+            const Ray centre =
+                camera_ray(frame, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+            store_hit_aovs(fb, i, centre.direction, kernel.first_hits[i]);
+        }
+    }
+    if (settings.control) {
+        settings.control->work_total = 1;
+        settings.control->work_done = 1;
+    }
+    return fb;
+}
+
+}  // namespace hikari
