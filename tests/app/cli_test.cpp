@@ -182,11 +182,11 @@ TEST_F(Cli, RasterOptionsRenderAndRejectBadValues) {
 TEST_F(Cli, OptionForeignToTheMethodExitsTwoAndWritesNothing) {
     expect_usage_error("--interp flat --width 16",
                        "--interp is not an option of method raytrace (it understands: --spp, "
-                       "--max-depth, --shadows, --light-samples)");
+                       "--max-depth, --shadows, --light-samples, --device)");
     expect_usage_error(
         "-m zbuffer --max-depth 4 --width 16",
         "--max-depth is not an option of method zbuffer (it understands: --spp, --interp, "
-        "--cull, --shadows, --shadow-map-size, --light-samples)");
+        "--cull, --shadows, --shadow-map-size, --light-samples, --device)");
     expect_usage_error("-m depthsort --max-depth 2",
                        "--max-depth is not an option of method depthsort");
     expect_usage_error("-m raytrace --cull back", "--cull is not an option of method raytrace");

@@ -93,11 +93,15 @@ std::vector<std::string> option_flags(const Method& method) {
 }
 
 TEST(Methods, EveryMethodDeclaresItsOptions) {
-    const std::vector<std::string> ray = {"--spp", "--max-depth", "--shadows", "--light-samples"};
+    const std::vector<std::string> ray = {"--spp", "--max-depth", "--shadows", "--light-samples",
+                                          "--device"};
     const std::vector<std::string> raster = {"--spp",     "--interp",          "--cull",
                                              "--shadows", "--shadow-map-size", "--light-samples"};
     EXPECT_EQ(option_flags(*find_method("raytrace")), ray);
-    for (const char* name : {"zbuffer", "scanline", "depthsort-naive"})
+    std::vector<std::string> zbuffer = raster;
+    zbuffer.emplace_back("--device");  // the GPU path's method choice (docs/gpu.md)
+    EXPECT_EQ(option_flags(*find_method("zbuffer")), zbuffer);
+    for (const char* name : {"scanline", "depthsort-naive"})
         EXPECT_EQ(option_flags(*find_method(name)), raster) << name;
     std::vector<std::string> depth_sort = raster;
     depth_sort.emplace_back("--paint-steps");  // Fig 4.6 part-way
@@ -117,11 +121,11 @@ TEST(Methods, EveryMethodDeclaresItsOptions) {
     // Each option once, whichever methods share it.
     std::vector<std::string> all;
     for (const MethodOption* option : method_options()) all.emplace_back(option->flag);
-    EXPECT_EQ(all,
-              (std::vector<std::string>{
-                  "--spp", "--max-depth", "--shadows", "--light-samples", "--clamp", "--caustics",
-                  "--time-limit", "--progressive", "--filter", "--filter-width", "--interp",
-                  "--cull", "--shadow-map-size", "--paint-steps", "--line-width", "--line-color"}));
+    EXPECT_EQ(all, (std::vector<std::string>{"--spp", "--max-depth", "--shadows", "--light-samples",
+                                             "--device", "--clamp", "--caustics", "--time-limit",
+                                             "--progressive", "--filter", "--filter-width",
+                                             "--interp", "--cull", "--shadow-map-size",
+                                             "--paint-steps", "--line-width", "--line-color"}));
     EXPECT_TRUE(takes_option(*find_method("path"), "--spp"));
     EXPECT_FALSE(takes_option(*find_method("path"), "--shadows"));
 }
