@@ -10,12 +10,20 @@
 #define HIKARI_KERNEL_LANES 4
 #endif
 
+#include "hikari/core/lanes.h"
+
 namespace hikari::detail {
 namespace {
 
 struct KernelIsa {
     static constexpr int k_width = HIKARI_KERNEL_LANES;
 };
+
+// The packs every kernel file works in.
+using LaneF = LaneFloat<KernelIsa>;
+using LaneI = LaneInt<KernelIsa>;
+using LaneM = LaneMask<KernelIsa>;
+constexpr int k_width = KernelIsa::k_width;
 
 }  // namespace
 }  // namespace hikari::detail

@@ -16,10 +16,6 @@
 namespace hikari::detail {
 namespace {
 
-using LaneF = LaneFloat<KernelIsa>;
-using LaneI = LaneInt<KernelIsa>;
-using LaneM = LaneMask<KernelIsa>;
-constexpr int k_width = KernelIsa::k_width;
 static_assert(SurfaceLanes::k_lane_group % k_width == 0);
 
 using LaneArray = float[SurfaceLanes::k_capacity];

@@ -79,6 +79,28 @@ TEST(JpegData, ScansWalkingTooManyBlocksAreRefused) {
         << error;
 }
 
+/// A DHT segment (T.81 B.2.4.2) of one AC table whose 16 code counts are all `count`.
+std::string huffman_table(unsigned count) {
+    const size_t codes = 16 * size_t(count);
+    return std::string("\xFF\xC4", 2) + u16(unsigned(2 + 17 + codes)) + "\x10" +
+           std::string(16, static_cast<char>(count)) + std::string(codes, '\x01');
+}
+
+TEST(JpegData, HuffmanTableOfMoreThan256CodesIsRefusedBeforeDecoding) {
+    // 16 × 20 = 320 codes: stb_image's header pass (even stbi_info) would write past its table.
+    const std::string jpeg =
+        k_soi + huffman_table(20) + sof(false, 8, 8) + sos(true) + std::string(8, '\x12') + k_eoi;
+    EXPECT_EQ(input_error_of([&] { check_jpeg_data("a.jpg", jpeg); }),
+              "a.jpg: corrupt JPEG: a Huffman table at byte 6 has 320 codes (at most 256)");
+    TempDir dir;
+    testing::write_text(dir / "a.jpg", jpeg);
+    EXPECT_NE(input_error_of([&] { read_image(dir / "a.jpg"); }).find("has 320 codes"),
+              std::string::npos);
+    // 16 × 16 = 256 codes is the most a table may hold: the walk lets it by.
+    check_jpeg_data("a.jpg", k_soi + huffman_table(16) + sof(false, 8, 8) + sos(true) +
+                                 std::string(8, '\x12') + k_eoi);
+}
+
 TEST(JpegData, WrittenJpegPassesAndDecodes) {
     TempDir dir;
     Image image(40, 24, Vec3(0.25f, 0.5f, 0.75f));

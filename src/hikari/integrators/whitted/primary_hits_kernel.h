@@ -21,8 +21,6 @@
 namespace hikari::detail {
 namespace {
 
-using LaneF = LaneFloat<KernelIsa>;
-
 /// camera_ray(frame, x + 0.5, y + 0.5) for every lane: direction = normalize(forward + x right +
 /// y up) with x, y the pixel centre on the image plane one unit in front of the eye; no hit yet
 /// (t = ∞, object 0). Chunk c is row y0 + c, lane i column x0 + i.

@@ -16,10 +16,6 @@
 namespace hikari::detail {
 namespace {
 
-using LaneF = LaneFloat<KernelIsa>;
-using LaneI = LaneInt<KernelIsa>;
-using LaneM = LaneMask<KernelIsa>;
-constexpr int k_width = KernelIsa::k_width;
 
 /// Lanes [first, first + k_width) of a chunk's hits as shading reads them. Lanes without a hit
 /// take the first hit's material: one material fewer to evaluate where some lanes see the sky.

@@ -83,6 +83,29 @@ size_t skip_entropy_coded(std::string_view bytes, size_t& pos) {
     return pos - begin;
 }
 
+/// Reads the Huffman tables of a DHT segment starting at `pos` as stb_image reads them (T.81
+/// B.2.4.2: Tc/Th, 16 code counts, then the values) and throws when a table holds more than 256
+/// codes: Debian's stb_image writes past its 257-entry code-size list before it looks at the
+/// count (found by fuzz/jpeg_fuzz.cpp). Like stb_image, the tables may read past the segment's
+/// length; that mismatch is stb_image's own "Corrupt JPEG" afterwards.
+void check_huffman_tables(const std::filesystem::path& path, std::string_view bytes, size_t pos,
+                          size_t length) {
+    long long left = static_cast<long long>(length) - 2;
+    while (left > 0 && pos + 17 <= bytes.size()) {
+        const unsigned class_and_id = byte_at(bytes, pos);
+        if (class_and_id >> 4 > 1 || (class_and_id & 15) > 3) return;  // stb_image refuses it
+        int codes = 0;
+        for (int i = 1; i <= 16; ++i) codes += static_cast<int>(byte_at(bytes, pos + i));
+        if (codes > 256) {
+            fail(path, fmt::format("corrupt JPEG: a Huffman table at byte {} has {} codes (at "
+                                   "most 256)",
+                                   pos, codes));
+        }
+        pos += 17 + static_cast<size_t>(codes);
+        left -= 17 + codes;
+    }
+}
+
 }  // namespace
 
 void check_jpeg_data(const std::filesystem::path& path, std::string_view bytes) {
@@ -111,6 +134,7 @@ void check_jpeg_data(const std::filesystem::path& path, std::string_view bytes) 
                                    "end of the file",
                                    length, pos - 2));
         const std::string_view segment = bytes.substr(pos + 2, length - 2);
+        if (marker == 0xc4) check_huffman_tables(path, bytes, pos + 2, length);
         pos += length;
         if (is_sof(marker)) {
             frame = parse_sof(path, segment);

@@ -22,8 +22,9 @@ inline constexpr double k_max_jpeg_scan_blocks = double(1 << 27);
 /// Walks the markers of the JPEG `bytes` (ITU T.81, Annex B) and throws InputError naming
 /// `path` when the frame header (SOF) has no scan after it, a scan has fewer entropy-coded bits
 /// than one a block of its DC coefficients (T.81 F.1.2.1: every Huffman code is at least one
-/// bit), a segment runs past the end of the file, or the scans exceed the limits above.
-/// Files without an SOF are left to the decoder's own error.
+/// bit), a segment runs past the end of the file, a Huffman table holds more than 256 codes, or
+/// the scans exceed the limits above. Files without an SOF are otherwise left to the decoder's
+/// own error. Call it before stb_image sees the bytes.
 void check_jpeg_data(const std::filesystem::path& path, std::string_view bytes);
 
 /// Walks the scanlines of the Radiance HDR `bytes` of `width` × `height` pixels (read from its

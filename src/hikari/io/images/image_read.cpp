@@ -135,8 +135,10 @@ Image read_stb(const std::filesystem::path& path, const std::string& bytes) {
     const bool png = bytes.starts_with("\x89PNG\r\n\x1a\n");
     const bool jpeg = bytes.starts_with("\xFF\xD8\xFF");
     if (!png && !jpeg) fail(path, "not a PNG or JPEG file (wrong signature)");
+    // Before stb_image reads a byte: its header pass builds the Huffman tables too. Truncation
+    // is said first, whatever the size.
+    if (jpeg) check_jpeg_data(path, bytes);
     const StbInput in = stb_input(path, bytes);
-    if (jpeg) check_jpeg_data(path, bytes);  // truncation is said first, whatever the size
     check_stb_size(path, in);
     if (stb::is_16_bit(in.data, in.size)) {
         return image_from_stb(path, in, stb::load_16,
