@@ -16,7 +16,6 @@
 namespace hikari::detail {
 namespace {
 
-
 /// Lanes [first, first + k_width) of a chunk's hits as shading reads them. Lanes without a hit
 /// take the first hit's material: one material fewer to evaluate where some lanes see the sky.
 HIKARI_INLINE WhittedHit<LaneF> load_hits(const LaneChunk& lanes, int first, const LaneM& active) {
