@@ -1,5 +1,6 @@
 #include "mpi_frames.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdlib>
@@ -10,7 +11,11 @@
 #include <fmt/format.h>
 
 #include "cli_options.h"
+#include "console.h"
 #include "hikari/core/error.h"
+#include "hikari/frame/tile_exchange.h"
+#include "hikari/io/files/printable_text.h"
+#include "signals.h"
 
 #if HIKARI_MPI
 #include <mpi.h>
@@ -168,6 +173,53 @@ void MpiJob::share(const std::vector<int>& frames, const std::function<void(int)
     }
 #endif
     for (const int frame : frames) render(frame);
+}
+
+#if HIKARI_MPI
+namespace {
+
+/// Bytes per MPI message: MPI counts are ints, and a 16K float image with AOVs is larger.
+constexpr size_t k_message_bytes = size_t{1} << 30;
+constexpr int k_tag_tile_bytes = 4, k_tag_tiles = 5;
+
+void send_bytes(const std::vector<std::byte>& bytes, int to) {
+    const unsigned long long size = bytes.size();
+    MPI_Send(&size, 1, MPI_UNSIGNED_LONG_LONG, to, k_tag_tile_bytes, MPI_COMM_WORLD);
+    for (size_t at = 0; at < bytes.size(); at += k_message_bytes)
+        MPI_Send(bytes.data() + at, static_cast<int>(std::min(k_message_bytes, bytes.size() - at)),
+                 MPI_BYTE, to, k_tag_tiles, MPI_COMM_WORLD);
+}
+
+std::vector<std::byte> receive_bytes(int from) {
+    unsigned long long size = 0;
+    MPI_Recv(&size, 1, MPI_UNSIGNED_LONG_LONG, from, k_tag_tile_bytes, MPI_COMM_WORLD,
+             MPI_STATUS_IGNORE);
+    std::vector<std::byte> bytes(size);
+    for (size_t at = 0; at < bytes.size(); at += k_message_bytes)
+        MPI_Recv(bytes.data() + at, static_cast<int>(std::min(k_message_bytes, bytes.size() - at)),
+                 MPI_BYTE, from, k_tag_tiles, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    return bytes;
+}
+
+}  // namespace
+#endif
+
+void MpiJob::gather_tiles([[maybe_unused]] Framebuffer& fb) const {
+#if HIKARI_MPI
+    if (m_size < 2) return;
+    if (m_rank != 0) return send_bytes(pack_tiles(fb, m_rank, m_size), 0);
+    // One rank's tiles at a time: rank 0 holds one rank's bytes besides the image.
+    for (int rank = 1; rank < m_size; ++rank) unpack_tiles(fb, receive_bytes(rank), rank, m_size);
+#endif
+}
+
+void MpiJob::abort(const std::exception& error) const {
+    const bool usage = dynamic_cast<const UsageError*>(&error) != nullptr;
+    print_err("hikari: error: rank {} of {}: {}\n", m_rank, m_size, printable_text(error.what()));
+#if HIKARI_MPI
+    if (m_started) MPI_Abort(MPI_COMM_WORLD, usage ? k_exit_usage_error : k_exit_input_error);
+#endif
+    std::_Exit(usage ? k_exit_usage_error : k_exit_input_error);
 }
 
 long long MpiJob::total(long long count) const {

@@ -3,11 +3,15 @@
 // --frames A-B`; docs/distributed.md). Rank 0 hands the frames out one at a time to whichever
 // rank asks next, itself included (a thread of its own answers the others), so a slow frame
 // holds up one rank, not the rest: the master–worker scheme of render farms. Each rank renders
-// its frames on its own session and writes them itself. Without HIKARI_MPI, or run without
-// mpirun, one process renders every frame.
+// its frames on its own session and writes them itself. One image (a still) is shared by tiles
+// instead (frame/tile_share.h): every rank renders its tiles and rank 0 gathers them and writes
+// the file. Without HIKARI_MPI, or run without mpirun, one process renders everything.
 
+#include <exception>
 #include <functional>
 #include <vector>
+
+#include "hikari/frame/framebuffer.h"
 
 namespace hikari::cli {
 
@@ -33,6 +37,12 @@ class MpiJob {
     void share(const std::vector<int>& frames, const std::function<void(int)>& render) const;
     /// `count` summed over the ranks, on rank 0 (every rank calls it).
     long long total(long long count) const;
+    /// Every rank calls it with its framebuffer of one shared image, its own tiles rendered;
+    /// rank 0's then holds every rank's tiles (frame/tile_exchange.h).
+    void gather_tiles(Framebuffer& fb) const;
+    /// Prints `error` naming this rank and ends every rank of the job (MPI_Abort) with the exit
+    /// status the error has alone: a rank cannot leave the others waiting for its tiles.
+    [[noreturn]] void abort(const std::exception& error) const;
 
   private:
     bool m_started = false;

@@ -1,5 +1,6 @@
 #include "render.h"
 
+#include <atomic>
 #include <chrono>
 #include <memory>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "console.h"
 #include "hikari/core/error.h"
 #include "hikari/explain/explain.h"
+#include "hikari/frame/tile_share.h"
 #include "hikari/io/images/image_write.h"
 #include "hikari/io/images/svg_write.h"
 #include "hikari/methods/registry.h"
@@ -130,15 +132,30 @@ void report_render(const RenderOptions& o, const Run& run, const Scene& scene, i
 }
 
 /// One method's render of the session's scene into its output. `load_seconds`: the time spent
-/// loading, for --stats (0 after the first render: the session loaded once).
-void render_with(const RenderOptions& o, Session& session, const Run& run, double load_seconds) {
-    const RenderRequest request = run_request(o, session, run);
+/// loading, for --stats (0 after the first render: the session loaded once). Under mpirun, a
+/// method that shares tiles renders on every rank and rank 0 writes the gathered image; the
+/// others render on rank 0 alone.
+void render_with(const RenderOptions& o, Session& session, const Run& run, double load_seconds,
+                 const MpiJob& job) {
+    RenderRequest request = run_request(o, session, run);
+    const bool shared = job.size() > 1 && run.method->shares_tiles && !is_algorithm_aov(o.aov);
+    if (job.rank() != 0 && !shared) return;
+    const TileShare share{job.rank(), job.size(),
+                          [&job](Framebuffer& fb) { job.gather_tiles(fb); }};
+    if (shared) request.tile_share = &share;
     RenderResult result;
     {
         const Camera camera = session.camera_for(request);
-        ProgressReporter progress(!o.quiet && !is_algorithm_aov(o.aov), "rendering",
-                                  double(camera.width) * camera.height);
+        ProgressReporter progress(!o.quiet && job.rank() == 0 && !is_algorithm_aov(o.aov),
+                                  "rendering", double(camera.width) * camera.height);
         result = session.render(request);
+    }
+    if (shared) {
+        RenderStats& stats = *result.stats;
+        for (std::atomic<uint64_t>* count :
+             {&stats.rays_traced, &stats.paths_traced, &stats.bad_samples})
+            *count = static_cast<uint64_t>(job.total(static_cast<long long>(count->load())));
+        if (job.rank() != 0) return;
     }
     if (result.algorithm_picture) return write_algorithm_aov(o, run, result);
     for (const std::string& w : result.warnings) print_err("hikari: warning: {}\n", w);
@@ -153,41 +170,64 @@ void render_with(const RenderOptions& o, Session& session, const Run& run, doubl
     report_render(o, run, session.scene(), width, height, times, *stats);
 }
 
-}  // namespace
-
-int run_render(const RenderOptions& o) {
-    if (is_frame_render(o)) return run_frame_render(o);
-    if (launched_among_ranks())
+/// Under mpirun, one image is shared by tiles: refuses what would make the ranks' tiles differ.
+void check_shared_still(const RenderOptions& o) {
+    const PathSettings& path = o.own.path;
+    if (path.time_limit_seconds > 0.0f || path.progressive_seconds > 0.0f)
         throw UsageError(
-            "under mpirun, hikari shares an animation's frames (--frames, --turntable); one "
-            "image is not split among ranks yet: run it as one process");
+            "under mpirun, the ranks share one image's tiles, and --time-limit or --progressive "
+            "would give each rank's tiles another number of samples: give --spp instead");
+}
+
+/// The still (or stills, one per method) of `o`; under mpirun every rank calls it.
+int render_still(const RenderOptions& o, const MpiJob& job) {
+    const bool writer = job.rank() == 0;
     const auto load_start = Clock::now();
     const std::vector<Run> runs = planned_runs(o);
-    if (!is_svg_path(runs.front().output))
+    if (job.size() > 1) check_shared_still(o);
+    if (writer && !is_svg_path(runs.front().output))
         for (const std::string& note : o.notes) print_err("hikari: warning: {}\n", note);
-    const std::unique_ptr<Session> session = load_render_session(o);
+    RenderOptions rank_options = o;
+    rank_options.quiet = o.quiet || !writer;
+    const std::unique_ptr<Session> session = load_render_session(rank_options);
     const Camera camera = session->camera_for(render_request(o));
     check_image_memory(camera);
     if (is_svg_path(runs.front().output)) {
-        for (const Run& run : runs) run_drawing(o, *session, *run.method, run.output);
+        if (writer)
+            for (const Run& run : runs) run_drawing(o, *session, *run.method, run.output);
         return 0;
     }
     for (const Run& run : runs) check_spreadsheet_size(run.output, camera);
     if (o.formulas) {
+        if (!writer) return 0;
         write_formula_workbook(runs.front().output, session->scene_as_rendered(render_request(o)),
                                o);
         if (!o.quiet) print_err("hikari: wrote {} (formulas)\n", runs.front().output);
         return 0;
     }
-    if (o.print_matrices)
+    if (o.print_matrices && writer)
         print_out("{}",
                   explain_matrices(session->scene_as_rendered(render_request(o)), o.own.raster));
     double load_seconds = seconds_since(load_start);
     for (const Run& run : runs) {
-        render_with(o, *session, run, load_seconds);
+        render_with(rank_options, *session, run, load_seconds, job);
         load_seconds = 0;
     }
     return 0;
+}
+
+}  // namespace
+
+int run_render(const RenderOptions& o) {
+    if (is_frame_render(o)) return run_frame_render(o);
+    const MpiJob job;
+    if (job.size() < 2) return render_still(o, job);
+    // A rank that stops must stop the others: they would wait for its tiles forever.
+    try {
+        return render_still(o, job);
+    } catch (const std::exception& e) {
+        job.abort(e);
+    }
 }
 
 }  // namespace hikari::cli

@@ -72,6 +72,8 @@ class Film {
     const Image& linear() const { return m_linear; }
     /// The colour of an 8-bit film (empty for a linear one).
     const Srgb8Image& srgb8() const { return m_srgb8; }
+    /// The same, to write encoded bytes into (pixels gathered from another process).
+    Srgb8Image& srgb8() { return m_srgb8; }
 
   private:
     FilmFormat m_format = FilmFormat::linear;

@@ -9,12 +9,16 @@
 namespace hikari {
 
 class BuildCache;
+struct TileShare;
 
 /// Progress and cancellation of one render, shared between the render and its caller.
 struct RenderControl {
     std::atomic<uint64_t> work_done{0};   ///< units (tiles, primitives) finished so far
     std::atomic<uint64_t> work_total{0};  ///< units in all, set by the method when it starts
     std::atomic<bool> cancel{false};      ///< set by the caller (e.g. on SIGINT) to stop early
+    /// The camera's tiles this process renders when processes share the image (frame/
+    /// tile_share.h); null: all of them. Set only for methods that declare Method::shares_tiles.
+    const TileShare* share = nullptr;
 };
 
 /// Figures a render reports for `hikari render --stats`; a method that has none leaves them 0.

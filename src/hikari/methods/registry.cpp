@@ -10,6 +10,7 @@
 #include "hikari/explain/explain.h"
 #include "hikari/frame/depth_cue.h"
 #include "hikari/frame/subpixel.h"
+#include "hikari/frame/tile_share.h"
 #include "hikari/integrators/whitted/whitted.h"
 #include "hikari/integrators/whitted/whitted_kernels.h"
 #include "hikari/raster/depth_sort.h"
@@ -385,13 +386,15 @@ constexpr std::array k_methods = {
            .warnings = &whitted_scene_warnings,
            .shading_terms = true,
            .explain = {.pixel = &explain_raytrace},
-           .refuse_values = &ray_trace_refusals},
+           .refuse_values = &ray_trace_refusals,
+           .shares_tiles = true},
     Method{.name = "path",
            .summary = "path tracing (Kajiya 1986): global illumination, light sampling and BSDF "
                       "sampling combined by MIS",
            .render = &path_trace,
            .options = k_path_options,
-           .warnings = &path_scene_warnings},
+           .warnings = &path_scene_warnings,
+           .shares_tiles = true},
     raster_method("zbuffer",
                   "Z-buffer (Alg 4.2): rasterize every triangle, keep the nearest per pixel",
                   &zbuffer, {k_zbuffer_aovs, &zbuffer_algorithm_aov}, {.pixel = &explain_zbuffer},
@@ -444,10 +447,16 @@ Framebuffer render_scene(const Method& method, const Scene& scene, Film film,
                          RenderSettings settings, const MethodSettings& own) {
     if (worth_rebasing(scene.camera))
         return render_scene(method, rebased_to_camera(scene), std::move(film), settings, own);
-    if (!scene.depth_cue) return method.render(scene, std::move(film), settings, own);
+    const TileShare* share = settings.control ? settings.control->share : nullptr;
+    if (!scene.depth_cue) {
+        Framebuffer fb = method.render(scene, std::move(film), settings, own);
+        if (share) share->combine(fb);
+        return fb;
+    }
     settings.aov_buffers = true;
     Framebuffer fb =
         method.render(scene, Film(film.width(), film.height(), FilmFormat::linear), settings, own);
+    if (share) share->combine(fb);  // the whole image before the blur reads across tiles
     if (!settings.control || !settings.control->cancel.load())
         apply_depth_cue(*scene.depth_cue, scene.background, fb);
     return fb;

@@ -84,6 +84,10 @@ struct Method {
     /// The usage error of an option value it cannot take (e.g. `--max-depth 0` for a method
     /// that needs the camera ray), or empty; null: it takes every value the options allow.
     std::string (*refuse_values)(const MethodSettings& own) = nullptr;
+    /// Whether processes can share one image (frame/tile_share.h): every pixel it writes comes
+    /// from the camera's tile loop (frame/tiles.h) or from a pass each process runs whole (the
+    /// AOVs, the caustic light paths), so tiles rendered apart and gathered are one image.
+    bool shares_tiles = false;
 };
 
 /// Every registered method, the default (raytrace) first.
@@ -96,7 +100,9 @@ const Method* find_method(std::string_view name);
 /// depth cueing (Fig 4.1b, frame/depth_cue.h). A depth cue needs linear colour and the depth
 /// AOV, so with one the method renders into a linear film with the AOV buffers, whatever `film`
 /// and `settings` ask, and the framebuffer returned holds linear colour. A render stopped
-/// through settings.control is returned as it is. A scene far from the origin is first rebased
+/// through settings.control is returned as it is. With a tile share in settings.control (only
+/// for a method that shares_tiles), the share's combine runs after the method, before the post
+/// steps. A scene far from the origin is first rebased
 /// to its camera (scene/rebase.h), so it renders as it would at the origin.
 Framebuffer render_scene(const Method& method, const Scene& scene, Film film,
                          RenderSettings settings, const MethodSettings& own);

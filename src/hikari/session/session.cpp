@@ -293,6 +293,7 @@ RenderResult Session::render(const RenderRequest& request) {
         } else {
             if (method.warnings) result.warnings = method.warnings(scene);
             RenderSettings settings;
+            if (method.shares_tiles) control.share = request.tile_share;
             settings.control = &control;
             settings.stats = result.stats.get();
             settings.aov_buffers = !is_colour_aov(request.aov) || request.wireframe_overlay;

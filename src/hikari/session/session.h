@@ -20,6 +20,7 @@
 #include "hikari/frame/framebuffer.h"
 #include "hikari/frame/line_drawing.h"
 #include "hikari/frame/render_settings.h"
+#include "hikari/frame/tile_share.h"
 #include "hikari/io/scene/scene_overrides.h"
 #include "hikari/methods/registry.h"
 #include "hikari/scene/scene.h"
@@ -80,6 +81,10 @@ struct RenderRequest {
     /// Called about ten times a second from another thread while the render runs.
     std::function<void(const RenderProgress&)> progress;
     std::optional<CancelToken> cancel;  ///< stops the render early: render() throws Interrupted
+    /// Processes sharing this image (MPI ranks): this one renders its tiles and the share's
+    /// combine gathers them (frame/tile_share.h). Not owned; null: the whole image. Only methods
+    /// that declare Method::shares_tiles take it; the others render the whole image.
+    const TileShare* tile_share = nullptr;
 };
 
 /// The step of an algorithm `hikari explain` prints: a pixel (the Z-buffer's fragments, the ray

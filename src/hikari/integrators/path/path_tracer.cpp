@@ -350,7 +350,8 @@ Framebuffer render_path(const Scene& scene, Film film, const RenderSettings& set
     const int target = std::max(1, path.samples_per_pixel);
     const bool timed = path.time_limit_seconds > 0.0f,
                progressive = path.progressive_seconds > 0.0f;
-    const uint64_t pixels = static_cast<uint64_t>(cam.width) * static_cast<uint64_t>(cam.height);
+    // The pixels this process samples: all, or its tiles of a shared image.
+    const uint64_t pixels = owned_pixels(cam.width, cam.height, settings.control);
     if (settings.control) settings.control->work_total = pixels * static_cast<uint64_t>(target);
     const auto start = Clock::now();
     double next_snapshot = path.progressive_seconds;
