@@ -300,6 +300,22 @@ void progress(size_t i, size_t n, const Figure& f) {
         cli::print_err("hikari: gallery {}/{}: {} {}\n", i + 1, n, f.figure, f.image);
 }
 
+/// Renders every figure; the buffers measured for their captions (g.data()) are removed when
+/// they are done, and also when a render fails or a signal stops the gallery.
+void render_figures(Gallery& g) {
+    struct RemoveData {
+        fs::path dir;
+        ~RemoveData() {
+            std::error_code ec;
+            fs::remove_all(dir, ec);
+        }
+    } remove_data{g.data()};
+    for (size_t i = 0; i < g.figures.size(); ++i) {
+        progress(i, g.figures.size(), g.figures[i]);
+        render_figure(g, g.figures[i]);
+    }
+}
+
 }  // namespace
 
 }  // namespace hikari::gallery
@@ -330,11 +346,7 @@ int run_gallery(const GalleryOptions& o, const std::string& program) {
     copy_model(model, g.scenes());
     for (const auto& [name, text] : g.files) g.write_text(name, text);
     for (const auto& [name, scene] : g.scene_files) g.write_scene(name, scene);
-    for (size_t i = 0; i < g.figures.size(); ++i) {
-        progress(i, g.figures.size(), g.figures[i]);
-        render_figure(g, g.figures[i]);
-    }
-    fs::remove_all(g.data(), ec);  // the buffers measured for captions
+    render_figures(g);
     const std::string html = index_html(g, model.filename().string());
     write_file_atomically(g.dir / "index.html",
                           {reinterpret_cast<const uint8_t*>(html.data()), html.size()});
