@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "console.h"
 #include "data_folder.h"
 #include "hikari/core/error.h"
 #include "hikari/io/files/read_file.h"
@@ -177,19 +178,26 @@ void render_with_legend(const Gallery& g, Figure& f, Text low, Text high_format)
 /// The turntable: a video made by ffmpeg; without it, the figure says what to install instead.
 void render_turntable(const Gallery& g, Figure& f) {
     f.commands = {command_line(f.scene, f.args, f.image)};
-    // Its stderr in a log: the warning that --line-color is no option of zbuffer and raytrace.
+    // Its stderr in a log: the warning that --line-color is no option of zbuffer and raytrace;
+    // shown when the render fails, since it says why.
     if (find_ffmpeg()) {
-        f.seconds = g.render(f.scene, f.args, f.image, (g.data() / "turntable.log").string());
+        const fs::path log = g.data() / "turntable.log";
+        try {
+            f.seconds = g.render(f.scene, f.args, f.image, log.string());
+        } catch (const InputError&) {
+            cli::print_err("{}", read_log(log));
+            throw;
+        }
         return;
     }
     f.missing = {
         "Not made here: this animation is a GIF encoded by the ffmpeg program, which is not "
-        "installed. Install it (Debian, Ubuntu: sudo apt-get install ffmpeg) and run hikari "
-        "gallery again, or run the command below.",
+        "installed. Install it (Debian, Ubuntu: sudo apt-get install ffmpeg), then run hikari "
+        "gallery again, or only the command below in this folder.",
         "ここでは作成していません：このアニメーションは ffmpeg プログラムで GIF "
-        "に変換しますが、ffmpeg がインストールされていません。インストール（Debian、Ubuntu："
-        "sudo apt-get install ffmpeg）してから hikari gallery をもう一度実行するか、下の"
-        "コマンドを実行してください。"};
+        "に変換しますが、ffmpeg がインストールされていません。インストールして（Debian、"
+        "Ubuntu：sudo apt-get install ffmpeg）から、hikari gallery をもう一度実行するか、"
+        "このフォルダで下のコマンドだけを実行してください。"};
 }
 
 // ---- The figures, section by section ---------------------------------------------------------
