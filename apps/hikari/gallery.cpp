@@ -171,6 +171,30 @@ std::string legend_html(const Figure& f, bool japanese) {
         html_escape(f.legend_low.in(japanese)), html_escape(f.legend_high.in(japanese)), stops);
 }
 
+/// A figure's picture, linked full size (a GIF loops by itself; a video plays muted, looping);
+/// or, where it could not be made, the note that says why, in its place.
+std::string picture_html(const Figure& f, bool japanese) {
+    if (!f.missing.en.empty())
+        return "<p class=\"missing\">" + html_escape(f.missing.in(japanese)) + "</p>";
+    const std::string alt = html_escape(label(f.figure, japanese) + ": " + f.title.in(japanese));
+    const std::string ext = fs::path(f.image).extension().string();
+    if (ext == ".mp4" || ext == ".webm")
+        return fmt::format(
+            "<video src=\"{0}\" autoplay loop muted playsinline aria-label=\"{1}\"></video>",
+            html_escape(f.image), alt);
+    return fmt::format("<a href=\"{0}\"><img src=\"{0}\" alt=\"{1}\"></a>", html_escape(f.image),
+                       alt);
+}
+
+/// The time the figure's runs took; nothing for a figure that was not made.
+std::string run_time_html(const Figure& f, bool japanese) {
+    if (!f.missing.en.empty()) return "";
+    return "<br>" +
+           fmt::format(fmt::runtime(japanese ? "実行時間 {:.2f} 秒（読み込み・描画・書き出し）"
+                                             : "{:.2f} s run (load, render, write)"),
+                       f.seconds);
+}
+
 /// One figure of the contact sheet: the image, its caption, the commands that make it.
 std::string figure_html(const Figure& f, bool japanese) {
     std::string commands;
@@ -178,14 +202,10 @@ std::string figure_html(const Figure& f, bool japanese) {
     const std::string& note = f.note.in(japanese);
     const std::string& caption = f.title.in(japanese);
     return fmt::format(
-        "<figure><a href=\"{0}\"><img src=\"{0}\" alt=\"{1}: {2}\"></a>{6}<figcaption><b>{1}</b>: "
-        "{2}{3}{4}<br>{5}</figcaption></figure>\n",
-        html_escape(f.image), html_escape(label(f.figure, japanese)), html_escape(caption),
+        "<figure{7}>{0}{6}<figcaption><b>{1}</b>: {2}{3}{4}{5}</figcaption></figure>\n",
+        picture_html(f, japanese), html_escape(label(f.figure, japanese)), html_escape(caption),
         note.empty() ? "" : "<br><i>" + html_escape(note) + "</i>", commands,
-        fmt::format(fmt::runtime(japanese ? "実行時間 {:.2f} 秒（読み込み・描画・書き出し）"
-                                          : "{:.2f} s run (load, render, write)"),
-                    f.seconds),
-        legend_html(f, japanese));
+        run_time_html(f, japanese), legend_html(f, japanese), f.wide ? " class=\"wide\"" : "");
 }
 
 constexpr const char* k_style = R"(<style>
@@ -193,7 +213,10 @@ body { font-family: sans-serif; margin: 1.5em; background: #fafafa; color: #222;
 h2 { border-bottom: 1px solid #ccc; margin-top: 1.5em; }
 .grid { display: flex; flex-wrap: wrap; gap: 14px; }
 figure { margin: 0; width: 260px; background: #fff; padding: 6px; border: 1px solid #ddd; }
-figure img { width: 100%; image-rendering: auto; }
+figure img, figure video { width: 100%; image-rendering: auto; }
+figure.wide { width: auto; max-width: 100%; }
+figure.wide img, figure.wide video { width: auto; max-width: 100%; }
+.missing { border: 1px dashed #b44; padding: 1em; color: #822; font-size: 13px; }
 figcaption { font-size: 12px; }
 code { font-size: 11px; word-break: break-all; color: #444; }
 .legend { font-size: 11px; display: flex; flex-wrap: wrap; justify-content: space-between; }
@@ -277,6 +300,22 @@ void progress(size_t i, size_t n, const Figure& f) {
         cli::print_err("hikari: gallery {}/{}: {} {}\n", i + 1, n, f.figure, f.image);
 }
 
+/// Renders every figure; the buffers measured for their captions (g.data()) are removed when
+/// they are done, and also when a render fails or a signal stops the gallery.
+void render_figures(Gallery& g) {
+    struct RemoveData {
+        fs::path dir;
+        ~RemoveData() {
+            std::error_code ec;
+            fs::remove_all(dir, ec);
+        }
+    } remove_data{g.data()};
+    for (size_t i = 0; i < g.figures.size(); ++i) {
+        progress(i, g.figures.size(), g.figures[i]);
+        render_figure(g, g.figures[i]);
+    }
+}
+
 }  // namespace
 
 }  // namespace hikari::gallery
@@ -307,11 +346,7 @@ int run_gallery(const GalleryOptions& o, const std::string& program) {
     copy_model(model, g.scenes());
     for (const auto& [name, text] : g.files) g.write_text(name, text);
     for (const auto& [name, scene] : g.scene_files) g.write_scene(name, scene);
-    for (size_t i = 0; i < g.figures.size(); ++i) {
-        progress(i, g.figures.size(), g.figures[i]);
-        render_figure(g, g.figures[i]);
-    }
-    fs::remove_all(g.data(), ec);  // the buffers measured for captions
+    render_figures(g);
     const std::string html = index_html(g, model.filename().string());
     write_file_atomically(g.dir / "index.html",
                           {reinterpret_cast<const uint8_t*>(html.data()), html.size()});

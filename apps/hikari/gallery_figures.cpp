@@ -10,12 +10,14 @@
 
 #include <fmt/format.h>
 
+#include "console.h"
 #include "data_folder.h"
 #include "hikari/core/error.h"
 #include "hikari/io/files/read_file.h"
 #include "hikari/io/images/image_read.h"
 #include "hikari/io/images/image_write.h"
 #include "hikari/io/scene/scene_json.h"
+#include "hikari/io/video/video_pipe.h"
 
 namespace hikari::gallery {
 
@@ -171,6 +173,31 @@ void render_with_legend(const Gallery& g, Figure& f, Text low, Text high_format)
     f.legend_low = std::move(low);
     f.legend_high = {fmt::format(fmt::runtime(high_format.en), most),
                      fmt::format(fmt::runtime(high_format.ja), most)};
+}
+
+/// The turntable: a video made by ffmpeg; without it, the figure says what to install instead.
+void render_turntable(const Gallery& g, Figure& f) {
+    f.commands = {command_line(f.scene, f.args, f.image)};
+    // Its stderr in a log: the warning that --line-color is no option of zbuffer and raytrace;
+    // shown when the render fails, since it says why.
+    if (find_ffmpeg()) {
+        const fs::path log = g.data() / "turntable.log";
+        try {
+            f.seconds = g.render(f.scene, f.args, f.image, log.string());
+        } catch (const InputError&) {
+            cli::print_err("{}", read_log(log));
+            throw;
+        }
+        return;
+    }
+    f.missing = {
+        "Not made here: this animation is a GIF encoded by the ffmpeg program, which is not "
+        "installed. Install it (Debian, Ubuntu: sudo apt-get install ffmpeg), then run hikari "
+        "gallery again, or only the command below in this folder.",
+        "ここでは作成していません：このアニメーションは ffmpeg プログラムで GIF "
+        "に変換しますが、ffmpeg がインストールされていません。インストールして（Debian、"
+        "Ubuntu：sudo apt-get install ffmpeg）から、hikari gallery をもう一度実行するか、"
+        "このフォルダで下のコマンドだけを実行してください。"};
 }
 
 // ---- The figures, section by section ---------------------------------------------------------
@@ -460,6 +487,40 @@ void plan_assignment(Gallery& g) {
     }
 }
 
+/// The frames of the turntable: a turn in 15° steps, shown at 12 per second (2 s a turn).
+constexpr int k_turntable_frames = 24;
+constexpr int k_turntable_fps = 12;
+
+void plan_turntable(Gallery& g, const Json& m) {
+    const Text s = {"Animation: one turn, four methods", "アニメーション：1回転を4つの手法で"};
+    g.scene_files["model-turntable.json"] = closer(m, 0.7f);
+    // Four panels, each half a figure wide; even sizes, which every video codec takes.
+    const int width = std::max(16, g.width / 4 * 2);
+    const int height = width * 3 / 4 / 2 * 2;
+    g.add(s, "turntable",
+          {fmt::format(
+               "the camera turning once around the model ({} frames, {}° apart, looping at {} "
+               "frames per second), every frame drawn from the same scene and camera by four "
+               "methods, left to right: wireframe (every edge of every face), hiddenline (only "
+               "the edges that are seen), zbuffer (Z-buffer, Phong shading, shadow maps) and "
+               "raytrace (a ray per pixel, shadow rays)",
+               k_turntable_frames, 360 / k_turntable_frames, k_turntable_fps),
+           fmt::format("モデルのまわりを1周するカメラ（{} コマ、{}° ずつ、毎秒 {} "
+                       "コマでくり返し）。同じシーンと視点の各コマを4つの手法で描く。左から"
+                       "ワイヤフレーム（wireframe：全ての面の全ての辺）、隠線消去（hiddenline："
+                       "見える辺だけ）、Zバッファ法（zbuffer：フォンの反射モデル、シャドウ"
+                       "マッピング）、レイトレーシング法（raytrace：画素ごとに光線、影は"
+                       "シャドウレイ）",
+                       k_turntable_frames, 360 / k_turntable_frames, k_turntable_fps)},
+          "turntable.gif", "model-turntable.json",
+          {"-m", "wireframe,hiddenline,zbuffer,raytrace", "--line-color", "0.1,0.12,0.2",
+           "--side-by-side", "--turntable", std::to_string(k_turntable_frames), "--fps",
+           std::to_string(k_turntable_fps), "--width", std::to_string(width), "--height",
+           std::to_string(height)});
+    g.figures.back().make = render_turntable;
+    g.figures.back().wide = true;
+}
+
 }  // namespace
 
 void plan(Gallery& g, const PlacedModel& model) {
@@ -475,6 +536,7 @@ void plan(Gallery& g, const PlacedModel& model) {
     plan_ray_tracing(g);
     plan_global_illumination(g);
     plan_assignment(g);
+    plan_turntable(g, m);
 }
 
 void render_figure(const Gallery& g, Figure& f) {

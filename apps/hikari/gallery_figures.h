@@ -39,6 +39,11 @@ struct Figure {
     /// frame/aov_picture.h's ramp_colour, `low` at its dark blue end and `high` at its white
     /// end (filled while rendering); empty `high`: no legend.
     Text legend_low, legend_high;
+    /// Why the picture could not be made here and how to get what it needs (filled while
+    /// rendering: the turntable without ffmpeg); the contact sheet shows it in the picture's
+    /// place. Empty: the picture was made.
+    Text missing;
+    bool wide = false;  ///< as wide as the page allows: several pictures side by side
 };
 
 /// The gallery being made: where it goes, how to render, the figures and the files they use.

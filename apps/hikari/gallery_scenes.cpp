@@ -159,6 +159,15 @@ Json shadows_only(Json scene, const std::string& obj_file) {
     return scene;
 }
 
+Json closer(Json scene, float fraction) {
+    Json& camera = scene["camera"];
+    for (int i = 0; i < 3; ++i) {
+        const float at = camera["look_at"][i].get<float>(), eye = camera["eye"][i].get<float>();
+        camera["eye"][i] = at + fraction * (eye - at);
+    }
+    return scene;
+}
+
 Json with_lights(Json scene, Json lights) {
     scene["lights"] = std::move(lights);
     return scene;

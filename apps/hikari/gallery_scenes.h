@@ -43,6 +43,10 @@ Json textured(Json scene);
 /// (40% of it) where a shadow falls. Shadow rays and maps use the true geometry.
 Json shadows_only(Json scene, const std::string& obj_file);
 
+/// The turntable's scene: `scene` (model_scene) with its eye `fraction` of the way from its
+/// look_at point, so that the model fills more of the turntable's small panels.
+Json closer(Json scene, float fraction);
+
 /// `scene` with its lights replaced by `lights`.
 Json with_lights(Json scene, Json lights);
 

@@ -34,7 +34,7 @@ void check_frame_range(const FrameOptions& f) {
 /// Whether the options ask for frames of whatever animation the scene holds: a frame option,
 /// a video, or an output with a frame number.
 bool asks_for_frames(const CLI::App& render, const RenderOptions& o) {
-    for (const char* flag : {"--frames", "--shard", "--overwrite", "--fps"})
+    for (const char* flag : {"--frames", "--shard", "--overwrite", "--fps", "--side-by-side"})
         if (render.count(flag) > 0) return true;
     if (o.output.empty()) return false;
     std::string why;
@@ -61,12 +61,28 @@ SceneFrames read_animation(const CLI::App& render, RenderOptions& o) {
     }
 }
 
+/// --side-by-side: -o as given, a video or 8-bit pictures with a frame number (the labels are
+/// display values, drawn into the picture).
+void check_side_by_side_output(const RenderOptions& o) {
+    if (is_video_path(o.output)) return;
+    std::string why;
+    if (!is_picture_file(o.output) || is_svg_path(o.output) || o.bit_depth != 8)
+        throw CLI::ValidationError(fmt::format(
+            "-o {}: --side-by-side draws the methods' labels into 8-bit pictures: write a video "
+            "(.mp4, .webm, .gif) or numbered .png, .jpg or .ppm frames",
+            o.output));
+    if (!parse_frame_pattern(o.output, why))
+        throw CLI::ValidationError(
+            fmt::format("-o {}: a frame output needs a frame number: {}", o.output, why));
+}
+
 /// -o of every method: a video, or a file name with a frame number in it.
 void check_frame_outputs(const RenderOptions& o) {
     if (o.output.empty())
         throw CLI::ValidationError(
             "name the frames' files with -o and a frame number (-o out/frame_%04d.png), or a "
             "video (-o turntable.mp4, .webm or .gif)");
+    if (o.frames.side_by_side) return check_side_by_side_output(o);
     for (const std::string& name : o.methods) {
         const std::string output = output_for(o, name);
         std::string why;
@@ -114,6 +130,10 @@ void add_frame_options(CLI::App& render, FrameOptions& f) {
     render.add_option("--fps", f.fps, "A video's frames per second")
         ->check(real_in(0.01, 1000))
         ->capture_default_str();
+    render.add_flag("--side-by-side", f.side_by_side,
+                    "With -m a,b,c: each frame the methods' pictures left to right, each under "
+                    "its method's name, in the one output -o names (a video, or numbered 8-bit "
+                    "pictures), so the methods compare frame by frame");
 }
 
 void check_frame_options(const CLI::App& render, RenderOptions& o) {
@@ -125,7 +145,7 @@ void check_frame_options(const CLI::App& render, RenderOptions& o) {
         if (frames == SceneFrames::unreadable) return;  // the load says why
     }
     if (!f.frame_render) {
-        for (const char* flag : {"--frames", "--shard", "--overwrite", "--fps"})
+        for (const char* flag : {"--frames", "--shard", "--overwrite", "--fps", "--side-by-side"})
             if (render.count(flag) > 0)
                 throw CLI::ValidationError(fmt::format(
                     "{} is for an animation's frames: add --turntable N, or render a scene "

@@ -18,6 +18,7 @@
 #include "console.h"
 #include "hikari/core/error.h"
 #include "hikari/core/srgb8_encoder.h"
+#include "hikari/frame/side_by_side.h"
 #include "hikari/io/files/frame_pattern.h"
 #include "hikari/io/images/image_write.h"
 #include "hikari/io/images/svg_write.h"
@@ -39,11 +40,19 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-/// A method and where its frames go: numbered files, or one video.
+/// A method and where its frames go: numbered files, or one video. With --side-by-side, every
+/// method, their pictures of a frame side by side in one output.
 struct FrameRun {
-    const Method* method;
+    std::vector<const Method*> methods;
     std::string output;
     std::optional<FramePattern> pattern;  ///< numbered files; nullopt: a video
+
+    /// The method names, as the summary line gives them ("zbuffer" or "wireframe,zbuffer").
+    std::string names() const {
+        std::string out;
+        for (const Method* m : methods) out += (out.empty() ? "" : ",") + std::string(m->name);
+        return out;
+    }
 };
 
 /// The frames this process renders: --frames (default: all of them) of --shard, as
@@ -73,12 +82,25 @@ void check_video_output(const fs::path& video, std::span<const RenderInput> inpu
     if (!find_ffmpeg()) throw UsageError(missing_ffmpeg_message(video));
 }
 
+/// The methods and their outputs: one run per method, or one of them all with --side-by-side.
+std::vector<FrameRun> method_runs(const RenderOptions& o) {
+    std::vector<FrameRun> runs;
+    for (const std::string& name : o.methods) {
+        if (o.frames.side_by_side && !runs.empty())
+            runs.front().methods.push_back(find_method(name));
+        else
+            runs.push_back({{find_method(name)},
+                            o.frames.side_by_side ? o.output : output_for(o, name),
+                            std::nullopt});
+    }
+    return runs;
+}
+
 /// Every method with its output, each frame's file checked before any work is done.
 std::vector<FrameRun> planned_runs(const RenderOptions& o, const std::vector<int>& frames) {
     const std::vector<RenderInput> inputs = render_inputs(o.scene_file);
-    std::vector<FrameRun> runs;
-    for (const std::string& name : o.methods) {
-        FrameRun run{find_method(name), output_for(o, name), std::nullopt};
+    std::vector<FrameRun> runs = method_runs(o);
+    for (FrameRun& run : runs) {
         std::string why;
         if (is_video_path(run.output))
             check_video_output(run.output, inputs);
@@ -86,7 +108,6 @@ std::vector<FrameRun> planned_runs(const RenderOptions& o, const std::vector<int
             run.pattern = parse_frame_pattern(run.output, why);  // checked by the parser
         if (run.pattern)
             for (const int frame : frames) check_output_path(run.pattern->file_name(frame), inputs);
-        runs.push_back(std::move(run));
     }
     return runs;
 }
@@ -159,29 +180,19 @@ class FrameStage {
     Camera m_base;
 };
 
-/// The request for one frame of `run`: the options' own with the frame's camera, the film its
-/// output needs (a video frame: what an 8-bit PNG holds).
-RenderRequest frame_request(const RenderOptions& o, const FrameRun& run, const Camera& camera) {
+/// The request for one frame by `method`: the options' own with the frame's camera, the film its
+/// output `file` needs (a video frame, a side-by-side panel: "frame.png", what an 8-bit PNG
+/// holds).
+RenderRequest frame_request(const RenderOptions& o, const Method& method, const std::string& file,
+                            const Camera& camera) {
     RenderRequest request = render_request(o);
-    request.method = run.method->name;
+    request.method = method.name;
     request.camera = camera;
     request.width = camera.width;
     request.height = camera.height;
-    const std::string file = run.pattern ? run.output : "frame.png";
     request.film = output_film(camera, file, o).format();
     request.algorithm_counts = !is_picture_file(file);
     return request;
-}
-
-/// One frame rendered into `file`, as `hikari render` with that camera writes it.
-void render_frame_file(const RenderOptions& o, Session& session, const FrameRun& run,
-                       const Camera& camera, const std::string& file, bool first) {
-    const RenderRequest request = frame_request(o, run, camera);
-    if (is_svg_path(file)) return write_svg(file, session.draw(request));
-    RenderResult result = session.render(request);
-    if (first)
-        for (const std::string& w : result.warnings) print_err("hikari: warning: {}\n", w);
-    write_output(file, std::move(result), o, session.scene());
 }
 
 /// A finished frame as the 8-bit sRGB picture an 8-bit PNG of it holds.
@@ -190,6 +201,36 @@ Srgb8Image frame_picture(RenderResult&& result, const RenderOptions& o, const Sc
     DevelopedImage image = develop(std::move(result), development(o, true), scene);
     if (auto* srgb8 = std::get_if<Srgb8Image>(&image)) return std::move(*srgb8);
     return encode_srgb8(std::get<Image>(image));
+}
+
+/// The picture of one frame of `run` at `camera`, as an 8-bit PNG holds it: its method's, or
+/// with --side-by-side every method's, left to right under their names (frame/side_by_side.h).
+Srgb8Image run_picture(const RenderOptions& o, Session& session, const FrameRun& run,
+                       const Camera& camera, bool first) {
+    std::vector<Srgb8Image> panels;
+    std::vector<std::string> labels;
+    for (const Method* method : run.methods) {
+        RenderResult result = session.render(frame_request(o, *method, "frame.png", camera));
+        if (first)
+            for (const std::string& w : result.warnings) print_err("hikari: warning: {}\n", w);
+        panels.push_back(frame_picture(std::move(result), o, session.scene()));
+        labels.emplace_back(method->name);
+    }
+    if (!o.frames.side_by_side) return std::move(panels.front());
+    return side_by_side(panels, labels);
+}
+
+/// One frame rendered into `file`, as `hikari render` with that camera writes it.
+void render_frame_file(const RenderOptions& o, Session& session, const FrameRun& run,
+                       const Camera& camera, const std::string& file, bool first) {
+    if (o.frames.side_by_side)
+        return write_image(file, run_picture(o, session, run, camera, first));
+    const RenderRequest request = frame_request(o, *run.methods.front(), run.output, camera);
+    if (is_svg_path(file)) return write_svg(file, session.draw(request));
+    RenderResult result = session.render(request);
+    if (first)
+        for (const std::string& w : result.warnings) print_err("hikari: warning: {}\n", w);
+    write_output(file, std::move(result), o, session.scene());
 }
 
 /// Whether a frame's file is there whole: files are written atomically (io/files/atomic_file.h),
@@ -227,30 +268,35 @@ FrameTally render_frame_files(const RenderOptions& o, Session& session, const Fr
     return tally;
 }
 
+/// The size of `run`'s frames: the camera's, or with --side-by-side the labelled panels'.
+PictureSize frame_size(const RenderOptions& o, const FrameRun& run, const Camera& camera) {
+    if (!o.frames.side_by_side) return {camera.width, camera.height};
+    std::vector<std::string> labels;
+    for (const Method* m : run.methods) labels.emplace_back(m->name);
+    return side_by_side_size({camera.width, camera.height}, labels);
+}
+
 /// H.264 in yuv420p keeps colour at half resolution in both directions: an even size only.
-void check_video_size(const FrameRun& run, const Camera& camera) {
+void check_video_size(const FrameRun& run, PictureSize size) {
     const std::string ext = fs::path(run.output).extension().string();
-    if (ext == ".mp4" && (camera.width % 2 != 0 || camera.height % 2 != 0))
+    if (ext == ".mp4" && (size.width % 2 != 0 || size.height % 2 != 0))
         throw UsageError(fmt::format(
             "{}: H.264 video (yuv420p) needs an even width and height; the frames are {}x{} "
             "(set --width and --height)",
-            run.output, camera.width, camera.height));
+            run.output, size.width, size.height));
 }
 
 /// The frames of `run` piped into its video, in order, none on the disk.
 FrameTally render_video(const RenderOptions& o, Session& session, const FrameRun& run,
                         FrameStage& stage, const std::vector<int>& frames) {
-    VideoPipe video(run.output,
-                    VideoSettings{stage.base().width, stage.base().height, o.frames.fps});
+    const PictureSize size = frame_size(o, run, stage.base());
+    VideoPipe video(run.output, VideoSettings{size.width, size.height, o.frames.fps});
     FrameProgress progress(!o.quiet, frames.size());
     FrameTally tally;
     for (const int frame : frames) {
         progress.starting(frame);
         const Camera camera = stage.camera(frame);
-        RenderResult result = session.render(frame_request(o, run, camera));
-        if (tally.rendered == 0)
-            for (const std::string& w : result.warnings) print_err("hikari: warning: {}\n", w);
-        const Srgb8Image picture = frame_picture(std::move(result), o, session.scene());
+        const Srgb8Image picture = run_picture(o, session, run, camera, tally.rendered == 0);
         video.write_frame(picture.bytes);
         progress.rendered();
         ++tally.rendered;
@@ -274,7 +320,7 @@ void report_frames(const RenderOptions& o, const FrameRun& run, const FrameTally
             ? fmt::format(", {} already there (--overwrite renders them)", tally.skipped)
             : "";
     print_err("hikari: wrote {} frame{} to {} ({}{}, {:.3f} s, {:.2f} frames/s)\n", tally.rendered,
-              tally.rendered == 1 ? "" : "s", run.output, run.method->name, skipped, seconds,
+              tally.rendered == 1 ? "" : "s", run.output, run.names(), skipped, seconds,
               seconds > 0 ? double(tally.rendered) / seconds : 0.0);
 }
 
@@ -299,7 +345,7 @@ int run_frame_render(const RenderOptions& o) {
     FrameStage stage(o, *session);
     check_image_memory(stage.base());
     for (const FrameRun& run : runs)
-        if (!run.pattern) check_video_size(run, stage.base());
+        if (!run.pattern) check_video_size(run, frame_size(o, run, stage.base()));
     for (const FrameRun& run : runs) {
         const auto start = Clock::now();
         FrameTally tally = run.pattern ? render_frame_files(o, *session, run, stage, frames, job)

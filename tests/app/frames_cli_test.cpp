@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "../io/temp_dir.h"
+#include "hikari/io/images/image_read.h"
 #include "hikari/scene/camera_orbit.h"
 #include "hikari/session/session.h"
 #include "run_hikari.h"
@@ -20,6 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 using hikari::testing::read_text;
 using hikari::testing::run_hikari;
+using hikari::testing::run_shell;
 using hikari::testing::RunResult;
 using hikari::testing::TempDir;
 
@@ -31,16 +33,6 @@ std::set<std::string> names_in(const fs::path& dir) {
     std::set<std::string> names;
     for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
     return names;
-}
-
-/// Runs a shell command line; its exit status and output.
-RunResult run_shell(const std::string& command) {
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    std::string output;
-    char buffer[4096];
-    while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
-    const int raw = pclose(pipe);
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), output};
 }
 
 TEST(FramesCli, TurntableFrameIsTheStillOfItsCamera) {
@@ -162,6 +154,68 @@ TEST(FramesCli, BadFrameOptionsAreClearErrors) {
     expect("--turntable 2 -o " + (dir / "f_%d.svg").string(), 2, "draws no lines");
     expect("--turntable 2 -o " + (dir / "no" / "f_%d.png").string(), 2, "does not exist");
     expect("--turntable 2 -o " + out + " " + (dir / "missing.json").string(), 1, "missing.json");
+    EXPECT_EQ(names_in(dir.path()).size(), 0u);
+}
+
+TEST(FramesCli, SideBySideFrameIsEveryMethodsFrameUnderItsName) {
+    TempDir dir;
+    const std::string turntable = "render --width 48 -m zbuffer,raytrace -q --turntable 3 ";
+    ASSERT_EQ(run_hikari(turntable + "-o " + (dir / "f_%d.png").string()).status, 0);
+    for (const int threads : {1, 2}) {
+        const RunResult r =
+            run_hikari(fmt::format("{} --side-by-side --threads {} -o {}", turntable, threads,
+                                   (dir / fmt::format("t{}_%d.png", threads)).string()));
+        ASSERT_EQ(r.status, 0) << r.output;
+    }
+    for (int k = 0; k < 3; ++k) {
+        // The same bits whatever the thread count.
+        EXPECT_EQ(read_text(dir / fmt::format("t1_{}.png", k)),
+                  read_text(dir / fmt::format("t2_{}.png", k)));
+        const hikari::Image both = hikari::read_image(dir / fmt::format("t1_{}.png", k));
+        const hikari::Image z = hikari::read_image(dir / fmt::format("f_{}-zbuffer.png", k));
+        const hikari::Image r = hikari::read_image(dir / fmt::format("f_{}-raytrace.png", k));
+        ASSERT_EQ(both.width, 2 * 48 + 2);  // two panels, a gap of 2
+        const int strip = both.height - z.height;
+        ASSERT_EQ(strip, 12);  // the labels at the font's size: doubled, they are too wide
+        size_t ink = 0;
+        for (int y = 0; y < strip; ++y)
+            for (int x = 0; x < both.width; ++x) ink += both.at(x, y).x < 0.1f;
+        EXPECT_GT(ink, 40u) << "the labels";
+        for (int y = 0; y < z.height; ++y)
+            for (int x = 0; x < 48; ++x) {
+                ASSERT_EQ(both.at(x, strip + y), z.at(x, y)) << k << ": " << x << "," << y;
+                ASSERT_EQ(both.at(x + 50, strip + y), r.at(x, y)) << k;
+            }
+    }
+}
+
+TEST(FramesCli, SideBySideVideoIsOneVideoOfThePanels) {
+    if (run_shell("command -v ffmpeg && command -v ffprobe").status != 0)
+        GTEST_SKIP() << "ffmpeg and ffprobe are not installed (apt-get install ffmpeg)";
+    TempDir dir;
+    const RunResult r = run_hikari(
+        "render --width 64 --height 48 -m wireframe,zbuffer -q --side-by-side --turntable 6 -o " +
+        (dir / "t.mp4").string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    const RunResult probe = run_shell(
+        "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+        "stream=nb_read_frames,width,height -of csv=p=0 " +
+        (dir / "t.mp4").string());
+    EXPECT_EQ(probe.output, "130,60,6\n");  // 64 + 2 + 64 wide, 48 + a 12-pixel label strip
+    EXPECT_EQ(names_in(dir.path()).size(), 1u);
+}
+
+TEST(FramesCli, SideBySideMistakesAreUsageErrors) {
+    TempDir dir;
+    const auto expect = [&](const std::string& args, const std::string& message) {
+        const RunResult r = run_hikari("render --width 48 -m zbuffer,raytrace -q " + args);
+        EXPECT_EQ(r.status, 2) << args << ": " << r.output;
+        EXPECT_NE(r.output.find(message), std::string::npos) << args << ": " << r.output;
+    };
+    expect("--side-by-side -o " + (dir / "s.png").string(), "add --turntable");
+    expect("--side-by-side --turntable 3 -o " + (dir / "s_%d.pfm").string(), "8-bit pictures");
+    expect("--side-by-side --turntable 3 -o " + (dir / "s_%d.svg").string(), "8-bit pictures");
+    expect("--side-by-side --turntable 3 -o " + (dir / "s.png").string(), "frame number");
     EXPECT_EQ(names_in(dir.path()).size(), 0u);
 }
 

@@ -29,6 +29,7 @@ using hikari::Image;
 using hikari::read_image;
 using hikari::Vec3;
 using hikari::testing::run_hikari;
+using hikari::testing::run_shell;
 
 /// Renders the figures `only` names into `dir` (English captions, 200 pixels wide).
 void make_gallery(const fs::path& dir, const std::string& only, const std::string& lang = "en") {
@@ -275,6 +276,75 @@ TEST(GalleryFigures, AnalyticSoftShadowOfTheTeapotBeatsSampling) {
     // analytic shadow better than 64 samples agree with the converged one.
     const double raster_db = psnr(raster, analytic);
     EXPECT_GT(raster_db, sampled_db) << "zbuffer vs raytrace analytic " << raster_db << " dB";
+}
+
+/// The mean difference of two 8-bit pictures of one size, per channel in [0, 1] (display values).
+double mean_difference(const Image& a, const Image& b) {
+    double sum = 0;
+    for (size_t i = 0; i < a.pixels.size(); ++i)
+        sum += max_channel_difference(a.pixels[i], b.pixels[i]);
+    return sum / static_cast<double>(a.pixels.size());
+}
+
+TEST(GalleryFigures, TurntableIsALoopingGifOfTheFourMethodsSideBySide) {
+    if (run_shell("command -v ffmpeg && command -v ffprobe").status != 0)
+        GTEST_SKIP() << "ffmpeg and ffprobe are not installed (apt-get install ffmpeg)";
+    const hikari::testing::TempDir dir;
+    make_gallery(dir.path(), "turntable");
+    const fs::path gif = dir / "turntable.gif";
+    // 24 frames of four 100 × 74 panels (half a 200-pixel figure; even), 2 pixels apart, under a
+    // 12-pixel label strip (the labels at the font's size: doubled, "hiddenline" is too wide).
+    const auto probe = run_shell(
+        "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+        "stream=nb_read_frames,width,height -of csv=p=0 " +
+        gif.string());
+    EXPECT_EQ(probe.output, "406,86,24\n");
+    // It loops for ever: the NETSCAPE2.0 block with a loop count of 0.
+    const std::string bytes = hikari::testing::read_text(gif);
+    EXPECT_NE(bytes.find(std::string("NETSCAPE2.0\x03\x01\x00\x00", 16)), std::string::npos);
+    const std::string index = hikari::testing::read_text(dir / "index.html");
+    EXPECT_NE(index.find("<img src=\"turntable.gif\""), std::string::npos);
+    for (const char* method : {"wireframe (", "hiddenline (", "zbuffer (", "raytrace ("})
+        EXPECT_NE(index.find(method), std::string::npos) << method;
+    // Frame 6 of the GIF is frame 6 of the printed command written as a PNG, up to the GIF's
+    // palette and dithering; and the camera turned since frame 0.
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(
+        index, m, std::regex("hikari render scenes/([^ ]+) ([^<]+) -o turntable\\.gif")));
+    const auto png =
+        run_hikari("render " + (dir / "scenes" / m[1].str()).string() + " " + m[2].str() +
+                   " --threads 2 -q --frames 0-6 -o " + (dir / "f_%d.png").string());
+    ASSERT_EQ(png.status, 0) << png.output;
+    const auto extract =
+        run_shell("ffmpeg -v error -i " + gif.string() + " -vf 'select=eq(n\\,6)' -frames:v 1 " +
+                  (dir / "gif6.png").string());
+    ASSERT_EQ(extract.status, 0) << extract.output;
+    const Image from_gif = read_image(dir / "gif6.png");
+    const Image frame6 = read_image(dir / "f_6.png"), frame0 = read_image(dir / "f_0.png");
+    ASSERT_EQ(from_gif.width, frame6.width);
+    EXPECT_LT(mean_difference(from_gif, frame6), 0.01);
+    EXPECT_GT(mean_difference(frame0, frame6), 0.03);
+    fs::remove(dir / "gif6.png");
+    for (int k = 0; k <= 6; ++k) fs::remove(dir / ("f_" + std::to_string(k) + ".png"));
+    for (const auto& e : fs::directory_iterator(dir.path()))  // no temporaries left
+        EXPECT_TRUE(e.path().filename() == "turntable.gif" || e.path().filename() == "index.html" ||
+                    e.path().filename() == "scenes")
+            << e.path();
+}
+
+TEST(GalleryFigures, TurntableWithoutFfmpegSaysHowToGetIt) {
+    const hikari::testing::TempDir dir;
+    fs::create_directories(dir / "empty");
+    const auto r =
+        run_shell("PATH=" + (dir / "empty").string() + " " + HIKARI_CLI_PATH +
+                  " gallery --width 200 --threads 2 --only turntable -o " + (dir / "g").string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    const std::string index = hikari::testing::read_text(dir / "g/index.html");
+    EXPECT_NE(index.find("class=\"missing\""), std::string::npos);
+    EXPECT_NE(index.find("sudo apt-get install ffmpeg"), std::string::npos);
+    EXPECT_EQ(index.find("<img"), std::string::npos);              // no broken picture
+    EXPECT_NE(index.find("-o turntable.gif"), std::string::npos);  // the command to make it
+    EXPECT_FALSE(fs::exists(dir / "g/turntable.gif"));
 }
 
 }  // namespace

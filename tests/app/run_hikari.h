@@ -28,4 +28,15 @@ inline RunResult run_hikari_redirected(const std::string& args, const std::strin
 /// Runs `hikari ARGS` (a shell command line) and waits for it.
 inline RunResult run_hikari(const std::string& args) { return run_hikari_redirected(args, "2>&1"); }
 
+/// Runs a shell command line (ffmpeg, ffprobe, an environment for hikari) and waits for it; its
+/// exit status and output (stdout and stderr together).
+inline RunResult run_shell(const std::string& command) {
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    std::string output;
+    char buffer[4096];
+    while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
+    const int raw = pclose(pipe);
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), output};
+}
+
 }  // namespace hikari::testing
