@@ -112,6 +112,22 @@ TEST(JpegData, WrittenJpegPassesAndDecodes) {
 
 const std::string k_hdr_header = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n";
 
+TEST(PngData, EmptyDataChunksAreDroppedAndTheImageDecodesTheSame) {
+    TempDir dir;
+    Image image(5, 4);
+    for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = Vec3(float(i) / 20.0f);
+    write_image(dir / "a.png", image);
+    const std::string png = testing::read_text(dir / "a.png");
+    EXPECT_FALSE(png_without_empty_data_chunks(png));  // nothing to drop
+    // An empty IDAT (length 0, type, any CRC: stb_image does not check it) after IHDR, the
+    // chunk stb_image copied into a buffer it had not allocated.
+    const std::string empty_idat = std::string(4, '\0') + "IDAT" + std::string(4, '\x55');
+    const std::string with_empty = png.substr(0, 33) + empty_idat + png.substr(33);
+    EXPECT_EQ(png_without_empty_data_chunks(with_empty), png);
+    testing::write_text(dir / "b.png", with_empty);
+    EXPECT_EQ(read_image(dir / "b.png").pixels, read_image(dir / "a.png").pixels);
+}
+
 TEST(HdrData, HeaderWithoutPixelsIsTruncated) {
     const std::string hdr = k_hdr_header + "-Y 20000 +X 20000\n";
     EXPECT_EQ(input_error_of([&] { check_hdr_data("a.hdr", hdr, 20000, 20000); }),

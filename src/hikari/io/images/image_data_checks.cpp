@@ -167,6 +167,29 @@ void check_jpeg_data(const std::filesystem::path& path, std::string_view bytes) 
         fail(path, "truncated JPEG: headers but no scan data (no SOS segment)");
 }
 
+// --- PNG (ISO/IEC 15948) -----------------------------------------------------------------------
+
+std::optional<std::string> png_without_empty_data_chunks(std::string_view bytes) {
+    constexpr size_t k_signature = 8, k_chunk_overhead = 12;  // length, type, CRC
+    std::optional<std::string> kept;
+    size_t copied = 0;  // bytes[0, copied) are in `kept` (or need not be)
+    for (size_t pos = k_signature; pos + k_chunk_overhead <= bytes.size();) {
+        const size_t length = size_t{byte_at(bytes, pos)} << 24 |
+                              size_t{byte_at(bytes, pos + 1)} << 16 |
+                              size_t{byte_at(bytes, pos + 2)} << 8 | byte_at(bytes, pos + 3);
+        const std::string_view type = bytes.substr(pos + 4, 4);
+        if (length == 0 && type == "IDAT") {
+            if (!kept) kept.emplace();
+            kept->append(bytes.substr(copied, pos - copied));
+            copied = pos + k_chunk_overhead;
+        }
+        if (type == "IEND" || length > bytes.size() - pos - k_chunk_overhead) break;
+        pos += k_chunk_overhead + length;
+    }
+    if (kept) kept->append(bytes.substr(copied));
+    return kept;
+}
+
 // --- Radiance HDR -------------------------------------------------------------------------------
 
 void check_hdr_data(const std::filesystem::path& path, std::string_view bytes, int width,

@@ -6,6 +6,8 @@
 // picture of any claimed size from a few bytes).
 
 #include <filesystem>
+#include <optional>
+#include <string>
 #include <string_view>
 
 namespace hikari {
@@ -26,6 +28,12 @@ inline constexpr double k_max_jpeg_scan_blocks = double(1 << 27);
 /// the scans exceed the limits above. Files without an SOF are otherwise left to the decoder's
 /// own error. Call it before stb_image sees the bytes.
 void check_jpeg_data(const std::filesystem::path& path, std::string_view bytes);
+
+/// The PNG `bytes` without their empty IDAT chunks, or nothing when it has none (PNG 11.2.4: the
+/// image data is the concatenation of the IDAT chunks, so an empty one adds nothing). stb_image
+/// copies a first, empty IDAT into a buffer it has not yet allocated (found by
+/// fuzz/image_fuzz.cpp). Chunks past the end of the file are left to the decoder.
+std::optional<std::string> png_without_empty_data_chunks(std::string_view bytes);
 
 /// Walks the scanlines of the Radiance HDR `bytes` of `width` × `height` pixels (read from its
 /// header) as stb_image reads them (flat RGBE, or the run-length encoded scanlines of Ward's

@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -129,11 +130,14 @@ Image image_from_stb(const std::filesystem::path& path, const StbInput& in, Deco
     return image;
 }
 
-Image read_stb(const std::filesystem::path& path, const std::string& bytes) {
+Image read_stb(const std::filesystem::path& path, const std::string& file_bytes) {
     // Only PNG and JPEG go to stb_image: it also sniffs other formats, and its 16-bit PNM path
     // writes past its buffer (found by fuzz/image_fuzz.cpp).
-    const bool png = bytes.starts_with("\x89PNG\r\n\x1a\n");
-    const bool jpeg = bytes.starts_with("\xFF\xD8\xFF");
+    const bool png = file_bytes.starts_with("\x89PNG\r\n\x1a\n");
+    const bool jpeg = file_bytes.starts_with("\xFF\xD8\xFF");
+    const std::optional<std::string> cleaned =
+        png ? png_without_empty_data_chunks(file_bytes) : std::nullopt;
+    const std::string& bytes = cleaned ? *cleaned : file_bytes;
     if (!png && !jpeg) fail(path, "not a PNG or JPEG file (wrong signature)");
     // Before stb_image reads a byte: its header pass builds the Huffman tables too. Truncation
     // is said first, whatever the size.
