@@ -213,6 +213,17 @@ void MpiJob::gather_tiles([[maybe_unused]] Framebuffer& fb) const {
 #endif
 }
 
+void MpiJob::sum_over_ranks([[maybe_unused]] std::span<int64_t> sums) const {
+#if HIKARI_MPI
+    if (m_size < 2) return;
+    constexpr size_t k_per_message = k_message_bytes / sizeof(int64_t);
+    for (size_t at = 0; at < sums.size(); at += k_per_message)
+        MPI_Allreduce(MPI_IN_PLACE, sums.data() + at,
+                      static_cast<int>(std::min(k_per_message, sums.size() - at)), MPI_INT64_T,
+                      MPI_SUM, MPI_COMM_WORLD);
+#endif
+}
+
 void MpiJob::abort(const std::exception& error) const {
     const bool usage = dynamic_cast<const UsageError*>(&error) != nullptr;
     print_err("hikari: error: rank {} of {}: {}\n", m_rank, m_size, printable_text(error.what()));

@@ -7,8 +7,10 @@
 // instead (frame/tile_share.h): every rank renders its tiles and rank 0 gathers them and writes
 // the file. Without HIKARI_MPI, or run without mpirun, one process renders everything.
 
+#include <cstdint>
 #include <exception>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "hikari/frame/framebuffer.h"
@@ -40,6 +42,8 @@ class MpiJob {
     /// Every rank calls it with its framebuffer of one shared image, its own tiles rendered;
     /// rank 0's then holds every rank's tiles (frame/tile_exchange.h).
     void gather_tiles(Framebuffer& fb) const;
+    /// Every rank calls it with its sums; each then holds the sums over all ranks.
+    void sum_over_ranks(std::span<int64_t> sums) const;
     /// Prints `error` naming this rank and ends every rank of the job (MPI_Abort) with the exit
     /// status the error has alone: a rank cannot leave the others waiting for its tiles.
     [[noreturn]] void abort(const std::exception& error) const;

@@ -140,8 +140,8 @@ void render_with(const RenderOptions& o, Session& session, const Run& run, doubl
     RenderRequest request = run_request(o, session, run);
     const bool shared = job.size() > 1 && run.method->shares_tiles && !is_algorithm_aov(o.aov);
     if (job.rank() != 0 && !shared) return;
-    const TileShare share{job.rank(), job.size(),
-                          [&job](Framebuffer& fb) { job.gather_tiles(fb); }};
+    const TileShare share{job.rank(), job.size(), [&job](Framebuffer& fb) { job.gather_tiles(fb); },
+                          [&job](std::span<int64_t> sums) { job.sum_over_ranks(sums); }};
     if (shared) request.tile_share = &share;
     RenderResult result;
     {

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
 
 namespace hikari {
 
@@ -19,9 +20,18 @@ struct TileShare {
     /// Called on every process once its tiles are rendered, before the post steps that read
     /// neighbouring pixels (depth-cue blur): it makes `fb` the whole image where it is wanted.
     std::function<void(Framebuffer& fb)> combine;
+    /// Called on every process with its integer sums (the light tracer's fixed-point splats,
+    /// which land on any tile); each then holds the sums over all processes. Integer sums are
+    /// exact in any order, so the totals are one process's bit for bit.
+    std::function<void(std::span<int64_t> sums)> sum_over_parts;
 
     /// Whether tile `tile` (row-major over the image's tiles) is this process's.
     bool owns(int64_t tile) const { return tile % parts == part; }
+    /// Whether the `count`-th block of work that is not per tile (a run of light paths) is this
+    /// process's.
+    bool owns_block(uint64_t count) const {
+        return count % static_cast<uint64_t>(parts) == uint64_t(part);
+    }
     /// How many of `tile_count` tiles are this process's.
     int64_t owned_of(int64_t tile_count) const {
         return tile_count > part ? (tile_count - part + parts - 1) / parts : 0;

@@ -7,6 +7,7 @@
 #include "hikari/core/color.h"
 #include "hikari/core/parallel.h"
 #include "hikari/core/sobol.h"
+#include "hikari/frame/tile_share.h"
 #include "hikari/geometry/ray_offset.h"
 #include "hikari/shading/bsdf/lambert.h"
 
@@ -111,17 +112,29 @@ Vec3 CausticLightTracer::sum(size_t i) const {
     return {channel(0), channel(1), channel(2)};
 }
 
-void CausticLightTracer::trace(uint64_t first, uint64_t count, uint64_t& rays) {
+/// Light paths per run handed to one process of a shared image.
+constexpr uint64_t k_paths_per_share = 4096;
+
+void CausticLightTracer::trace(uint64_t first, uint64_t count, uint64_t& rays,
+                               const TileShare* share) {
     if (m_triangles.empty()) return;
     std::atomic<uint64_t> traced{0};
     hikari::parallel_for(tbb::blocked_range<uint64_t>(first, first + count, 4096),
                          [&](const tbb::blocked_range<uint64_t>& range) {
                              uint64_t own = 0;
                              for (uint64_t i = range.begin(); i != range.end(); ++i)
-                                 trace_path(i, own);
+                                 if (!share || share->owns_block(i / k_paths_per_share))
+                                     trace_path(i, own);
                              traced += own;
                          });
     rays += traced.load();
+}
+
+void CausticLightTracer::sum_over_parts(const TileShare& share) {
+    std::vector<int64_t> sums(m_fixed.size());
+    for (size_t i = 0; i < sums.size(); ++i) sums[i] = m_fixed[i].load();
+    share.sum_over_parts(sums);
+    for (size_t i = 0; i < sums.size(); ++i) m_fixed[i] = sums[i];
 }
 
 void CausticLightTracer::trace_path(uint64_t index, uint64_t& rays) {

@@ -37,6 +37,8 @@ MaterialSample<float> material_at_hit(const Scene& scene, const SceneIntersector
 bool traces_caustics_from_lights(const Scene& scene);
 
 /// The light tracer's half of an image: its light paths' contributions summed per pixel.
+struct TileShare;
+
 class CausticLightTracer {
   public:
     /// `scale`: each material's energy_scale (the path tracer's); `filter`: the pixel filter the
@@ -45,8 +47,12 @@ class CausticLightTracer {
     CausticLightTracer(const Scene& scene, const SceneIntersector& intersector,
                        const std::vector<float>& scale, const PixelFilter& filter, int max_depth);
 
-    /// Traces light paths [first, first + count), adding their contributions to the sums.
-    void trace(uint64_t first, uint64_t count, uint64_t& rays);
+    /// Traces light paths [first, first + count), adding their contributions to the sums; with
+    /// a share, only this process's runs of paths (frame/tile_share.h).
+    void trace(uint64_t first, uint64_t count, uint64_t& rays, const TileShare* share = nullptr);
+
+    /// Makes the sums those of every process's paths (TileShare::sum_over_parts).
+    void sum_over_parts(const TileShare& share);
 
     /// Pixel `i`'s sum of contributions, to be divided by the number of light paths traced.
     Vec3 sum(size_t i) const;

@@ -237,7 +237,7 @@ class PathRender {
         const uint64_t pixels = m_sums.size();
         uint64_t rays = 0;
         m_light_tracer->trace(pixels * static_cast<uint64_t>(first),
-                              pixels * static_cast<uint64_t>(count), rays);
+                              pixels * static_cast<uint64_t>(count), rays, share());
         if (m_settings.stats) m_settings.stats->rays_traced += rays;
     }
 
@@ -276,6 +276,17 @@ class PathRender {
                     control->work_done.fetch_add(pixels * count, std::memory_order_relaxed);
             },
             false);
+    }
+
+    /// The processes sharing the image, or null (frame/tile_share.h).
+    const TileShare* share() const {
+        return m_settings.control ? m_settings.control->share : nullptr;
+    }
+
+    /// Makes the light paths' sums those of every process sharing the image: each traced its
+    /// runs of them, and their splats land on any tile.
+    void sum_light_paths_over_parts() {
+        if (m_light_tracer && share()) m_light_tracer->sum_over_parts(*share());
     }
 
     /// The mean of `samples` samples per pixel as linear RGB.
@@ -385,6 +396,7 @@ Framebuffer render_path(const Scene& scene, Film film, const RenderSettings& set
             next_snapshot = elapsed + path.progressive_seconds;
         }
     }
+    render.sum_light_paths_over_parts();
     const Image image = render.mean(samples);
     fb.set_colors(0, image.pixels.data(), image.pixels.size());
     return fb;
