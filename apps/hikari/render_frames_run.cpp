@@ -261,7 +261,7 @@ FrameTally render_frame_files(const RenderOptions& o, Session& session, const Fr
         }
         progress.starting(frame);
         const Camera camera = stage.camera(frame);
-        render_frame_file(o, session, run, camera, file, tally.rendered == 0);
+        render_frame_file(o, session, run, camera, file, tally.rendered == 0 && job.rank() == 0);
         progress.rendered();
         ++tally.rendered;
     });
