@@ -33,6 +33,7 @@
 #include "hikari/io/files/printable_text.h"
 #include "hikari/version.h"
 #include "info.h"
+#include "mpi_frames.h"
 #include "render.h"
 #include "render_command.h"
 #include "serve.h"
@@ -126,6 +127,9 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv,
     } catch (const CLI::CallForVersion& e) {
         return finish_standard_output(app.exit(e));
     } catch (const CLI::ParseError& e) {
+        // Under mpirun every rank parses the same command line: the first says what is wrong.
+        // (Errors that can differ between machines, a missing folder, are said by every rank.)
+        if (rank_in_environment() != 0) return k_exit_usage_error;
         print_err("hikari: error: {}\nRun `hikari --help` for usage.\n", printable_text(e.what()));
         return k_exit_usage_error;
     }

@@ -29,6 +29,12 @@ bool launched_among_ranks() {
     return false;
 }
 
+int rank_in_environment() {
+    for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"})
+        if (const char* v = std::getenv(name)) return std::atoi(v);
+    return 0;
+}
+
 namespace {
 
 #if HIKARI_MPI

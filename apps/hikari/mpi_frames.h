@@ -21,6 +21,10 @@ namespace hikari::cli {
 /// among more than one rank.
 bool launched_among_ranks();
 
+/// This process's rank as its launcher set it in the environment (0 without one), known before
+/// MPI starts: a command-line mistake, which every rank meets alike, is said by rank 0 alone.
+int rank_in_environment();
+
 /// MPI for as long as it lives, when this process was started by mpirun among more than one
 /// rank (and hikari was built with HIKARI_MPI); nothing otherwise.
 class MpiJob {

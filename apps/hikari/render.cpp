@@ -220,6 +220,12 @@ int render_still(const RenderOptions& o, const MpiJob& job) {
 
 int run_render(const RenderOptions& o) {
     if (is_frame_render(o)) return run_frame_render(o);
+    if (launched_among_ranks()) {
+        // The command line's mistakes before MPI starts: each rank says why and exits with
+        // status 2, with no MPI_Abort report around it.
+        planned_runs(o);
+        check_shared_still(o);
+    }
     const MpiJob job;
     if (job.size() < 2) return render_still(o, job);
     // A rank that stops must stop the others: they would wait for its tiles forever.
