@@ -126,6 +126,30 @@ void render_and_hand_out(const std::vector<int>& frames, int size,
         failures.size(), size, lines));
 }
 
+/// Bytes per MPI message: MPI counts are ints, and a 16K float image with AOVs is larger.
+constexpr size_t k_message_bytes = size_t{1} << 30;
+/// A shared image's tiles: their size, then the bytes (tags after the frames' above).
+constexpr int k_tag_tile_bytes = 4, k_tag_tiles = 5;
+
+void send_bytes(const std::vector<std::byte>& bytes, int to) {
+    const unsigned long long size = bytes.size();
+    MPI_Send(&size, 1, MPI_UNSIGNED_LONG_LONG, to, k_tag_tile_bytes, MPI_COMM_WORLD);
+    for (size_t at = 0; at < bytes.size(); at += k_message_bytes)
+        MPI_Send(bytes.data() + at, static_cast<int>(std::min(k_message_bytes, bytes.size() - at)),
+                 MPI_BYTE, to, k_tag_tiles, MPI_COMM_WORLD);
+}
+
+std::vector<std::byte> receive_bytes(int from) {
+    unsigned long long size = 0;
+    MPI_Recv(&size, 1, MPI_UNSIGNED_LONG_LONG, from, k_tag_tile_bytes, MPI_COMM_WORLD,
+             MPI_STATUS_IGNORE);
+    std::vector<std::byte> bytes(size);
+    for (size_t at = 0; at < bytes.size(); at += k_message_bytes)
+        MPI_Recv(bytes.data() + at, static_cast<int>(std::min(k_message_bytes, bytes.size() - at)),
+                 MPI_BYTE, from, k_tag_tiles, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    return bytes;
+}
+
 #endif
 
 }  // namespace
@@ -180,35 +204,6 @@ void MpiJob::share(const std::vector<int>& frames, const std::function<void(int)
 #endif
     for (const int frame : frames) render(frame);
 }
-
-#if HIKARI_MPI
-namespace {
-
-/// Bytes per MPI message: MPI counts are ints, and a 16K float image with AOVs is larger.
-constexpr size_t k_message_bytes = size_t{1} << 30;
-constexpr int k_tag_tile_bytes = 4, k_tag_tiles = 5;
-
-void send_bytes(const std::vector<std::byte>& bytes, int to) {
-    const unsigned long long size = bytes.size();
-    MPI_Send(&size, 1, MPI_UNSIGNED_LONG_LONG, to, k_tag_tile_bytes, MPI_COMM_WORLD);
-    for (size_t at = 0; at < bytes.size(); at += k_message_bytes)
-        MPI_Send(bytes.data() + at, static_cast<int>(std::min(k_message_bytes, bytes.size() - at)),
-                 MPI_BYTE, to, k_tag_tiles, MPI_COMM_WORLD);
-}
-
-std::vector<std::byte> receive_bytes(int from) {
-    unsigned long long size = 0;
-    MPI_Recv(&size, 1, MPI_UNSIGNED_LONG_LONG, from, k_tag_tile_bytes, MPI_COMM_WORLD,
-             MPI_STATUS_IGNORE);
-    std::vector<std::byte> bytes(size);
-    for (size_t at = 0; at < bytes.size(); at += k_message_bytes)
-        MPI_Recv(bytes.data() + at, static_cast<int>(std::min(k_message_bytes, bytes.size() - at)),
-                 MPI_BYTE, from, k_tag_tiles, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    return bytes;
-}
-
-}  // namespace
-#endif
 
 void MpiJob::gather_tiles([[maybe_unused]] Framebuffer& fb) const {
 #if HIKARI_MPI

@@ -146,8 +146,8 @@ void render_with(const RenderOptions& o, Session& session, const Run& run, doubl
     RenderResult result;
     {
         const Camera camera = session.camera_for(request);
-        ProgressReporter progress(!o.quiet && job.rank() == 0 && !is_algorithm_aov(o.aov),
-                                  "rendering", double(camera.width) * camera.height);
+        ProgressReporter progress(!o.quiet && !is_algorithm_aov(o.aov), "rendering",
+                                  double(camera.width) * camera.height);
         result = session.render(request);
     }
     if (shared) {
@@ -179,12 +179,11 @@ void check_shared_still(const RenderOptions& o) {
             "would give each rank's tiles another number of samples: give --spp instead");
 }
 
-/// The still (or stills, one per method) of `o`; under mpirun every rank calls it.
-int render_still(const RenderOptions& o, const MpiJob& job) {
+/// The stills of `runs` (one per method); under mpirun every rank calls it, and only rank 0
+/// speaks and writes.
+int render_still(const RenderOptions& o, const std::vector<Run>& runs, const MpiJob& job) {
     const bool writer = job.rank() == 0;
     const auto load_start = Clock::now();
-    const std::vector<Run> runs = planned_runs(o);
-    if (job.size() > 1) check_shared_still(o);
     if (writer && !is_svg_path(runs.front().output))
         for (const std::string& note : o.notes) print_err("hikari: warning: {}\n", note);
     RenderOptions rank_options = o;
@@ -220,17 +219,15 @@ int render_still(const RenderOptions& o, const MpiJob& job) {
 
 int run_render(const RenderOptions& o) {
     if (is_frame_render(o)) return run_frame_render(o);
-    if (launched_among_ranks()) {
-        // The command line's mistakes before MPI starts: each rank says why and exits with
-        // status 2, with no MPI_Abort report around it.
-        planned_runs(o);
-        check_shared_still(o);
-    }
+    // The command line's mistakes before MPI starts: under mpirun each rank says why and exits
+    // with status 2, with no MPI_Abort report around it.
+    const std::vector<Run> runs = planned_runs(o);
+    if (launched_among_ranks()) check_shared_still(o);
     const MpiJob job;
-    if (job.size() < 2) return render_still(o, job);
+    if (job.size() < 2) return render_still(o, runs, job);
     // A rank that stops must stop the others: they would wait for its tiles forever.
     try {
-        return render_still(o, job);
+        return render_still(o, runs, job);
     } catch (const std::exception& e) {
         job.abort(e);
     }

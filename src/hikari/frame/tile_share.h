@@ -27,10 +27,10 @@ struct TileShare {
 
     /// Whether tile `tile` (row-major over the image's tiles) is this process's.
     bool owns(int64_t tile) const { return tile % parts == part; }
-    /// Whether the `count`-th block of work that is not per tile (a run of light paths) is this
+    /// Whether block `block` of the work that is not per tile (a run of light paths) is this
     /// process's.
-    bool owns_block(uint64_t count) const {
-        return count % static_cast<uint64_t>(parts) == uint64_t(part);
+    bool owns_block(uint64_t block) const {
+        return block % static_cast<uint64_t>(parts) == uint64_t(part);
     }
     /// How many of `tile_count` tiles are this process's.
     int64_t owned_of(int64_t tile_count) const {

@@ -36,9 +36,9 @@ MaterialSample<float> material_at_hit(const Scene& scene, const SceneIntersector
 /// emissive triangle and a material with a mirror or glass lobe.
 bool traces_caustics_from_lights(const Scene& scene);
 
-/// The light tracer's half of an image: its light paths' contributions summed per pixel.
 struct TileShare;
 
+/// The light tracer's half of an image: its light paths' contributions summed per pixel.
 class CausticLightTracer {
   public:
     /// `scale`: each material's energy_scale (the path tracer's); `filter`: the pixel filter the
