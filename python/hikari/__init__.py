@@ -11,7 +11,6 @@ the command line prints; Ctrl-C stops a render (KeyboardInterrupt). See docs/pyt
 """
 
 import contextlib as _contextlib
-import json as _json
 
 import numpy as _np
 
@@ -124,7 +123,7 @@ class Scene:
     def from_dict(cls, scene, base_dir=".", max_memory=None):
         """A scene from the scene format as Python data (dicts and lists, docs/scene-format.md)."""
         with _memory_limit(max_memory):
-            return cls(_hikari.Scene.from_json(_json.dumps(scene), str(base_dir), "scene"))
+            return cls(_hikari.Scene.from_data(scene, str(base_dir), "scene"))
 
     @classmethod
     def default(cls):

@@ -1,11 +1,13 @@
 // hikari.Scene: a render session (session/session.h) for Python. A render runs on its own
 // thread while the calling thread waits with the GIL released, so other Python threads run,
 // Ctrl-C (KeyboardInterrupt) stops it within a tenth of a second, and the progress callback is
-// called on the caller's thread.
+// called on the caller's thread. Python threads sharing a Scene take turns (SharedSession).
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <exception>
 #include <future>
+#include <mutex>
 #include <string>
 #include <thread>
 #include <type_traits>
@@ -19,29 +21,66 @@
 #include "hikari/methods/method_option_text.h"
 #include "hikari/session/scene_document.h"
 #include "hikari/session/session.h"
+#include "python_json.h"
 #include "scene_words.h"
 
 namespace hikari::python {
 
 namespace {
 
-/// A Python value (number, string, bool, list, dict) as JSON, through Python's own json module.
-nlohmann::json json_value(const py::handle& value) {
-    const std::string text = py::module_::import("json").attr("dumps")(value).cast<std::string>();
-    return nlohmann::json::parse(text);
-}
+/// A session as Python threads share it: one call at a time, since a render reads what set()
+/// replaces. A second thread waits its turn without the GIL (and still hears Ctrl-C).
+struct SharedSession {
+    explicit SharedSession(std::unique_ptr<Session> s) : session(std::move(s)) {}
+    std::unique_ptr<Session> session;
+    std::timed_mutex busy;
+    std::atomic<std::thread::id> holder{};
+};
+
+/// The calling thread's turn on a SharedSession, for the lifetime of the object. A call from
+/// the thread already holding it (a progress callback rendering the scene it reports on) is
+/// refused rather than left waiting for itself.
+class SessionTurn {
+  public:
+    explicit SessionTurn(SharedSession& shared) : m_shared(shared) {
+        if (shared.holder.load() == std::this_thread::get_id())
+            throw InputError(
+                "this scene is busy with a call on the same thread (a progress callback "
+                "cannot render, change or explain the scene it reports on)");
+        while (true) {
+            {
+                py::gil_scoped_release unlocked;
+                if (shared.busy.try_lock_for(std::chrono::milliseconds(20))) break;
+            }
+            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        }
+        shared.holder.store(std::this_thread::get_id());
+    }
+    ~SessionTurn() {
+        m_shared.holder.store(std::thread::id{});
+        m_shared.busy.unlock();
+    }
+    SessionTurn(const SessionTurn&) = delete;
+    SessionTurn& operator=(const SessionTurn&) = delete;
+    Session& session() const { return *m_shared.session; }
+
+  private:
+    SharedSession& m_shared;
+};
 
 /// `--set PATH=VALUE` from a Python path and value.
 SceneOverride scene_edit(const std::string& path, const py::handle& value) {
-    SceneOverride edit{path + "=" + py::str(value).cast<std::string>(), path, json_value(value)};
     if (path.empty()) throw InputError("set: the path is empty");
+    SceneOverride edit{path + "=" + py::str(value).cast<std::string>(), path,
+                       json_of_python(value, "set", path)};
     return edit;
 }
 
 /// A method option's value as the command line writes it: 16, 0.5, map, 0.1,0.2,0.3.
-std::string option_text(const py::handle& value) {
-    if (py::isinstance<py::bool_>(value)) throw InputError("a method option is not a bool");
-    return option_text_of_json(json_value(value));
+std::string option_text(const std::string& name, const py::handle& value) {
+    if (py::isinstance<py::bool_>(value))
+        throw InputError(name + ": a method option is not a bool");
+    return option_text_of_json(json_of_python(value, name));
 }
 
 /// `count` numbers from a Python sequence, or InputError naming `what`.
@@ -55,12 +94,15 @@ std::vector<Number> numbers_of(const py::handle& value, size_t count, const std:
             if (!integral &&
                 !(std::is_floating_point_v<Number> && py::isinstance<py::float_>(item)))
                 break;
-            numbers.push_back(item.cast<Number>());
+            const Number number = item.cast<Number>();
+            if constexpr (std::is_floating_point_v<Number>)
+                if (!std::isfinite(number)) break;
+            numbers.push_back(number);
         }
     if (numbers.size() != count || py::len(value) != count)
         throw InputError(
             fmt::format("{}: expected {} {}", what, count,
-                        std::is_floating_point_v<Number> ? "numbers" : "whole numbers"));
+                        std::is_floating_point_v<Number> ? "finite numbers" : "whole numbers"));
     return numbers;
 }
 
@@ -71,8 +113,12 @@ Vec3 vec3_of(const py::handle& value, const char* what) {
 
 /// `camera` (a dict with any of eye, look_at, up, fov_y, projection, view_height, width, height)
 /// over `base`.
-Camera camera_of(const py::dict& camera, Camera base) {
-    for (const auto& [key_handle, value] : camera) {
+Camera camera_of(const py::handle& camera, Camera base) {
+    if (!py::isinstance<py::dict>(camera))
+        throw InputError(
+            "camera: expected a dict with any of eye, look_at, up, fov_y, projection, "
+            "view_height, width, height");
+    for (const auto& [key_handle, value] : camera.cast<py::dict>()) {
         const std::string key = py::str(key_handle);
         if (key == "eye")
             base.eye = vec3_of(value, "eye");
@@ -105,6 +151,8 @@ Camera camera_of(const py::dict& camera, Camera base) {
         throw InputError("camera.view_height: expected a positive number");
     if (base.width < 1 || base.height < 1 || base.width > 65536 || base.height > 65536)
         throw InputError("camera: width and height must be 1 to 65536 pixels");
+    if (const char* fault = camera_view_fault(base))
+        throw InputError(std::string("camera: ") + fault);
     return base;
 }
 
@@ -138,7 +186,8 @@ auto run_interruptible(Work&& work, const CancelToken& token, const std::atomic<
             interrupted = true;  // the pending exception (KeyboardInterrupt) is raised below
             token.cancel();
         }
-        if (!interrupted && !progress.is_none() && fraction.load() != reported) {
+        if (!interrupted && !progress.is_none() && fraction.load() != reported &&
+            fraction.load() < 1.0) {
             reported = fraction.load();
             try {
                 progress(reported);
@@ -157,7 +206,10 @@ auto run_interruptible(Work&& work, const CancelToken& token, const std::atomic<
         }
         throw py::error_already_set();
     }
-    return future.get();
+    auto result = future.get();
+    // The end is always reported, however quickly the work went.
+    if (!progress.is_none()) progress(1.0);
+    return result;
 }
 
 /// A count AOV (overdraw, paint-order) as one float per pixel, (H, W), as ids are.
@@ -176,22 +228,25 @@ RenderRequest request_of(const Session& session, const std::string& method,
     RenderRequest request;
     request.method = method;
     const Method& chosen = method_named(method);
-    if (!camera.is_none())
-        request.camera = camera_of(camera.cast<py::dict>(), session.scene().camera);
+    if (!camera.is_none()) request.camera = camera_of(camera, session.scene().camera);
     if (width && *width < 1) throw InputError("width: expected a positive number of pixels");
     if (height && *height < 1) throw InputError("height: expected a positive number of pixels");
     request.width = width.value_or(0);
     request.height = height.value_or(0);
     for (const auto& [name, value] : options)
         set_method_option(request.options, chosen, py::str(name).cast<std::string>(),
-                          option_text(value));
+                          option_text(py::str(name).cast<std::string>(), value));
     return request;
 }
 
-py::object render(Session& session, const std::string& method, std::optional<int> width,
+py::object render(SharedSession& shared, const std::string& method, std::optional<int> width,
                   std::optional<int> height, const std::string& aov, const py::object& camera,
                   std::optional<int> threads, const py::object& progress,
                   const py::kwargs& options) {
+    if (!progress.is_none() && PyCallable_Check(progress.ptr()) == 0)
+        throw py::type_error("progress: expected a callable, called with the fraction done");
+    const SessionTurn turn(shared);
+    Session& session = turn.session();
     RenderRequest request = request_of(session, method, width, height, camera, options);
     const std::optional<Aov> buffer = aov_named(aov);
     if (!buffer) throw InputError("aov: '" + aov + "' is not an AOV (see hikari.methods())");
@@ -212,9 +267,11 @@ py::object render(Session& session, const std::string& method, std::optional<int
 }
 
 /// `hikari explain`'s text for one step of a method's algorithm (Session::explain).
-std::string explain(Session& session, const std::string& method, const py::object& pixel,
+std::string explain(SharedSession& shared, const std::string& method, const py::object& pixel,
                     std::optional<int> row, std::optional<int> width, std::optional<int> height,
                     const py::object& camera, const py::kwargs& options) {
+    const SessionTurn turn(shared);
+    Session& session = turn.session();
     const RenderRequest request = request_of(session, method, width, height, camera, options);
     ExplainStep step;
     if (!pixel.is_none()) {
@@ -228,8 +285,10 @@ std::string explain(Session& session, const std::string& method, const py::objec
 
 /// The scene as a scene file with the view `camera` (a dict, as render takes) at the size asked
 /// (session/scene_document.h): `hikari render` of that file renders what render() gives.
-std::string scene_json(const Session& session, std::optional<int> width, std::optional<int> height,
+std::string scene_json(SharedSession& shared, std::optional<int> width, std::optional<int> height,
                        const py::object& camera) {
+    const SessionTurn turn(shared);
+    const Session& session = turn.session();
     const RenderRequest request = request_of(session, "raytrace", width, height, camera, {});
     return scene_document(session.source(), session.camera_for(request)).dump(2) + "\n";
 }
@@ -253,13 +312,18 @@ SceneSource file_source(const std::string& path, const py::object& set, bool gro
 }
 
 /// A session loaded with the GIL released (a large model takes a while).
-std::unique_ptr<Session> load_session(SceneSource source) {
-    py::gil_scoped_release unlocked;
-    return std::make_unique<Session>(std::move(source));
+std::unique_ptr<SharedSession> load_session(SceneSource source) {
+    std::unique_ptr<Session> session;
+    {
+        py::gil_scoped_release unlocked;
+        session = std::make_unique<Session>(std::move(source));
+    }
+    return std::make_unique<SharedSession>(std::move(session));
 }
 
-py::dict scene_info(const Session& session) {
-    const Scene& s = session.scene();
+py::dict scene_info(SharedSession& shared) {
+    const SessionTurn turn(shared);
+    const Scene& s = turn.session().scene();
     py::dict d;
     d["triangles"] = s.triangles.size();
     d["spheres"] = s.spheres.size();
@@ -274,9 +338,10 @@ py::dict scene_info(const Session& session) {
 }  // namespace
 
 void bind_scene(py::module_& m) {
-    py::class_<Session>(m, "Scene",
-                        "A scene loaded once and rendered many times: later renders reuse its BVH "
-                        "and what else does not depend on the camera.")
+    py::class_<SharedSession>(
+        m, "Scene",
+        "A scene loaded once and rendered many times: later renders reuse its BVH "
+        "and what else does not depend on the camera.")
         .def_static(
             "load",
             [](const std::string& path, const py::object& set, bool ground,
@@ -303,14 +368,27 @@ void bind_scene(py::module_& m) {
             "A scene from scene-format JSON text (docs/scene-format.md); relative file paths are "
             "read from base_dir.")
         .def_static(
+            "from_data",
+            [](const py::object& data, const std::string& base_dir, const std::string& name) {
+                SceneSource source;
+                source.file = name;
+                source.json_text = json_of_python(data, name).dump();
+                source.base_dir = base_dir;
+                return load_session(std::move(source));
+            },
+            py::arg("data"), py::arg("base_dir") = ".", py::arg("name") = "scene",
+            "A scene from the scene format as Python data (dicts, lists, numbers, strings); a "
+            "value JSON cannot hold (NaN, a set, an object) is an InputError naming its path.")
+        .def_static(
             "default", [] { return load_session({}); },
             "The default scene: the lecture's assignment, a Phong-shaded sphere.")
         .def(
             "set",
-            [](Session& s, const std::string& path, const py::object& value) {
+            [](SharedSession& shared, const std::string& path, const py::object& value) {
                 const SceneOverride edit = scene_edit(path, value);
+                const SessionTurn turn(shared);
                 py::gil_scoped_release unlocked;
-                s.set(edit);
+                turn.session().set(edit);
             },
             py::arg("path"), py::arg("value"),
             "Changes one value by its JSON path, as --set does (`materials.clay.shininess`, 5).")
@@ -331,10 +409,25 @@ void bind_scene(py::module_& m) {
              "The scene as scene-format JSON with this camera and size: `hikari render` of the "
              "file renders what render() gives (files named by absolute paths, `set` applied).")
         .def_property_readonly("camera",
-                               [](const Session& s) { return camera_dict(s.scene().camera); })
-        .def_property_readonly("warnings", &Session::load_warnings)
-        .def_property_readonly("load_seconds", &Session::load_seconds)
-        .def_property_readonly("kept_structures", &Session::kept_structures)
+                               [](SharedSession& shared) {
+                                   const SessionTurn turn(shared);
+                                   return camera_dict(turn.session().scene().camera);
+                               })
+        .def_property_readonly("warnings",
+                               [](SharedSession& shared) {
+                                   const SessionTurn turn(shared);
+                                   return turn.session().load_warnings();
+                               })
+        .def_property_readonly("load_seconds",
+                               [](SharedSession& shared) {
+                                   const SessionTurn turn(shared);
+                                   return turn.session().load_seconds();
+                               })
+        .def_property_readonly("kept_structures",
+                               [](SharedSession& shared) {
+                                   const SessionTurn turn(shared);
+                                   return turn.session().kept_structures();
+                               })
         .def_property_readonly("info", &scene_info);
 }
 

@@ -1,5 +1,6 @@
 """hikari.Scene.render: the command line's images, as NumPy arrays, for every method."""
 
+import re
 import threading
 
 import numpy as np
@@ -88,6 +89,84 @@ def test_bad_input_raises_input_error():
         with pytest.raises(hikari.InputError):
             call()
     assert issubclass(hikari.InputError, ValueError)
+
+
+def test_values_json_cannot_hold_are_input_errors_naming_their_path():
+    scene = hikari.Scene.default()
+    nan = float("nan")
+    view = [b - a for a, b in zip(scene.camera["eye"], scene.camera["look_at"])]
+    cases = [(lambda: hikari.Scene.from_dict({"camera": {"fov_y": nan}}), "camera.fov_y"),
+             (lambda: hikari.Scene.from_dict({"camera": {"eye": {1, 2, 3}}}), "camera.eye"),
+             (lambda: hikari.Scene.from_dict({"objects": [{"sphere": object()}]}),
+              "objects[0].sphere"),
+             (lambda: hikari.Scene.from_dict({1: "x"}), "key must be a string"),
+             (lambda: scene.set("materials.0.shininess", float("inf")), "shininess"),
+             (lambda: scene.render(camera={"eye": [nan, 0, 3]}), "camera.eye"),
+             (lambda: scene.render(camera={"eye": [0, 0, 0], "look_at": [0, 0, 0]}),
+              "same point"),
+             (lambda: scene.render(camera={"up": view}), "parallel"),
+             (lambda: scene.render(camera=5), "camera"),
+             (lambda: scene.render("path", clamp=nan), "clamp")]
+    for call, named in cases:
+        with pytest.raises(hikari.InputError, match=re.escape(named)):
+            call()
+    cyclic = []
+    cyclic.append(cyclic)
+    with pytest.raises(hikari.InputError, match="nested deeper"):
+        hikari.Scene.from_dict({"objects": cyclic})
+    # NumPy values, the ones a notebook has at hand, are numbers and lists.
+    moved = scene.render(width=16, camera={"eye": np.array([0.0, 0.5, 3.0])})
+    assert moved.shape == (16, 16, 3)
+    scene.set("camera.fov_y", np.float32(40.0))
+    assert scene.camera["fov_y"] == 40.0
+
+
+def test_threads_sharing_a_scene_take_turns():
+    scene = hikari.Scene.load(scene_path("teapot.json"))
+    expected = {m: scene.render(m, width=40, height=30, **({"spp": 2} if m == "path" else {}))
+                for m in ["raytrace", "zbuffer", "path", "scanline"]}
+    failures = []
+
+    def work(method):
+        try:
+            for _ in range(4):
+                image = scene.render(method, width=40, height=30,
+                                     **({"spp": 2} if method == "path" else {}))
+                if not np.array_equal(image, expected[method]):
+                    failures.append(method + " differs")
+                scene.set("materials.porcelain.shininess", 80)  # the same value: same image
+                assert scene.camera["width"] > 0
+        except Exception as e:  # pragma: no cover - reported below
+            failures.append(repr(e))
+
+    threads = [threading.Thread(target=work, args=(m,)) for m in expected]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert failures == []
+
+
+def test_progress_callbacks_are_checked_and_their_errors_raised():
+    scene = hikari.Scene.default()
+    with pytest.raises(TypeError, match="progress"):
+        scene.render(width=16, progress=5)
+
+    def fails(fraction):
+        raise RuntimeError("stop here")
+
+    with pytest.raises(RuntimeError, match="stop here"):
+        scene.render(width=16, progress=fails)
+
+    def renders_again(fraction):
+        scene.render(width=8)
+
+    with pytest.raises(hikari.InputError, match="busy"):
+        scene.render(width=16, progress=renders_again)
+    fractions = []
+    scene.render(width=8, progress=fractions.append)  # however fast, the end is reported
+    assert fractions[-1] == 1.0
+    assert scene.render(width=8).shape == (8, 8, 3)
 
 
 def test_the_gil_is_released_and_progress_is_reported():

@@ -22,6 +22,14 @@ CameraFrame make_camera_frame(const Camera& camera) {
     return f;
 }
 
+const char* camera_view_fault(const Camera& camera) {
+    const Vec3 view = camera.look_at - camera.eye;
+    if (!(dot(view, view) > 0.0f)) return "eye and look_at are the same point";
+    const Vec3 side = cross(normalize(view), normalize(camera.up));
+    if (!(dot(side, side) >= 1e-10f)) return "up is parallel to the view direction";
+    return nullptr;
+}
+
 Mat4 view_matrix(const Camera& camera) { return look_at(camera.eye, camera.look_at, camera.up); }
 
 }  // namespace hikari

@@ -38,6 +38,11 @@ struct CameraFrame {
 
 CameraFrame make_camera_frame(const Camera& camera);
 
+/// Why `camera`'s eye, look_at and up make no view (a view direction of zero length, or an up
+/// parallel to it, leave the camera frame undefined), or nullptr when they make one. Every
+/// front end that takes a camera (scene files, Python, HTTP requests) asks this one question.
+const char* camera_view_fault(const Camera& camera);
+
 /// The camera ray through image point (px, py) in pixel units: (0, 0) is the top-left corner of
 /// the image and (i + 0.5, j + 0.5) the centre of pixel (i, j), row j counted from the top.
 /// Perspective: from the eye through x·right + y·up + forward on the plane one unit in front of

@@ -99,7 +99,7 @@ Camera parse_camera(const JsonNode& node) {
     if (node.has("width")) c.width = node.at("width").as_int(1, k_max_image_side);
     if (node.has("height")) c.height = node.at("height").as_int(1, k_max_image_side);
     const Vec3 view = c.look_at - c.eye;
-    if (dot(view, view) == 0.0f) node.fail("eye and look_at are the same point");
+    if (dot(view, view) == 0.0f) node.fail(camera_view_fault(c));
     // Each projection reads its own key, so that switching one (--set camera.projection=...)
     // needs no other change. Without view_height, the parallel view shows what the pinhole
     // shows at the look_at point: 2 |look_at − eye| tan(fov_y / 2).
@@ -110,8 +110,7 @@ Camera parse_camera(const JsonNode& node) {
                                            std::tan(c.fov_y_degrees * std::numbers::pi / 360.0));
     if (!std::isfinite(c.view_height) || !(c.view_height > 0.0f))
         node.fail("the view height (from fov_y and the distance to look_at) is out of range");
-    const Vec3 side = cross(normalize(view), normalize(c.up));
-    if (dot(side, side) < 1e-10f) node.at("up").fail("up is parallel to the view direction");
+    if (const char* fault = camera_view_fault(c)) node.at("up").fail(fault);
     return c;
 }
 
