@@ -8,6 +8,7 @@
 #include <exception>
 #include <future>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <type_traits>
@@ -17,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bindings.h"
+#include "hikari/core/cancel.h"
 #include "hikari/core/error.h"
 #include "hikari/methods/method_option_text.h"
 #include "hikari/session/scene_document.h"
@@ -169,10 +171,24 @@ py::dict camera_dict(const Camera& c) {
     return d;
 }
 
+/// How work running on its own thread is asked to stop on Ctrl-C: a render through its own
+/// token, and every stage (a load, a BVH build, the depth sort, an explanation) through the
+/// process-wide request (core/cancel.h) that they poll, as the command line's SIGINT does. The
+/// request is withdrawn once the work has ended, so that the next call runs.
+struct Stopper {
+    std::optional<CancelToken> token;
+    void stop() const {
+        if (token) token->cancel();
+        request_cancel();
+    }
+    void settle() const { clear_cancel_request(); }
+};
+
 /// Runs `work` on its own thread while this one waits without the GIL; every 20 ms it takes the
-/// GIL to let Python handle signals (Ctrl-C cancels `token`) and to report progress.
+/// GIL to let Python handle signals (Ctrl-C stops the work through `stopper`) and to report
+/// `fraction` to `progress` (None: no reports).
 template <class Work>
-auto run_interruptible(Work&& work, const CancelToken& token, const std::atomic<double>& fraction,
+auto run_interruptible(Work&& work, const Stopper& stopper, const std::atomic<double>& fraction,
                        const py::object& progress) {
     auto future = std::async(std::launch::async, std::forward<Work>(work));
     bool interrupted = false;
@@ -184,7 +200,7 @@ auto run_interruptible(Work&& work, const CancelToken& token, const std::atomic<
         }
         if (!interrupted && PyErr_CheckSignals() != 0) {
             interrupted = true;  // the pending exception (KeyboardInterrupt) is raised below
-            token.cancel();
+            stopper.stop();
         }
         if (!interrupted && !progress.is_none() && fraction.load() != reported &&
             fraction.load() < 1.0) {
@@ -192,9 +208,12 @@ auto run_interruptible(Work&& work, const CancelToken& token, const std::atomic<
             try {
                 progress(reported);
             } catch (...) {
-                token.cancel();
-                py::gil_scoped_release unlocked;
-                future.wait();
+                stopper.stop();
+                {
+                    py::gil_scoped_release unlocked;
+                    future.wait();
+                }
+                stopper.settle();
                 throw;
             }
         }
@@ -202,14 +221,22 @@ auto run_interruptible(Work&& work, const CancelToken& token, const std::atomic<
     if (interrupted) {
         try {
             future.get();
-        } catch (...) {  // the render's own report of the interruption
+        } catch (...) {  // the work's own report of the interruption
         }
+        stopper.settle();
         throw py::error_already_set();
     }
     auto result = future.get();
     // The end is always reported, however quickly the work went.
     if (!progress.is_none()) progress(1.0);
     return result;
+}
+
+/// `work` (a load, an explanation) on its own thread, stopped by Ctrl-C, without progress.
+template <class Work>
+auto run_interruptible(Work&& work) {
+    const std::atomic<double> no_fraction{0.0};
+    return run_interruptible(std::forward<Work>(work), Stopper{}, no_fraction, py::none());
 }
 
 /// A count AOV (overdraw, paint-order) as one float per pixel, (H, W), as ids are.
@@ -258,8 +285,8 @@ py::object render(SharedSession& shared, const std::string& method, std::optiona
     request.cancel = token;
     std::atomic<double> fraction{0.0};
     request.progress = [&fraction](const RenderProgress& p) { fraction.store(p.fraction); };
-    RenderResult result =
-        run_interruptible([&] { return session.render(request); }, token, fraction, progress);
+    RenderResult result = run_interruptible([&] { return session.render(request); }, Stopper{token},
+                                            fraction, progress);
     if (result.algorithm_picture && is_count_aov(request.aov))
         return count_array(*result.algorithm_picture);
     if (result.algorithm_picture) return image_array(std::move(*result.algorithm_picture));
@@ -279,8 +306,7 @@ std::string explain(SharedSession& shared, const std::string& method, const py::
         step.pixel = std::pair{xy[0], xy[1]};
     }
     step.row = row;
-    py::gil_scoped_release unlocked;
-    return session.explain(request, step);
+    return run_interruptible([&] { return session.explain(request, step); });
 }
 
 /// The scene as a scene file with the view `camera` (a dict, as render takes) at the size asked
@@ -311,14 +337,10 @@ SceneSource file_source(const std::string& path, const py::object& set, bool gro
     return source;
 }
 
-/// A session loaded with the GIL released (a large model takes a while).
+/// A session loaded with the GIL released (a large model takes a while); Ctrl-C stops it.
 std::unique_ptr<SharedSession> load_session(SceneSource source) {
-    std::unique_ptr<Session> session;
-    {
-        py::gil_scoped_release unlocked;
-        session = std::make_unique<Session>(std::move(source));
-    }
-    return std::make_unique<SharedSession>(std::move(session));
+    return std::make_unique<SharedSession>(
+        run_interruptible([&] { return std::make_unique<Session>(std::move(source)); }));
 }
 
 py::dict scene_info(SharedSession& shared) {
@@ -387,8 +409,10 @@ void bind_scene(py::module_& m) {
             [](SharedSession& shared, const std::string& path, const py::object& value) {
                 const SceneOverride edit = scene_edit(path, value);
                 const SessionTurn turn(shared);
-                py::gil_scoped_release unlocked;
-                turn.session().set(edit);
+                run_interruptible([&] {  // a reload: a large model takes a while
+                    turn.session().set(edit);
+                    return true;
+                });
             },
             py::arg("path"), py::arg("value"),
             "Changes one value by its JSON path, as --set does (`materials.clay.shininess`, 5).")

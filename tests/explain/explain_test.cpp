@@ -141,3 +141,24 @@ TEST(Explain, ZBufferDescribesTheExactSphereTheRenderDraws) {
 
 }  // namespace
 }  // namespace hikari
+
+namespace hikari {
+namespace {
+
+TEST(ExplainDepthSort, EveryListIsCutAfterMaxStepsAndSaysSo) {
+    const Scene scene = testing::parse(k_triangles_and_sphere);
+    const std::string whole = explain_depth_sort(scene, RasterSettings{}, 100000);
+    EXPECT_EQ(whole.find("not shown"), std::string::npos);
+    // The sphere is tessellated into many polygons: two lines of each list are far too few.
+    const std::string cut = explain_depth_sort(scene, RasterSettings{}, 2);
+    size_t notes = 0;
+    for (size_t at = cut.find("not shown"); at != std::string::npos;
+         at = cut.find("not shown", at + 1))
+        ++notes;
+    EXPECT_EQ(notes, 3u);  // the depth list, the steps and the painting order
+    EXPECT_LT(cut.size(), whole.size() / 4);
+    EXPECT_NE(cut.find("3. Painting order"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace hikari

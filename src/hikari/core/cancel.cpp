@@ -16,6 +16,8 @@ static_assert(std::atomic<bool>::is_always_lock_free);
 
 void request_cancel() noexcept { g_cancel_requested.store(true, std::memory_order_relaxed); }
 
+void clear_cancel_request() noexcept { g_cancel_requested.store(false, std::memory_order_relaxed); }
+
 bool cancel_requested() noexcept { return g_cancel_requested.load(std::memory_order_relaxed); }
 
 void throw_if_cancelled() {

@@ -7,6 +7,10 @@ namespace hikari {
 /// safe (one lock-free atomic store): the program's SIGINT / SIGTERM handler calls it.
 void request_cancel() noexcept;
 
+/// Withdraws request_cancel(), for a front end that goes on after an interruption (the Python
+/// module, once the stage that Ctrl-C stopped has ended): later stages run again.
+void clear_cancel_request() noexcept;
+
 /// Whether request_cancel() has been called. Cheap (a relaxed atomic load): loops call it every
 /// few thousand items.
 bool cancel_requested() noexcept;

@@ -24,7 +24,8 @@ std::string explain_scanline_row(const Scene& scene, const RasterSettings& raste
 
 /// The depth sort (Newell, Newell & Sancha 1972; Fig 4.6-4.9) on the whole scene: the list by
 /// farthest depth, each comparison and which of Newell's tests settled it, the reorderings, the
-/// splits and the painting order. Long runs are cut after `max_steps` steps (said so).
+/// splits and the painting order. Each list (polygons, steps, painting order) is cut after
+/// `max_steps` lines (said so).
 std::string explain_depth_sort(const Scene& scene, const RasterSettings& raster,
                                size_t max_steps = 2000);
 

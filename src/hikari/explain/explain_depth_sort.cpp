@@ -58,7 +58,12 @@ std::string explain_depth_sort(const Scene& scene, const RasterSettings& raster,
         "Depth is the key z = -near/w (larger is farther).\n\n"
         "1. The list by farthest depth (Fig 4.6), farthest first:\n",
         scene.camera.width, scene.camera.height, t.sorted.empty() ? 0 : t.sorted.size() - 1);
-    for (const uint32_t id : t.sorted) out += fmt::format("  {}\n", polygon(id));
+    // Every list is cut after max_steps lines: a scanned mesh has millions of polygons, and the
+    // view is for following the algorithm, not for reading them all (the counts are of all).
+    for (size_t k = 0; k < t.sorted.size() && k < max_steps; ++k)
+        out += fmt::format("  {}\n", polygon(t.sorted[k]));
+    if (t.sorted.size() > max_steps)
+        out += fmt::format("  ... {} more polygons not shown\n", t.sorted.size() - max_steps);
     out +=
         "\n2. For the polygon P at the far end, each Q whose depth range overlaps P's is "
         "compared (Newell's tests 1-5);\n   if Q may hide P, Q moves ahead (reorder) unless it "
@@ -92,8 +97,10 @@ std::string explain_depth_sort(const Scene& scene, const RasterSettings& raster,
         "\n3. Painting order, back to front ({} polygons, {} reorderings, {} "
         "splits):\n",
         t.painted.size(), reorders, splits);
-    for (size_t k = 0; k < t.painted.size(); ++k)
+    for (size_t k = 0; k < t.painted.size() && k < max_steps; ++k)
         out += fmt::format("  {:>4}. {}\n", k + 1, polygon(t.painted[k]));
+    if (t.painted.size() > max_steps)
+        out += fmt::format("  ... {} more polygons not shown\n", t.painted.size() - max_steps);
     return out;
 }
 

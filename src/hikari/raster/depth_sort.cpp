@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "hikari/core/cancel.h"
 #include "hikari/core/parallel.h"
 #include "hikari/raster/box_grid.h"
 #include "hikari/raster/polygon_fill.h"
@@ -135,6 +136,7 @@ bool list_before(const Polygon& p, uint32_t p_id, const Polygon& q, uint32_t q_i
 DepthSorter::DepthSorter(std::span<const ScreenTriangle> triangles, DepthSortTrace* trace)
     : m_trace(trace) {
     for (size_t t = 0; t < triangles.size(); ++t) {
+        if (t % 65536 == 0) throw_if_cancelled();  // SIGINT, Ctrl-C in Python
         const auto& v = triangles[t].v;
         const PolygonVertex p0{v[0].position.x, v[0].position.y, v[0].position.z};
         const PolygonVertex p1{v[1].position.x, v[1].position.y, v[1].position.z};
@@ -163,6 +165,7 @@ DepthSorter::DepthSorter(std::span<const ScreenTriangle> triangles, DepthSortTra
     if (!m_polygons.empty()) {
         m_grid = BoxGrid(bounds, m_polygons.size() / 4);
         for (uint32_t i = 0; i < m_polygons.size(); ++i) m_grid.insert(i, box_of(m_polygons[i]));
+        throw_if_cancelled();
     }
     // every interpenetrating pair needs a cut and pieces can be cut again; past this budget the
     // order is accepted as it is, so the sort always ends. A tangle of polygons that pierce
@@ -486,7 +489,8 @@ void DepthSorter::paint_rest() {
 }
 
 void DepthSorter::sort() {
-    for (;;) {
+    for (uint32_t iteration = 1;; ++iteration) {
+        if (iteration % 256 == 0) throw_if_cancelled();  // SIGINT, Ctrl-C in Python
         // drop retired entries once they are most of the list, so scans stay short
         if (m_list.size() - m_head > 2 * m_alive + 64) {
             std::erase_if(m_list, [&](uint32_t id) { return m_retired[id] != 0; });
