@@ -17,6 +17,7 @@
 #include "hikari/core/parallel.h"
 #include "hikari/frame/tiles.h"
 #include "hikari/raster/cull.h"
+#include "hikari/raster/shadow_map_lookup.h"
 #include "hikari/raster/sphere_raster.h"
 #include "hikari/raster/zbuffer.h"
 #include "hikari/shading/lights.h"
@@ -26,13 +27,6 @@ namespace hikari {
 namespace {
 
 constexpr float k_no_caster = std::numeric_limits<float>::infinity();
-
-/// Bias and normal offset, in texels (lit_in_shadow_map). A point's depth may differ from
-/// its texel's centre depth by up to half a texel diagonal times tan θ on a plane, hence the
-/// slope term of one texel per unit of tan θ; tan θ is capped where the light grazes.
-constexpr float k_constant_bias_texels = 1.0f;
-constexpr float k_normal_offset_texels = 1.0f;
-constexpr float k_max_slope = 8.0f;
 
 /// The casters alone: their triangles (the scene's vertex arrays, the casting triangles'
 /// indices) for the light's vertex stage, and their exact spheres.
@@ -325,14 +319,6 @@ std::optional<LightShadowMap> cone_map(const LightShadowView& light, const Caste
     return map;
 }
 
-/// The face of a cube map that holds direction `d` from the light.
-size_t cube_face(Vec3 d) {
-    const Vec3 a(std::abs(d.x), std::abs(d.y), std::abs(d.z));
-    if (a.x >= a.y && a.x >= a.z) return d.x < 0.0f ? 1 : 0;
-    if (a.y >= a.z) return d.y < 0.0f ? 3 : 2;
-    return d.z < 0.0f ? 5 : 4;
-}
-
 }  // namespace
 
 void check_shadow_map_memory(const Scene& scene, const RasterScene& raster, int size) {
@@ -493,76 +479,7 @@ std::shared_ptr<const ShadowMaps> shadow_maps_for_render(const Scene& scene,
     return maps;
 }
 
-namespace {
-
-/// A receiver point as the map sees it: the lookup point (moved off the surface by the normal
-/// offset), its depth, the world size of a texel there, and the depth bias allowed.
-struct MapLookup {
-    Vec3 q;
-    float depth = 0;
-    float texel = 0;
-    float tan_theta = 0;
-    Vec3 across1, across2;  ///< unit directions across the map at q (its texel rows, columns)
-};
-
-MapLookup map_lookup(const LightShadowMap& map, Vec3 p, Vec3 n) {
-    MapLookup m;
-    const Vec3 to_light = map.directional ? -map.direction : normalize(map.origin - p);
-    m.texel = map.directional ? map.texel_size : map.texel_size * length(p - map.origin);
-    const float cos_theta = std::clamp(dot(n, to_light), 0.0f, 1.0f);
-    const float sin_theta = std::sqrt(1.0f - cos_theta * cos_theta);
-    m.tan_theta = std::min(sin_theta / std::max(cos_theta, 1e-6f), k_max_slope);
-    m.q = p + n * (k_normal_offset_texels * m.texel);
-    m.depth = map.directional ? dot(m.q - map.origin, map.direction) : length(m.q - map.origin);
-    const Vec3 w = map.directional ? map.direction : normalize(m.q - map.origin);
-    const Vec3 up = std::abs(w.y) < 0.9f ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
-    m.across1 = normalize(cross(up, w));
-    m.across2 = cross(w, m.across1);
-    return m;
-}
-
-/// The caster depth the map holds in the direction of world point `x` (seen from the light),
-/// or +infinity outside the map.
-float caster_depth(const LightShadowMap& map, Vec3 x) {
-    const ShadowMapFace& face =
-        map.directional || map.cone ? map.faces.front() : map.faces[cube_face(x - map.origin)];
-    if (face.depth.empty()) return k_no_caster;  // a face that sees no caster
-    const Vec4 clip = face.view.clip_from_world * Vec4(x, 1.0f);
-    if (!(clip.w > 0.0f)) return k_no_caster;
-    const Vec3 screen = transform_point(face.view.screen_from_clip, clip.xyz() / clip.w);
-    if (!(screen.x >= 0.0f && screen.y >= 0.0f && screen.x < static_cast<float>(map.size) &&
-          screen.y < static_cast<float>(map.size)))
-        return k_no_caster;  // outside the map: no caster there
-    return face.depth[static_cast<size_t>(screen.y) * static_cast<size_t>(map.size) +
-                      static_cast<size_t>(screen.x)];
-}
-
-/// The lookup point moved (i, j) texels across the map, at the receiver's distance (for a cube
-/// map, a texel's angle about the light).
-Vec3 offset_lookup(const MapLookup& m, float i, float j) {
-    return m.q + (i * m.texel) * m.across1 + (j * m.texel) * m.across2;
-}
-
-/// The fraction of a (2k + 1)² grid of lookups, `stride` texels apart around m, that see no
-/// caster nearer than the receiver (percentage-closer filtering: Reeves, Salesin & Cook 1987).
-float percentage_closer(const LightShadowMap& map, const MapLookup& m, int k, float stride) {
-    // Neighbouring lookups on a receiver sloped by θ differ in depth by up to tan θ per texel.
-    const float bias = m.texel * (k_constant_bias_texels + m.tan_theta * (1.0f + k * stride));
-    int lit = 0;
-    for (int j = -k; j <= k; ++j)
-        for (int i = -k; i <= k; ++i)
-            lit += m.depth <= caster_depth(map, offset_lookup(m, i * stride, j * stride)) + bias
-                       ? 1
-                       : 0;
-    return static_cast<float>(lit) / static_cast<float>((2 * k + 1) * (2 * k + 1));
-}
-
-}  // namespace
-
-bool lit_in_shadow_map(const LightShadowMap& map, Vec3 p, Vec3 n) {
-    const MapLookup m = map_lookup(map, p, n);
-    return m.depth <= caster_depth(map, m.q) + m.texel * (k_constant_bias_texels + m.tan_theta);
-}
+bool lit_in_shadow_map(const LightShadowMap& map, Vec3 p, Vec3 n) { return lit_in_map(map, p, n); }
 
 float pcf_shadow_fraction(const LightShadowMap& map, Vec3 p, Vec3 n) {
     return percentage_closer(map, map_lookup(map, p, n), k_pcf_radius_texels, 1.0f);
@@ -609,19 +526,7 @@ float pcss_shadow_fraction(const LightShadowMap& map, Vec3 p, Vec3 n, float ligh
 }
 
 bool plane_blocks_light(const Scene& scene, const LightShadowView& view, Vec3 p) {
-    for (const Plane& plane : scene.planes) {
-        if (!plane.casts_shadow) continue;
-        const float side = dot(p - plane.point, plane.normal);
-        // A point on the plane (the plane itself, as a receiver) is never behind it.
-        if (!(std::abs(side) > 1e-4f * (1.0f + length(p - plane.point)))) continue;
-        bool blocked = false;
-        if (view.projection == ShadowProjection::parallel)
-            blocked = side * dot(-view.direction, plane.normal) < 0.0f;
-        else if (view.projection != ShadowProjection::none)
-            blocked = side * dot(view.origin - plane.point, plane.normal) < 0.0f;
-        if (blocked) return true;
-    }
-    return false;
+    return planes_block_light(scene.planes.data(), scene.planes.size(), view, p);
 }
 
 }  // namespace hikari

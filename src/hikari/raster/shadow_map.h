@@ -14,6 +14,7 @@
 #include "hikari/core/huge_page_allocator.h"
 #include "hikari/frame/render_settings.h"
 #include "hikari/raster/raster_scene.h"
+#include "hikari/raster/shadow_map_lookup.h"
 #include "hikari/raster/vertex_pipeline.h"
 #include "hikari/scene/scene.h"
 #include "hikari/shading/light_shadow_view.h"
@@ -103,8 +104,6 @@ std::shared_ptr<const ShadowMaps> shadow_maps_for_render(const Scene& scene,
 /// grazing light, while contact shadows stay attached (docs/shadows.md).
 bool lit_in_shadow_map(const LightShadowMap& map, Vec3 p, Vec3 n);
 
-/// Texel radius of percentage-closer filtering: a 5 × 5 texel kernel.
-inline constexpr int k_pcf_radius_texels = 2;
 /// The largest blocker search and filter radius of PCSS, as a fraction of the map's side, and
 /// the most lookups per side of its filter ((2 · steps + 1)², spread over the radius: wider
 /// kernels take lookups more than a texel apart).

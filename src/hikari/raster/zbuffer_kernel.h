@@ -1,0 +1,330 @@
+#pragma once
+// The Z-buffer (the lecture's Alg 4.2) as kernels, written once for the CPU and the GPU
+// (HIKARI_HD), after the vertex stage (raster/vertex_pipeline.h): (1) each screen triangle's
+// half-space setup (raster/half_space.h, the CPU's own), (2) binning into 16 × 16 pixel tiles,
+// each tile's list in ascending triangle order (counts per tile and chunk of triangles, a
+// prefix sum, then each chunk fills its places in order, so no atomics decide any order), (3)
+// per pixel, the depth test over its tile's list with the CPU's exact edge functions, top-left
+// fill rule and depth 1 / Σ b_i inv_w_i, so that ties resolve as on the CPU (the earlier
+// triangle stays), (4) deferred shading of each pixel's visible point by the shared shading
+// code (raster/pixel_surface.h, shading/), with shadow-map lookups (raster/shadow_map_lookup.h).
+// Run by render_zbuffer_kernels (zbuffer_kernels.h) through core/device_launch.h.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "hikari/core/flat_view.h"
+#include "hikari/core/host_device.h"
+#include "hikari/frame/render_settings.h"
+#include "hikari/frame/tiles.h"
+#include "hikari/raster/cull.h"
+#include "hikari/raster/half_space.h"
+#include "hikari/raster/pixel_surface.h"
+#include "hikari/raster/screen_triangle.h"
+#include "hikari/raster/shadow_map_lookup.h"
+#include "hikari/raster/vertex_pipeline.h"
+#include "hikari/scene/camera.h"
+#include "hikari/shading/direct.h"
+#include "hikari/shading/lighting_environment.h"
+#include "hikari/shading/lights.h"
+#include "hikari/shading/material_eval.h"
+
+namespace hikari {
+
+/// Triangles per binning chunk: one kernel thread counts and fills the bins of a chunk, in
+/// triangle order.
+inline constexpr size_t k_bin_chunk_triangles = 256;
+
+/// (1) The half-space setup of screen triangle t: setup[t], and drawn[t] = 0 where it covers no
+/// pixel centre for sure (setup_half_space's answer).
+struct TriangleSetupKernel {
+    const ScreenTriangle* triangles = nullptr;
+    int width = 0, height = 0;
+    HalfSpaceTriangle* setup = nullptr;
+    uint8_t* drawn = nullptr;
+
+    HIKARI_HD void operator()(size_t t) const {
+        drawn[t] = setup_half_space(triangles[t], width, height, setup[t]) ? 1 : 0;
+    }
+};
+
+/// The tiles whose pixels a set-up triangle's bounds reach, [tx0, tx1] × [ty0, ty1].
+struct TileSpan {
+    int tx0, ty0, tx1, ty1;
+};
+HIKARI_HD inline TileSpan tile_span(const HalfSpaceTriangle& h) {
+    return {h.x0 / k_tile_size, h.y0 / k_tile_size, (h.x1 - 1) / k_tile_size,
+            (h.y1 - 1) / k_tile_size};
+}
+
+/// (2a) For chunk c of the triangles: counts[tile · chunks + c] = how many of its triangles
+/// reach each tile.
+struct BinCountKernel {
+    const HalfSpaceTriangle* setup = nullptr;
+    const uint8_t* drawn = nullptr;
+    size_t triangles = 0, chunks = 0;
+    int tiles_x = 0;
+    uint32_t* counts = nullptr;
+
+    HIKARI_HD void operator()(size_t c) const {
+        const size_t end = (c + 1) * k_bin_chunk_triangles < triangles
+                               ? (c + 1) * k_bin_chunk_triangles
+                               : triangles;
+        for (size_t t = c * k_bin_chunk_triangles; t < end; ++t) {
+            if (!drawn[t]) continue;
+            const TileSpan s = tile_span(setup[t]);
+            for (int ty = s.ty0; ty <= s.ty1; ++ty)
+                for (int tx = s.tx0; tx <= s.tx1; ++tx)
+                    ++counts[(static_cast<size_t>(ty) * tiles_x + tx) * chunks + c];
+        }
+    }
+};
+
+/// (2b) For tile i: its chunks' counts turned into each chunk's first place in the tile's list
+/// (an exclusive prefix sum in chunk order), and the tile's total.
+struct BinTotalKernel {
+    size_t chunks = 0;
+    uint32_t* counts = nullptr;
+    uint32_t* totals = nullptr;
+
+    HIKARI_HD void operator()(size_t tile) const {
+        uint32_t running = 0;
+        for (size_t c = 0; c < chunks; ++c) {
+            const uint32_t n = counts[tile * chunks + c];
+            counts[tile * chunks + c] = running;
+            running += n;
+        }
+        totals[tile] = running;
+    }
+};
+
+/// (2c) For chunk c: its triangles, in order, into the places of each tile's list that
+/// BinTotalKernel gave it; tile i's list is list[tile_begin[i], tile_begin[i + 1]), ascending.
+struct BinFillKernel {
+    const HalfSpaceTriangle* setup = nullptr;
+    const uint8_t* drawn = nullptr;
+    size_t triangles = 0, chunks = 0;
+    int tiles_x = 0;
+    uint32_t* counts = nullptr;  ///< BinTotalKernel's places, advanced as they fill
+    const uint32_t* tile_begin = nullptr;
+    uint32_t* list = nullptr;
+
+    HIKARI_HD void operator()(size_t c) const {
+        const size_t end = (c + 1) * k_bin_chunk_triangles < triangles
+                               ? (c + 1) * k_bin_chunk_triangles
+                               : triangles;
+        for (size_t t = c * k_bin_chunk_triangles; t < end; ++t) {
+            if (!drawn[t]) continue;
+            const TileSpan s = tile_span(setup[t]);
+            for (int ty = s.ty0; ty <= s.ty1; ++ty)
+                for (int tx = s.tx0; tx <= s.tx1; ++tx) {
+                    const size_t tile = static_cast<size_t>(ty) * tiles_x + tx;
+                    list[tile_begin[tile] + counts[tile * chunks + c]++] = static_cast<uint32_t>(t);
+                }
+        }
+    }
+};
+
+/// (3) Alg 4.2 at pixel i: Z = ∞, then every triangle of the pixel's tile in order, a fragment
+/// where the pixel centre is inside under the top-left rule, written when z < Z. The edge
+/// functions are evaluated exactly (64-bit integers, as for_each_covered_pixel steps them), the
+/// weights and depth rounded as interpolated_depth rounds them, so `depth` and `nearest` (the
+/// screen triangle seen, k_no_triangle for none) are the CPU Z-buffer's, bit for bit.
+struct ZBufferPixelKernel {
+    const HalfSpaceTriangle* setup = nullptr;
+    const uint32_t* tile_begin = nullptr;
+    const uint32_t* list = nullptr;
+    int width = 0, tiles_x = 0;
+    float* depth = nullptr;       ///< may be null
+    uint32_t* nearest = nullptr;  ///< may be null
+
+    HIKARI_HD void operator()(size_t i) const {
+        const int x = static_cast<int>(i % static_cast<size_t>(width));
+        const int y = static_cast<int>(i / static_cast<size_t>(width));
+        const size_t tile = static_cast<size_t>(y / k_tile_size) * tiles_x + x / k_tile_size;
+        const int64_t px = int64_t{x} * k_subpixel_one + k_subpixel_one / 2;
+        const int64_t py = int64_t{y} * k_subpixel_one + k_subpixel_one / 2;
+        float z_min = k_infinity;
+        uint32_t seen = k_no_triangle;
+        for (uint32_t k = tile_begin[tile]; k < tile_begin[tile + 1]; ++k) {
+            const uint32_t t = list[k];
+            const HalfSpaceTriangle& h = setup[t];
+            if (x < h.x0 || x >= h.x1 || y < h.y0 || y >= h.y1) continue;
+            int64_t e[3];
+            for (int j = 0; j < 3; ++j) {
+                const int a = (j + 1) % 3, b = (j + 2) % 3;
+                const int64_t dx = h.x[b] - h.x[a], dy = h.y[b] - h.y[a];
+                // E(p) = dx (p.y − a.y) − dy (p.x − a.x), positive inside.
+                e[j] = dx * (py - h.y[a]) - dy * (px - h.x[a]) + h.bias[j];
+            }
+            if ((e[0] | e[1] | e[2]) < 0) continue;
+            const float inv_area = 1.0f / static_cast<float>(h.area());
+            const float z = interpolated_depth(h, static_cast<float>(e[0] - h.bias[0]) * inv_area,
+                                               static_cast<float>(e[1] - h.bias[1]) * inv_area,
+                                               static_cast<float>(e[2] - h.bias[2]) * inv_area);
+            // Alg 4.2's depth test; on equal depth the earlier triangle stays.
+            if (z < z_min) {
+                z_min = z;
+                seen = t;
+            }
+        }
+        if (depth) depth[i] = z_min;
+        if (nearest) nearest[i] = seen;
+    }
+};
+
+/// One face of a shadow map where the kernels read it (ShadowMapFace's fields).
+struct FlatShadowFace {
+    RasterView view;
+    FlatView<float> depth;  ///< empty: the face sees no caster
+};
+
+/// A light's shadow map where the kernels read it (LightShadowMap's fields); `present` false
+/// where the light has none (nothing casts shadows in its light).
+struct FlatShadowMap {
+    bool present = false;
+    bool directional = false, cone = false;
+    Vec3 origin, direction;
+    int size = 0;
+    float texel_size = 0;
+    FlatView<FlatShadowFace> faces;
+};
+
+/// Area and environment lights, which the kernels refuse (zbuffer_kernel_refusal): never
+/// called; what a missing light gives.
+struct NoRasterExtendedLights {
+    template <class Visible>
+    HIKARI_HD Vec3 operator()(size_t, const Light&, const SurfacePoint<float>&,
+                              const MaterialSample<float>&, bool, Visible&, int32_t&) const {
+        return Vec3(0.0f);
+    }
+};
+
+/// (4) The colour and AOVs of pixel i from the triangle the Z-buffer left there: the CPU
+/// pass's surface_at and shade_surface (raster/shade_visibility.cpp) with per-pixel (Phong)
+/// interpolation, delta lights, checker textures and vertex colours, shadows by map or pcf.
+struct ZBufferShadeKernel {
+    /* the tessellated scene (RasterScene::triangles) and its clip-space corners */
+    FlatView<Vec3> positions, normals, colors;
+    FlatView<Vec2> uvs;
+    FlatView<std::array<uint32_t, 3>> indices;
+    FlatView<uint32_t> material;
+    FlatView<PrimitiveId> id;
+    FlatView<Vec4> clip_positions;
+    const ScreenTriangle* triangles = nullptr;  ///< the screen triangles (their sources)
+    const uint32_t* nearest = nullptr;          ///< ZBufferPixelKernel's
+    /* shading */
+    const Material* materials = nullptr;
+    LightingEnvironment lighting;
+    Vec3 background;
+    CameraFrame frame;
+    int width = 0, height = 0;
+    /* shadows */
+    ShadowMode shadows = ShadowMode::none;  ///< none, map or pcf
+    const LightShadowView* light_views = nullptr;
+    const FlatShadowMap* maps = nullptr;
+    const Plane* planes = nullptr;
+    size_t plane_count = 0;
+    /* outputs */
+    Vec3* colours = nullptr;
+    float* depth = nullptr;  ///< AOVs: null without them
+    uint32_t* ids = nullptr;
+    Vec3* normal = nullptr;
+
+    /// light_fraction (shade_visibility.cpp) for the map modes.
+    HIKARI_HD float light_fraction(size_t l, Vec3 point, Vec3 ng) const {
+        if (shadows == ShadowMode::none) return 1.0f;
+        if (planes_block_light(planes, plane_count, light_views[l], point)) return 0.0f;
+        const FlatShadowMap& map = maps[l];
+        if (!map.present) return 1.0f;
+        // The normal offset moves the lookup off the surface on the light's side.
+        const Vec3 to_light = sample_light(lighting.lights[l], point).to_light;
+        const Vec3 n = dot(ng, to_light) < 0.0f ? -ng : ng;
+        if (shadows == ShadowMode::pcf)
+            return percentage_closer(map, map_lookup(map, point, n), k_pcf_radius_texels, 1.0f);
+        return lit_in_map(map, point, n) ? 1.0f : 0.0f;
+    }
+
+    HIKARI_HD void operator()(size_t i) const {
+        const uint32_t t = nearest[i];
+        if (t == k_no_triangle) {
+            colours[i] = background;
+            return;
+        }
+        const int x = static_cast<int>(i % static_cast<size_t>(width));
+        const int y = static_cast<int>(i / static_cast<size_t>(width));
+        /* the source triangle (shade_visibility.cpp's SourceTriangle::load) */
+        const uint32_t src = triangles[t].source;
+        const std::array<uint32_t, 3>& idx = indices[src];
+        Vec3 p[3], n[3], c[3];
+        const Material& m = materials[material[src]];
+        const bool coloured = !colors.empty() && m.vertex_colours;
+        for (int k = 0; k < 3; ++k) {
+            p[k] = positions[idx[k]];
+            n[k] = normals[idx[k]];
+            c[k] = coloured ? colors[idx[k]] : Vec3(1.0f);
+        }
+        const BarycentricPlanes planes_b = barycentric_planes(
+            clip_positions[idx[0]], clip_positions[idx[1]], clip_positions[idx[2]]);
+        const Vec3 face = face_normal(p[0], p[1], p[2]);
+        const float face_length = length(face);
+        /* the pixel centre on it (surface_at) */
+        const double ndc_x = 2.0 * (x + 0.5) / width - 1.0;
+        const double ndc_y = 1.0 - 2.0 * (y + 0.5) / height;
+        std::array<float, 3> b = {1.0f / 3, 1.0f / 3, 1.0f / 3};
+        barycentric_weights(planes_b, ndc_x, ndc_y, b);
+        const Vec3 point = b[0] * p[0] + b[1] * p[1] + b[2] * p[2];
+        const Vec3 n_interp = b[0] * n[0] + b[1] * n[1] + b[2] * n[2];
+        PixelUv tex;
+        if (m.texture) {
+            if (!uvs.empty())
+                tex = perspective_uv(
+                    {clip_positions[idx[0]], clip_positions[idx[1]], clip_positions[idx[2]]},
+                    {uvs[idx[0]], uvs[idx[1]], uvs[idx[2]]}, ndc_x, ndc_y, width, height);
+            tex.dp_dx = tangent_plane_step(frame, point, face, x, y, 1, 0);
+            tex.dp_dy = tangent_plane_step(frame, point, face, x, y, 0, 1);
+        }
+        const Vec3 dir = camera_ray(frame, x + 0.5f, y + 0.5f).direction;
+        // Two-sided, as in the ray tracer: the side the eye sees is the front.
+        const Vec3 ng = face_length > 0.0f ? face / face_length : -dir;
+        const bool entering = dot(ng, dir) < 0.0f;
+        const Vec3 ng_front = entering ? ng : -ng;
+        /* Phong shading of the point (shade_point) */
+        SurfacePoint<float> s;
+        s.position = point;
+        s.normal = facing(n_interp, entering, ng_front, dir);
+        s.geometric_normal = s.normal;
+        s.to_eye = -dir;
+        s.u = tex.uv.x, s.v = tex.uv.y;
+        s.du_dx = tex.du_dx, s.dv_dx = tex.dv_dx, s.du_dy = tex.du_dy, s.dv_dy = tex.dv_dy;
+        s.dp_dx = tex.dp_dx, s.dp_dy = tex.dp_dy;
+        s.vertex_colour = b[0] * c[0] + b[1] * c[1] + b[2] * c[2];
+        const MaterialSample<float> ms =
+            evaluate_material<float>(materials, static_cast<int32_t>(material[src]), s);
+        const auto lit = [&](size_t l, const LightSample&, const SurfacePoint<float>&, bool) {
+            return light_fraction(l, point, ng_front);
+        };
+        colours[i] =
+            direct_lighting<float>(lighting, s, ms, true, lit, NoRasterExtendedLights{}).colour;
+        /* the AOVs (write_surface_aovs) */
+        if (depth) {
+            depth[i] = camera_distance(frame, point);
+            ids[i] = id[src] + 1;
+            const float nl = length(n_interp);
+            const Vec3 sn = nl > 0.0f ? n_interp / nl : ng;
+            normal[i] = dot(sn, dir) < 0.0f ? sn : -sn;
+        }
+    }
+};
+
+/// Each kernel for every index in [0, count) on `device` (core/device_launch.h); their own
+/// file, which nvcc compiles when HIKARI_CUDA is on.
+void launch_zbuffer_kernel(ExecutionDevice device, size_t count, const TriangleSetupKernel& k);
+void launch_zbuffer_kernel(ExecutionDevice device, size_t count, const BinCountKernel& k);
+void launch_zbuffer_kernel(ExecutionDevice device, size_t count, const BinTotalKernel& k);
+void launch_zbuffer_kernel(ExecutionDevice device, size_t count, const BinFillKernel& k);
+void launch_zbuffer_kernel(ExecutionDevice device, size_t count, const ZBufferPixelKernel& k);
+void launch_zbuffer_kernel(ExecutionDevice device, size_t count, const ZBufferShadeKernel& k);
+
+}  // namespace hikari

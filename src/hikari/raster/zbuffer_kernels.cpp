@@ -1,0 +1,232 @@
+#include "hikari/raster/zbuffer_kernels.h"
+
+#include <chrono>
+#include <memory>
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "hikari/core/error.h"
+#include "hikari/raster/shade_visibility.h"
+#include "hikari/raster/shadow_map.h"
+#include "hikari/raster/vertex_pipeline.h"
+#include "hikari/raster/zbuffer_kernel.h"
+#include "hikari/shading/lights.h"
+
+namespace hikari {
+
+namespace {
+
+/// The Z-buffer's buffers for one image, where the kernels wrote them (arena memory).
+struct DrawnBuffers {
+    uint32_t* nearest = nullptr;
+    float* depth = nullptr;
+};
+
+/// Steps (1) to (3) of zbuffer_kernel.h over `triangles` (already where the kernels read them):
+/// setup, binning, the per-pixel depth test into arena buffers.
+DrawnBuffers draw_with_kernels(const ScreenTriangle* triangles, size_t count, int width, int height,
+                               bool want_depth, DeviceArena& arena) {
+    const ExecutionDevice device = arena.device();
+    const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
+    const int tiles_x = (width + k_tile_size - 1) / k_tile_size;
+    const int tiles_y = (height + k_tile_size - 1) / k_tile_size;
+    const size_t tiles = static_cast<size_t>(tiles_x) * static_cast<size_t>(tiles_y);
+    /* (1) setup */
+    TriangleSetupKernel setup{triangles, width, height, arena.output<HalfSpaceTriangle>(count),
+                              arena.output<uint8_t>(count)};
+    launch_zbuffer_kernel(device, count, setup);
+    /* (2) bins: counts per tile and chunk, places, lists in triangle order */
+    const size_t chunks = (count + k_bin_chunk_triangles - 1) / k_bin_chunk_triangles;
+    uint32_t* counts = arena.output<uint32_t>(tiles * chunks);
+    uint32_t* totals = arena.output<uint32_t>(tiles);
+    launch_zbuffer_kernel(device, chunks,
+                          BinCountKernel{setup.setup, setup.drawn, count, chunks, tiles_x, counts});
+    launch_zbuffer_kernel(device, tiles, BinTotalKernel{chunks, counts, totals});
+    // The tiles' starts: a prefix sum over a few thousand tiles, on the host.
+    uint32_t* tile_begin = arena.output<uint32_t>(tiles + 1);
+    for (size_t i = 0; i < tiles; ++i) tile_begin[i + 1] = tile_begin[i] + totals[i];
+    uint32_t* list = arena.output<uint32_t>(tile_begin[tiles] > 0 ? tile_begin[tiles] : 1);
+    launch_zbuffer_kernel(
+        device, chunks,
+        BinFillKernel{setup.setup, setup.drawn, count, chunks, tiles_x, counts, tile_begin, list});
+    /* (3) the depth test */
+    DrawnBuffers out{arena.output<uint32_t>(pixels),
+                     want_depth ? arena.output<float>(pixels) : nullptr};
+    launch_zbuffer_kernel(
+        device, pixels,
+        ZBufferPixelKernel{setup.setup, tile_begin, list, width, tiles_x, out.depth, out.nearest});
+    return out;
+}
+
+/// The materials as the device reads them: the plain fields and checker textures (names, which
+/// the kernels never read, cleared so that a bytewise copy holds no host pointer worth following;
+/// image textures are refused before).
+std::vector<Material> device_materials(const Scene& scene) {
+    std::vector<Material> out = scene.materials;
+    for (Material& m : out) m.name.clear();
+    return out;
+}
+
+template <class T>
+FlatView<T> hold(DeviceArena& arena, const std::vector<T>& v) {
+    return arena.hold(std::span<const T>(v.data(), v.size()));
+}
+
+/// The shadow maps where the kernels read them, and the faces they point to.
+struct DeviceShadowMaps {
+    std::vector<FlatShadowMap> maps;
+    std::vector<std::vector<FlatShadowFace>> faces;
+};
+
+DeviceShadowMaps hold_shadow_maps(const ShadowMaps& maps, DeviceArena& arena) {
+    DeviceShadowMaps out;
+    out.faces.resize(maps.lights.size());
+    for (size_t l = 0; l < maps.lights.size(); ++l) {
+        FlatShadowMap flat;
+        if (const auto& map = maps.lights[l]) {
+            flat.present = true;
+            flat.directional = map->directional;
+            flat.cone = map->cone;
+            flat.origin = map->origin;
+            flat.direction = map->direction;
+            flat.size = map->size;
+            flat.texel_size = map->texel_size;
+            for (const ShadowMapFace& face : map->faces)
+                out.faces[l].push_back({face.view, arena.hold(std::span<const float>(
+                                                       face.depth.data(), face.depth.size()))});
+            flat.faces = hold(arena, out.faces[l]);
+        }
+        out.maps.push_back(flat);
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string zbuffer_kernel_refusal(const Scene& scene, const RasterSettings& raster) {
+    for (const Light& light : scene.lights)
+        if (!is_delta_light(light))
+            return fmt::format(
+                "{} lights are not in the kernels yet (point, spot and directional "
+                "lights are)",
+                light_kind_name(light));
+    for (const Material& m : scene.materials)
+        for (const std::optional<Texture>* t : {&m.texture, &m.ambient_texture})
+            if (*t && std::holds_alternative<ImageTexture>(**t))
+                return fmt::format(
+                    "material \"{}\": image textures are not in the kernels yet "
+                    "(checker textures are)",
+                    m.name);
+    if (raster.interp != Interpolation::phong)
+        return "--interp flat and gouraud are not in the kernels yet (phong is)";
+    if (!scene.lights.empty() && raster.shadows != ShadowMode::none &&
+        raster.shadows != ShadowMode::map && raster.shadows != ShadowMode::pcf)
+        return fmt::format("--shadows {} is not in the kernels yet (map, pcf and none are)",
+                           raster.shadows == ShadowMode::volume ? "volume"
+                           : raster.shadows == ShadowMode::pcss ? "pcss"
+                                                                : "analytic");
+    for (const Sphere& s : scene.spheres)
+        if (s.segments == 0)
+            return "exact spheres are not in the kernels yet (--tessellation N draws them as "
+                   "polygons, which the kernels draw)";
+    return {};
+}
+
+void zbuffer_kernels_draw(std::span<const ScreenTriangle> triangles, int width, int height,
+                          uint32_t* nearest, float* depth, ExecutionDevice device) {
+    if (device == ExecutionDevice::cuda) require_cuda_device("--device cuda");
+    DeviceArena arena(device);
+    const FlatView<ScreenTriangle> held = arena.hold(triangles);
+    const DrawnBuffers drawn =
+        draw_with_kernels(held.data, held.count, width, height, depth != nullptr, arena);
+    const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
+    if (nearest) std::copy_n(drawn.nearest, pixels, nearest);
+    if (depth) std::copy_n(drawn.depth, pixels, depth);
+}
+
+Framebuffer render_zbuffer_kernels(const Scene& scene, Film film, const RenderSettings& settings,
+                                   const RasterSettings& raster, ExecutionDevice device) {
+    if (device == ExecutionDevice::cuda) require_cuda_device("--device cuda");
+    if (const std::string refusal = zbuffer_kernel_refusal(scene, raster); !refusal.empty())
+        throw InputError(fmt::format("{} zbuffer: {}",
+                                     device == ExecutionDevice::cuda ? "--device cuda" : "kernels",
+                                     refusal));
+    const int width = scene.camera.width, height = scene.camera.height;
+    Framebuffer fb(std::move(film), width, height, settings.aov_buffers);
+    // The vertex stage, as render_zbuffer's (spheres are tessellated: exact ones are refused).
+    const ProjectedScene ps = project_scene(scene, raster, SphereGeometry::exact);
+    if (settings.stats) add_vertex_stage_stats(ps, *settings.stats);
+    const ShadowMode shadows = scene.lights.empty() ? ShadowMode::none : raster.shadows;
+    std::shared_ptr<const ShadowMaps> maps;
+    if (shadows != ShadowMode::none) {
+        // Drawn by the CPU's Z-buffer, or kept by the session (raster/shadow_map.h).
+        const auto start = std::chrono::steady_clock::now();
+        maps = shadow_maps_for_render(scene, ps.scene, raster.shadow_map_size, settings.cache,
+                                      raster.shared_shadow_maps.get(), settings.stats);
+        if (settings.stats)
+            settings.stats->shadow_pass_us += std::chrono::duration_cast<std::chrono::microseconds>(
+                                                  std::chrono::steady_clock::now() - start)
+                                                  .count();
+    }
+
+    DeviceArena arena(device);
+    const FlatView<ScreenTriangle> triangles = hold(arena, ps.triangles);
+    const DrawnBuffers drawn =
+        draw_with_kernels(triangles.data, triangles.count, width, height, false, arena);
+
+    const TriangleSet& tris = ps.scene.triangles;
+    const std::vector<Material> materials = device_materials(scene);
+    std::vector<LightShadowView> views;
+    for (const Light& light : scene.lights) views.push_back(shadow_view(light));
+    const DeviceShadowMaps device_maps = maps ? hold_shadow_maps(*maps, arena) : DeviceShadowMaps{};
+    ZBufferShadeKernel shade;
+    shade.positions = hold(arena, tris.positions);
+    shade.normals = hold(arena, tris.normals);
+    shade.colors = hold(arena, tris.colors);
+    shade.uvs = hold(arena, tris.uvs);
+    shade.indices = hold(arena, tris.indices);
+    shade.material = hold(arena, tris.material);
+    shade.id = hold(arena, tris.id);
+    shade.clip_positions = hold(arena, ps.clip_positions);
+    shade.triangles = triangles.data;
+    shade.nearest = drawn.nearest;
+    shade.materials = hold(arena, materials).data;
+    shade.lighting = {hold(arena, scene.lights).data, scene.lights.size(), scene.ambient};
+    shade.background = scene.background;
+    shade.frame = make_camera_frame(scene.camera);
+    shade.width = width;
+    shade.height = height;
+    shade.shadows = shadows;
+    shade.light_views = hold(arena, views).data;
+    shade.maps = hold(arena, device_maps.maps).data;
+    shade.planes = hold(arena, scene.planes).data;
+    shade.plane_count = scene.planes.size();
+    const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
+    shade.colours = arena.output<Vec3>(pixels);
+    if (settings.aov_buffers) {
+        shade.depth = arena.output<float>(pixels);
+        shade.ids = arena.output<uint32_t>(pixels);
+        shade.normal = arena.output<Vec3>(pixels);
+    }
+    launch_zbuffer_kernel(device, pixels, shade);
+
+    fb.set_colors(0, shade.colours, pixels);
+    uint64_t covered = 0;
+    for (size_t i = 0; i < pixels; ++i) {
+        if (drawn.nearest[i] == k_no_triangle) continue;
+        ++covered;
+        if (!settings.aov_buffers) continue;
+        fb.depth[i] = shade.depth[i];
+        fb.id[i] = shade.ids[i];
+        fb.normal[i] = shade.normal[i];
+    }
+    if (settings.stats) settings.stats->raster_covered_pixels += covered;
+    if (settings.control) {
+        settings.control->work_total = 1;
+        settings.control->work_done = 1;
+    }
+    return fb;
+}
+
+}  // namespace hikari
