@@ -77,6 +77,7 @@ Aabb bounds_in_frame(const Casters& scene, Vec3 origin, Vec3 u, Vec3 v, Vec3 w) 
 struct FaceScratch {
     ScreenProjection projection;
     ZBufferWorkspace zbuffer;
+    const FaceDepthDrawer* drawer = nullptr;  ///< null: zbuffer_draw
 };
 
 /// The NDC coordinate of texel centre i of `size` (x; y runs the other way, which the callers
@@ -140,7 +141,7 @@ ShadowMapFace render_face(const Casters& casters, const RasterView& view, Vec3 o
     face.view = view;
     invert(view.clip_from_world, face.world_from_clip);
     ScreenProjection& projection = scratch.projection;
-    projection.indexed_allowed = true;
+    projection.indexed_allowed = !scratch.drawer;
     project_to_screen(casters.triangles, view, /*cull_back_faces=*/false, projection);
     const SphereRaster spheres =
         prepare_sphere_raster(casters.spheres, view, view_pixel_rays(view), 0);
@@ -148,7 +149,9 @@ ShadowMapFace render_face(const Casters& casters, const RasterView& view, Vec3 o
     if (no_triangles && spheres.tile_spheres.empty()) return face;
     const size_t texels = static_cast<size_t>(view.width) * static_cast<size_t>(view.height);
     face.depth.resize(texels);
-    if (projection.indexed)
+    if (scratch.drawer)
+        (*scratch.drawer)(projection.triangles, view.width, view.height, face.depth.data());
+    else if (projection.indexed)
         zbuffer_draw(
             IndexedScreenTriangles{projection.screen.data(), casters.triangles.indices.data(),
                                    casters.triangles.indices.size()},
@@ -425,27 +428,27 @@ void count_drawn(const LightShadowMap& map, RenderStats& stats) {
 }  // namespace
 
 ShadowMaps build_shadow_maps(const Scene& scene, const RasterScene& raster,
-                             const std::vector<uint8_t>& casters, int size) {
+                             const std::vector<uint8_t>& casters, int size,
+                             const FaceDepthDrawer* drawer) {
     check_shadow_map_memory(scene, raster, size);
     ShadowMaps maps;
     maps.lights.resize(scene.lights.size());
     const Casters caster_triangles = caster_scene(raster, casters);
     FaceScratch scratch;
+    scratch.drawer = drawer;
     for (size_t l = 0; l < scene.lights.size(); ++l)
         maps.lights[l] = light_map(shadow_view(scene.lights[l]), caster_triangles, size, scratch);
     return maps;
 }
 
-std::shared_ptr<const ShadowMaps> shadow_maps_for_render(const Scene& scene,
-                                                         const RasterScene& raster, int size,
-                                                         BuildCache* cache,
-                                                         SharedShadowMaps* shared,
-                                                         RenderStats* stats) {
+std::shared_ptr<const ShadowMaps> shadow_maps_for_render(
+    const Scene& scene, const RasterScene& raster, int size, BuildCache* cache,
+    SharedShadowMaps* shared, RenderStats* stats, const FaceDepthDrawer* drawer) {
     if (shared && shared->maps) return shared->maps;
     const std::vector<uint8_t> casting = shadow_casting_triangles(scene, raster);
     auto maps = std::make_shared<ShadowMaps>();
     if (!cache || cache->scene() != &scene) {
-        *maps = build_shadow_maps(scene, raster, casting, size);
+        *maps = build_shadow_maps(scene, raster, casting, size, drawer);
         if (stats)
             for (const auto& map : maps->lights)
                 if (map) count_drawn(*map, *stats);
@@ -455,6 +458,7 @@ std::shared_ptr<const ShadowMaps> shadow_maps_for_render(const Scene& scene,
         const std::string counts = caster_counts(raster, casting);
         std::optional<Casters> casters;  // made for the first map to draw
         FaceScratch scratch;
+        scratch.drawer = drawer;
         for (const Light& light : scene.lights) {
             const LightShadowView view = shadow_view(light);
             bool built = false;

@@ -160,10 +160,15 @@ Framebuffer render_zbuffer_kernels(const Scene& scene, Film film, const RenderSe
     const ShadowMode shadows = scene.lights.empty() ? ShadowMode::none : raster.shadows;
     std::shared_ptr<const ShadowMaps> maps;
     if (shadows != ShadowMode::none) {
-        // Drawn by the CPU's Z-buffer, or kept by the session (raster/shadow_map.h).
+        // Each face's depth keys drawn by the kernels (the CPU Z-buffer's buffer), turned into
+        // the map's depths on the host; or the maps kept by the session (raster/shadow_map.h).
         const auto start = std::chrono::steady_clock::now();
+        const FaceDepthDrawer drawer = [device](std::span<const ScreenTriangle> triangles, int w,
+                                                int h, float* depth) {
+            zbuffer_kernels_draw(triangles, w, h, nullptr, depth, device);
+        };
         maps = shadow_maps_for_render(scene, ps.scene, raster.shadow_map_size, settings.cache,
-                                      raster.shared_shadow_maps.get(), settings.stats);
+                                      raster.shared_shadow_maps.get(), settings.stats, &drawer);
         if (settings.stats)
             settings.stats->shadow_pass_us += std::chrono::duration_cast<std::chrono::microseconds>(
                                                   std::chrono::steady_clock::now() - start)
