@@ -54,6 +54,20 @@ HIKARI_HD MapLookup map_lookup(const Map& map, Vec3 p, Vec3 n) {
     return m;
 }
 
+/// a · v, rounded as Mat4's operator* (core/mat4.h) rounds it, callable from device code.
+HIKARI_HD inline Vec4 apply_matrix(const Mat4& a, Vec4 v) {
+    const auto row = [&](int i) {
+        return a.m[i][0] * v.x + a.m[i][1] * v.y + a.m[i][2] * v.z + a.m[i][3] * v.w;
+    };
+    return {row(0), row(1), row(2), row(3)};
+}
+
+/// transform_point (core/mat4.h), callable from device code.
+HIKARI_HD inline Vec3 apply_to_point(const Mat4& a, Vec3 p) {
+    const Vec4 h = apply_matrix(a, Vec4(p, 1.0f));
+    return h.w == 1.0f ? h.xyz() : h.xyz() / h.w;
+}
+
 /// The face of a cube map that holds direction `d` from the light.
 HIKARI_HD inline size_t cube_face(Vec3 d) {
     const Vec3 a(std::abs(d.x), std::abs(d.y), std::abs(d.z));
@@ -69,9 +83,9 @@ HIKARI_HD float caster_depth(const Map& map, Vec3 x) {
     constexpr float k_no_caster = std::numeric_limits<float>::infinity();
     const auto& face = map.faces[map.directional || map.cone ? 0 : cube_face(x - map.origin)];
     if (face.depth.empty()) return k_no_caster;  // a face that sees no caster
-    const Vec4 clip = face.view.clip_from_world * Vec4(x, 1.0f);
+    const Vec4 clip = apply_matrix(face.view.clip_from_world, Vec4(x, 1.0f));
     if (!(clip.w > 0.0f)) return k_no_caster;
-    const Vec3 screen = transform_point(face.view.screen_from_clip, clip.xyz() / clip.w);
+    const Vec3 screen = apply_to_point(face.view.screen_from_clip, clip.xyz() / clip.w);
     if (!(screen.x >= 0.0f && screen.y >= 0.0f && screen.x < static_cast<float>(map.size) &&
           screen.y < static_cast<float>(map.size)))
         return k_no_caster;  // outside the map: no caster there

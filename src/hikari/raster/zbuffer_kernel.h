@@ -309,7 +309,8 @@ struct ZBufferShadeKernel {
             direct_lighting<float>(lighting, s, ms, true, lit, NoRasterExtendedLights{}).colour;
         /* the AOVs (write_surface_aovs) */
         if (depth) {
-            depth[i] = camera_distance(frame, point);
+            depth[i] = frame.orthographic ? dot(point - frame.eye, frame.forward)
+                                          : length(point - frame.eye);  // camera_distance
             ids[i] = id[src] + 1;
             const float nl = length(n_interp);
             const Vec3 sn = nl > 0.0f ? n_interp / nl : ng;
