@@ -52,7 +52,7 @@ Scene checker_and_vertex_colours(int width, int height) {
         "paint": {"ka": 0.3, "kd": 0.7, "ks": 0.3, "shininess": 20}
       },
       "lights": [{"type": "spot", "position": [1, 5, 3], "direction": [-0.2, -1, -0.6],
-                  "angle": 40, "intensity": [30, 30, 30]},
+                  "inner_angle": 25, "outer_angle": 35, "intensity": [30, 30, 30]},
                  {"type": "point", "position": [-3, 4, 2], "intensity": [10, 9, 8]}],
       "objects": [
         {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "floor"},
