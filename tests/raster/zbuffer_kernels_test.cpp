@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -117,6 +118,29 @@ void expect_kernels_match(const Scene& scene, ShadowMode shadows) {
 /// The screen triangles of `scene`'s vertex stage (render_zbuffer's).
 ProjectedScene projected(const Scene& scene) {
     return project_scene(scene, RasterSettings{}, SphereGeometry::exact);
+}
+
+TEST(ZBufferKernels, VertexStageGivesTheCpuScreenTrianglesBitForBit) {
+    // Clipped floors (their pieces in their triangle's place), a mesh inside the view, culling.
+    for (const bool cull : {false, true})
+        for (const Scene& scene :
+             {scene_file("bunny.json", 160, 120), scene_file("teapot.json", 131, 77),
+              checker_and_vertex_colours(90, 60)}) {
+            RasterSettings raster;
+            raster.cull_back_faces = cull;
+            const ProjectedScene cpu = project_scene(scene, raster, SphereGeometry::exact);
+            const ProjectedScene kernels =
+                project_scene_with_kernels(scene, raster, ExecutionDevice::cpu);
+            ASSERT_EQ(kernels.triangles.size(), cpu.triangles.size());
+            EXPECT_EQ(std::memcmp(kernels.triangles.data(), cpu.triangles.data(),
+                                  cpu.triangles.size() * sizeof(ScreenTriangle)),
+                      0);
+            EXPECT_EQ(kernels.clip_positions, cpu.clip_positions);
+            EXPECT_EQ(kernels.counts.culled, cpu.counts.culled);
+            EXPECT_EQ(kernels.counts.cut, cpu.counts.cut);
+            EXPECT_EQ(kernels.counts.clipped_away, cpu.counts.clipped_away);
+            EXPECT_GT(cpu.counts.cut + cpu.counts.culled, 0u);
+        }
 }
 
 TEST(ZBufferKernels, DepthTestGivesTheCpuBuffersBitForBit) {

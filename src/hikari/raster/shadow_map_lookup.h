@@ -13,6 +13,7 @@
 #include "hikari/core/host_device.h"
 #include "hikari/core/mat4.h"
 #include "hikari/core/vec.h"
+#include "hikari/raster/vertex_transform.h"
 #include "hikari/scene/scene.h"
 #include "hikari/shading/light_shadow_view.h"
 
@@ -52,20 +53,6 @@ HIKARI_HD MapLookup map_lookup(const Map& map, Vec3 p, Vec3 n) {
     m.across1 = normalize(cross(up, w));
     m.across2 = cross(w, m.across1);
     return m;
-}
-
-/// a · v, rounded as Mat4's operator* (core/mat4.h) rounds it, callable from device code.
-HIKARI_HD inline Vec4 apply_matrix(const Mat4& a, Vec4 v) {
-    const auto row = [&](int i) {
-        return a.m[i][0] * v.x + a.m[i][1] * v.y + a.m[i][2] * v.z + a.m[i][3] * v.w;
-    };
-    return {row(0), row(1), row(2), row(3)};
-}
-
-/// transform_point (core/mat4.h), callable from device code.
-HIKARI_HD inline Vec3 apply_to_point(const Mat4& a, Vec3 p) {
-    const Vec4 h = apply_matrix(a, Vec4(p, 1.0f));
-    return h.w == 1.0f ? h.xyz() : h.xyz() / h.w;
 }
 
 /// The face of a cube map that holds direction `d` from the light.

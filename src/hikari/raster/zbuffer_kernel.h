@@ -1,6 +1,7 @@
 #pragma once
 // The Z-buffer (the lecture's Alg 4.2) as kernels, written once for the CPU and the GPU
-// (HIKARI_HD), after the vertex stage (raster/vertex_pipeline.h): (1) each screen triangle's
+// (HIKARI_HD): (0) the vertex stage (raster/vertex_pipeline.h), per vertex and per triangle, the
+// few triangles that need clipping left to the host; (1) each screen triangle's
 // half-space setup (raster/half_space.h, the CPU's own), (2) binning into 16 × 16 pixel tiles,
 // each tile's list in ascending triangle order (counts per tile and chunk of triangles, a
 // prefix sum, then each chunk fills its places in order, so no atomics decide any order), (3)
@@ -24,6 +25,7 @@
 #include "hikari/raster/screen_triangle.h"
 #include "hikari/raster/shadow_map_lookup.h"
 #include "hikari/raster/vertex_pipeline.h"
+#include "hikari/raster/vertex_transform.h"
 #include "hikari/scene/camera.h"
 #include "hikari/shading/direct.h"
 #include "hikari/shading/lighting_environment.h"
@@ -31,6 +33,69 @@
 #include "hikari/shading/material_eval.h"
 
 namespace hikari {
+
+/// (0a) Vertex i through the view (transform_vertex, the CPU vertex stage's own): its clip
+/// position, whether it is inside the clip volume, its screen vertex if so.
+struct VertexKernel {
+    RasterView view;
+    const Vec3* positions = nullptr;
+    Vec4* clip = nullptr;
+    uint8_t* inside = nullptr;
+    ScreenVertex* screen = nullptr;
+
+    HIKARI_HD void operator()(size_t i) const {
+        transform_vertex(view, positions[i], clip[i], inside[i], screen[i]);
+    }
+};
+
+/// What the vertex stage does with a triangle (project_to_screen's fates).
+enum TriangleFate : uint8_t {
+    k_fate_kept,    ///< every corner inside the clip volume: one screen triangle, its corners
+    k_fate_clip,    ///< a corner outside: clipped on the host (few, and into pieces)
+    k_fate_culled,  ///< a back face, with culling on
+};
+
+/// (0b) Triangle t's fate: culled (D = V·N > 0 with culling on, raster/cull.h), kept whole
+/// (its corners all inside the clip volume), or to be clipped.
+struct TriangleFateKernel {
+    RasterView view;
+    bool cull = false;
+    const Vec3* positions = nullptr;
+    const std::array<uint32_t, 3>* indices = nullptr;
+    const uint8_t* inside = nullptr;
+    uint8_t* fate = nullptr;
+
+    HIKARI_HD void operator()(size_t t) const {
+        const std::array<uint32_t, 3>& idx = indices[t];
+        if (cull) {
+            const Vec3 p1 = positions[idx[0]];
+            // RasterView::view_vector: from the eye, or the view direction itself.
+            const Vec3 v = view.orthographic ? view.forward : p1 - view.eye;
+            if (is_back_face_along(p1, positions[idx[1]], positions[idx[2]], v)) {
+                fate[t] = k_fate_culled;
+                return;
+            }
+        }
+        fate[t] = inside[idx[0]] && inside[idx[1]] && inside[idx[2]] ? k_fate_kept : k_fate_clip;
+    }
+};
+
+/// (0c) Triangle t kept whole: its corners' screen vertices at its place `first[t]` of the
+/// screen triangles (the pieces of clipped triangles are the host's).
+struct TriangleAssembleKernel {
+    const std::array<uint32_t, 3>* indices = nullptr;
+    const uint8_t* fate = nullptr;
+    const uint32_t* first = nullptr;
+    const ScreenVertex* screen = nullptr;
+    ScreenTriangle* out = nullptr;
+
+    HIKARI_HD void operator()(size_t t) const {
+        if (fate[t] != k_fate_kept) return;
+        const std::array<uint32_t, 3>& idx = indices[t];
+        out[first[t]] = {{screen[idx[0]], screen[idx[1]], screen[idx[2]]},
+                         static_cast<uint32_t>(t)};
+    }
+};
 
 /// Triangles per binning chunk: one kernel thread counts and fills the bins of a chunk, in
 /// triangle order.
@@ -321,6 +386,9 @@ struct ZBufferShadeKernel {
 
 /// Each kernel for every index in [0, count) on `device` (core/device_launch.h); their own
 /// file, which nvcc compiles when HIKARI_CUDA is on.
+void launch_zbuffer_kernel(ExecutionDevice device, size_t count, const VertexKernel& k);
+void launch_zbuffer_kernel(ExecutionDevice device, size_t count, const TriangleFateKernel& k);
+void launch_zbuffer_kernel(ExecutionDevice device, size_t count, const TriangleAssembleKernel& k);
 void launch_zbuffer_kernel(ExecutionDevice device, size_t count, const TriangleSetupKernel& k);
 void launch_zbuffer_kernel(ExecutionDevice device, size_t count, const BinCountKernel& k);
 void launch_zbuffer_kernel(ExecutionDevice device, size_t count, const BinTotalKernel& k);

@@ -6,6 +6,15 @@
 
 namespace hikari {
 
+void launch_zbuffer_kernel(ExecutionDevice device, size_t count, const VertexKernel& k) {
+    device_parallel_for(device, count, k, "zbuffer kernels (vertices)");
+}
+void launch_zbuffer_kernel(ExecutionDevice device, size_t count, const TriangleFateKernel& k) {
+    device_parallel_for(device, count, k, "zbuffer kernels (culling)");
+}
+void launch_zbuffer_kernel(ExecutionDevice device, size_t count, const TriangleAssembleKernel& k) {
+    device_parallel_for(device, count, k, "zbuffer kernels (screen triangles)");
+}
 void launch_zbuffer_kernel(ExecutionDevice device, size_t count, const TriangleSetupKernel& k) {
     device_parallel_for(device, count, k, "zbuffer kernels (triangle setup)");
 }

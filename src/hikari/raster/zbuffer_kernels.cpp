@@ -1,14 +1,19 @@
 #include "hikari/raster/zbuffer_kernels.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <memory>
+#include <utility>
 #include <variant>
 
 #include <fmt/format.h>
 
 #include "hikari/core/error.h"
+#include "hikari/raster/clip.h"
 #include "hikari/raster/shade_visibility.h"
 #include "hikari/raster/shadow_map.h"
+#include "hikari/raster/tessellate.h"
 #include "hikari/raster/vertex_pipeline.h"
 #include "hikari/raster/zbuffer_kernel.h"
 #include "hikari/shading/lights.h"
@@ -16,6 +21,89 @@
 namespace hikari {
 
 namespace {
+
+template <class T>
+FlatView<T> hold(DeviceArena& arena, const std::vector<T>& v) {
+    return arena.hold(std::span<const T>(v.data(), v.size()));
+}
+
+/// The vertex stage's output, the arrays where the kernels wrote them.
+struct DeviceProjection {
+    RasterScene scene;  ///< the tessellated scene (host)
+    RasterView view;
+    Vec4* clip_positions = nullptr;  ///< per vertex of `scene`
+    ScreenTriangle* triangles = nullptr;
+    size_t triangle_count = 0;
+    VertexStageCounts counts;
+};
+
+/// project_scene(scene, raster, SphereGeometry::exact) with kernels: each vertex transformed
+/// and each triangle culled or kept whole on `arena`'s device; the few triangles that cross
+/// the near plane or the guard band clipped on the host (project_to_screen's project_one), their
+/// pieces in their triangle's place. The same screen triangles, in the same order.
+DeviceProjection project_with_kernels(const Scene& scene, const RasterSettings& raster,
+                                      DeviceArena& arena) {
+    const ExecutionDevice device = arena.device();
+    DeviceProjection out;
+    out.scene = tessellate_scene(scene, SphereGeometry::exact);
+    out.view = make_raster_view(scene.camera, out.scene, raster.sample_offset);
+    const TriangleSet& tris = out.scene.triangles;
+    const size_t vertices = tris.positions.size(), n = tris.size();
+    const FlatView<Vec3> positions = hold(arena, tris.positions);
+    const FlatView<std::array<uint32_t, 3>> indices = hold(arena, tris.indices);
+    /* (0a) the vertices */
+    const VertexKernel vertex{out.view, positions.data, arena.output<Vec4>(vertices),
+                              arena.output<uint8_t>(vertices),
+                              arena.output<ScreenVertex>(vertices)};
+    launch_zbuffer_kernel(device, vertices, vertex);
+    out.clip_positions = vertex.clip;
+    /* (0b) the triangles' fates */
+    const TriangleFateKernel fates{out.view,     raster.cull_back_faces, positions.data,
+                                   indices.data, vertex.inside,          arena.output<uint8_t>(n)};
+    launch_zbuffer_kernel(device, n, fates);
+    // The clipped triangles' pieces (host), then every triangle's place, in triangle order.
+    std::vector<std::pair<uint32_t, std::vector<ScreenTriangle>>> clipped;
+    uint32_t* first = arena.output<uint32_t>(n + 1);
+    out.counts.triangles_in = n;
+    const auto finite = [](Vec4 p) {
+        return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
+    };
+    for (size_t t = 0; t < n; ++t) {
+        uint32_t pieces = 0;
+        if (fates.fate[t] == k_fate_kept) {
+            pieces = 1;
+        } else if (fates.fate[t] == k_fate_culled) {
+            ++out.counts.culled;
+        } else {
+            const auto& idx = tris.indices[t];
+            const Vec4 a = vertex.clip[idx[0]], b = vertex.clip[idx[1]], c = vertex.clip[idx[2]];
+            const ClipPolygon poly =
+                finite(a) && finite(b) && finite(c) ? clip_triangle(a, b, c) : ClipPolygon{};
+            if (poly.count < 3) {
+                ++out.counts.clipped_away;
+            } else {
+                ++out.counts.cut;
+                std::array<ScreenVertex, k_max_clip_vertices> sv;
+                for (int i = 0; i < poly.count; ++i) sv[i] = to_screen(out.view, poly.v[i]);
+                std::vector<ScreenTriangle> fan;
+                for (int i = 1; i + 1 < poly.count; ++i)
+                    fan.push_back({{sv[0], sv[i], sv[i + 1]}, static_cast<uint32_t>(t)});
+                pieces = static_cast<uint32_t>(fan.size());
+                clipped.emplace_back(static_cast<uint32_t>(t), std::move(fan));
+            }
+        }
+        first[t + 1] = first[t] + pieces;
+    }
+    /* (0c) the screen triangles */
+    out.triangle_count = first[n];
+    out.triangles = arena.output<ScreenTriangle>(out.triangle_count);
+    launch_zbuffer_kernel(
+        device, n,
+        TriangleAssembleKernel{indices.data, fates.fate, first, vertex.screen, out.triangles});
+    for (const auto& [t, fan] : clipped)
+        std::copy(fan.begin(), fan.end(), out.triangles + first[t]);
+    return out;
+}
 
 /// The Z-buffer's buffers for one image, where the kernels wrote them (arena memory).
 struct DrawnBuffers {
@@ -66,11 +154,6 @@ std::vector<Material> device_materials(const Scene& scene) {
     std::vector<Material> out = scene.materials;
     for (Material& m : out) m.name.clear();
     return out;
-}
-
-template <class T>
-FlatView<T> hold(DeviceArena& arena, const std::vector<T>& v) {
-    return arena.hold(std::span<const T>(v.data(), v.size()));
 }
 
 /// The shadow maps where the kernels read them, and the faces they point to.
@@ -133,6 +216,21 @@ std::string zbuffer_kernel_refusal(const Scene& scene, const RasterSettings& ras
     return {};
 }
 
+ProjectedScene project_scene_with_kernels(const Scene& scene, const RasterSettings& raster,
+                                          ExecutionDevice device) {
+    if (device == ExecutionDevice::cuda) require_cuda_device("--device cuda");
+    DeviceArena arena(device);
+    DeviceProjection dp = project_with_kernels(scene, raster, arena);
+    ProjectedScene ps;
+    ps.view = dp.view;
+    ps.clip_positions.assign(dp.clip_positions,
+                             dp.clip_positions + dp.scene.triangles.positions.size());
+    ps.triangles.assign(dp.triangles, dp.triangles + dp.triangle_count);
+    ps.counts = dp.counts;
+    ps.scene = std::move(dp.scene);
+    return ps;
+}
+
 void zbuffer_kernels_draw(std::span<const ScreenTriangle> triangles, int width, int height,
                           uint32_t* nearest, float* depth, ExecutionDevice device) {
     if (device == ExecutionDevice::cuda) require_cuda_device("--device cuda");
@@ -154,9 +252,17 @@ Framebuffer render_zbuffer_kernels(const Scene& scene, Film film, const RenderSe
                                      refusal));
     const int width = scene.camera.width, height = scene.camera.height;
     Framebuffer fb(std::move(film), width, height, settings.aov_buffers);
-    // The vertex stage, as render_zbuffer's (spheres are tessellated: exact ones are refused).
-    const ProjectedScene ps = project_scene(scene, raster, SphereGeometry::exact);
-    if (settings.stats) add_vertex_stage_stats(ps, *settings.stats);
+    DeviceArena arena(device);
+    // The vertex stage, render_zbuffer's (spheres are tessellated: exact ones are refused).
+    const DeviceProjection ps = project_with_kernels(scene, raster, arena);
+    if (settings.stats) {
+        RenderStats& stats = *settings.stats;
+        stats.raster_triangles += ps.counts.triangles_in;
+        stats.raster_culled += ps.counts.culled;
+        stats.raster_clipped_away += ps.counts.clipped_away;
+        stats.raster_cut += ps.counts.cut;
+        stats.raster_screen_triangles += ps.triangle_count;
+    }
     const ShadowMode shadows = scene.lights.empty() ? ShadowMode::none : raster.shadows;
     std::shared_ptr<const ShadowMaps> maps;
     if (shadows != ShadowMode::none) {
@@ -175,10 +281,8 @@ Framebuffer render_zbuffer_kernels(const Scene& scene, Film film, const RenderSe
                                                   .count();
     }
 
-    DeviceArena arena(device);
-    const FlatView<ScreenTriangle> triangles = hold(arena, ps.triangles);
     const DrawnBuffers drawn =
-        draw_with_kernels(triangles.data, triangles.count, width, height, false, arena);
+        draw_with_kernels(ps.triangles, ps.triangle_count, width, height, false, arena);
 
     const TriangleSet& tris = ps.scene.triangles;
     const std::vector<Material> materials = device_materials(scene);
@@ -193,8 +297,8 @@ Framebuffer render_zbuffer_kernels(const Scene& scene, Film film, const RenderSe
     shade.indices = hold(arena, tris.indices);
     shade.material = hold(arena, tris.material);
     shade.id = hold(arena, tris.id);
-    shade.clip_positions = hold(arena, ps.clip_positions);
-    shade.triangles = triangles.data;
+    shade.clip_positions = {ps.clip_positions, tris.positions.size()};
+    shade.triangles = ps.triangles;
     shade.nearest = drawn.nearest;
     shade.materials = hold(arena, materials).data;
     shade.lighting = {hold(arena, scene.lights).data, scene.lights.size(), scene.ambient};

@@ -1,6 +1,6 @@
 #pragma once
-// The Z-buffer through the kernel entry point (core/device_launch.h): the CPU's vertex stage,
-// then triangle setup, tile binning, the per-pixel depth test and deferred shading as HIKARI_HD
+// The Z-buffer through the kernel entry point (core/device_launch.h): the vertex stage, triangle
+// setup, tile binning, the per-pixel depth test and deferred shading as HIKARI_HD
 // kernels (zbuffer_kernel.h), run on the CPU's threads or, with `--device cuda`, as grids on the
 // GPU. The CPU run is what the test suite compares with render_zbuffer, so the GPU's code is
 // covered without a GPU.
@@ -15,6 +15,7 @@
 #include "hikari/frame/render_settings.h"
 #include "hikari/raster/raster_settings.h"
 #include "hikari/raster/screen_triangle.h"
+#include "hikari/raster/vertex_pipeline.h"
 #include "hikari/scene/scene.h"
 
 namespace hikari {
@@ -23,6 +24,13 @@ namespace hikari {
 /// lights, image textures, exact spheres, flat and Gouraud interpolation, shadow volumes, PCSS
 /// and analytic shadows), as the message of a refusal; "" when nothing.
 std::string zbuffer_kernel_refusal(const Scene& scene, const RasterSettings& raster);
+
+/// project_scene(scene, raster, SphereGeometry::exact) through the kernels on `device`: each
+/// vertex transformed and each triangle culled or kept whole by a kernel, the few that cross the
+/// near plane or the guard band clipped on the host; the same screen triangles, clip positions
+/// and counts.
+ProjectedScene project_scene_with_kernels(const Scene& scene, const RasterSettings& raster,
+                                          ExecutionDevice device);
 
 /// zbuffer_draw's buffers (raster/zbuffer.h) from the kernels on `device`: `nearest` (the
 /// screen triangle seen at each pixel, k_no_triangle for none) and `depth` (1 / inv_w, +infinity
