@@ -25,14 +25,14 @@ namespace {
 
 using testing::parse;
 
-/// A scene file of scenes/, at `width` × `height`, its spheres as polygons (the kernels draw
-/// no exact sphere).
-Scene scene_file(const std::string& name, int width, int height) {
+/// A scene file of scenes/, at `width` × `height`; its spheres as polygons of `segments` when
+/// that is set (else drawn exactly).
+Scene scene_file(const std::string& name, int width, int height, uint32_t segments = 0) {
     std::vector<std::string> warnings;
     Scene scene = load_scene_file(std::string(HIKARI_SOURCE_DIR) + "/scenes/" + name, warnings);
     scene.camera.width = width;
     scene.camera.height = height;
-    for (Sphere& s : scene.spheres) s.segments = 48;
+    for (Sphere& s : scene.spheres) s.segments = segments;
     return scene;
 }
 
@@ -62,7 +62,6 @@ Scene checker_and_vertex_colours(int width, int height) {
                         std::string(HIKARI_SOURCE_DIR) + R"(/scenes/models/vertex-colours.obj",
          "material": "paint", "transform": [{"translate": [-1.2, 1, 0]}]}
       ]})");
-    for (Sphere& s : scene.spheres) s.segments = 40;
     return scene;
 }
 
@@ -182,8 +181,16 @@ TEST(ZBufferKernels, EqualDepthsKeepTheEarlierTriangleAsTheCpuDoes) {
 }
 
 TEST(ZBufferKernels, AssignmentSceneMatchesTheCpuZBuffer) {
+    // The exact sphere (the ray tracer's hit per pixel), and the sphere as polygons.
     expect_kernels_match(scene_file("assignment.json", 96, 72), ShadowMode::map);
+    expect_kernels_match(scene_file("assignment.json", 96, 72, 48), ShadowMode::map);
     expect_kernels_match(scene_file("assignment-3-specular.json", 64, 48), ShadowMode::none);
+}
+
+TEST(ZBufferKernels, ExactSpheresMatchTheCpuZBuffer) {
+    // Spheres in front of and behind triangles, casting shadows, under a checker (sphere uv).
+    expect_kernels_match(scene_file("shadows.json", 128, 72), ShadowMode::map);
+    expect_kernels_match(checker_and_vertex_colours(120, 80), ShadowMode::pcf);
 }
 
 TEST(ZBufferKernels, MeshesMatchTheCpuZBuffer) {
@@ -192,16 +199,18 @@ TEST(ZBufferKernels, MeshesMatchTheCpuZBuffer) {
 }
 
 TEST(ZBufferKernels, CheckerTexturesAndVertexColoursMatchTheCpuZBuffer) {
-    expect_kernels_match(checker_and_vertex_colours(120, 80), ShadowMode::none);
+    Scene polygons = checker_and_vertex_colours(120, 80);
+    for (Sphere& s : polygons.spheres) s.segments = 40;
+    expect_kernels_match(polygons, ShadowMode::none);
 }
 
 TEST(ZBufferKernels, ShadowMapsMatchTheCpuZBuffer) {
     // The bunny of B4 (a cube map around its point light, a directional map), the shadow scene,
     // spot lights' cone maps; map and pcf lookups.
     expect_kernels_match(scene_file("bunny.json", 160, 120), ShadowMode::map);
-    expect_kernels_match(scene_file("shadows.json", 128, 72), ShadowMode::map);
-    expect_kernels_match(scene_file("shadows.json", 128, 72), ShadowMode::pcf);
-    expect_kernels_match(checker_and_vertex_colours(120, 80), ShadowMode::pcf);
+    expect_kernels_match(scene_file("shadows.json", 128, 72, 40), ShadowMode::map);
+    expect_kernels_match(scene_file("shadows.json", 128, 72, 40), ShadowMode::pcf);
+    expect_kernels_match(scene_file("light-spot.json", 100, 75), ShadowMode::map);
 }
 
 TEST(ZBufferKernels, SameImageForAnyThreadCount) {
@@ -235,9 +244,10 @@ TEST(ZBufferKernels, ScenesTheKernelsLackAreRefusedByName) {
     EXPECT_NE(zbuffer_kernel_refusal(textured, {}).find("image textures"), std::string::npos);
     textured.materials[0].texture = CheckerTexture{};
     EXPECT_EQ(zbuffer_kernel_refusal(textured, {}), "");
-    Scene sphere = bunny;
-    sphere.spheres.push_back(Sphere{});
-    EXPECT_NE(zbuffer_kernel_refusal(sphere, {}).find("exact spheres"), std::string::npos);
+    Scene environment = bunny;
+    environment.lights.push_back(EnvironmentLight{});
+    EXPECT_NE(zbuffer_kernel_refusal(environment, {}).find("environment lights"),
+              std::string::npos);
     RasterSettings gouraud;
     gouraud.interp = Interpolation::gouraud;
     EXPECT_NE(zbuffer_kernel_refusal(bunny, gouraud).find("--interp"), std::string::npos);

@@ -19,11 +19,14 @@
 #include "hikari/core/host_device.h"
 #include "hikari/frame/render_settings.h"
 #include "hikari/frame/tiles.h"
+#include "hikari/geometry/intersect.h"
+#include "hikari/geometry/surface_uv.h"
 #include "hikari/raster/cull.h"
 #include "hikari/raster/half_space.h"
 #include "hikari/raster/pixel_surface.h"
 #include "hikari/raster/screen_triangle.h"
 #include "hikari/raster/shadow_map_lookup.h"
+#include "hikari/raster/sphere_raster.h"
 #include "hikari/raster/vertex_pipeline.h"
 #include "hikari/raster/vertex_transform.h"
 #include "hikari/scene/camera.h"
@@ -203,6 +206,50 @@ struct ZBufferPixelKernel {
     int width = 0, tiles_x = 0;
     float* depth = nullptr;       ///< may be null
     uint32_t* nearest = nullptr;  ///< may be null
+    /// Exact spheres (raster/sphere_raster.h: SphereRaster's arrays), drawn after the
+    /// triangles as draw_spheres_in_tile draws them: none when `sphere_count` is 0.
+    const Sphere* spheres = nullptr;
+    size_t sphere_count = 0;
+    const PixelRect* sphere_bounds = nullptr;
+    const uint32_t* sphere_tile_begin = nullptr;  ///< per tile of the image, as tile_begin
+    const uint32_t* tile_spheres = nullptr;
+    CameraFrame frame;  ///< the camera's rays (PixelRays::at of camera_pixel_rays)
+    Vec2 sample_offset;
+    Mat4 clip_from_world;
+    bool orthographic = false;
+    uint32_t first_sphere_id = 0;
+
+    /// draw_spheres_in_tile at pixel (x, y): the nearest sphere its ray meets, in index order (a
+    /// later one only when strictly nearer), replaces (z, seen) when its depth key is smaller.
+    HIKARI_HD void draw_spheres(size_t tile, int x, int y, float& z_min, uint32_t& seen) const {
+        const uint32_t begin = sphere_tile_begin[tile], end = sphere_tile_begin[tile + 1];
+        bool any = false;
+        for (uint32_t k = begin; k < end && !any; ++k) {
+            const PixelRect& r = sphere_bounds[tile_spheres[k]];
+            any = x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1;
+        }
+        if (!any) return;
+        const Ray ray = camera_ray(frame, static_cast<float>(x) + 0.5f + sample_offset.x,
+                                   static_cast<float>(y) + 0.5f + sample_offset.y);
+        Interval range;
+        int hit = -1;
+        for (uint32_t k = begin; k < end; ++k) {
+            const uint32_t j = tile_spheres[k];
+            const PixelRect& r = sphere_bounds[j];
+            if (!(x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1)) continue;
+            const float t = intersect_sphere(ray, spheres[j].center, spheres[j].radius, range);
+            if (t == t) range.max = t, hit = static_cast<int>(j);
+        }
+        if (hit < 0) return;
+        // The depth key the triangles carry (ScreenVertex::inv_w inverted).
+        const Vec4 clip = apply_matrix(clip_from_world, Vec4(ray.at(range.max), 1.0f));
+        const float z = orthographic ? 1.0f / (1.5f - 0.5f * clip.z / clip.w) : clip.w;
+        // Alg 4.2's depth test, as for a triangle drawn after all the others.
+        if (z < z_min) {
+            z_min = z;
+            seen = first_sphere_id + static_cast<uint32_t>(hit);
+        }
+    }
 
     HIKARI_HD void operator()(size_t i) const {
         const int x = static_cast<int>(i % static_cast<size_t>(width));
@@ -234,6 +281,7 @@ struct ZBufferPixelKernel {
                 seen = t;
             }
         }
+        if (sphere_count > 0) draw_spheres(tile, x, y, z_min, seen);
         if (depth) depth[i] = z_min;
         if (nearest) nearest[i] = seen;
     }
@@ -278,7 +326,10 @@ struct ZBufferShadeKernel {
     FlatView<PrimitiveId> id;
     FlatView<Vec4> clip_positions;
     const ScreenTriangle* triangles = nullptr;  ///< the screen triangles (their sources)
-    const uint32_t* nearest = nullptr;          ///< ZBufferPixelKernel's
+    size_t triangle_count = 0;  ///< visibility values from here on name exact spheres
+    const Sphere* spheres = nullptr;
+    Vec2 sample_offset;                 ///< of the spheres' camera rays
+    const uint32_t* nearest = nullptr;  ///< ZBufferPixelKernel's
     /* shading */
     const Material* materials = nullptr;
     LightingEnvironment lighting;
@@ -311,6 +362,74 @@ struct ZBufferShadeKernel {
         return lit_in_map(map, point, n) ? 1.0f : 0.0f;
     }
 
+    /// Material `m` at `point` (its texture at `tex`) lit by every light that reaches it
+    /// (shade_visibility.cpp's shade_point); shadows asked with `shadow_normal`.
+    HIKARI_HD Vec3 shade_point(uint32_t m, Vec3 point, Vec3 n, Vec3 to_eye, const PixelUv& tex,
+                               Vec3 vertex_colour, Vec3 shadow_normal) const {
+        SurfacePoint<float> s;
+        s.position = point;
+        s.normal = n;
+        s.geometric_normal = n;
+        s.to_eye = to_eye;
+        s.u = tex.uv.x, s.v = tex.uv.y;
+        s.du_dx = tex.du_dx, s.dv_dx = tex.dv_dx, s.du_dy = tex.du_dy, s.dv_dy = tex.dv_dy;
+        s.dp_dx = tex.dp_dx, s.dp_dy = tex.dp_dy;
+        s.vertex_colour = vertex_colour;
+        const MaterialSample<float> ms =
+            evaluate_material<float>(materials, static_cast<int32_t>(m), s);
+        const auto lit = [&](size_t l, const LightSample&, const SurfacePoint<float>&, bool) {
+            return light_fraction(l, point, shadow_normal);
+        };
+        return direct_lighting<float>(lighting, s, ms, true, lit, NoRasterExtendedLights{}).colour;
+    }
+
+    /// The ray of pixel (x + dx, y + dy), as the Z-buffer drew the spheres with it.
+    HIKARI_HD Ray sphere_ray(int x, int y) const {
+        return camera_ray(frame, static_cast<float>(x) + 0.5f + sample_offset.x,
+                          static_cast<float>(y) + 0.5f + sample_offset.y);
+    }
+
+    /// A pixel that sees exact sphere `s` (shade_visibility.cpp's shade_sphere_pixel): the ray
+    /// tracer's hit, shaded per pixel.
+    HIKARI_HD void shade_sphere(size_t i, int x, int y, const Sphere& sphere) const {
+        const Ray ray = sphere_ray(x, y);
+        float t = intersect_sphere(ray, sphere.center, sphere.radius, Interval{});
+        // The Z-buffer drew the sphere here, so the ray meets it; should rounding say otherwise,
+        // the ray's closest approach to the centre stands in.
+        if (!(t == t)) t = std::max(0.0f, dot(sphere.center - ray.origin, ray.direction));
+        const Vec3 point = ray.at(t);
+        const Vec3 n = (point - sphere.center) / sphere.radius;
+        const Vec3 normal_front = dot(n, ray.direction) < 0.0f ? n : -n;
+        PixelUv tex;
+        if (materials[sphere.material].texture) {  // sphere_pixel_uv
+            const SurfaceUv su = sphere_uv(sphere, point);
+            tex.uv = su.uv;
+            const auto step = [&](int dx, int dy) {
+                const Ray r = sphere_ray(x + dx, y + dy);
+                const float denominator = dot(normal_front, r.direction);
+                return denominator == 0.0f
+                           ? Vec3(0.0f)
+                           : r.at(dot(point - r.origin, normal_front) / denominator) - point;
+            };
+            const Vec3 along_x = step(1, 0), along_y = step(0, 1);
+            tex.dp_dx = along_x, tex.dp_dy = along_y;
+            tex.du_dx = dot(su.du_dp, along_x), tex.dv_dx = dot(su.dv_dp, along_x);
+            tex.du_dy = dot(su.du_dp, along_y), tex.dv_dy = dot(su.dv_dp, along_y);
+        }
+        colours[i] = shade_point(sphere.material, point, normal_front, -ray.direction, tex,
+                                 Vec3(1.0f), normal_front);
+        if (depth) {
+            depth[i] = eye_distance(point);
+            ids[i] = sphere.id + 1;
+            normal[i] = normal_front;
+        }
+    }
+
+    /// camera_distance (scene/camera.h).
+    HIKARI_HD float eye_distance(Vec3 p) const {
+        return frame.orthographic ? dot(p - frame.eye, frame.forward) : length(p - frame.eye);
+    }
+
     HIKARI_HD void operator()(size_t i) const {
         const uint32_t t = nearest[i];
         if (t == k_no_triangle) {
@@ -319,6 +438,10 @@ struct ZBufferShadeKernel {
         }
         const int x = static_cast<int>(i % static_cast<size_t>(width));
         const int y = static_cast<int>(i / static_cast<size_t>(width));
+        if (t >= triangle_count) {
+            shade_sphere(i, x, y, spheres[t - triangle_count]);
+            return;
+        }
         /* the source triangle (shade_visibility.cpp's SourceTriangle::load) */
         const uint32_t src = triangles[t].source;
         const std::array<uint32_t, 3>& idx = indices[src];
@@ -356,26 +479,11 @@ struct ZBufferShadeKernel {
         const bool entering = dot(ng, dir) < 0.0f;
         const Vec3 ng_front = entering ? ng : -ng;
         /* Phong shading of the point (shade_point) */
-        SurfacePoint<float> s;
-        s.position = point;
-        s.normal = facing(n_interp, entering, ng_front, dir);
-        s.geometric_normal = s.normal;
-        s.to_eye = -dir;
-        s.u = tex.uv.x, s.v = tex.uv.y;
-        s.du_dx = tex.du_dx, s.dv_dx = tex.dv_dx, s.du_dy = tex.du_dy, s.dv_dy = tex.dv_dy;
-        s.dp_dx = tex.dp_dx, s.dp_dy = tex.dp_dy;
-        s.vertex_colour = b[0] * c[0] + b[1] * c[1] + b[2] * c[2];
-        const MaterialSample<float> ms =
-            evaluate_material<float>(materials, static_cast<int32_t>(material[src]), s);
-        const auto lit = [&](size_t l, const LightSample&, const SurfacePoint<float>&, bool) {
-            return light_fraction(l, point, ng_front);
-        };
-        colours[i] =
-            direct_lighting<float>(lighting, s, ms, true, lit, NoRasterExtendedLights{}).colour;
+        colours[i] = shade_point(material[src], point, facing(n_interp, entering, ng_front, dir),
+                                 -dir, tex, b[0] * c[0] + b[1] * c[1] + b[2] * c[2], ng_front);
         /* the AOVs (write_surface_aovs) */
         if (depth) {
-            depth[i] = frame.orthographic ? dot(point - frame.eye, frame.forward)
-                                          : length(point - frame.eye);  // camera_distance
+            depth[i] = eye_distance(point);
             ids[i] = id[src] + 1;
             const float nl = length(n_interp);
             const Vec3 sn = nl > 0.0f ? n_interp / nl : ng;

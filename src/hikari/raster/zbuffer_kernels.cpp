@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 #include <utility>
 #include <variant>
 
@@ -13,6 +14,7 @@
 #include "hikari/raster/clip.h"
 #include "hikari/raster/shade_visibility.h"
 #include "hikari/raster/shadow_map.h"
+#include "hikari/raster/sphere_raster.h"
 #include "hikari/raster/tessellate.h"
 #include "hikari/raster/vertex_pipeline.h"
 #include "hikari/raster/zbuffer_kernel.h"
@@ -114,7 +116,8 @@ struct DrawnBuffers {
 /// Steps (1) to (3) of zbuffer_kernel.h over `triangles` (already where the kernels read them):
 /// setup, binning, the per-pixel depth test into arena buffers.
 DrawnBuffers draw_with_kernels(const ScreenTriangle* triangles, size_t count, int width, int height,
-                               bool want_depth, DeviceArena& arena) {
+                               bool want_depth, DeviceArena& arena,
+                               const SphereRaster* spheres = nullptr) {
     const ExecutionDevice device = arena.device();
     const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
     const int tiles_x = (width + k_tile_size - 1) / k_tile_size;
@@ -141,9 +144,22 @@ DrawnBuffers draw_with_kernels(const ScreenTriangle* triangles, size_t count, in
     /* (3) the depth test */
     DrawnBuffers out{arena.output<uint32_t>(pixels),
                      want_depth ? arena.output<float>(pixels) : nullptr};
-    launch_zbuffer_kernel(
-        device, pixels,
-        ZBufferPixelKernel{setup.setup, tile_begin, list, width, tiles_x, out.depth, out.nearest});
+    ZBufferPixelKernel pixel{setup.setup, tile_begin, list, width, tiles_x, out.depth, out.nearest};
+    if (spheres && !spheres->spheres.empty()) {
+        if (spheres->tiles_x != tiles_x || spheres->tile_begin.size() != tiles + 1)
+            throw std::logic_error("zbuffer kernels: the spheres' tiles are not the image's");
+        pixel.spheres = arena.hold(spheres->spheres).data;
+        pixel.sphere_count = spheres->spheres.size();
+        pixel.sphere_bounds = hold(arena, spheres->bounds).data;
+        pixel.sphere_tile_begin = hold(arena, spheres->tile_begin).data;
+        pixel.tile_spheres = hold(arena, spheres->tile_spheres).data;
+        pixel.frame = spheres->rays.frame;
+        pixel.sample_offset = spheres->rays.sample_offset;
+        pixel.clip_from_world = spheres->clip_from_world;
+        pixel.orthographic = spheres->orthographic;
+        pixel.first_sphere_id = spheres->first_id;
+    }
+    launch_zbuffer_kernel(device, pixels, pixel);
     return out;
 }
 
@@ -209,10 +225,6 @@ std::string zbuffer_kernel_refusal(const Scene& scene, const RasterSettings& ras
                            raster.shadows == ShadowMode::volume ? "volume"
                            : raster.shadows == ShadowMode::pcss ? "pcss"
                                                                 : "analytic");
-    for (const Sphere& s : scene.spheres)
-        if (s.segments == 0)
-            return "exact spheres are not in the kernels yet (--tessellation N draws them as "
-                   "polygons, which the kernels draw)";
     return {};
 }
 
@@ -253,7 +265,7 @@ Framebuffer render_zbuffer_kernels(const Scene& scene, Film film, const RenderSe
     const int width = scene.camera.width, height = scene.camera.height;
     Framebuffer fb(std::move(film), width, height, settings.aov_buffers);
     DeviceArena arena(device);
-    // The vertex stage, render_zbuffer's (spheres are tessellated: exact ones are refused).
+    // The vertex stage, render_zbuffer's (exact spheres stay spheres, unprojected).
     const DeviceProjection ps = project_with_kernels(scene, raster, arena);
     if (settings.stats) {
         RenderStats& stats = *settings.stats;
@@ -281,8 +293,13 @@ Framebuffer render_zbuffer_kernels(const Scene& scene, Film film, const RenderSe
                                                   .count();
     }
 
+    // Exact spheres, drawn after each pixel's triangles (raster/sphere_raster.h).
+    const SphereRaster spheres =
+        prepare_sphere_raster(ps.scene.spheres, ps.view, camera_pixel_rays(scene.camera, ps.view),
+                              static_cast<uint32_t>(ps.triangle_count));
+    if (settings.stats) settings.stats->raster_exact_spheres += spheres.spheres.size();
     const DrawnBuffers drawn =
-        draw_with_kernels(ps.triangles, ps.triangle_count, width, height, false, arena);
+        draw_with_kernels(ps.triangles, ps.triangle_count, width, height, false, arena, &spheres);
 
     const TriangleSet& tris = ps.scene.triangles;
     const std::vector<Material> materials = device_materials(scene);
@@ -299,6 +316,9 @@ Framebuffer render_zbuffer_kernels(const Scene& scene, Film film, const RenderSe
     shade.id = hold(arena, tris.id);
     shade.clip_positions = {ps.clip_positions, tris.positions.size()};
     shade.triangles = ps.triangles;
+    shade.triangle_count = ps.triangle_count;
+    shade.spheres = hold(arena, ps.scene.spheres).data;
+    shade.sample_offset = ps.view.sample_offset;
     shade.nearest = drawn.nearest;
     shade.materials = hold(arena, materials).data;
     shade.lighting = {hold(arena, scene.lights).data, scene.lights.size(), scene.ambient};

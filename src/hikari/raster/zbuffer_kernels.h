@@ -21,8 +21,8 @@
 namespace hikari {
 
 /// What in `scene` or `raster` the Z-buffer kernels cannot render yet (area and environment
-/// lights, image textures, exact spheres, flat and Gouraud interpolation, shadow volumes, PCSS
-/// and analytic shadows), as the message of a refusal; "" when nothing.
+/// lights, image textures, flat and Gouraud interpolation, shadow volumes, PCSS and analytic
+/// shadows), as the message of a refusal; "" when nothing.
 std::string zbuffer_kernel_refusal(const Scene& scene, const RasterSettings& raster);
 
 /// project_scene(scene, raster, SphereGeometry::exact) through the kernels on `device`: each
