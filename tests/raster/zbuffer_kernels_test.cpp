@@ -96,9 +96,11 @@ Differences compare(const Framebuffer& kernels, const Framebuffer& reference, fl
 
 /// The kernels on the CPU and render_zbuffer agree on every pixel of `scene`: colours within
 /// 1e-5, ids, depths and normals exactly.
-void expect_kernels_match(const Scene& scene, ShadowMode shadows) {
+void expect_kernels_match(const Scene& scene, ShadowMode shadows,
+                          Interpolation interp = Interpolation::phong) {
     RasterSettings raster;
     raster.shadows = shadows;
+    raster.interp = interp;
     raster.shadow_map_size = 512;
     const Framebuffer reference = render_zbuffer(scene, Film(scene.camera), {}, raster);
     const Framebuffer kernels =
@@ -213,6 +215,14 @@ TEST(ZBufferKernels, ShadowMapsMatchTheCpuZBuffer) {
     expect_kernels_match(scene_file("light-spot.json", 100, 75), ShadowMode::map);
 }
 
+TEST(ZBufferKernels, FlatAndGouraudShadingMatchTheCpuZBuffer) {
+    // Spheres become polygons; shadows are asked at the pixel, colours at the centroid or corners.
+    for (const Interpolation interp : {Interpolation::flat, Interpolation::gouraud}) {
+        expect_kernels_match(scene_file("shadows.json", 128, 72), ShadowMode::map, interp);
+        expect_kernels_match(checker_and_vertex_colours(90, 60), ShadowMode::none, interp);
+    }
+}
+
 TEST(ZBufferKernels, SameImageForAnyThreadCount) {
     const Scene scene = scene_file("bunny.json", 96, 72);
     RasterSettings raster;
@@ -248,9 +258,6 @@ TEST(ZBufferKernels, ScenesTheKernelsLackAreRefusedByName) {
     environment.lights.push_back(EnvironmentLight{});
     EXPECT_NE(zbuffer_kernel_refusal(environment, {}).find("environment lights"),
               std::string::npos);
-    RasterSettings gouraud;
-    gouraud.interp = Interpolation::gouraud;
-    EXPECT_NE(zbuffer_kernel_refusal(bunny, gouraud).find("--interp"), std::string::npos);
     RasterSettings volume;
     volume.shadows = ShadowMode::volume;
     EXPECT_NE(zbuffer_kernel_refusal(bunny, volume).find("--shadows volume"), std::string::npos);

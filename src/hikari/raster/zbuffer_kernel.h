@@ -314,9 +314,10 @@ struct NoRasterExtendedLights {
     }
 };
 
-/// (4) The colour and AOVs of pixel i from the triangle the Z-buffer left there: the CPU
-/// pass's surface_at and shade_surface (raster/shade_visibility.cpp) with per-pixel (Phong)
-/// interpolation, delta lights, checker textures and vertex colours, shadows by map or pcf.
+/// (4) The colour and AOVs of pixel i from the triangle or exact sphere the Z-buffer left there:
+/// the CPU pass's surface_at and shade_surface (raster/shade_visibility.cpp) with flat, Gouraud
+/// or Phong interpolation, delta lights, checker textures and vertex colours, shadows by map or
+/// pcf.
 struct ZBufferShadeKernel {
     /* the tessellated scene (RasterScene::triangles) and its clip-space corners */
     FlatView<Vec3> positions, normals, colors;
@@ -336,6 +337,7 @@ struct ZBufferShadeKernel {
     Vec3 background;
     CameraFrame frame;
     int width = 0, height = 0;
+    Interpolation interp = Interpolation::phong;
     /* shadows */
     ShadowMode shadows = ShadowMode::none;  ///< none, map or pcf
     const LightShadowView* light_views = nullptr;
@@ -363,9 +365,10 @@ struct ZBufferShadeKernel {
     }
 
     /// Material `m` at `point` (its texture at `tex`) lit by every light that reaches it
-    /// (shade_visibility.cpp's shade_point); shadows asked with `shadow_normal`.
+    /// (shade_visibility.cpp's shade_point); shadows asked at the pixel's `shadow_point` with
+    /// `shadow_normal` (ShadowQuery).
     HIKARI_HD Vec3 shade_point(uint32_t m, Vec3 point, Vec3 n, Vec3 to_eye, const PixelUv& tex,
-                               Vec3 vertex_colour, Vec3 shadow_normal) const {
+                               Vec3 vertex_colour, Vec3 shadow_point, Vec3 shadow_normal) const {
         SurfacePoint<float> s;
         s.position = point;
         s.normal = n;
@@ -378,7 +381,7 @@ struct ZBufferShadeKernel {
         const MaterialSample<float> ms =
             evaluate_material<float>(materials, static_cast<int32_t>(m), s);
         const auto lit = [&](size_t l, const LightSample&, const SurfacePoint<float>&, bool) {
-            return light_fraction(l, point, shadow_normal);
+            return light_fraction(l, shadow_point, shadow_normal);
         };
         return direct_lighting<float>(lighting, s, ms, true, lit, NoRasterExtendedLights{}).colour;
     }
@@ -417,12 +420,17 @@ struct ZBufferShadeKernel {
             tex.du_dy = dot(su.du_dp, along_y), tex.dv_dy = dot(su.dv_dp, along_y);
         }
         colours[i] = shade_point(sphere.material, point, normal_front, -ray.direction, tex,
-                                 Vec3(1.0f), normal_front);
+                                 Vec3(1.0f), point, normal_front);
         if (depth) {
             depth[i] = eye_distance(point);
             ids[i] = sphere.id + 1;
             normal[i] = normal_front;
         }
+    }
+
+    /// toward_viewer (scene/camera.h).
+    HIKARI_HD Vec3 toward_eye(Vec3 p) const {
+        return frame.orthographic ? -frame.forward : normalize(frame.eye - p);
     }
 
     /// camera_distance (scene/camera.h).
@@ -478,9 +486,32 @@ struct ZBufferShadeKernel {
         const Vec3 ng = face_length > 0.0f ? face / face_length : -dir;
         const bool entering = dot(ng, dir) < 0.0f;
         const Vec3 ng_front = entering ? ng : -ng;
-        /* Phong shading of the point (shade_point) */
-        colours[i] = shade_point(material[src], point, facing(n_interp, entering, ng_front, dir),
-                                 -dir, tex, b[0] * c[0] + b[1] * c[1] + b[2] * c[2], ng_front);
+        /* the colour, interpolated as `interp` says (shade_surface) */
+        const uint32_t m_index = material[src];
+        switch (interp) {
+            case Interpolation::flat: {  // one colour per polygon, at its centroid
+                const Vec3 centre = (p[0] + p[1] + p[2]) / 3.0f;
+                colours[i] = shade_point(m_index, centre, ng_front, toward_eye(centre), tex,
+                                         (c[0] + c[1] + c[2]) / 3.0f, point, ng_front);
+                break;
+            }
+            case Interpolation::gouraud: {  // shade the vertices, blend the colours
+                Vec3 colour(0.0f);
+                for (int k = 0; k < 3; ++k) {
+                    const Vec3 to_eye = toward_eye(p[k]);
+                    const Vec3 nk = facing(n[k], entering, ng_front, -to_eye);
+                    colour +=
+                        b[k] * shade_point(m_index, p[k], nk, to_eye, tex, c[k], point, ng_front);
+                }
+                colours[i] = colour;
+                break;
+            }
+            case Interpolation::phong:  // interpolate the normal, shade the pixel
+                colours[i] =
+                    shade_point(m_index, point, facing(n_interp, entering, ng_front, dir), -dir,
+                                tex, b[0] * c[0] + b[1] * c[1] + b[2] * c[2], point, ng_front);
+                break;
+        }
         /* the AOVs (write_surface_aovs) */
         if (depth) {
             depth[i] = eye_distance(point);

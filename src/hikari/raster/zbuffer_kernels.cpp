@@ -47,7 +47,10 @@ DeviceProjection project_with_kernels(const Scene& scene, const RasterSettings& 
                                       DeviceArena& arena) {
     const ExecutionDevice device = arena.device();
     DeviceProjection out;
-    out.scene = tessellate_scene(scene, SphereGeometry::exact);
+    // Per-pixel shading can use the exact sphere; flat and Gouraud shading need its polygons.
+    out.scene = tessellate_scene(scene, raster.interp == Interpolation::phong
+                                            ? SphereGeometry::exact
+                                            : SphereGeometry::tessellated);
     out.view = make_raster_view(scene.camera, out.scene, raster.sample_offset);
     const TriangleSet& tris = out.scene.triangles;
     const size_t vertices = tris.positions.size(), n = tris.size();
@@ -217,8 +220,6 @@ std::string zbuffer_kernel_refusal(const Scene& scene, const RasterSettings& ras
                     "material \"{}\": image textures are not in the kernels yet "
                     "(checker textures are)",
                     m.name);
-    if (raster.interp != Interpolation::phong)
-        return "--interp flat and gouraud are not in the kernels yet (phong is)";
     if (!scene.lights.empty() && raster.shadows != ShadowMode::none &&
         raster.shadows != ShadowMode::map && raster.shadows != ShadowMode::pcf)
         return fmt::format("--shadows {} is not in the kernels yet (map, pcf and none are)",
@@ -325,6 +326,7 @@ Framebuffer render_zbuffer_kernels(const Scene& scene, Film film, const RenderSe
     shade.background = scene.background;
     shade.frame = make_camera_frame(scene.camera);
     shade.width = width;
+    shade.interp = raster.interp;
     shade.height = height;
     shade.shadows = shadows;
     shade.light_views = hold(arena, views).data;

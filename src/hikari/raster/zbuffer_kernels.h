@@ -21,13 +21,13 @@
 namespace hikari {
 
 /// What in `scene` or `raster` the Z-buffer kernels cannot render yet (area and environment
-/// lights, image textures, flat and Gouraud interpolation, shadow volumes, PCSS and analytic
-/// shadows), as the message of a refusal; "" when nothing.
+/// lights, image textures, shadow volumes, PCSS and analytic shadows), as the message of a
+/// refusal; "" when nothing.
 std::string zbuffer_kernel_refusal(const Scene& scene, const RasterSettings& raster);
 
-/// project_scene(scene, raster, SphereGeometry::exact) through the kernels on `device`: each
-/// vertex transformed and each triangle culled or kept whole by a kernel, the few that cross the
-/// near plane or the guard band clipped on the host; the same screen triangles, clip positions
+/// project_scene(scene, raster, exact spheres under Phong shading) through the kernels on `device`:
+/// each vertex transformed and each triangle culled or kept whole by a kernel, the few that cross
+/// the near plane or the guard band clipped on the host; the same screen triangles, clip positions
 /// and counts.
 ProjectedScene project_scene_with_kernels(const Scene& scene, const RasterSettings& raster,
                                           ExecutionDevice device);
