@@ -7,8 +7,9 @@
 // prefix sum, then each chunk fills its places in order, so no atomics decide any order), (3)
 // per pixel, the depth test over its tile's list with the CPU's exact edge functions, top-left
 // fill rule and depth 1 / Σ b_i inv_w_i, so that ties resolve as on the CPU (the earlier
-// triangle stays), (4) deferred shading of each pixel's visible point by the shared shading
-// code (raster/pixel_surface.h, shading/), with shadow-map lookups (raster/shadow_map_lookup.h).
+// triangle stays), then the exact spheres (raster/sphere_raster.h), (4) deferred shading of each
+// pixel's visible point by the shared shading code (raster/pixel_surface.h, shading/), with
+// shadow-map lookups (raster/shadow_map_lookup.h).
 // Run by render_zbuffer_kernels (zbuffer_kernels.h) through core/device_launch.h.
 
 #include <array>
