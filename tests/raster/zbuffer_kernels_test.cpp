@@ -208,11 +208,13 @@ TEST(ZBufferKernels, CheckerTexturesAndVertexColoursMatchTheCpuZBuffer) {
 
 TEST(ZBufferKernels, ShadowMapsMatchTheCpuZBuffer) {
     // The bunny of B4 (a cube map around its point light, a directional map), the shadow scene,
-    // spot lights' cone maps; map and pcf lookups.
+    // spot lights' cone maps; map, pcf and pcss lookups.
     expect_kernels_match(scene_file("bunny.json", 160, 120), ShadowMode::map);
     expect_kernels_match(scene_file("shadows.json", 128, 72, 40), ShadowMode::map);
     expect_kernels_match(scene_file("shadows.json", 128, 72, 40), ShadowMode::pcf);
     expect_kernels_match(scene_file("light-spot.json", 100, 75), ShadowMode::map);
+    // PCSS of point-sized lights is PCF (no penumbra to search for), through the same code.
+    expect_kernels_match(scene_file("light-spot.json", 100, 75), ShadowMode::pcss);
 }
 
 TEST(ZBufferKernels, FlatAndGouraudShadingMatchTheCpuZBuffer) {

@@ -490,43 +490,7 @@ float pcf_shadow_fraction(const LightShadowMap& map, Vec3 p, Vec3 n) {
 }
 
 float pcss_shadow_fraction(const LightShadowMap& map, Vec3 p, Vec3 n, float light_radius) {
-    if (map.directional || !(light_radius > 0.0f)) return pcf_shadow_fraction(map, p, n);
-    MapLookup m = map_lookup(map, p, n);
-    // Kernels wider than their lookups turn a texel-aligned grid into bands; a grid turned by an
-    // angle hashed from the point turns them into fine noise instead (the same for any thread).
-    const uint32_t hash = (std::bit_cast<uint32_t>(p.x) * 0x9e3779b1u) ^
-                          (std::bit_cast<uint32_t>(p.y) * 0x85ebca77u) ^
-                          (std::bit_cast<uint32_t>(p.z) * 0xc2b2ae3du);
-    const float angle =
-        static_cast<float>((hash ^ (hash >> 15)) * 0x2c1b3c6du >> 8) * (6.2831853f / 16777216.0f);
-    const Vec3 a1 = m.across1, a2 = m.across2;
-    m.across1 = std::cos(angle) * a1 + std::sin(angle) * a2;
-    m.across2 = std::cos(angle) * a2 - std::sin(angle) * a1;
-    // Texels are m.texel wide at the receiver's distance d_r; an occluder at depth d_b hides part
-    // of a light of radius R from it when it lies within R (d_r − d_b) / d_b of the receiver's
-    // line to the light's centre, measured at the receiver: up to 3R for d_b >= d_r / 4.
-    const float max_radius = k_pcss_max_radius_fraction * static_cast<float>(map.size);
-    const float search = std::min(3.0f * light_radius / m.texel, max_radius);
-    const int k = k_pcss_search_steps;
-    const float stride = std::max(search / k, 1.0f);
-    const float bias = m.texel * (k_constant_bias_texels + m.tan_theta * (1.0f + k * stride));
-    double blocker_sum = 0;
-    int blockers = 0;
-    for (int j = -k; j <= k; ++j)
-        for (int i = -k; i <= k; ++i) {
-            const float d = caster_depth(map, offset_lookup(m, i * stride, j * stride));
-            if (d + bias < m.depth) {
-                blocker_sum += d;
-                ++blockers;
-            }
-        }
-    if (blockers == 0) return 1.0f;
-    // Fernando 2005: penumbra width w = R (d_r − d_b) / d_b at the receiver, by similar triangles.
-    const float d_blocker = static_cast<float>(blocker_sum / blockers);
-    const float penumbra = light_radius * (m.depth - d_blocker) / std::max(d_blocker, 1e-6f);
-    const float radius = std::clamp(penumbra / m.texel, 1.0f, max_radius);
-    const int steps = std::min(static_cast<int>(std::ceil(radius)), k_pcss_max_steps);
-    return percentage_closer(map, m, steps, radius / static_cast<float>(steps));
+    return pcss_fraction(map, p, n, light_radius);
 }
 
 bool plane_blocks_light(const Scene& scene, const LightShadowView& view, Vec3 p) {

@@ -112,14 +112,6 @@ std::shared_ptr<const ShadowMaps> shadow_maps_for_render(
 /// grazing light, while contact shadows stay attached (docs/shadows.md).
 bool lit_in_shadow_map(const LightShadowMap& map, Vec3 p, Vec3 n);
 
-/// The largest blocker search and filter radius of PCSS, as a fraction of the map's side, and
-/// the most lookups per side of its filter ((2 · steps + 1)², spread over the radius: wider
-/// kernels take lookups more than a texel apart).
-inline constexpr float k_pcss_max_radius_fraction = 0.125f;
-inline constexpr int k_pcss_max_steps = 6;
-/// Lookups per side of the blocker search: (2 · steps + 1)² over the search radius.
-inline constexpr int k_pcss_search_steps = 4;
-
 /// The fraction of `p` lit according to `map`: lit_in_shadow_map's test at a 5 × 5 grid of
 /// texels around p, averaged (percentage-closer filtering, Reeves, Salesin & Cook 1987,
 /// "Rendering antialiased shadows with depth maps").

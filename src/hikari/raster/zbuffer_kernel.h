@@ -317,8 +317,8 @@ struct NoRasterExtendedLights {
 
 /// (4) The colour and AOVs of pixel i from the triangle or exact sphere the Z-buffer left there:
 /// the CPU pass's surface_at and shade_surface (raster/shade_visibility.cpp) with flat, Gouraud
-/// or Phong interpolation, delta lights, checker textures and vertex colours, shadows by map or
-/// pcf.
+/// or Phong interpolation, delta lights, checker textures and vertex colours, shadows by map, pcf
+/// or pcss.
 struct ZBufferShadeKernel {
     /* the tessellated scene (RasterScene::triangles) and its clip-space corners */
     FlatView<Vec3> positions, normals, colors;
@@ -340,7 +340,7 @@ struct ZBufferShadeKernel {
     int width = 0, height = 0;
     Interpolation interp = Interpolation::phong;
     /* shadows */
-    ShadowMode shadows = ShadowMode::none;  ///< none, map or pcf
+    ShadowMode shadows = ShadowMode::none;  ///< none, map, pcf or pcss
     const LightShadowView* light_views = nullptr;
     const FlatShadowMap* maps = nullptr;
     const Plane* planes = nullptr;
@@ -362,6 +362,7 @@ struct ZBufferShadeKernel {
         const Vec3 n = dot(ng, to_light) < 0.0f ? -ng : ng;
         if (shadows == ShadowMode::pcf)
             return percentage_closer(map, map_lookup(map, point, n), k_pcf_radius_texels, 1.0f);
+        if (shadows == ShadowMode::pcss) return pcss_fraction(map, point, n, light_views[l].radius);
         return lit_in_map(map, point, n) ? 1.0f : 0.0f;
     }
 

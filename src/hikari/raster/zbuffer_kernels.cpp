@@ -220,12 +220,10 @@ std::string zbuffer_kernel_refusal(const Scene& scene, const RasterSettings& ras
                     "material \"{}\": image textures are not in the kernels yet "
                     "(checker textures are)",
                     m.name);
-    if (!scene.lights.empty() && raster.shadows != ShadowMode::none &&
-        raster.shadows != ShadowMode::map && raster.shadows != ShadowMode::pcf)
-        return fmt::format("--shadows {} is not in the kernels yet (map, pcf and none are)",
-                           raster.shadows == ShadowMode::volume ? "volume"
-                           : raster.shadows == ShadowMode::pcss ? "pcss"
-                                                                : "analytic");
+    if (!scene.lights.empty() &&
+        (raster.shadows == ShadowMode::volume || raster.shadows == ShadowMode::analytic))
+        return fmt::format("--shadows {} is not in the kernels yet (map, pcf, pcss and none are)",
+                           raster.shadows == ShadowMode::volume ? "volume" : "analytic");
     return {};
 }
 
