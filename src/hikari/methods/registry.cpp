@@ -19,6 +19,7 @@
 #include "hikari/raster/scanline.h"
 #include "hikari/raster/shadow_map.h"
 #include "hikari/raster/zbuffer.h"
+#include "hikari/raster/zbuffer_kernels.h"
 #include "hikari/scene/rebase.h"
 
 namespace hikari {
@@ -46,7 +47,7 @@ void refuse_gpu_method(const MethodSettings& own, std::string_view method) {
     if (own.device != ExecutionDevice::cuda) return;
     require_cuda_device("--device cuda");
     throw InputError(
-        fmt::format("--device cuda: method {} has no GPU kernels yet (raytrace has; "
+        fmt::format("--device cuda: method {} has no GPU kernels yet (raytrace and zbuffer have; "
                     "docs/gpu.md)",
                     method));
 }
@@ -109,10 +110,17 @@ Framebuffer rasterize(const Scene& scene, Film film, const RenderSettings& setti
     });
 }
 
-/// The Z-buffer, on the CPU (`--device cuda` refused until its GPU rasterizer is written).
+/// The Z-buffer's kernels on the GPU (raster/zbuffer_kernels.h).
+Framebuffer render_zbuffer_on_gpu(const Scene& scene, Film film, const RenderSettings& settings,
+                                  const RasterSettings& raster) {
+    return render_zbuffer_kernels(scene, std::move(film), settings, raster, ExecutionDevice::cuda);
+}
+
+/// The Z-buffer, on the CPU or, with `--device cuda`, as the GPU's tile-binned kernels.
 Framebuffer zbuffer(const Scene& scene, Film film, const RenderSettings& settings,
                     const MethodSettings& own) {
-    refuse_gpu_method(own, "zbuffer");
+    if (own.device == ExecutionDevice::cuda)
+        return rasterize<&render_zbuffer_on_gpu>(scene, std::move(film), settings, own);
     return rasterize<&render_zbuffer>(scene, std::move(film), settings, own);
 }
 

@@ -1,24 +1,10 @@
 #include "hikari/raster/clip.h"
 
+#include "hikari/raster/vertex_transform.h"
+
 namespace hikari {
 
 namespace {
-
-/// Signed distances to the clip planes, ≥ 0 inside: near, then the four guard-band sides.
-inline float plane_distance(Vec4 p, int plane) {
-    switch (plane) {
-        case 0:
-            return p.z + p.w;
-        case 1:
-            return k_guard_band * p.w - p.x;
-        case 2:
-            return k_guard_band * p.w + p.x;
-        case 3:
-            return k_guard_band * p.w - p.y;
-        default:
-            return k_guard_band * p.w + p.y;
-    }
-}
 
 /// One Sutherland–Hodgman pass: keeps the part of `in` on the inside of `plane`.
 void clip_against(const ClipPolygon& in, int plane, ClipPolygon& out) {
@@ -26,7 +12,7 @@ void clip_against(const ClipPolygon& in, int plane, ClipPolygon& out) {
     for (int i = 0; i < in.count; ++i) {
         const Vec4 a = in.v[i];
         const Vec4 b = in.v[(i + 1) % in.count];
-        const float da = plane_distance(a, plane), db = plane_distance(b, plane);
+        const float da = clip_plane_distance(a, plane), db = clip_plane_distance(b, plane);
         const bool a_in = da >= 0.0f, b_in = db >= 0.0f;
         if (a_in) out.v[out.count++] = a;
         if (a_in != b_in) {
@@ -40,11 +26,7 @@ void clip_against(const ClipPolygon& in, int plane, ClipPolygon& out) {
 
 }  // namespace
 
-bool inside_clip_volume(Vec4 p) {
-    for (int plane = 0; plane < 5; ++plane)
-        if (!(plane_distance(p, plane) >= 0.0f)) return false;
-    return true;
-}
+bool inside_clip_volume(Vec4 p) { return in_clip_volume(p); }
 
 ClipPolygon clip_triangle(Vec4 a, Vec4 b, Vec4 c) {
     ClipPolygon poly;

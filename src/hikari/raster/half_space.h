@@ -11,6 +11,7 @@
 #include <limits>
 #include <utility>
 
+#include "hikari/core/host_device.h"
 #include "hikari/raster/screen_triangle.h"
 
 namespace hikari {
@@ -35,7 +36,7 @@ struct alignas(64) HalfSpaceTriangle {
     std::array<int8_t, 3> bias;  ///< 0 for top-left edges (a centre on them is in), −1 else
 
     /// Twice the signed area, in 1/256² pixel², > 0.
-    int64_t area() const {
+    HIKARI_HD int64_t area() const {
         return int64_t{x[1] - x[0]} * (y[2] - y[0]) - int64_t{y[1] - y[0]} * (x[2] - x[0]);
     }
 };
@@ -43,7 +44,8 @@ struct alignas(64) HalfSpaceTriangle {
 /// The view depth at a point of `h` with screen-space weights (b0, b1, b2): 1/w is affine in
 /// screen space, so it is interpolated and inverted (Alg 4.2's z). Every scalar path of the
 /// Z-buffer rounds through this one expression, so the SIMD kernels can match it exactly.
-inline float interpolated_depth(const HalfSpaceTriangle& h, float b0, float b1, float b2) {
+HIKARI_HD inline float interpolated_depth(const HalfSpaceTriangle& h, float b0, float b1,
+                                          float b2) {
     return 1.0f / (b0 * h.inv_w[0] + b1 * h.inv_w[1] + b2 * h.inv_w[2]);
 }
 
@@ -53,10 +55,12 @@ inline float interpolated_depth(const HalfSpaceTriangle& h, float b0, float b1, 
 /// (Inline: it runs once per triangle and frame, from the Z-buffer's setup loop.)
 /// std::llround without the library call: a float times 256 is exact in double, and so is that
 /// plus or minus one half below 2^52, so truncating it rounds halves away from zero as llround.
-inline int32_t round_half_away(double v) { return static_cast<int32_t>(v + std::copysign(0.5, v)); }
+HIKARI_HD inline int32_t round_half_away(double v) {
+    return static_cast<int32_t>(v + std::copysign(0.5, v));
+}
 
-inline bool setup_half_space(const ScreenTriangle& t, int width, int height,
-                             HalfSpaceTriangle& out) {
+HIKARI_HD inline bool setup_half_space(const ScreenTriangle& t, int width, int height,
+                                       HalfSpaceTriangle& out) {
     // Far beyond the guard band (raster/clip.h), which keeps every vertex within a few
     // viewports of the image: snapped coordinates then stay below 2^30 (HalfSpaceTriangle).
     constexpr double k_limit = 1 << 21;

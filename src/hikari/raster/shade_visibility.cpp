@@ -28,45 +28,6 @@ namespace hikari {
 
 namespace {
 
-/// The planes of a triangle's perspective-correct weights (barycentric_planes).
-using BarycentricPlanes = std::array<std::array<double, 3>, 3>;
-
-/// The vectors k_i = col_j × col_k of the columns (x, y, w) of the three clip-space corners:
-/// Cramer's rule gives the point projecting to q = (ndc_x, ndc_y, 1) the weights λ_i ∝ q · k_i.
-BarycentricPlanes barycentric_planes(Vec4 c0, Vec4 c1, Vec4 c2) {
-    const double col[3][3] = {{c0.x, c0.y, c0.w}, {c1.x, c1.y, c1.w}, {c2.x, c2.y, c2.w}};
-    BarycentricPlanes k{};
-    for (int i = 0; i < 3; ++i) {
-        const double* a = col[(i + 1) % 3];
-        const double* b = col[(i + 2) % 3];
-        k[i] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-    }
-    return k;
-}
-
-double dot3(const std::array<double, 3>& a, const double (&q)[3]) {
-    return a[0] * q[0] + a[1] * q[1] + a[2] * q[2];
-}
-
-/// The weights λ_i = q·k_i / Σ q·k_j at q = (ndc_x, ndc_y, 1) (perspective_barycentrics); false
-/// (weights untouched) for a triangle seen edge-on.
-bool barycentric_weights(const BarycentricPlanes& k, double ndc_x, double ndc_y,
-                         std::array<float, 3>& weights) {
-    const double q[3] = {ndc_x, ndc_y, 1.0};
-    double l[3], sum = 0;
-    for (int i = 0; i < 3; ++i) {
-        l[i] = dot3(k[i], q);
-        sum += l[i];
-    }
-    if (!(std::abs(sum) > 0.0) || !std::isfinite(sum)) return false;
-    for (int i = 0; i < 3; ++i) weights[i] = static_cast<float>(l[i] / sum);
-    return true;
-}
-
-}  // namespace
-
-namespace {
-
 struct ShadeContext {
     const Scene& scene;
     const ProjectedScene& ps;
@@ -230,25 +191,6 @@ Vec3 shade_point(const ShadeContext& ctx, uint32_t material, Vec3 p, Vec3 n, Vec
         .colour;
 }
 
-/// `n` turned to the side of `ng_front` (the face normal facing the viewer), as the ray tracer
-/// does: a normal interpolated to face away falls back to the face normal.
-Vec3 facing(Vec3 n, bool entering, Vec3 ng_front, Vec3 view_dir) {
-    const float len2 = dot(n, n);
-    if (!(len2 > 0.0f)) return ng_front;
-    n = (entering ? n : -n) / std::sqrt(len2);
-    return dot(n, view_dir) > 0.0f ? ng_front : n;
-}
-
-/// Where the camera ray of pixel (x + dx, y + dy) meets the plane through `p` with normal `n`,
-/// less p: the point's step per pixel on the surface (0 where that ray runs along the plane).
-Vec3 tangent_plane_step(const ShadeContext& ctx, Vec3 p, Vec3 n, int x, int y, int dx, int dy) {
-    const Ray r = camera_ray(ctx.frame, x + dx + 0.5f, y + dy + 0.5f);
-    const float denominator = dot(n, r.direction);
-    if (denominator == 0.0f) return Vec3(0.0f);
-    const Vec3 step = r.at(dot(p - r.origin, n) / denominator) - p;
-    return std::isfinite(step.x + step.y + step.z) ? step : Vec3(0.0f);
-}
-
 /// --stats: the shadow pass's time, and the maps' faces and texels or the volumes' stencils.
 /// (The maps count what they draw themselves: shadow_maps_for_render.)
 void report_shadow_pass(const std::vector<std::vector<uint8_t>>& in_volume,
@@ -318,8 +260,8 @@ PixelSurface surface_at(const ShadeContext& ctx, const SourceTriangle& tri, int 
                 clip, {ctx.tris.uvs[idx[0]], ctx.tris.uvs[idx[1]], ctx.tris.uvs[idx[2]]}, ndc_x,
                 ndc_y, ctx.width, ctx.height);
         }
-        s.tex.dp_dx = tangent_plane_step(ctx, s.point, tri.face, x, y, 1, 0);
-        s.tex.dp_dy = tangent_plane_step(ctx, s.point, tri.face, x, y, 0, 1);
+        s.tex.dp_dx = tangent_plane_step(ctx.frame, s.point, tri.face, x, y, 1, 0);
+        s.tex.dp_dy = tangent_plane_step(ctx.frame, s.point, tri.face, x, y, 0, 1);
     }
     s.dir = camera_ray(ctx.frame, x + 0.5f, y + 0.5f).direction;
 
@@ -471,30 +413,6 @@ std::vector<float> visible_depth(const ShadeContext& ctx, const VisibilityBuffer
 bool perspective_barycentrics(Vec4 c0, Vec4 c1, Vec4 c2, double ndc_x, double ndc_y,
                               std::array<float, 3>& weights) {
     return barycentric_weights(barycentric_planes(c0, c1, c2), ndc_x, ndc_y, weights);
-}
-
-PixelUv perspective_uv(const std::array<Vec4, 3>& clip, const std::array<Vec2, 3>& uv, double ndc_x,
-                       double ndc_y, int width, int height) {
-    const auto k = barycentric_planes(clip[0], clip[1], clip[2]);
-    const double q[3] = {ndc_x, ndc_y, 1.0};
-    std::array<double, 3> big_k{}, big_u{}, big_v{};
-    for (int i = 0; i < 3; ++i)
-        for (int a = 0; a < 3; ++a) {
-            big_k[a] += k[i][a];
-            big_u[a] += uv[i].x * k[i][a];
-            big_v[a] += uv[i].y * k[i][a];
-        }
-    const double sum = dot3(big_k, q);
-    PixelUv out;
-    if (!(std::abs(sum) > 0.0) || !std::isfinite(sum)) return out;
-    const double u = dot3(big_u, q) / sum, v = dot3(big_v, q) / sum;
-    const double per_x = 2.0 / width / sum, per_y = -2.0 / height / sum;
-    out.uv = {static_cast<float>(u), static_cast<float>(v)};
-    out.du_dx = static_cast<float>((big_u[0] - u * big_k[0]) * per_x);
-    out.dv_dx = static_cast<float>((big_v[0] - v * big_k[0]) * per_x);
-    out.du_dy = static_cast<float>((big_u[1] - u * big_k[1]) * per_y);
-    out.dv_dy = static_cast<float>((big_v[1] - v * big_k[1]) * per_y);
-    return out;
 }
 
 namespace {

@@ -11,6 +11,7 @@
 #include "hikari/frame/framebuffer.h"
 #include "hikari/frame/render_settings.h"
 #include "hikari/frame/tiles.h"
+#include "hikari/raster/pixel_surface.h"
 #include "hikari/raster/raster_settings.h"
 #include "hikari/raster/screen_triangle.h"
 #include "hikari/raster/vertex_pipeline.h"
@@ -27,26 +28,7 @@ namespace hikari {
 bool perspective_barycentrics(Vec4 c0, Vec4 c1, Vec4 c2, double ndc_x, double ndc_y,
                               std::array<float, 3>& weights);
 
-/// Texture coordinates at a pixel and how far they move per pixel step: what picks a texture's
-/// mipmap level (SurfacePoint::du_dx and the others).
-struct PixelUv {
-    Vec2 uv;
-    float du_dx = 0, dv_dx = 0;  ///< per step to the right (x + 1)
-    float du_dy = 0, dv_dy = 0;  ///< per step down (y + 1, rows counted from the top)
-    /// The surface point's world-space steps along x and y (SurfacePoint::dp_dx, dp_dy).
-    Vec3 dp_dx{0.0f}, dp_dy{0.0f};
-};
-
-/// The perspective-correct (u, v) of the point of the clip-space triangle `clip` with corner
-/// coordinates `uv` that projects to NDC (ndc_x, ndc_y), and its exact derivatives along the
-/// pixel grid of a `width` × `height` image. With q = (ndc_x, ndc_y, 1) and the weights
-/// λ_i = q·k_i / q·K of perspective_barycentrics, u = q·U / q·K for U = Σ u_i k_i, a ratio of
-/// two functions affine in screen space, so ∂u/∂ndc_x = (U_x − u K_x) / q·K, then ×2/width per
-/// pixel (and ×(−2/height) along y, which grows downward). Heckbert 1989 ("Fundamentals of
-/// Texture Mapping and Image Warping", §3.5.5) derives the same Jacobian. All zero for a triangle
-/// seen edge-on.
-PixelUv perspective_uv(const std::array<Vec4, 3>& clip, const std::array<Vec2, 3>& uv, double ndc_x,
-                       double ndc_y, int width, int height);
+// PixelUv and perspective_uv: raster/pixel_surface.h (shared with the GPU kernels).
 
 /// Fills colour (into `film`, of the visibility buffer's size), depth (eye distance |p − eye|),
 /// id (1 + PrimitiveId) and normal (unit, facing the eye) for every pixel whose centre

@@ -17,6 +17,7 @@
 #include "hikari/core/parallel.h"
 #include "hikari/frame/tiles.h"
 #include "hikari/raster/cull.h"
+#include "hikari/raster/shadow_map_lookup.h"
 #include "hikari/raster/sphere_raster.h"
 #include "hikari/raster/zbuffer.h"
 #include "hikari/shading/lights.h"
@@ -26,13 +27,6 @@ namespace hikari {
 namespace {
 
 constexpr float k_no_caster = std::numeric_limits<float>::infinity();
-
-/// Bias and normal offset, in texels (lit_in_shadow_map). A point's depth may differ from
-/// its texel's centre depth by up to half a texel diagonal times tan θ on a plane, hence the
-/// slope term of one texel per unit of tan θ; tan θ is capped where the light grazes.
-constexpr float k_constant_bias_texels = 1.0f;
-constexpr float k_normal_offset_texels = 1.0f;
-constexpr float k_max_slope = 8.0f;
 
 /// The casters alone: their triangles (the scene's vertex arrays, the casting triangles'
 /// indices) for the light's vertex stage, and their exact spheres.
@@ -83,6 +77,7 @@ Aabb bounds_in_frame(const Casters& scene, Vec3 origin, Vec3 u, Vec3 v, Vec3 w) 
 struct FaceScratch {
     ScreenProjection projection;
     ZBufferWorkspace zbuffer;
+    const FaceDepthDrawer* drawer = nullptr;  ///< null: zbuffer_draw
 };
 
 /// The NDC coordinate of texel centre i of `size` (x; y runs the other way, which the callers
@@ -146,7 +141,7 @@ ShadowMapFace render_face(const Casters& casters, const RasterView& view, Vec3 o
     face.view = view;
     invert(view.clip_from_world, face.world_from_clip);
     ScreenProjection& projection = scratch.projection;
-    projection.indexed_allowed = true;
+    projection.indexed_allowed = !scratch.drawer;
     project_to_screen(casters.triangles, view, /*cull_back_faces=*/false, projection);
     const SphereRaster spheres =
         prepare_sphere_raster(casters.spheres, view, view_pixel_rays(view), 0);
@@ -154,7 +149,9 @@ ShadowMapFace render_face(const Casters& casters, const RasterView& view, Vec3 o
     if (no_triangles && spheres.tile_spheres.empty()) return face;
     const size_t texels = static_cast<size_t>(view.width) * static_cast<size_t>(view.height);
     face.depth.resize(texels);
-    if (projection.indexed)
+    if (scratch.drawer)
+        (*scratch.drawer)(projection.triangles, view.width, view.height, face.depth.data());
+    else if (projection.indexed)
         zbuffer_draw(
             IndexedScreenTriangles{projection.screen.data(), casters.triangles.indices.data(),
                                    casters.triangles.indices.size()},
@@ -325,14 +322,6 @@ std::optional<LightShadowMap> cone_map(const LightShadowView& light, const Caste
     return map;
 }
 
-/// The face of a cube map that holds direction `d` from the light.
-size_t cube_face(Vec3 d) {
-    const Vec3 a(std::abs(d.x), std::abs(d.y), std::abs(d.z));
-    if (a.x >= a.y && a.x >= a.z) return d.x < 0.0f ? 1 : 0;
-    if (a.y >= a.z) return d.y < 0.0f ? 3 : 2;
-    return d.z < 0.0f ? 5 : 4;
-}
-
 }  // namespace
 
 void check_shadow_map_memory(const Scene& scene, const RasterScene& raster, int size) {
@@ -439,27 +428,27 @@ void count_drawn(const LightShadowMap& map, RenderStats& stats) {
 }  // namespace
 
 ShadowMaps build_shadow_maps(const Scene& scene, const RasterScene& raster,
-                             const std::vector<uint8_t>& casters, int size) {
+                             const std::vector<uint8_t>& casters, int size,
+                             const FaceDepthDrawer* drawer) {
     check_shadow_map_memory(scene, raster, size);
     ShadowMaps maps;
     maps.lights.resize(scene.lights.size());
     const Casters caster_triangles = caster_scene(raster, casters);
     FaceScratch scratch;
+    scratch.drawer = drawer;
     for (size_t l = 0; l < scene.lights.size(); ++l)
         maps.lights[l] = light_map(shadow_view(scene.lights[l]), caster_triangles, size, scratch);
     return maps;
 }
 
-std::shared_ptr<const ShadowMaps> shadow_maps_for_render(const Scene& scene,
-                                                         const RasterScene& raster, int size,
-                                                         BuildCache* cache,
-                                                         SharedShadowMaps* shared,
-                                                         RenderStats* stats) {
+std::shared_ptr<const ShadowMaps> shadow_maps_for_render(
+    const Scene& scene, const RasterScene& raster, int size, BuildCache* cache,
+    SharedShadowMaps* shared, RenderStats* stats, const FaceDepthDrawer* drawer) {
     if (shared && shared->maps) return shared->maps;
     const std::vector<uint8_t> casting = shadow_casting_triangles(scene, raster);
     auto maps = std::make_shared<ShadowMaps>();
     if (!cache || cache->scene() != &scene) {
-        *maps = build_shadow_maps(scene, raster, casting, size);
+        *maps = build_shadow_maps(scene, raster, casting, size, drawer);
         if (stats)
             for (const auto& map : maps->lights)
                 if (map) count_drawn(*map, *stats);
@@ -469,6 +458,7 @@ std::shared_ptr<const ShadowMaps> shadow_maps_for_render(const Scene& scene,
         const std::string counts = caster_counts(raster, casting);
         std::optional<Casters> casters;  // made for the first map to draw
         FaceScratch scratch;
+        scratch.drawer = drawer;
         for (const Light& light : scene.lights) {
             const LightShadowView view = shadow_view(light);
             bool built = false;
@@ -493,135 +483,18 @@ std::shared_ptr<const ShadowMaps> shadow_maps_for_render(const Scene& scene,
     return maps;
 }
 
-namespace {
-
-/// A receiver point as the map sees it: the lookup point (moved off the surface by the normal
-/// offset), its depth, the world size of a texel there, and the depth bias allowed.
-struct MapLookup {
-    Vec3 q;
-    float depth = 0;
-    float texel = 0;
-    float tan_theta = 0;
-    Vec3 across1, across2;  ///< unit directions across the map at q (its texel rows, columns)
-};
-
-MapLookup map_lookup(const LightShadowMap& map, Vec3 p, Vec3 n) {
-    MapLookup m;
-    const Vec3 to_light = map.directional ? -map.direction : normalize(map.origin - p);
-    m.texel = map.directional ? map.texel_size : map.texel_size * length(p - map.origin);
-    const float cos_theta = std::clamp(dot(n, to_light), 0.0f, 1.0f);
-    const float sin_theta = std::sqrt(1.0f - cos_theta * cos_theta);
-    m.tan_theta = std::min(sin_theta / std::max(cos_theta, 1e-6f), k_max_slope);
-    m.q = p + n * (k_normal_offset_texels * m.texel);
-    m.depth = map.directional ? dot(m.q - map.origin, map.direction) : length(m.q - map.origin);
-    const Vec3 w = map.directional ? map.direction : normalize(m.q - map.origin);
-    const Vec3 up = std::abs(w.y) < 0.9f ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
-    m.across1 = normalize(cross(up, w));
-    m.across2 = cross(w, m.across1);
-    return m;
-}
-
-/// The caster depth the map holds in the direction of world point `x` (seen from the light),
-/// or +infinity outside the map.
-float caster_depth(const LightShadowMap& map, Vec3 x) {
-    const ShadowMapFace& face =
-        map.directional || map.cone ? map.faces.front() : map.faces[cube_face(x - map.origin)];
-    if (face.depth.empty()) return k_no_caster;  // a face that sees no caster
-    const Vec4 clip = face.view.clip_from_world * Vec4(x, 1.0f);
-    if (!(clip.w > 0.0f)) return k_no_caster;
-    const Vec3 screen = transform_point(face.view.screen_from_clip, clip.xyz() / clip.w);
-    if (!(screen.x >= 0.0f && screen.y >= 0.0f && screen.x < static_cast<float>(map.size) &&
-          screen.y < static_cast<float>(map.size)))
-        return k_no_caster;  // outside the map: no caster there
-    return face.depth[static_cast<size_t>(screen.y) * static_cast<size_t>(map.size) +
-                      static_cast<size_t>(screen.x)];
-}
-
-/// The lookup point moved (i, j) texels across the map, at the receiver's distance (for a cube
-/// map, a texel's angle about the light).
-Vec3 offset_lookup(const MapLookup& m, float i, float j) {
-    return m.q + (i * m.texel) * m.across1 + (j * m.texel) * m.across2;
-}
-
-/// The fraction of a (2k + 1)² grid of lookups, `stride` texels apart around m, that see no
-/// caster nearer than the receiver (percentage-closer filtering: Reeves, Salesin & Cook 1987).
-float percentage_closer(const LightShadowMap& map, const MapLookup& m, int k, float stride) {
-    // Neighbouring lookups on a receiver sloped by θ differ in depth by up to tan θ per texel.
-    const float bias = m.texel * (k_constant_bias_texels + m.tan_theta * (1.0f + k * stride));
-    int lit = 0;
-    for (int j = -k; j <= k; ++j)
-        for (int i = -k; i <= k; ++i)
-            lit += m.depth <= caster_depth(map, offset_lookup(m, i * stride, j * stride)) + bias
-                       ? 1
-                       : 0;
-    return static_cast<float>(lit) / static_cast<float>((2 * k + 1) * (2 * k + 1));
-}
-
-}  // namespace
-
-bool lit_in_shadow_map(const LightShadowMap& map, Vec3 p, Vec3 n) {
-    const MapLookup m = map_lookup(map, p, n);
-    return m.depth <= caster_depth(map, m.q) + m.texel * (k_constant_bias_texels + m.tan_theta);
-}
+bool lit_in_shadow_map(const LightShadowMap& map, Vec3 p, Vec3 n) { return lit_in_map(map, p, n); }
 
 float pcf_shadow_fraction(const LightShadowMap& map, Vec3 p, Vec3 n) {
     return percentage_closer(map, map_lookup(map, p, n), k_pcf_radius_texels, 1.0f);
 }
 
 float pcss_shadow_fraction(const LightShadowMap& map, Vec3 p, Vec3 n, float light_radius) {
-    if (map.directional || !(light_radius > 0.0f)) return pcf_shadow_fraction(map, p, n);
-    MapLookup m = map_lookup(map, p, n);
-    // Kernels wider than their lookups turn a texel-aligned grid into bands; a grid turned by an
-    // angle hashed from the point turns them into fine noise instead (the same for any thread).
-    const uint32_t hash = (std::bit_cast<uint32_t>(p.x) * 0x9e3779b1u) ^
-                          (std::bit_cast<uint32_t>(p.y) * 0x85ebca77u) ^
-                          (std::bit_cast<uint32_t>(p.z) * 0xc2b2ae3du);
-    const float angle =
-        static_cast<float>((hash ^ (hash >> 15)) * 0x2c1b3c6du >> 8) * (6.2831853f / 16777216.0f);
-    const Vec3 a1 = m.across1, a2 = m.across2;
-    m.across1 = std::cos(angle) * a1 + std::sin(angle) * a2;
-    m.across2 = std::cos(angle) * a2 - std::sin(angle) * a1;
-    // Texels are m.texel wide at the receiver's distance d_r; an occluder at depth d_b hides part
-    // of a light of radius R from it when it lies within R (d_r − d_b) / d_b of the receiver's
-    // line to the light's centre, measured at the receiver: up to 3R for d_b >= d_r / 4.
-    const float max_radius = k_pcss_max_radius_fraction * static_cast<float>(map.size);
-    const float search = std::min(3.0f * light_radius / m.texel, max_radius);
-    const int k = k_pcss_search_steps;
-    const float stride = std::max(search / k, 1.0f);
-    const float bias = m.texel * (k_constant_bias_texels + m.tan_theta * (1.0f + k * stride));
-    double blocker_sum = 0;
-    int blockers = 0;
-    for (int j = -k; j <= k; ++j)
-        for (int i = -k; i <= k; ++i) {
-            const float d = caster_depth(map, offset_lookup(m, i * stride, j * stride));
-            if (d + bias < m.depth) {
-                blocker_sum += d;
-                ++blockers;
-            }
-        }
-    if (blockers == 0) return 1.0f;
-    // Fernando 2005: penumbra width w = R (d_r − d_b) / d_b at the receiver, by similar triangles.
-    const float d_blocker = static_cast<float>(blocker_sum / blockers);
-    const float penumbra = light_radius * (m.depth - d_blocker) / std::max(d_blocker, 1e-6f);
-    const float radius = std::clamp(penumbra / m.texel, 1.0f, max_radius);
-    const int steps = std::min(static_cast<int>(std::ceil(radius)), k_pcss_max_steps);
-    return percentage_closer(map, m, steps, radius / static_cast<float>(steps));
+    return pcss_fraction(map, p, n, light_radius);
 }
 
 bool plane_blocks_light(const Scene& scene, const LightShadowView& view, Vec3 p) {
-    for (const Plane& plane : scene.planes) {
-        if (!plane.casts_shadow) continue;
-        const float side = dot(p - plane.point, plane.normal);
-        // A point on the plane (the plane itself, as a receiver) is never behind it.
-        if (!(std::abs(side) > 1e-4f * (1.0f + length(p - plane.point)))) continue;
-        bool blocked = false;
-        if (view.projection == ShadowProjection::parallel)
-            blocked = side * dot(-view.direction, plane.normal) < 0.0f;
-        else if (view.projection != ShadowProjection::none)
-            blocked = side * dot(view.origin - plane.point, plane.normal) < 0.0f;
-        if (blocked) return true;
-    }
-    return false;
+    return planes_block_light(scene.planes.data(), scene.planes.size(), view, p);
 }
 
 }  // namespace hikari

@@ -6,7 +6,9 @@
 // the map holds in its direction.
 
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "hikari/core/aabb.h"
@@ -14,6 +16,7 @@
 #include "hikari/core/huge_page_allocator.h"
 #include "hikari/frame/render_settings.h"
 #include "hikari/raster/raster_scene.h"
+#include "hikari/raster/shadow_map_lookup.h"
 #include "hikari/raster/vertex_pipeline.h"
 #include "hikari/scene/scene.h"
 #include "hikari/shading/light_shadow_view.h"
@@ -71,6 +74,12 @@ std::vector<uint8_t> shadow_casting_triangles(const Scene& scene, const RasterSc
 /// would not fit in the memory limit, before any is drawn: what build_shadow_maps checks first.
 void check_shadow_map_memory(const Scene& scene, const RasterScene& raster, int size);
 
+/// Draws a face's depth keys, width × height row-major: what zbuffer_draw(triangles, width,
+/// height, …, nullptr, depth) writes, by another Z-buffer that gives the same buffer (the
+/// kernels of raster/zbuffer_kernels.h, on the GPU). Null: the CPU's Z-buffer draws.
+using FaceDepthDrawer = std::function<void(std::span<const ScreenTriangle> triangles, int width,
+                                           int height, float* depth)>;
+
 /// Renders the shadow maps of every light of `scene` at `size` × `size` texels per face:
 /// casters are the triangles of `raster` that `casters` marks and the exact spheres of `raster`
 /// that cast shadows (drawn per texel: their shadows are round). Each face is a depth-only pass
@@ -80,7 +89,8 @@ void check_shadow_map_memory(const Scene& scene, const RasterScene& raster, int 
 /// session keeps them while the camera moves, and the passes of a supersampled render share
 /// them. Tiles render in parallel; the maps do not depend on the thread count.
 ShadowMaps build_shadow_maps(const Scene& scene, const RasterScene& raster,
-                             const std::vector<uint8_t>& casters, int size);
+                             const std::vector<uint8_t>& casters, int size,
+                             const FaceDepthDrawer* drawer = nullptr);
 
 /// The shadow maps a render of `scene` shades with, its tessellation `raster` (what the camera's
 /// vertex stage projects): drawn by build_shadow_maps, or kept. In `cache` (a render session's,
@@ -89,12 +99,11 @@ ShadowMaps build_shadow_maps(const Scene& scene, const RasterScene& raster,
 /// direction or cone, the map size, or the tessellation of shadow-casting spheres (which follows
 /// the camera under flat and Gouraud shading). A change of colour or intensity keeps every map.
 /// `shared` (supersampling's passes) keeps the maps of the first pass for the others. `stats`,
-/// when given, counts the faces and texels drawn and the maps kept.
-std::shared_ptr<const ShadowMaps> shadow_maps_for_render(const Scene& scene,
-                                                         const RasterScene& raster, int size,
-                                                         BuildCache* cache,
-                                                         SharedShadowMaps* shared,
-                                                         RenderStats* stats);
+/// when given, counts the faces and texels drawn and the maps kept. `drawer`, when given, draws
+/// the faces' depth keys (FaceDepthDrawer).
+std::shared_ptr<const ShadowMaps> shadow_maps_for_render(
+    const Scene& scene, const RasterScene& raster, int size, BuildCache* cache,
+    SharedShadowMaps* shared, RenderStats* stats, const FaceDepthDrawer* drawer = nullptr);
 
 /// Whether `p` (a visible point with unit normal `n` on the side the light may reach) is
 /// lit according to `map`. The comparison allows a depth bias of one texel plus the slope
@@ -102,16 +111,6 @@ std::shared_ptr<const ShadowMaps> shadow_maps_for_render(const Scene& scene,
 /// texel along n (normal offset): together they keep lit surfaces free of acne, even at
 /// grazing light, while contact shadows stay attached (docs/shadows.md).
 bool lit_in_shadow_map(const LightShadowMap& map, Vec3 p, Vec3 n);
-
-/// Texel radius of percentage-closer filtering: a 5 × 5 texel kernel.
-inline constexpr int k_pcf_radius_texels = 2;
-/// The largest blocker search and filter radius of PCSS, as a fraction of the map's side, and
-/// the most lookups per side of its filter ((2 · steps + 1)², spread over the radius: wider
-/// kernels take lookups more than a texel apart).
-inline constexpr float k_pcss_max_radius_fraction = 0.125f;
-inline constexpr int k_pcss_max_steps = 6;
-/// Lookups per side of the blocker search: (2 · steps + 1)² over the search radius.
-inline constexpr int k_pcss_search_steps = 4;
 
 /// The fraction of `p` lit according to `map`: lit_in_shadow_map's test at a 5 × 5 grid of
 /// texels around p, averaged (percentage-closer filtering, Reeves, Salesin & Cook 1987,

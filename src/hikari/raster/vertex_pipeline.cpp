@@ -9,6 +9,7 @@
 #include "hikari/raster/clip.h"
 #include "hikari/raster/cull.h"
 #include "hikari/raster/tessellate.h"
+#include "hikari/raster/vertex_transform.h"
 
 namespace hikari {
 
@@ -38,17 +39,6 @@ bool finite(Vec4 p) {
 
 /// What the vertex stage did with a triangle (for --stats).
 enum Fate : uint8_t { k_kept, k_cut, k_clipped_away, k_culled, k_not_finite };
-
-/// The perspective divide, then the viewport (pixel centres at +0.5, y down).
-ScreenVertex to_screen(const RasterView& view, Vec4 clip) {
-    const Vec3 ndc = clip.xyz() * (1.0f / clip.w);
-    const float inv_w = view.orthographic ? 1.5f - 0.5f * ndc.z : 1.0f / clip.w;
-    Vec3 screen = transform_point(view.screen_from_clip, ndc);
-    // Depth key −near/w rather than NDC z: both are affine across the triangle, but NDC z
-    // crowds toward 1 (float spacing 6e-8) when far/near is large.
-    screen.z = -view.near_plane * inv_w;
-    return {screen, inv_w};
-}
 
 /// Clips triangle t and writes its screen-space pieces to `out` (when not null); returns how
 /// many pieces there are, and in `fate` what happened to it. A triangle whose corners are all
@@ -147,11 +137,8 @@ void project_to_screen(const TriangleSet& tris, const RasterView& view, bool cul
     hikari::parallel_for(tbb::blocked_range<size_t>(0, vertices, 4096),
                          [&](const tbb::blocked_range<size_t>& range) {
                              for (size_t i = range.begin(); i != range.end(); ++i) {
-                                 const Vec4 c =
-                                     view.clip_from_world * Vec4(tris.positions[i], 1.0f);
-                                 out.clip_positions[i] = c;
-                                 out.vertex_inside[i] = inside_clip_volume(c) ? 1 : 0;
-                                 if (out.vertex_inside[i]) out.screen[i] = to_screen(view, c);
+                                 transform_vertex(view, tris.positions[i], out.clip_positions[i],
+                                                  out.vertex_inside[i], out.screen[i]);
                              }
                          });
 
