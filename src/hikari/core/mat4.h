@@ -31,8 +31,9 @@ struct Mat4 {
 };
 
 Mat4 operator*(const Mat4& a, const Mat4& b);
-/// Inline, as transform_point: the vertex stage runs them once per vertex and frame.
-inline Vec4 operator*(const Mat4& a, Vec4 v) {
+/// Inline, as transform_point: the vertex stage runs them once per vertex and frame (on the
+/// GPU too: raster/vertex_transform.h).
+HIKARI_HD inline Vec4 operator*(const Mat4& a, Vec4 v) {
     auto row = [&](int i) {
         return a.m[i][0] * v.x + a.m[i][1] * v.y + a.m[i][2] * v.z + a.m[i][3] * v.w;
     };
@@ -53,7 +54,7 @@ bool flattens_space(const Mat4& a);
 float determinant(const Mat4& a);
 
 /// Maps a point (w = 1), dividing by the resulting w when it is not 1.
-inline Vec3 transform_point(const Mat4& a, Vec3 p) {
+HIKARI_HD inline Vec3 transform_point(const Mat4& a, Vec3 p) {
     const Vec4 h = a * Vec4(p, 1.0f);
     return h.w == 1.0f ? h.xyz() : h.xyz() / h.w;
 }

@@ -72,9 +72,9 @@ HIKARI_HD float caster_depth(const Map& map, Vec3 x) {
     constexpr float k_no_caster = std::numeric_limits<float>::infinity();
     const auto& face = map.faces[map.directional || map.cone ? 0 : cube_face(x - map.origin)];
     if (face.depth.empty()) return k_no_caster;  // a face that sees no caster
-    const Vec4 clip = apply_matrix(face.view.clip_from_world, Vec4(x, 1.0f));
+    const Vec4 clip = face.view.clip_from_world * Vec4(x, 1.0f);
     if (!(clip.w > 0.0f)) return k_no_caster;
-    const Vec3 screen = apply_to_point(face.view.screen_from_clip, clip.xyz() / clip.w);
+    const Vec3 screen = transform_point(face.view.screen_from_clip, clip.xyz() / clip.w);
     if (!(screen.x >= 0.0f && screen.y >= 0.0f && screen.x < static_cast<float>(map.size) &&
           screen.y < static_cast<float>(map.size)))
         return k_no_caster;  // outside the map: no caster there

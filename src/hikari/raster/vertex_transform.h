@@ -15,20 +15,6 @@
 
 namespace hikari {
 
-/// a · v, rounded as Mat4's operator* (core/mat4.h) rounds it, callable from device code.
-HIKARI_HD inline Vec4 apply_matrix(const Mat4& a, Vec4 v) {
-    const auto row = [&](int i) {
-        return a.m[i][0] * v.x + a.m[i][1] * v.y + a.m[i][2] * v.z + a.m[i][3] * v.w;
-    };
-    return {row(0), row(1), row(2), row(3)};
-}
-
-/// transform_point (core/mat4.h), callable from device code.
-HIKARI_HD inline Vec3 apply_to_point(const Mat4& a, Vec3 p) {
-    const Vec4 h = apply_matrix(a, Vec4(p, 1.0f));
-    return h.w == 1.0f ? h.xyz() : h.xyz() / h.w;
-}
-
 /// Signed distances to the clip planes, ≥ 0 inside: near, then the four guard-band sides.
 HIKARI_HD inline float clip_plane_distance(Vec4 p, int plane) {
     switch (plane) {
@@ -56,7 +42,7 @@ HIKARI_HD inline bool in_clip_volume(Vec4 p) {
 HIKARI_HD inline ScreenVertex to_screen(const RasterView& view, Vec4 clip) {
     const Vec3 ndc = clip.xyz() * (1.0f / clip.w);
     const float inv_w = view.orthographic ? 1.5f - 0.5f * ndc.z : 1.0f / clip.w;
-    Vec3 screen = apply_to_point(view.screen_from_clip, ndc);
+    Vec3 screen = transform_point(view.screen_from_clip, ndc);
     // Depth key −near/w rather than NDC z: both are affine across the triangle, but NDC z
     // crowds toward 1 (float spacing 6e-8) when far/near is large.
     screen.z = -view.near_plane * inv_w;
@@ -67,7 +53,7 @@ HIKARI_HD inline ScreenVertex to_screen(const RasterView& view, Vec4 clip) {
 /// and then its screen vertex (left as it is otherwise).
 HIKARI_HD inline void transform_vertex(const RasterView& view, Vec3 p, Vec4& clip, uint8_t& inside,
                                        ScreenVertex& screen) {
-    clip = apply_matrix(view.clip_from_world, Vec4(p, 1.0f));
+    clip = view.clip_from_world * Vec4(p, 1.0f);
     inside = in_clip_volume(clip) ? 1 : 0;
     if (inside) screen = to_screen(view, clip);
 }

@@ -243,7 +243,7 @@ struct ZBufferPixelKernel {
         }
         if (hit < 0) return;
         // The depth key the triangles carry (ScreenVertex::inv_w inverted).
-        const Vec4 clip = apply_matrix(clip_from_world, Vec4(ray.at(range.max), 1.0f));
+        const Vec4 clip = clip_from_world * Vec4(ray.at(range.max), 1.0f);
         const float z = orthographic ? 1.0f / (1.5f - 0.5f * clip.z / clip.w) : clip.w;
         // Alg 4.2's depth test, as for a triangle drawn after all the others.
         if (z < z_min) {
@@ -424,20 +424,10 @@ struct ZBufferShadeKernel {
         colours[i] = shade_point(sphere.material, point, normal_front, -ray.direction, tex,
                                  Vec3(1.0f), point, normal_front);
         if (depth) {
-            depth[i] = eye_distance(point);
+            depth[i] = camera_distance(frame, point);
             ids[i] = sphere.id + 1;
             normal[i] = normal_front;
         }
-    }
-
-    /// toward_viewer (scene/camera.h).
-    HIKARI_HD Vec3 toward_eye(Vec3 p) const {
-        return frame.orthographic ? -frame.forward : normalize(frame.eye - p);
-    }
-
-    /// camera_distance (scene/camera.h).
-    HIKARI_HD float eye_distance(Vec3 p) const {
-        return frame.orthographic ? dot(p - frame.eye, frame.forward) : length(p - frame.eye);
     }
 
     HIKARI_HD void operator()(size_t i) const {
@@ -493,14 +483,14 @@ struct ZBufferShadeKernel {
         switch (interp) {
             case Interpolation::flat: {  // one colour per polygon, at its centroid
                 const Vec3 centre = (p[0] + p[1] + p[2]) / 3.0f;
-                colours[i] = shade_point(m_index, centre, ng_front, toward_eye(centre), tex,
-                                         (c[0] + c[1] + c[2]) / 3.0f, point, ng_front);
+                colours[i] = shade_point(m_index, centre, ng_front, toward_viewer(frame, centre),
+                                         tex, (c[0] + c[1] + c[2]) / 3.0f, point, ng_front);
                 break;
             }
             case Interpolation::gouraud: {  // shade the vertices, blend the colours
                 Vec3 colour(0.0f);
                 for (int k = 0; k < 3; ++k) {
-                    const Vec3 to_eye = toward_eye(p[k]);
+                    const Vec3 to_eye = toward_viewer(frame, p[k]);
                     const Vec3 nk = facing(n[k], entering, ng_front, -to_eye);
                     colour +=
                         b[k] * shade_point(m_index, p[k], nk, to_eye, tex, c[k], point, ng_front);
@@ -516,7 +506,7 @@ struct ZBufferShadeKernel {
         }
         /* the AOVs (write_surface_aovs) */
         if (depth) {
-            depth[i] = eye_distance(point);
+            depth[i] = camera_distance(frame, point);
             ids[i] = id[src] + 1;
             const float nl = length(n_interp);
             const Vec3 sn = nl > 0.0f ? n_interp / nl : ng;

@@ -57,12 +57,12 @@ HIKARI_HD inline Ray camera_ray(const CameraFrame& f, float px, float py) {
 
 /// The distance at which the camera ray that reaches world point `p` meets it (the depth AOV):
 /// from the eye (perspective), or from the plane through the eye (orthographic).
-inline float camera_distance(const CameraFrame& f, Vec3 p) {
+HIKARI_HD inline float camera_distance(const CameraFrame& f, Vec3 p) {
     return f.orthographic ? dot(p - f.eye, f.forward) : length(p - f.eye);
 }
 
 /// The unit vector from world point `p` toward the viewer (V of the shading model).
-inline Vec3 toward_viewer(const CameraFrame& f, Vec3 p) {
+HIKARI_HD inline Vec3 toward_viewer(const CameraFrame& f, Vec3 p) {
     return f.orthographic ? -f.forward : normalize(f.eye - p);
 }
 
