@@ -12,6 +12,7 @@
 #include "hikari/core/ray.h"
 #include "hikari/core/vec.h"
 #include "hikari/scene/camera.h"
+#include "hikari/shading/surface.h"
 
 namespace hikari {
 
@@ -59,6 +60,23 @@ struct PixelUv {
     /// The surface point's world-space steps along x and y (SurfacePoint::dp_dx, dp_dy).
     Vec3 dp_dx{0.0f}, dp_dy{0.0f};
 };
+
+/// The surface point a raster pixel shades (shading/surface.h): at `point` with normal `n`
+/// (also its geometric normal), seen along `to_eye`, its texture coordinates and their steps from
+/// `tex`, and the interpolated vertex colour.
+HIKARI_HD inline SurfacePoint<float> pixel_surface_point(Vec3 point, Vec3 n, Vec3 to_eye,
+                                                         const PixelUv& tex, Vec3 vertex_colour) {
+    SurfacePoint<float> s;
+    s.position = point;
+    s.normal = n;
+    s.geometric_normal = n;
+    s.to_eye = to_eye;
+    s.u = tex.uv.x, s.v = tex.uv.y;
+    s.du_dx = tex.du_dx, s.dv_dx = tex.dv_dx, s.du_dy = tex.du_dy, s.dv_dy = tex.dv_dy;
+    s.dp_dx = tex.dp_dx, s.dp_dy = tex.dp_dy;
+    s.vertex_colour = vertex_colour;
+    return s;
+}
 
 /// The perspective-correct (u, v) of the point of the clip-space triangle `clip` with corner
 /// coordinates `uv` that projects to NDC (ndc_x, ndc_y), and its exact derivatives along the

@@ -173,15 +173,7 @@ struct RasterExtendedLights {
 /// `shadow`.
 Vec3 shade_point(const ShadeContext& ctx, uint32_t material, Vec3 p, Vec3 n, Vec3 to_eye,
                  const PixelUv& tex, Vec3 vertex_colour, const ShadowQuery& shadow) {
-    SurfacePoint<float> s;
-    s.position = p;
-    s.normal = n;
-    s.geometric_normal = n;
-    s.to_eye = to_eye;
-    s.u = tex.uv.x, s.v = tex.uv.y;
-    s.du_dx = tex.du_dx, s.dv_dx = tex.dv_dx, s.du_dy = tex.du_dy, s.dv_dy = tex.dv_dy;
-    s.dp_dx = tex.dp_dx, s.dp_dy = tex.dp_dy;
-    s.vertex_colour = vertex_colour;
+    const SurfacePoint<float> s = pixel_surface_point(p, n, to_eye, tex, vertex_colour);
     const MaterialSample<float> m =
         evaluate_material<float>(ctx.scene.materials.data(), static_cast<int32_t>(material), s);
     const auto lit = [&](size_t l, const LightSample&, const SurfacePoint<float>&, bool) {

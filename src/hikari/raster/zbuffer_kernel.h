@@ -127,16 +127,16 @@ HIKARI_HD inline TileSpan tile_span(const HalfSpaceTriangle& h) {
             (h.y1 - 1) / k_tile_size};
 }
 
-/// (2a) For chunk c of the triangles: counts[tile · chunks + c] = how many of its triangles
-/// reach each tile.
-struct BinCountKernel {
+/// The drawn triangles of chunk c and the tiles their bounds reach: visit(t, tile) in triangle
+/// order, for the two binning passes that count and then fill.
+struct BinChunks {
     const HalfSpaceTriangle* setup = nullptr;
     const uint8_t* drawn = nullptr;
     size_t triangles = 0, chunks = 0;
     int tiles_x = 0;
-    uint32_t* counts = nullptr;
 
-    HIKARI_HD void operator()(size_t c) const {
+    template <class Visit>
+    HIKARI_HD void for_each_reach(size_t c, Visit&& visit) const {
         const size_t end = (c + 1) * k_bin_chunk_triangles < triangles
                                ? (c + 1) * k_bin_chunk_triangles
                                : triangles;
@@ -145,8 +145,19 @@ struct BinCountKernel {
             const TileSpan s = tile_span(setup[t]);
             for (int ty = s.ty0; ty <= s.ty1; ++ty)
                 for (int tx = s.tx0; tx <= s.tx1; ++tx)
-                    ++counts[(static_cast<size_t>(ty) * tiles_x + tx) * chunks + c];
+                    visit(t, static_cast<size_t>(ty) * tiles_x + tx);
         }
+    }
+};
+
+/// (2a) For chunk c of the triangles: counts[tile · chunks + c] = how many of its triangles
+/// reach each tile.
+struct BinCountKernel {
+    BinChunks bins;
+    uint32_t* counts = nullptr;
+
+    HIKARI_HD void operator()(size_t c) const {
+        bins.for_each_reach(c, [&](size_t, size_t tile) { ++counts[tile * bins.chunks + c]; });
     }
 };
 
@@ -171,27 +182,15 @@ struct BinTotalKernel {
 /// (2c) For chunk c: its triangles, in order, into the places of each tile's list that
 /// BinTotalKernel gave it; tile i's list is list[tile_begin[i], tile_begin[i + 1]), ascending.
 struct BinFillKernel {
-    const HalfSpaceTriangle* setup = nullptr;
-    const uint8_t* drawn = nullptr;
-    size_t triangles = 0, chunks = 0;
-    int tiles_x = 0;
+    BinChunks bins;
     uint32_t* counts = nullptr;  ///< BinTotalKernel's places, advanced as they fill
     const uint32_t* tile_begin = nullptr;
     uint32_t* list = nullptr;
 
     HIKARI_HD void operator()(size_t c) const {
-        const size_t end = (c + 1) * k_bin_chunk_triangles < triangles
-                               ? (c + 1) * k_bin_chunk_triangles
-                               : triangles;
-        for (size_t t = c * k_bin_chunk_triangles; t < end; ++t) {
-            if (!drawn[t]) continue;
-            const TileSpan s = tile_span(setup[t]);
-            for (int ty = s.ty0; ty <= s.ty1; ++ty)
-                for (int tx = s.tx0; tx <= s.tx1; ++tx) {
-                    const size_t tile = static_cast<size_t>(ty) * tiles_x + tx;
-                    list[tile_begin[tile] + counts[tile * chunks + c]++] = static_cast<uint32_t>(t);
-                }
-        }
+        bins.for_each_reach(c, [&](size_t t, size_t tile) {
+            list[tile_begin[tile] + counts[tile * bins.chunks + c]++] = static_cast<uint32_t>(t);
+        });
     }
 };
 
@@ -371,15 +370,7 @@ struct ZBufferShadeKernel {
     /// `shadow_normal` (ShadowQuery).
     HIKARI_HD Vec3 shade_point(uint32_t m, Vec3 point, Vec3 n, Vec3 to_eye, const PixelUv& tex,
                                Vec3 vertex_colour, Vec3 shadow_point, Vec3 shadow_normal) const {
-        SurfacePoint<float> s;
-        s.position = point;
-        s.normal = n;
-        s.geometric_normal = n;
-        s.to_eye = to_eye;
-        s.u = tex.uv.x, s.v = tex.uv.y;
-        s.du_dx = tex.du_dx, s.dv_dx = tex.dv_dx, s.du_dy = tex.du_dy, s.dv_dy = tex.dv_dy;
-        s.dp_dx = tex.dp_dx, s.dp_dy = tex.dp_dy;
-        s.vertex_colour = vertex_colour;
+        const SurfacePoint<float> s = pixel_surface_point(point, n, to_eye, tex, vertex_colour);
         const MaterialSample<float> ms =
             evaluate_material<float>(materials, static_cast<int32_t>(m), s);
         const auto lit = [&](size_t l, const LightSample&, const SurfacePoint<float>&, bool) {

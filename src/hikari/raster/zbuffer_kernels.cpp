@@ -134,16 +134,14 @@ DrawnBuffers draw_with_kernels(const ScreenTriangle* triangles, size_t count, in
     const size_t chunks = (count + k_bin_chunk_triangles - 1) / k_bin_chunk_triangles;
     uint32_t* counts = arena.output<uint32_t>(tiles * chunks);
     uint32_t* totals = arena.output<uint32_t>(tiles);
-    launch_zbuffer_kernel(device, chunks,
-                          BinCountKernel{setup.setup, setup.drawn, count, chunks, tiles_x, counts});
+    const BinChunks bins{setup.setup, setup.drawn, count, chunks, tiles_x};
+    launch_zbuffer_kernel(device, chunks, BinCountKernel{bins, counts});
     launch_zbuffer_kernel(device, tiles, BinTotalKernel{chunks, counts, totals});
     // The tiles' starts: a prefix sum over a few thousand tiles, on the host.
     uint32_t* tile_begin = arena.output<uint32_t>(tiles + 1);
     for (size_t i = 0; i < tiles; ++i) tile_begin[i + 1] = tile_begin[i] + totals[i];
     uint32_t* list = arena.output<uint32_t>(tile_begin[tiles] > 0 ? tile_begin[tiles] : 1);
-    launch_zbuffer_kernel(
-        device, chunks,
-        BinFillKernel{setup.setup, setup.drawn, count, chunks, tiles_x, counts, tile_begin, list});
+    launch_zbuffer_kernel(device, chunks, BinFillKernel{bins, counts, tile_begin, list});
     /* (3) the depth test */
     DrawnBuffers out{arena.output<uint32_t>(pixels),
                      want_depth ? arena.output<float>(pixels) : nullptr};
