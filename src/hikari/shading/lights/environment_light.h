@@ -56,10 +56,12 @@ inline LightSample sample_light_at(const EnvironmentLight& light, Vec3, Vec3 n, 
 }
 
 /// The path tracer's sample: a map's direction by its importance density, a constant sky's by
-/// the cosine about `n`; pdf times `choice`.
-inline IncidentSample sample_incident(const EnvironmentLight& light, Vec3, Vec3 n, Vec2 u,
-                                      float choice) {
+/// the cosine about `n`; pdf times `choice`. Not on the GPU (the map's tables are host arrays:
+/// the kernels refuse environment lights), where it gives no sample.
+HIKARI_HD inline IncidentSample sample_incident(const EnvironmentLight& light, Vec3, Vec3 n, Vec2 u,
+                                                float choice) {
     IncidentSample s;
+#if !HIKARI_DEVICE_PASS
     s.distance = std::numeric_limits<float>::infinity();
     if (light.map) {
         const EnvironmentDirection d = light.map->sample(u);
@@ -74,13 +76,20 @@ inline IncidentSample sample_incident(const EnvironmentLight& light, Vec3, Vec3 
         s.radiance = light.radiance;
         s.pdf = choice * pdf;
     }
+#endif
     return s;
 }
 
-/// The density with which sample_incident draws `dir` at a point with unit normal `n`.
-inline float incident_pdf(const EnvironmentLight& light, Vec3 n, Vec3 dir, float, float choice) {
+/// The density with which sample_incident draws `dir` at a point with unit normal `n` (0 on
+/// the GPU, as sample_incident).
+HIKARI_HD inline float incident_pdf(const EnvironmentLight& light, Vec3 n, Vec3 dir, float,
+                                    float choice) {
+#if HIKARI_DEVICE_PASS
+    return 0.0f;
+#else
     const float pdf = light.map ? light.map->pdf(dir) : cosine_hemisphere_pdf(dot(n, dir));
     return choice * pdf;
+#endif
 }
 
 /// The mean luminance of the light's radiance over all directions.
@@ -113,8 +122,8 @@ constexpr bool is_delta(const EnvironmentLight&) { return false; }
 constexpr std::string_view light_kind_name(const EnvironmentLight&) { return "environment"; }
 
 /// Escaping rays see it (the methods' backdrop), not a face.
-inline float face_hit(const EnvironmentLight&, Vec3, Vec3, float t_max) { return t_max; }
-inline Vec3 face_radiance(const EnvironmentLight&) { return Vec3(0.0f); }
+HIKARI_HD inline float face_hit(const EnvironmentLight&, Vec3, Vec3, float t_max) { return t_max; }
+HIKARI_HD inline Vec3 face_radiance(const EnvironmentLight&) { return Vec3(0.0f); }
 constexpr bool has_face(const EnvironmentLight&) { return false; }
 
 }  // namespace hikari
