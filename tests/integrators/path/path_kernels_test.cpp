@@ -113,10 +113,18 @@ TEST(PathKernels, FiltersClampAndWavesMatchThePathTracer) {
     path.filter = PixelFilterKind::blackman_harris;
     path.clamp = 2.0f;
     expect_path_kernels_match(path_scene_file("bench/cornell.json", 24, 24), path);
-    // More samples than one wave holds (2^20 paths): waves of 4 samples, then the 2 left over.
-    path = camera_caustics(6, 2);
+    // More samples than one wave holds (2^20 paths): a wave of 16 samples of 256² pixels, then
+    // the one left over, summed on in sample order.
+    path = camera_caustics(17, 0);
     path.filter = PixelFilterKind::gaussian;
-    expect_path_kernels_match(path_scene_file("bench/cornell.json", 512, 512), path);
+    expect_path_kernels_match(path_scene_file("bench/cornell.json", 256, 256), path);
+}
+
+TEST(PathKernels, ConstantEnvironmentLightMatchesThePathTracer) {
+    // Light from the whole sky: sampled by the cosine, met by escaping rays, weighed by MIS.
+    Scene scene = path_scene_file("teapot.json", 48, 36);
+    scene.lights.push_back(EnvironmentLight{.radiance = {0.3f, 0.4f, 0.6f}});
+    expect_path_kernels_match(scene, camera_caustics(4));
 }
 
 TEST(PathKernels, CheckerTexturesMatchThePathTracer) {
@@ -162,8 +170,10 @@ TEST(PathKernels, ScenesAndSettingsTheKernelsLackAreRefusedByName) {
     EXPECT_EQ(path_kernel_refusal(cornell, {}), "");
     Scene sky = cornell;
     sky.lights.push_back(EnvironmentLight{});
-    EXPECT_NE(path_kernel_refusal(sky, {}).find("environment lights"), std::string::npos);
-    EXPECT_THROW(render_path_kernels(sky, Film(sky.camera), {}, {}, ExecutionDevice::cpu),
+    EXPECT_EQ(path_kernel_refusal(sky, {}), "");
+    const Scene mapped = path_scene_file("environment.json", 8, 8);
+    EXPECT_NE(path_kernel_refusal(mapped, {}).find("environment maps"), std::string::npos);
+    EXPECT_THROW(render_path_kernels(mapped, Film(mapped.camera), {}, {}, ExecutionDevice::cpu),
                  InputError);
     Scene textured = cornell;
     textured.materials[0].texture = ImageTexture{};

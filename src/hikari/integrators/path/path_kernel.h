@@ -68,6 +68,7 @@ struct PathWave {
     const float* scale = nullptr;  ///< energy_scale of each material
     const Sky* sky = nullptr;
     Vec3 background{0.0f};
+    const EnvironmentLight* environment = nullptr;  ///< the scene's, constant (maps are refused)
     bool has_area_lights = false;
 
     CameraFrame frame;
@@ -152,11 +153,7 @@ struct ShadePaths {
             }
         }
         if (!found) {
-            // No environment light in the kernels (refused): the backdrop, for camera rays and
-            // mirror chains.
-            path.radiance +=
-                path.throughput *
-                (path.specular ? wave.sky->colour(ray.direction, wave.background) : Vec3(0.0f));
+            path.radiance += path.throughput * escaped(path, ray.direction);
             return;
         }
         /* an emitter's own light */
@@ -208,6 +205,21 @@ struct ShadePaths {
         path.ray = {offset_ray_origin(hit.position, side), scattered.direction};
         ++path.bounce;
         next[atomic_increment(next_count)] = p;
+    }
+
+    /// What a ray that leaves the scene along `dir` brings back (render_path's escaped): the
+    /// environment light, weighed against light sampling after a smooth bounce, else, for
+    /// camera rays and mirror chains, the backdrop (which lights nothing).
+    HIKARI_HD Vec3 escaped(const PathState& path, Vec3 dir) const {
+        if (wave.environment) {
+            const float w = path.specular
+                                ? 1.0f
+                                : power_heuristic(path.bsdf_pdf, wave.emitters.environment_pdf(
+                                                                     dir, path.last_normal));
+            // A constant environment's radiance_from(dir): its radiance.
+            return wave.environment->radiance * w;
+        }
+        return path.specular ? wave.sky->colour(dir, wave.background) : Vec3(0.0f);
     }
 
     /// The material at `hit`, its checker texture and vertex colours applied (material_at_hit).

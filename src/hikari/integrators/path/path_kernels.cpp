@@ -56,6 +56,8 @@ PathWave make_wave(const Scene& scene, const SceneIntersector& intersector,
     w.scale = arena.hold(std::span<const float>(scale)).data;
     w.sky = arena.hold_one(scene.sky);
     w.background = scene.background;
+    if (const EnvironmentLight* environment = find_environment(scene.lights))
+        w.environment = arena.hold_one(*environment);
     w.has_area_lights = has_area_light(scene.lights);
     w.frame = make_camera_frame(scene.camera);
     w.filter_inverse_cdf = arena.hold(filter.inverse_cdf()).data;
@@ -68,10 +70,10 @@ PathWave make_wave(const Scene& scene, const SceneIntersector& intersector,
 }  // namespace
 
 std::string path_kernel_refusal(const Scene& scene, const PathSettings& path) {
-    for (const Light& light : scene.lights)
-        if (light_as<EnvironmentLight>(light))
-            return "environment lights are not in the kernels yet (point, spot, directional and "
-                   "area lights and emissive triangles are)";
+    if (const EnvironmentLight* environment = find_environment(scene.lights);
+        environment && environment->map)
+        return "environment maps are not in the kernels yet (constant environment lights, "
+               "point, spot, directional and area lights and emissive triangles are)";
     for (const Material& m : scene.materials)
         for (const std::optional<Texture>* t : {&m.texture, &m.ambient_texture})
             if (*t && std::holds_alternative<ImageTexture>(**t))

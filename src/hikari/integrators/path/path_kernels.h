@@ -15,7 +15,7 @@
 
 namespace hikari {
 
-/// What in `scene` or `path` the kernels cannot render yet (environment lights, image textures,
+/// What in `scene` or `path` the kernels cannot render yet (environment maps, image textures,
 /// --time-limit, --progressive), as the message of a refusal; "" when nothing.
 std::string path_kernel_refusal(const Scene& scene, const PathSettings& path);
 

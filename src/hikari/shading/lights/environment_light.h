@@ -55,20 +55,30 @@ inline LightSample sample_light_at(const EnvironmentLight& light, Vec3, Vec3 n, 
     return sample_environment(light, n, uv.x, uv.y);
 }
 
+/// Whether `light` has a map (false on the GPU: the map's tables are host arrays, and the
+/// kernels refuse mapped environments, so a device only ever sees a constant one).
+HIKARI_HD inline bool has_environment_map(const EnvironmentLight& light) {
+#if HIKARI_DEVICE_PASS
+    return false;
+#else
+    return light.map != nullptr;
+#endif
+}
+
 /// The path tracer's sample: a map's direction by its importance density, a constant sky's by
-/// the cosine about `n`; pdf times `choice`. Not on the GPU (the map's tables are host arrays:
-/// the kernels refuse environment lights), where it gives no sample.
+/// the cosine about `n`; pdf times `choice`.
 HIKARI_HD inline IncidentSample sample_incident(const EnvironmentLight& light, Vec3, Vec3 n, Vec2 u,
                                                 float choice) {
     IncidentSample s;
-#if !HIKARI_DEVICE_PASS
     s.distance = std::numeric_limits<float>::infinity();
-    if (light.map) {
+    if (has_environment_map(light)) {
+#if !HIKARI_DEVICE_PASS
         const EnvironmentDirection d = light.map->sample(u);
         s.to_light = d.direction;
         if (!(d.pdf > 0.0f)) return s;
         s.radiance = light.radiance * d.radiance;
         s.pdf = choice * d.pdf;
+#endif
     } else {
         s.to_light = cosine_hemisphere_direction(n, u);
         const float pdf = cosine_hemisphere_pdf(dot(n, s.to_light));
@@ -76,20 +86,21 @@ HIKARI_HD inline IncidentSample sample_incident(const EnvironmentLight& light, V
         s.radiance = light.radiance;
         s.pdf = choice * pdf;
     }
-#endif
     return s;
 }
 
-/// The density with which sample_incident draws `dir` at a point with unit normal `n` (0 on
-/// the GPU, as sample_incident).
+/// The density with which sample_incident draws `dir` at a point with unit normal `n`.
 HIKARI_HD inline float incident_pdf(const EnvironmentLight& light, Vec3 n, Vec3 dir, float,
                                     float choice) {
-#if HIKARI_DEVICE_PASS
-    return 0.0f;
-#else
-    const float pdf = light.map ? light.map->pdf(dir) : cosine_hemisphere_pdf(dot(n, dir));
-    return choice * pdf;
+    float pdf = 0.0f;
+    if (has_environment_map(light)) {
+#if !HIKARI_DEVICE_PASS
+        pdf = light.map->pdf(dir);
 #endif
+    } else {
+        pdf = cosine_hemisphere_pdf(dot(n, dir));
+    }
+    return choice * pdf;
 }
 
 /// The mean luminance of the light's radiance over all directions.
