@@ -1,9 +1,8 @@
 // The wavefront path tracer's kernels (path_kernel.h), run on the CPU through the entry point the
 // GPU uses (core/device_launch.h), against the CPU's own path tracer (render_path, its caustics
 // left to the camera paths as the kernels leave them): both take the same Sobol' samples through
-// the same estimator and sum each pixel's samples in the same order, so the images of these
-// scenes are the same to the bit, and so are the ids, depths and normals (docs/gpu.md: one
-// sample of B5's 16.7 M is the one exception found). These are the GPU's kernels, so this
+// the same estimator and sum each pixel's samples in the same order, so the images are the same
+// to the bit, and so are the ids, depths and normals. These are the GPU's kernels, so this
 // covers their code without a GPU.
 #include "hikari/integrators/path/path_kernels.h"
 
