@@ -69,9 +69,10 @@ inline constexpr float k_flat_exit_scale =
 
 /// Whether the ray (origin `o`, reciprocal direction `inv`, `negative` per axis where the
 /// direction's sign bit is set) meets child `c` of `node` within [t_min, t_max].
+/// `entry`, when set, receives where the ray enters it.
 HIKARI_HD inline bool flat_child_hit(const WideBvhNode& node, uint32_t c, const float (&o)[3],
                                      const float (&inv)[3], const int (&negative)[3], float t_min,
-                                     float t_max) {
+                                     float t_max, float* entry = nullptr) {
     for (int a = 0; a < 3; ++a) {
         const float near = node.bounds[2 * a + negative[a]][c];
         const float far = node.bounds[2 * a + 1 - negative[a]][c];
@@ -81,12 +82,16 @@ HIKARI_HD inline bool flat_child_hit(const WideBvhNode& node, uint32_t c, const 
         t_min = t_near > t_min ? t_near : t_min;
         t_max = t_far < t_max ? t_far : t_max;
     }
+    if (entry) *entry = t_min;
     return t_min <= t_max;
 }
 
 /// The nearest triangle of `bvh` along `ray` inside `range` (k_any_hit false; `range.max`
 /// shrinks to it and `hit` describes it), or whether any triangle lies there (k_any_hit true).
-/// A depth-first walk with a fixed stack (k_wide_bvh_stack_size entries, the tree's guarantee).
+/// A depth-first walk with a fixed stack (k_wide_bvh_stack_size entries, the tree's guarantee);
+/// the nearest hit visits a node's children nearest first, ties in slot order, and skips those
+/// that start beyond the nearest hit so far, as the CPU's traversal (wide_bvh_kernel.h) does:
+/// where two triangles tie, both walks then meet them in the same order.
 template <bool k_any_hit>
 HIKARI_HD bool traverse_flat_bvh(const FlatBvh& bvh, const Ray& ray, Interval& range,
                                  TriangleHit& hit) {
@@ -100,11 +105,16 @@ HIKARI_HD bool traverse_flat_bvh(const FlatBvh& bvh, const Ray& ray, Interval& r
         negative[a] = std::signbit(ray.direction[a]) ? 1 : 0;
     }
     uint32_t stack[k_wide_bvh_stack_size];
+    float entries[k_any_hit ? 1 : k_wide_bvh_stack_size];  ///< where each pushed child starts
     uint32_t top = 0;
+    entries[0] = range.min;
     stack[top++] = bvh.root;
     bool found = false;
     while (top > 0) {
-        const uint32_t ref = stack[--top];
+        --top;
+        if constexpr (!k_any_hit)
+            if (entries[top] > range.max * k_flat_exit_scale) continue;
+        const uint32_t ref = stack[top];
         if (WideBvhRef::is_leaf(ref)) {
             /* test the leaf's triangles */
             const uint32_t first = WideBvhRef::leaf_first(ref), count = WideBvhRef::leaf_count(ref);
@@ -124,11 +134,36 @@ HIKARI_HD bool traverse_flat_bvh(const FlatBvh& bvh, const Ray& ray, Interval& r
         }
         /* push the children whose boxes the ray meets before the nearest hit so far */
         const WideBvhNode& node = bvh.nodes[ref];
-        for (uint32_t c = 0; c < k_wide_bvh_width; ++c) {
-            const uint32_t child = node.child[c];
-            if (child == WideBvhRef::k_empty) continue;
-            if (flat_child_hit(node, c, o, inv, negative, range.min, range.max))
-                stack[top++] = child;
+        if constexpr (k_any_hit) {
+            for (uint32_t c = 0; c < k_wide_bvh_width; ++c) {
+                const uint32_t child = node.child[c];
+                if (child == WideBvhRef::k_empty) continue;
+                if (flat_child_hit(node, c, o, inv, negative, range.min, range.max))
+                    stack[top++] = child;
+            }
+        } else {
+            // Insertion sort by entry distance (ties keep slot order), pushed farthest first.
+            uint32_t hit_refs[k_wide_bvh_width];
+            float hit_entries[k_wide_bvh_width];
+            uint32_t n = 0;
+            for (uint32_t c = 0; c < k_wide_bvh_width; ++c) {
+                const uint32_t child = node.child[c];
+                float entry = 0.0f;
+                if (child == WideBvhRef::k_empty ||
+                    !flat_child_hit(node, c, o, inv, negative, range.min, range.max, &entry))
+                    continue;
+                uint32_t k = n++;
+                for (; k > 0 && hit_entries[k - 1] > entry; --k) {
+                    hit_refs[k] = hit_refs[k - 1];
+                    hit_entries[k] = hit_entries[k - 1];
+                }
+                hit_refs[k] = child;
+                hit_entries[k] = entry;
+            }
+            for (uint32_t k = n; k > 0; --k) {
+                entries[top] = hit_entries[k - 1];
+                stack[top++] = hit_refs[k - 1];
+            }
         }
     }
     return found;

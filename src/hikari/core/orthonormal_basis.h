@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "hikari/core/host_device.h"
 #include "hikari/core/vec.h"
 
 namespace hikari {
@@ -13,7 +14,7 @@ namespace hikari {
 struct OrthonormalBasis {
     Vec3 t, b, n;
 
-    explicit OrthonormalBasis(Vec3 normal) : n(normal) {
+    HIKARI_HD explicit OrthonormalBasis(Vec3 normal) : n(normal) {
         const float sign = std::copysign(1.0f, n.z);
         const float a = -1.0f / (sign + n.z);
         const float c = n.x * n.y * a;
@@ -21,7 +22,7 @@ struct OrthonormalBasis {
         b = {c, sign + n.y * n.y * a, -n.y};
     }
     /// Local (x, y, z) to world x·t + y·b + z·n.
-    Vec3 to_world(Vec3 local) const { return local.x * t + local.y * b + local.z * n; }
+    HIKARI_HD Vec3 to_world(Vec3 local) const { return local.x * t + local.y * b + local.z * n; }
 };
 
 }  // namespace hikari

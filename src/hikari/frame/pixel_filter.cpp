@@ -9,7 +9,7 @@ namespace hikari {
 namespace {
 
 /// Entries of the inverse-CDF table; the filter is tabulated twice as finely.
-constexpr int k_table = 1024;
+constexpr int k_table = k_filter_table;
 constexpr int k_fine = 4 * k_table;
 
 }  // namespace
@@ -62,11 +62,7 @@ float PixelFilter::weight_1d(float x) const {
 }
 
 float PixelFilter::offset_1d(float u) const {
-    if (m_inverse_cdf.empty()) return (u - 0.5f) * m_width;
-    const float scaled = std::clamp(u, 0.0f, 1.0f) * k_table;
-    const int k = std::min(static_cast<int>(scaled), k_table - 1);
-    const float t = scaled - static_cast<float>(k);
-    return m_inverse_cdf[k] + t * (m_inverse_cdf[k + 1] - m_inverse_cdf[k]);
+    return filter_offset_1d(m_inverse_cdf.empty() ? nullptr : m_inverse_cdf.data(), m_width, u);
 }
 
 }  // namespace hikari

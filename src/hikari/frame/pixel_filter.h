@@ -5,9 +5,12 @@
 // a pixel's value is the mean of its samples: pixels stay independent of each other (and of the
 // thread count), and a negative-free filter adds no noise of its own.
 
+#include <algorithm>
+#include <span>
 #include <string_view>
 #include <vector>
 
+#include "hikari/core/host_device.h"
 #include "hikari/core/vec.h"
 
 namespace hikari {
@@ -22,6 +25,20 @@ enum class PixelFilterKind {
 /// The default width of each kind, in pixels: the pixel itself for the box, 1.5 for the others
 /// (Cycles' default filter width).
 float default_filter_width(PixelFilterKind kind);
+
+/// Entries of a filter's inverse-CDF table (PixelFilter::inverse_cdf has one more).
+inline constexpr int k_filter_table = 1024;
+
+/// The one-axis offset (pixels) for the number `u` in [0, 1): through the filter's inverse CDF
+/// `inverse_cdf` (k_filter_table + 1 values), linearly interpolated, or, for the box (null), the
+/// linear map onto [−width/2, width/2]. PixelFilter's, and the GPU kernels' over their copy.
+HIKARI_HD inline float filter_offset_1d(const float* inverse_cdf, float width, float u) {
+    if (!inverse_cdf) return (u - 0.5f) * width;
+    const float scaled = std::clamp(u, 0.0f, 1.0f) * k_filter_table;
+    const int k = std::min(static_cast<int>(scaled), k_filter_table - 1);
+    const float t = scaled - static_cast<float>(k);
+    return inverse_cdf[k] + t * (inverse_cdf[k + 1] - inverse_cdf[k]);
+}
 
 /// Offsets from a pixel's centre drawn with the filter's density.
 class PixelFilter {
@@ -38,6 +55,8 @@ class PixelFilter {
     float weight_1d(float x) const;
 
     PixelFilterKind kind() const { return m_kind; }
+    /// The inverse CDF filter_offset_1d reads (empty for the box).
+    std::span<const float> inverse_cdf() const { return m_inverse_cdf; }
     float width() const { return m_width; }
 
   private:

@@ -11,6 +11,7 @@
 #include "hikari/frame/depth_cue.h"
 #include "hikari/frame/subpixel.h"
 #include "hikari/frame/tile_share.h"
+#include "hikari/integrators/path/path_kernels.h"
 #include "hikari/integrators/whitted/whitted.h"
 #include "hikari/integrators/whitted/whitted_kernels.h"
 #include "hikari/raster/depth_sort.h"
@@ -46,10 +47,10 @@ Framebuffer ray_trace(const Scene& scene, Film film, const RenderSettings& setti
 void refuse_gpu_method(const MethodSettings& own, std::string_view method) {
     if (own.device != ExecutionDevice::cuda) return;
     require_cuda_device("--device cuda");
-    throw InputError(
-        fmt::format("--device cuda: method {} has no GPU kernels yet (raytrace and zbuffer have; "
-                    "docs/gpu.md)",
-                    method));
+    throw InputError(fmt::format(
+        "--device cuda: method {} has no GPU kernels yet (raytrace, path and zbuffer have; "
+        "docs/gpu.md)",
+        method));
 }
 
 /// Anti-aliasing by supersampling (`--spp N` for the raster methods): N whole renders, each
@@ -84,12 +85,13 @@ Framebuffer supersample(Film film, const RenderSettings& settings, int spp, Rend
 /// the time is up.
 Framebuffer path_trace(const Scene& scene, Film film, const RenderSettings& settings,
                        const MethodSettings& own) {
-    refuse_gpu_method(own, "path");
     PathSettings path = own.path;
     const bool timed = path.time_limit_seconds > 0.0f;
     path.samples_per_pixel =
         own.samples_per_pixel.value_or(timed ? k_max_samples_per_pixel : path.samples_per_pixel);
     path.max_depth = own.max_depth.value_or(path.max_depth);
+    if (own.device == ExecutionDevice::cuda)
+        return render_path_kernels(scene, std::move(film), settings, path, own.device);
     return render_path(scene, std::move(film), settings, path);
 }
 

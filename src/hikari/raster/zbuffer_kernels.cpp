@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "hikari/core/error.h"
+#include "hikari/integrators/device_scene.h"
 #include "hikari/raster/clip.h"
 #include "hikari/raster/shade_visibility.h"
 #include "hikari/raster/shadow_map.h"
@@ -164,15 +165,6 @@ DrawnBuffers draw_with_kernels(const ScreenTriangle* triangles, size_t count, in
     return out;
 }
 
-/// The materials as the device reads them: the plain fields and checker textures (names, which
-/// the kernels never read, cleared so that a bytewise copy holds no host pointer worth following;
-/// image textures are refused before).
-std::vector<Material> device_materials(const Scene& scene) {
-    std::vector<Material> out = scene.materials;
-    for (Material& m : out) m.name.clear();
-    return out;
-}
-
 /// The shadow maps where the kernels read them, and the faces they point to.
 struct DeviceShadowMaps {
     std::vector<FlatShadowMap> maps;
@@ -205,19 +197,8 @@ DeviceShadowMaps hold_shadow_maps(const ShadowMaps& maps, DeviceArena& arena) {
 }  // namespace
 
 std::string zbuffer_kernel_refusal(const Scene& scene, const RasterSettings& raster) {
-    for (const Light& light : scene.lights)
-        if (!is_delta_light(light))
-            return fmt::format(
-                "{} lights are not in the kernels yet (point, spot and directional "
-                "lights are)",
-                light_kind_name(light));
-    for (const Material& m : scene.materials)
-        for (const std::optional<Texture>* t : {&m.texture, &m.ambient_texture})
-            if (*t && std::holds_alternative<ImageTexture>(**t))
-                return fmt::format(
-                    "material \"{}\": image textures are not in the kernels yet "
-                    "(checker textures are)",
-                    m.name);
+    if (std::string refusal = delta_lights_refusal(scene); !refusal.empty()) return refusal;
+    if (std::string refusal = image_texture_refusal(scene); !refusal.empty()) return refusal;
     if (!scene.lights.empty() &&
         (raster.shadows == ShadowMode::volume || raster.shadows == ShadowMode::analytic))
         return fmt::format("--shadows {} is not in the kernels yet (map, pcf, pcss and none are)",

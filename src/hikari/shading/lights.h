@@ -44,7 +44,8 @@ inline LightSample sample_light_at(const Light& light, Vec3 p, Vec3 n, Vec2 uv) 
 
 /// The path tracer's light sample at `p` (unit normal `n`) for the pair `u`, its pdf times
 /// `choice`, the probability of having chosen the light.
-inline IncidentSample sample_incident(const Light& light, Vec3 p, Vec3 n, Vec2 u, float choice) {
+HIKARI_HD inline IncidentSample sample_incident(const Light& light, Vec3 p, Vec3 n, Vec2 u,
+                                                float choice) {
     return visit_light(light,
                        [&](const auto& kind) { return sample_incident(kind, p, n, u, choice); });
 }
@@ -52,7 +53,7 @@ inline IncidentSample sample_incident(const Light& light, Vec3 p, Vec3 n, Vec2 u
 /// The density (per steradian, times `choice`) with which sample_incident at a point with unit
 /// normal `n` draws direction `dir`, meeting the light at distance `t` (multiple importance
 /// sampling); 0 for delta lights.
-inline float incident_pdf(const Light& light, Vec3 n, Vec3 dir, float t, float choice) {
+HIKARI_HD inline float incident_pdf(const Light& light, Vec3 n, Vec3 dir, float t, float choice) {
     return visit_light(light,
                        [&](const auto& kind) { return incident_pdf(kind, n, dir, t, choice); });
 }
@@ -91,24 +92,34 @@ struct LightFaceHit {
     float t = 0;
 };
 
-/// The nearest light face among `lights` (an area light's) that a ray from `origin` along unit
-/// `direction` meets strictly before `t_max` (either side of a two-sided light, else its
-/// emitting side).
-inline std::optional<LightFaceHit> nearest_light_face(std::span<const Light> lights, Vec3 origin,
-                                                      Vec3 direction, float t_max) {
-    std::optional<LightFaceHit> nearest;
-    for (size_t l = 0; l < lights.size(); ++l) {
+/// The nearest light face among the `count` lights at `lights` (an area light's) that a ray
+/// from `origin` along unit `direction` meets strictly before `t_max` (either side of a
+/// two-sided light, else its emitting side): whether there is one, and which into `nearest`.
+HIKARI_HD inline bool find_light_face(const Light* lights, size_t count, Vec3 origin,
+                                      Vec3 direction, float t_max, LightFaceHit& nearest) {
+    bool found = false;
+    for (size_t l = 0; l < count; ++l) {
         const float t = visit_light(
             lights[l], [&](const auto& kind) { return face_hit(kind, origin, direction, t_max); });
         if (t == t_max) continue;
         t_max = t;
         nearest = LightFaceHit{l, t};
+        found = true;
     }
+    return found;
+}
+
+/// The nearest light face among `lights` (find_light_face), if a ray meets one.
+inline std::optional<LightFaceHit> nearest_light_face(std::span<const Light> lights, Vec3 origin,
+                                                      Vec3 direction, float t_max) {
+    LightFaceHit nearest;
+    if (!find_light_face(lights.data(), lights.size(), origin, direction, t_max, nearest))
+        return std::nullopt;
     return nearest;
 }
 
 /// The radiance of light `light`'s face (what a ray that meets it sees).
-inline Vec3 face_radiance(const Light& light) {
+HIKARI_HD inline Vec3 face_radiance(const Light& light) {
     return visit_light(light, [](const auto& kind) { return face_radiance(kind); });
 }
 

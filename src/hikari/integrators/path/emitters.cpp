@@ -30,11 +30,11 @@ float scene_radius(const Scene& scene) {
 
 }  // namespace
 
-EmitterTable::EmitterTable(const Scene& scene) : m_scene(scene) {
+EmitterTable::EmitterTable(const Scene& scene) {
     const float radius = scene_radius(scene);
     double total = 0.0;
     std::vector<double> powers;
-    const auto add = [&](const Entry& entry, double power) -> int32_t {
+    const auto add = [&](const EmitterEntry& entry, double power) -> int32_t {
         if (!(power > 0.0) || !std::isfinite(power)) return -1;
         m_entries.push_back(entry);
         powers.push_back(power);
@@ -50,7 +50,7 @@ EmitterTable::EmitterTable(const Scene& scene) : m_scene(scene) {
         if (max_component(emission) <= 0.0f) continue;
         if (m_triangle_entry.empty()) m_triangle_entry.assign(tris.size(), -1);
         const auto& [a, b, c] = tris.indices[i];
-        Entry e;
+        EmitterEntry e;
         e.triangle = true;
         e.index = i;
         e.corner = tris.positions[a];
@@ -65,56 +65,19 @@ EmitterTable::EmitterTable(const Scene& scene) : m_scene(scene) {
     }
     m_light_entry.assign(scene.lights.size(), -1);
     for (uint32_t l = 0; l < scene.lights.size(); ++l) {
-        Entry e;
+        EmitterEntry e;
         e.index = l;
         m_light_entry[l] = add(e, light_power(scene.lights[l], radius));
-        if (light_as<EnvironmentLight>(scene.lights[l])) m_environment_light = static_cast<int>(l);
+        if (light_as<EnvironmentLight>(scene.lights[l]))
+            m_view.environment_light = static_cast<int>(l);
     }
     for (size_t i = 0; i < m_entries.size(); ++i)
         m_entries[i].choice = static_cast<float>(powers[i] / total);
-}
-
-EmitterSample EmitterTable::sample_triangle(const Entry& e, Vec3 p, Vec2 u) {
-    // Uniform over the area, the square folded by the square root (Turk 1990).
-    EmitterSample s;
-    const float su = std::sqrt(u.x);
-    const Vec3 y = e.corner + (su * (1.0f - u.y)) * e.edge1 + (su * u.y) * e.edge2;
-    const Vec3 d = y - p;
-    const float r2 = dot(d, d);
-    if (!(r2 > 0.0f)) return s;
-    s.distance = std::sqrt(r2);
-    s.to_light = d / s.distance;
-    s.pdf = emitting_surface_pdf(e.front, e.area, false, s.to_light, s.distance, e.choice);
-    if (s.pdf > 0.0f) s.radiance = e.radiance;
-    return s;
-}
-
-EmitterSample EmitterTable::sample(Vec3 p, Vec3 n, float u_choice, Vec2 u) const {
-    if (m_cdf.empty()) return {};
-    const double target = static_cast<double>(u_choice) * m_cdf.back();
-    const size_t chosen = std::min<size_t>(
-        static_cast<size_t>(std::upper_bound(m_cdf.begin(), m_cdf.end(), target) - m_cdf.begin()),
-        m_cdf.size() - 1);
-    const Entry& e = m_entries[chosen];
-    if (e.triangle) return sample_triangle(e, p, u);
-    return sample_incident(m_scene.lights[e.index], p, n, u, e.choice);
-}
-
-float EmitterTable::triangle_pdf(uint32_t triangle, Vec3 dir, float t) const {
-    if (m_triangle_entry.empty() || m_triangle_entry[triangle] < 0) return 0.0f;
-    const Entry& e = m_entries[static_cast<size_t>(m_triangle_entry[triangle])];
-    return emitting_surface_pdf(e.front, e.area, false, dir, t, e.choice);
-}
-
-float EmitterTable::light_pdf(size_t light, Vec3 n, Vec3 dir, float t) const {
-    if (m_light_entry[light] < 0) return 0.0f;
-    const float choice = m_entries[static_cast<size_t>(m_light_entry[light])].choice;
-    return incident_pdf(m_scene.lights[light], n, dir, t, choice);
-}
-
-float EmitterTable::environment_pdf(Vec3 dir, Vec3 n) const {
-    if (m_environment_light < 0) return 0.0f;
-    return light_pdf(static_cast<size_t>(m_environment_light), n, dir, 0.0f);
+    m_view.entries = FlatView<EmitterEntry>(std::span<const EmitterEntry>(m_entries));
+    m_view.cdf = FlatView<double>(std::span<const double>(m_cdf));
+    m_view.triangle_entry = FlatView<int32_t>(std::span<const int32_t>(m_triangle_entry));
+    m_view.light_entry = FlatView<int32_t>(std::span<const int32_t>(m_light_entry));
+    m_view.lights = scene.lights.data();
 }
 
 }  // namespace hikari

@@ -15,6 +15,7 @@
 #include "hikari/integrators/hit_aovs.h"
 #include "hikari/integrators/path/caustic_light_tracer.h"
 #include "hikari/integrators/path/emitters.h"
+#include "hikari/integrators/path/path_estimator.h"
 #include "hikari/shading/bsdf/scattering.h"
 #include "hikari/shading/lights.h"
 #include "hikari/shading/material_eval.h"
@@ -24,26 +25,6 @@ namespace hikari {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-/// Bounces before Russian roulette may end a path.
-constexpr int k_roulette_after = 3;
-
-/// Veach's power heuristic (β = 2) for a sample drawn with density `a` against density `b`.
-inline float power_heuristic(float a, float b) {
-    const float a2 = a * a, b2 = b * b;
-    return a2 + b2 > 0.0f ? a2 / (a2 + b2) : 0.0f;
-}
-
-/// The factor that brings a material's lobes down to conserving energy (1 where they do).
-float energy_scale(const Material& m) {
-    const float total = scattered_fraction(m.kd, m.ks, m.reflectivity, m.transparency);
-    return total > 1.0f ? 1.0f / total : 1.0f;
-}
-
-/// A pixel's seed: its index hashed, so neighbouring pixels' sequences are unrelated.
-inline uint32_t pixel_seed(size_t pixel) {
-    return hash_u32(static_cast<uint32_t>(pixel) ^ hash_u32(static_cast<uint32_t>(pixel >> 32)));
-}
 
 /// Everything a render's paths read.
 class PathIntegrator {

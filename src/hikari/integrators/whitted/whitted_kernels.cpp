@@ -11,6 +11,7 @@
 #include "hikari/bvh/scene_intersector.h"
 #include "hikari/core/error.h"
 #include "hikari/frame/subpixel.h"
+#include "hikari/integrators/device_scene.h"
 #include "hikari/integrators/hit_aovs.h"
 #include "hikari/integrators/whitted/whitted_kernel.h"
 #include "hikari/shading/lights.h"
@@ -27,46 +28,16 @@ Scene without_shadow_casters(Scene scene) {
     return scene;
 }
 
-/// The materials as the device reads them: the plain fields and checker textures (names, which
-/// the kernels never read, cleared so that a bytewise copy holds no host pointer worth following;
-/// image textures are refused before).
-std::vector<Material> device_materials(const Scene& scene) {
-    std::vector<Material> out = scene.materials;
-    for (Material& m : out) m.name.clear();
-    return out;
-}
-
 /// The kernel's views: of the scene and its BVHs on the CPU, of their copies on a GPU.
 WhittedPixelKernel make_kernel(const Scene& scene, const SceneIntersector& intersector,
                                const WhittedScene& shading, const std::vector<Material>& materials,
                                std::span<const Vec2> samples, int max_depth, DeviceArena& arena) {
-    const auto bvh = [&](const WideBvh& tree) {
-        FlatBvh flat;
-        flat.nodes = arena.hold(std::span<const WideBvhNode>(tree.nodes.data(), tree.nodes.size()));
-        flat.triangle_data = arena.hold(
-            std::span<const float>(tree.triangle_data.data(), tree.triangle_data.size()));
-        flat.triangle_ids = arena.hold(
-            std::span<const uint32_t>(tree.triangle_ids.data(), tree.triangle_ids.size()));
-        flat.root = tree.root;
-        return flat;
-    };
-    WhittedPixelKernel k{.shading = shading,
+    WhittedPixelKernel k{.scene = hold_intersector(intersector, arena),
+                         .shading = shading,
                          .frame = make_camera_frame(scene.camera),
                          .camera_cones = CameraCones(scene.camera)};
     k.textured = std::any_of(scene.materials.begin(), scene.materials.end(),
                              [](const Material& m) { return m.texture.has_value(); });
-    const FlatGeometry g = intersector.geometry();
-    k.scene.geometry.spheres = arena.hold(std::span(g.spheres.data, g.spheres.count));
-    k.scene.geometry.planes = arena.hold(std::span(g.planes.data, g.planes.count));
-    k.scene.geometry.positions = arena.hold(std::span(g.positions.data, g.positions.count));
-    k.scene.geometry.normals = arena.hold(std::span(g.normals.data, g.normals.count));
-    k.scene.geometry.indices = arena.hold(std::span(g.indices.data, g.indices.count));
-    k.scene.geometry.material = arena.hold(std::span(g.material.data, g.material.count));
-    k.scene.geometry.id = arena.hold(std::span(g.id.data, g.id.count));
-    k.scene.geometry.uvs = arena.hold(std::span(g.uvs.data, g.uvs.count));
-    k.scene.geometry.colors = arena.hold(std::span(g.colors.data, g.colors.count));
-    k.scene.triangles = bvh(intersector.bvh());
-    k.scene.shadow_triangles = bvh(intersector.shadow_bvh());
     k.shading.lighting.lights = arena.hold(std::span<const Light>(scene.lights)).data;
     k.shading.materials = arena.hold(std::span<const Material>(materials)).data;
     k.shading.sky = arena.hold_one(scene.sky);
@@ -78,19 +49,8 @@ WhittedPixelKernel make_kernel(const Scene& scene, const SceneIntersector& inter
 }  // namespace
 
 std::string whitted_kernel_refusal(const Scene& scene, const WhittedSettings& whitted) {
-    for (const Light& light : scene.lights)
-        if (!is_delta_light(light))
-            return fmt::format(
-                "{} lights are not in the kernels yet (point, spot and directional "
-                "lights are)",
-                light_kind_name(light));
-    for (const Material& m : scene.materials)
-        for (const std::optional<Texture>* t : {&m.texture, &m.ambient_texture})
-            if (*t && std::holds_alternative<ImageTexture>(**t))
-                return fmt::format(
-                    "material \"{}\": image textures are not in the kernels yet "
-                    "(checker textures are)",
-                    m.name);
+    if (std::string refusal = delta_lights_refusal(scene); !refusal.empty()) return refusal;
+    if (std::string refusal = image_texture_refusal(scene); !refusal.empty()) return refusal;
     if (whitted.analytic_area_shadows) return "--shadows analytic is not in the kernels yet";
     if (whitted.max_depth + 1 > k_whitted_kernel_stack)
         return fmt::format("--max-depth {} is past the kernels' {}", whitted.max_depth,

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "hikari/core/host_device.h"
 #include "hikari/core/vec.h"
 
 namespace hikari {
@@ -13,7 +14,7 @@ namespace hikari {
 /// The unpolarized Fresnel reflectance of a smooth boundary for light arriving at cos θ_i > 0
 /// from the side of index n_i, with `eta` = n_i / n_t; 1 under total internal reflection.
 /// Also gives cos θ_t, the transmitted direction's angle with the normal.
-inline float fresnel_dielectric(float cos_i, float eta, float& cos_t) {
+HIKARI_HD inline float fresnel_dielectric(float cos_i, float eta, float& cos_t) {
     const float sin2_t = eta * eta * std::max(0.0f, 1.0f - cos_i * cos_i);
     if (sin2_t >= 1.0f) {
         cos_t = 0.0f;
@@ -28,7 +29,7 @@ inline float fresnel_dielectric(float cos_i, float eta, float& cos_t) {
 
 /// The direction refracted from `to_eye` (unit, on the side of unit normal `n`) into the other
 /// side, given eta = n_i / n_t and cos θ_t from fresnel_dielectric.
-inline Vec3 refracted_direction(Vec3 to_eye, Vec3 n, float eta, float cos_t) {
+HIKARI_HD inline Vec3 refracted_direction(Vec3 to_eye, Vec3 n, float eta, float cos_t) {
     const float cos_i = dot(to_eye, n);
     return normalize(-eta * to_eye + (eta * cos_i - cos_t) * n);
 }

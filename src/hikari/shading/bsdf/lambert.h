@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "hikari/core/host_device.h"
 #include "hikari/core/orthonormal_basis.h"
 #include "hikari/core/vec.h"
 
@@ -14,7 +15,7 @@ namespace hikari {
 
 /// A direction about +z with density cos θ / π, for the point `u` of the unit square: a
 /// uniform point of the unit disc lifted onto the hemisphere (its z is cos θ).
-inline Vec3 cosine_hemisphere_local(Vec2 u) {
+HIKARI_HD inline Vec3 cosine_hemisphere_local(Vec2 u) {
     constexpr float k_two_pi = 2.0f * std::numbers::pi_v<float>;
     const float r = std::sqrt(u.x), phi = k_two_pi * u.y;
     const float cos_theta = std::sqrt(std::max(0.0f, 1.0f - u.x));
@@ -22,17 +23,17 @@ inline Vec3 cosine_hemisphere_local(Vec2 u) {
 }
 
 /// The same about unit `n`.
-inline Vec3 cosine_hemisphere_direction(Vec3 n, Vec2 u) {
+HIKARI_HD inline Vec3 cosine_hemisphere_direction(Vec3 n, Vec2 u) {
     return OrthonormalBasis(n).to_world(cosine_hemisphere_local(u));
 }
 
 /// The density of cosine_hemisphere_direction for a direction at cos θ from its normal.
-inline float cosine_hemisphere_pdf(float cos_theta) {
+HIKARI_HD inline float cosine_hemisphere_pdf(float cos_theta) {
     return cos_theta > 0.0f ? cos_theta * std::numbers::inv_pi_v<float> : 0.0f;
 }
 
 /// f of the Lambert lobe with albedo kd (the same for every pair of directions above the
 /// surface).
-inline Vec3 lambert_brdf(Vec3 kd) { return kd * std::numbers::inv_pi_v<float>; }
+HIKARI_HD inline Vec3 lambert_brdf(Vec3 kd) { return kd * std::numbers::inv_pi_v<float>; }
 
 }  // namespace hikari

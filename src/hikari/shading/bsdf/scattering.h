@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "hikari/core/host_device.h"
 #include "hikari/core/vec.h"
 #include "hikari/shading/bsdf/dielectric.h"
 #include "hikari/shading/bsdf/lambert.h"
@@ -42,7 +43,8 @@ struct ScatterSample {
 
 /// The maximum fraction of light a material's lobes can send on: max over channels of
 /// kd + ks, plus reflectivity and transparency (1 or less for an energy-conserving material).
-inline float scattered_fraction(Vec3 kd, Vec3 ks, float reflectivity, float transparency) {
+HIKARI_HD inline float scattered_fraction(Vec3 kd, Vec3 ks, float reflectivity,
+                                          float transparency) {
     return max_component(kd + ks) + reflectivity + transparency;
 }
 
@@ -51,7 +53,7 @@ class Scattering {
   public:
     /// The lobes of `m` (its texture applied), each weight multiplied by `scale` (1, or the
     /// factor that brings an energy-creating material down to 1).
-    Scattering(const MaterialSample<float>& m, float scale)
+    HIKARI_HD Scattering(const MaterialSample<float>& m, float scale)
         : m_kd(m.kd * scale),
           m_ks(m.ks * scale),
           m_n(m.shininess),
@@ -69,13 +71,15 @@ class Scattering {
     }
 
     /// Whether no light leaves the surface.
-    bool black() const { return m_p_diffuse + m_p_phong + m_p_mirror + m_p_glass == 0.0f; }
+    HIKARI_HD bool black() const {
+        return m_p_diffuse + m_p_phong + m_p_mirror + m_p_glass == 0.0f;
+    }
     /// Whether some lobe has a density (light sampling can then find its paths).
-    bool smooth() const { return m_p_diffuse + m_p_phong > 0.0f; }
+    HIKARI_HD bool smooth() const { return m_p_diffuse + m_p_phong > 0.0f; }
 
     /// f(ω_o, ω_i) of the smooth lobes and their combined sampling density at ω_i (pdf, per
     /// steradian). Zero where ω_i lies under the surface (by either normal).
-    Vec3 evaluate(const ScatterFrame& at, Vec3 wi, float& pdf) const {
+    HIKARI_HD Vec3 evaluate(const ScatterFrame& at, Vec3 wi, float& pdf) const {
         pdf = 0.0f;
         const float cos_i = dot(at.normal, wi);
         if (!(cos_i > 0.0f) || !(dot(at.geometric_normal, wi) > 0.0f)) return Vec3(0.0f);
@@ -95,7 +99,7 @@ class Scattering {
 
     /// A direction for the random numbers `u_lobe` (which lobe; for the dielectric also
     /// reflection or refraction) and `u` (where in it).
-    ScatterSample sample(const ScatterFrame& at, float u_lobe, Vec2 u) const {
+    HIKARI_HD ScatterSample sample(const ScatterFrame& at, float u_lobe, Vec2 u) const {
         ScatterSample s;
         if (u_lobe < m_p_diffuse) {
             s.direction = cosine_hemisphere_direction(at.normal, u);
@@ -113,10 +117,10 @@ class Scattering {
     }
 
   private:
-    static float average(Vec3 c) { return (c.x + c.y + c.z) * (1.0f / 3.0f); }
+    HIKARI_HD static float average(Vec3 c) { return (c.x + c.y + c.z) * (1.0f / 3.0f); }
 
     /// The mirror direction, carrying `weight`; none where it would leave under the surface.
-    static ScatterSample delta_reflection(const ScatterFrame& at, float weight) {
+    HIKARI_HD static ScatterSample delta_reflection(const ScatterFrame& at, float weight) {
         ScatterSample s;
         s.delta = true;
         // Renormalized: along a chain of mirrors the rounding of reflect() would compound.
@@ -128,7 +132,7 @@ class Scattering {
     /// The dielectric: reflected with probability F (Fresnel), else refracted; `u` chooses.
     /// Radiance crossing into a denser medium is compressed into a narrower cone: the refracted
     /// path carries (n_i / n_t)² (Veach 1997, §5.2).
-    ScatterSample dielectric(const ScatterFrame& at, float u) const {
+    HIKARI_HD ScatterSample dielectric(const ScatterFrame& at, float u) const {
         const float eta = at.entering ? 1.0f / m_ior : m_ior;
         const float cos_i = std::max(0.0f, dot(at.to_eye, at.normal));
         float cos_t = 0.0f;

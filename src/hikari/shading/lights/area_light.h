@@ -73,8 +73,8 @@ inline LightSample sample_light_at(const AreaLight& light, Vec3 p, Vec3, Vec2 uv
 /// area `area` and unit normal `front` (its emitting side; both when two-sided) seen along unit
 /// `dir` at distance `t`: choice · t² / (A cos θ_y); 0 from behind a one-sided face. Area
 /// lights and emissive triangles share it.
-inline float emitting_surface_pdf(Vec3 front, float area, bool two_sided, Vec3 dir, float t,
-                                  float choice) {
+HIKARI_HD inline float emitting_surface_pdf(Vec3 front, float area, bool two_sided, Vec3 dir,
+                                            float t, float choice) {
     float cos_y = -dot(front, dir);
     if (two_sided) cos_y = std::abs(cos_y);
     if (!(cos_y > 0.0f) || !(area > 0.0f)) return 0.0f;
@@ -82,7 +82,7 @@ inline float emitting_surface_pdf(Vec3 front, float area, bool two_sided, Vec3 d
 }
 
 /// The light's unit emitting normal (zero for a degenerate light) and its area.
-inline std::pair<Vec3, float> area_light_frame(const AreaLight& light) {
+HIKARI_HD inline std::pair<Vec3, float> area_light_frame(const AreaLight& light) {
     const Vec3 n = light.area_normal();
     const float len = length(n);
     return {len > 0.0f ? n / len : Vec3(0.0f), len};
@@ -90,7 +90,8 @@ inline std::pair<Vec3, float> area_light_frame(const AreaLight& light) {
 
 /// The path tracer's sample: a point uniform over the area for the pair `u`, its density per
 /// solid angle; radiance 0 where the point sees the back of a one-sided light.
-inline IncidentSample sample_incident(const AreaLight& light, Vec3 p, Vec3, Vec2 u, float choice) {
+HIKARI_HD inline IncidentSample sample_incident(const AreaLight& light, Vec3 p, Vec3, Vec2 u,
+                                                float choice) {
     IncidentSample s;
     const Vec3 y = light.corner + u.x * light.edge1 + u.y * light.edge2;
     const Vec3 d = y - p;
@@ -105,7 +106,7 @@ inline IncidentSample sample_incident(const AreaLight& light, Vec3 p, Vec3, Vec2
 }
 
 /// The density with which sample_incident draws `dir`, met on the light at distance `t`.
-inline float incident_pdf(const AreaLight& light, Vec3, Vec3 dir, float t, float choice) {
+HIKARI_HD inline float incident_pdf(const AreaLight& light, Vec3, Vec3 dir, float t, float choice) {
     const auto [front, area] = area_light_frame(light);
     return emitting_surface_pdf(front, area, light.two_sided, dir, t, choice);
 }

@@ -27,12 +27,14 @@ inline LightSample sample_light_at(const DirectionalLight& light, Vec3 p, Vec3, 
     return sample_light<float>(light, p);
 }
 
-inline IncidentSample sample_incident(const DirectionalLight& light, Vec3 p, Vec3, Vec2,
-                                      float choice) {
+HIKARI_HD inline IncidentSample sample_incident(const DirectionalLight& light, Vec3 p, Vec3, Vec2,
+                                                float choice) {
     return delta_incident(sample_light<float>(light, p), choice);
 }
 
-inline float incident_pdf(const DirectionalLight&, Vec3, Vec3, float, float) { return 0.0f; }
+HIKARI_HD inline float incident_pdf(const DirectionalLight&, Vec3, Vec3, float, float) {
+    return 0.0f;
+}
 
 /// What crosses the disc of the scene's bounding sphere (radius `scene_radius`): π r² E.
 inline double light_power(const DirectionalLight& light, float scene_radius) {
@@ -50,8 +52,8 @@ inline LightShadowView shadow_view(const DirectionalLight& light) {
 constexpr bool is_delta(const DirectionalLight&) { return true; }
 constexpr std::string_view light_kind_name(const DirectionalLight&) { return "directional"; }
 
-inline float face_hit(const DirectionalLight&, Vec3, Vec3, float t_max) { return t_max; }
-inline Vec3 face_radiance(const DirectionalLight&) { return Vec3(0.0f); }
+HIKARI_HD inline float face_hit(const DirectionalLight&, Vec3, Vec3, float t_max) { return t_max; }
+HIKARI_HD inline Vec3 face_radiance(const DirectionalLight&) { return Vec3(0.0f); }
 constexpr bool has_face(const DirectionalLight&) { return false; }
 
 }  // namespace hikari

@@ -55,18 +55,30 @@ inline LightSample sample_light_at(const EnvironmentLight& light, Vec3, Vec3 n, 
     return sample_environment(light, n, uv.x, uv.y);
 }
 
+/// Whether `light` has a map (false on the GPU: the map's tables are host arrays, and the
+/// kernels refuse mapped environments, so a device only ever sees a constant one).
+HIKARI_HD inline bool has_environment_map(const EnvironmentLight& light) {
+#if HIKARI_DEVICE_PASS
+    return false;
+#else
+    return light.map != nullptr;
+#endif
+}
+
 /// The path tracer's sample: a map's direction by its importance density, a constant sky's by
 /// the cosine about `n`; pdf times `choice`.
-inline IncidentSample sample_incident(const EnvironmentLight& light, Vec3, Vec3 n, Vec2 u,
-                                      float choice) {
+HIKARI_HD inline IncidentSample sample_incident(const EnvironmentLight& light, Vec3, Vec3 n, Vec2 u,
+                                                float choice) {
     IncidentSample s;
     s.distance = std::numeric_limits<float>::infinity();
-    if (light.map) {
+    if (has_environment_map(light)) {
+#if !HIKARI_DEVICE_PASS
         const EnvironmentDirection d = light.map->sample(u);
         s.to_light = d.direction;
         if (!(d.pdf > 0.0f)) return s;
         s.radiance = light.radiance * d.radiance;
         s.pdf = choice * d.pdf;
+#endif
     } else {
         s.to_light = cosine_hemisphere_direction(n, u);
         const float pdf = cosine_hemisphere_pdf(dot(n, s.to_light));
@@ -78,8 +90,16 @@ inline IncidentSample sample_incident(const EnvironmentLight& light, Vec3, Vec3 
 }
 
 /// The density with which sample_incident draws `dir` at a point with unit normal `n`.
-inline float incident_pdf(const EnvironmentLight& light, Vec3 n, Vec3 dir, float, float choice) {
-    const float pdf = light.map ? light.map->pdf(dir) : cosine_hemisphere_pdf(dot(n, dir));
+HIKARI_HD inline float incident_pdf(const EnvironmentLight& light, Vec3 n, Vec3 dir, float,
+                                    float choice) {
+    float pdf = 0.0f;
+    if (has_environment_map(light)) {
+#if !HIKARI_DEVICE_PASS
+        pdf = light.map->pdf(dir);
+#endif
+    } else {
+        pdf = cosine_hemisphere_pdf(dot(n, dir));
+    }
     return choice * pdf;
 }
 
@@ -113,8 +133,8 @@ constexpr bool is_delta(const EnvironmentLight&) { return false; }
 constexpr std::string_view light_kind_name(const EnvironmentLight&) { return "environment"; }
 
 /// Escaping rays see it (the methods' backdrop), not a face.
-inline float face_hit(const EnvironmentLight&, Vec3, Vec3, float t_max) { return t_max; }
-inline Vec3 face_radiance(const EnvironmentLight&) { return Vec3(0.0f); }
+HIKARI_HD inline float face_hit(const EnvironmentLight&, Vec3, Vec3, float t_max) { return t_max; }
+HIKARI_HD inline Vec3 face_radiance(const EnvironmentLight&) { return Vec3(0.0f); }
 constexpr bool has_face(const EnvironmentLight&) { return false; }
 
 }  // namespace hikari

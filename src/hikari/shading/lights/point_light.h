@@ -31,12 +31,13 @@ inline LightSample sample_light_at(const PointLight& light, Vec3 p, Vec3, Vec2) 
 }
 
 /// The path tracer's sample: the light itself, chosen with probability `choice`.
-inline IncidentSample sample_incident(const PointLight& light, Vec3 p, Vec3, Vec2, float choice) {
+HIKARI_HD inline IncidentSample sample_incident(const PointLight& light, Vec3 p, Vec3, Vec2,
+                                                float choice) {
     return delta_incident(sample_light<float>(light, p), choice);
 }
 
 /// No direction drawn by a BSDF meets a point.
-inline float incident_pdf(const PointLight&, Vec3, Vec3, float, float) { return 0.0f; }
+HIKARI_HD inline float incident_pdf(const PointLight&, Vec3, Vec3, float, float) { return 0.0f; }
 
 /// Φ = 4π·I (luminance), what it sends in all directions.
 inline double light_power(const PointLight& light, float) {
@@ -54,8 +55,8 @@ constexpr bool is_delta(const PointLight&) { return true; }
 constexpr std::string_view light_kind_name(const PointLight&) { return "point"; }
 
 /// No face: rays never meet a point light.
-inline float face_hit(const PointLight&, Vec3, Vec3, float t_max) { return t_max; }
-inline Vec3 face_radiance(const PointLight&) { return Vec3(0.0f); }
+HIKARI_HD inline float face_hit(const PointLight&, Vec3, Vec3, float t_max) { return t_max; }
+HIKARI_HD inline Vec3 face_radiance(const PointLight&) { return Vec3(0.0f); }
 constexpr bool has_face(const PointLight&) { return false; }
 
 }  // namespace hikari

@@ -52,11 +52,12 @@ inline LightSample sample_light_at(const SpotLight& light, Vec3 p, Vec3, Vec2) {
     return sample_light<float>(light, p);
 }
 
-inline IncidentSample sample_incident(const SpotLight& light, Vec3 p, Vec3, Vec2, float choice) {
+HIKARI_HD inline IncidentSample sample_incident(const SpotLight& light, Vec3 p, Vec3, Vec2,
+                                                float choice) {
     return delta_incident(sample_light<float>(light, p), choice);
 }
 
-inline float incident_pdf(const SpotLight&, Vec3, Vec3, float, float) { return 0.0f; }
+HIKARI_HD inline float incident_pdf(const SpotLight&, Vec3, Vec3, float, float) { return 0.0f; }
 
 /// Φ = I ∫ s(cos θ) dω = 2π·I·(1 − (cos θi + cos θo) / 2): the full cone to θi, and half the
 /// band between (the smoothstep is symmetric about its middle, so it averages 1/2 in c).
@@ -80,8 +81,8 @@ inline LightShadowView shadow_view(const SpotLight& light) {
 constexpr bool is_delta(const SpotLight&) { return true; }
 constexpr std::string_view light_kind_name(const SpotLight&) { return "spot"; }
 
-inline float face_hit(const SpotLight&, Vec3, Vec3, float t_max) { return t_max; }
-inline Vec3 face_radiance(const SpotLight&) { return Vec3(0.0f); }
+HIKARI_HD inline float face_hit(const SpotLight&, Vec3, Vec3, float t_max) { return t_max; }
+HIKARI_HD inline Vec3 face_radiance(const SpotLight&) { return Vec3(0.0f); }
 constexpr bool has_face(const SpotLight&) { return false; }
 
 }  // namespace hikari
