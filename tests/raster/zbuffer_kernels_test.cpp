@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "../io/scene_test_util.h"
+#include "../support/kernel_comparison.h"
 #include "hikari/core/error.h"
 #include "hikari/io/scene/scene_json.h"
 #include "hikari/raster/vertex_pipeline.h"
@@ -28,10 +29,7 @@ using testing::parse;
 /// A scene file of scenes/, at `width` × `height`; its spheres as polygons of `segments` when
 /// that is set (else drawn exactly).
 Scene scene_file(const std::string& name, int width, int height, uint32_t segments = 0) {
-    std::vector<std::string> warnings;
-    Scene scene = load_scene_file(std::string(HIKARI_SOURCE_DIR) + "/scenes/" + name, warnings);
-    scene.camera.width = width;
-    scene.camera.height = height;
+    Scene scene = testing::scene_file_at(name, width, height);
     for (Sphere& s : scene.spheres) s.segments = segments;
     return scene;
 }
@@ -65,35 +63,6 @@ Scene checker_and_vertex_colours(int width, int height) {
     return scene;
 }
 
-/// Pixels whose colour differs from the reference by more than `tolerance` in some channel
-/// (relative to max(1, |reference|)), and pixels whose id, depth or normal differ.
-struct Differences {
-    size_t colour = 0, id = 0, depth = 0, normal = 0;
-    float largest = 0;  ///< the largest colour difference
-};
-
-Differences compare(const Framebuffer& kernels, const Framebuffer& reference, float tolerance) {
-    Differences d;
-    const auto& a = kernels.film.linear().pixels;
-    const auto& b = reference.film.linear().pixels;
-    EXPECT_EQ(a.size(), b.size());
-    for (size_t i = 0; i < a.size() && i < b.size(); ++i) {
-        float worst = 0.0f;
-        for (int c = 0; c < 3; ++c)
-            worst =
-                std::max(worst, std::abs(a[i][c] - b[i][c]) / std::max(1.0f, std::abs(b[i][c])));
-        d.largest = std::max(d.largest, worst);
-        d.colour += worst > tolerance ? 1 : 0;
-        if (!reference.id.empty()) {
-            d.id += kernels.id[i] != reference.id[i] ? 1 : 0;
-            const float da = kernels.depth[i], db = reference.depth[i];
-            d.depth += (da != db && !(std::isinf(da) && std::isinf(db))) ? 1 : 0;
-            d.normal += kernels.normal[i] != reference.normal[i] ? 1 : 0;
-        }
-    }
-    return d;
-}
-
 /// The kernels on the CPU and render_zbuffer agree on every pixel of `scene`: colours within
 /// 1e-5, ids, depths and normals exactly.
 void expect_kernels_match(const Scene& scene, ShadowMode shadows,
@@ -105,7 +74,7 @@ void expect_kernels_match(const Scene& scene, ShadowMode shadows,
     const Framebuffer reference = render_zbuffer(scene, Film(scene.camera), {}, raster);
     const Framebuffer kernels =
         render_zbuffer_kernels(scene, Film(scene.camera), {}, raster, ExecutionDevice::cpu);
-    const Differences d = compare(kernels, reference, 1e-5f);
+    const testing::KernelDifferences d = testing::compare_kernel_render(kernels, reference, 1e-5f);
     EXPECT_EQ(d.colour, 0u) << "largest difference " << d.largest;
     EXPECT_EQ(d.id, 0u);
     EXPECT_EQ(d.depth, 0u);
@@ -279,23 +248,16 @@ TEST(ZBufferKernels, CudaGridMatchesTheCpuRun) {
             render_zbuffer_kernels(scene, Film(scene.camera), {}, raster, ExecutionDevice::cpu);
         const Framebuffer gpu =
             render_zbuffer_kernels(scene, Film(scene.camera), {}, raster, ExecutionDevice::cuda);
-        const Differences d = compare(gpu, cpu, 1e-3f);
+        const testing::KernelDifferences d = testing::compare_kernel_render(gpu, cpu, 1e-3f);
         EXPECT_EQ(d.colour, 0u) << "largest difference " << d.largest;
         EXPECT_EQ(d.id, 0u);
     }
 }
 
 TEST(ZBufferKernels, CudaWithoutADeviceSaysSoInOneLine) {
-    if (find_cuda_devices().problem.empty()) GTEST_SKIP() << "a CUDA device is present";
     const Scene scene = scene_file("bunny.json", 8, 8);
-    try {
-        render_zbuffer_kernels(scene, Film(scene.camera), {}, {}, ExecutionDevice::cuda);
-        FAIL() << "rendered on a CUDA device that is not there";
-    } catch (const InputError& e) {
-        const std::string message = e.what();
-        EXPECT_NE(message.find("no CUDA device"), std::string::npos) << message;
-        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    }
+    testing::expect_no_device_in_one_line(
+        [&] { render_zbuffer_kernels(scene, Film(scene.camera), {}, {}, ExecutionDevice::cuda); });
 }
 
 }  // namespace

@@ -12,20 +12,12 @@
 #include <cmath>
 #include <string>
 
+#include "../../support/kernel_comparison.h"
 #include "hikari/core/error.h"
 #include "hikari/io/scene/scene_json.h"
 
 namespace hikari {
 namespace {
-
-/// A scene file of scenes/, at `width` × `height`.
-Scene path_scene_file(const std::string& name, int width, int height) {
-    std::vector<std::string> warnings;
-    Scene scene = load_scene_file(std::string(HIKARI_SOURCE_DIR) + "/scenes/" + name, warnings);
-    scene.camera.width = width;
-    scene.camera.height = height;
-    return scene;
-}
 
 /// `samples` per pixel, `depth` bounces, caustics from the camera paths (the kernels' way).
 PathSettings camera_caustics(int samples, int depth = 8) {
@@ -36,35 +28,6 @@ PathSettings camera_caustics(int samples, int depth = 8) {
     return path;
 }
 
-/// Pixels whose colour differs from the reference at all, the largest difference (relative to
-/// max(1, |reference|)), and pixels whose id, depth or normal differ.
-struct PathDifferences {
-    size_t colour = 0, id = 0, depth = 0, normal = 0;
-    float largest = 0;
-};
-
-PathDifferences compare_paths(const Framebuffer& kernels, const Framebuffer& reference) {
-    PathDifferences d;
-    const auto& a = kernels.film.linear().pixels;
-    const auto& b = reference.film.linear().pixels;
-    EXPECT_EQ(a.size(), b.size());
-    for (size_t i = 0; i < a.size() && i < b.size(); ++i) {
-        float worst = 0.0f;
-        for (int c = 0; c < 3; ++c)
-            worst =
-                std::max(worst, std::abs(a[i][c] - b[i][c]) / std::max(1.0f, std::abs(b[i][c])));
-        d.largest = std::max(d.largest, worst);
-        d.colour += a[i] != b[i] ? 1 : 0;
-        if (!reference.id.empty()) {
-            d.id += kernels.id[i] != reference.id[i] ? 1 : 0;
-            const float da = kernels.depth[i], db = reference.depth[i];
-            d.depth += (da != db && !(std::isinf(da) && std::isinf(db))) ? 1 : 0;
-            d.normal += kernels.normal[i] != reference.normal[i] ? 1 : 0;
-        }
-    }
-    return d;
-}
-
 /// The kernels on the CPU and render_path give `scene` the same pixels, ids, depths and normals.
 void expect_path_kernels_match(const Scene& scene, const PathSettings& path) {
     RenderSettings settings;
@@ -72,7 +35,7 @@ void expect_path_kernels_match(const Scene& scene, const PathSettings& path) {
     const Framebuffer reference = render_path(scene, Film(scene.camera), settings, path);
     const Framebuffer kernels =
         render_path_kernels(scene, Film(scene.camera), settings, path, ExecutionDevice::cpu);
-    const PathDifferences d = compare_paths(kernels, reference);
+    const testing::KernelDifferences d = testing::compare_kernel_render(kernels, reference, 0.0f);
     EXPECT_EQ(d.colour, 0u) << "largest difference " << d.largest;
     EXPECT_EQ(d.id, 0u);
     EXPECT_EQ(d.depth, 0u);
@@ -86,56 +49,60 @@ void expect_path_kernels_match(const Scene& scene, const PathSettings& path) {
 TEST(PathKernels, CornellBoxMatchesThePathTracer) {
     // B5's scene: emissive triangles, light sampling and BSDF sampling weighed by MIS, Russian
     // roulette after three bounces.
-    expect_path_kernels_match(path_scene_file("bench/cornell.json", 40, 40), camera_caustics(8));
+    expect_path_kernels_match(testing::scene_file_at("bench/cornell.json", 40, 40),
+                              camera_caustics(8));
 }
 
 TEST(PathKernels, GlassAndMirrorSpheresMatchThePathTracer) {
     // Delta lobes: caustics through the camera paths, emitters met after mirror chains.
-    expect_path_kernels_match(path_scene_file("cornell-glass.json", 32, 32),
+    expect_path_kernels_match(testing::scene_file_at("cornell-glass.json", 32, 32),
                               camera_caustics(8, 12));
 }
 
 TEST(PathKernels, PointAndDirectionalLightsOnAMeshMatchThePathTracer) {
     // The teapot through the wide BVH, a point and a directional light, the plane and the sky.
-    expect_path_kernels_match(path_scene_file("teapot.json", 48, 36), camera_caustics(4));
-    expect_path_kernels_match(path_scene_file("shadows.json", 40, 30), camera_caustics(4));
+    expect_path_kernels_match(testing::scene_file_at("teapot.json", 48, 36), camera_caustics(4));
+    expect_path_kernels_match(testing::scene_file_at("shadows.json", 40, 30), camera_caustics(4));
 }
 
 TEST(PathKernels, SpotAndAreaLightsMatchThePathTracer) {
-    expect_path_kernels_match(path_scene_file("light-spot.json", 40, 30), camera_caustics(4));
+    expect_path_kernels_match(testing::scene_file_at("light-spot.json", 40, 30),
+                              camera_caustics(4));
     // The parallelogram light: its face met by rays, sampled by area, weighed by MIS.
-    expect_path_kernels_match(path_scene_file("area-light.json", 40, 30), camera_caustics(4));
-    expect_path_kernels_match(path_scene_file("soft-shadow.json", 40, 30), camera_caustics(4));
+    expect_path_kernels_match(testing::scene_file_at("area-light.json", 40, 30),
+                              camera_caustics(4));
+    expect_path_kernels_match(testing::scene_file_at("soft-shadow.json", 40, 30),
+                              camera_caustics(4));
 }
 
 TEST(PathKernels, FiltersClampAndWavesMatchThePathTracer) {
     PathSettings path = camera_caustics(3);
     path.filter = PixelFilterKind::blackman_harris;
     path.clamp = 2.0f;
-    expect_path_kernels_match(path_scene_file("bench/cornell.json", 24, 24), path);
+    expect_path_kernels_match(testing::scene_file_at("bench/cornell.json", 24, 24), path);
     // More samples than one wave holds (2^20 paths): a wave of 16 samples of 256² pixels, then
     // the one left over, summed on in sample order.
     path = camera_caustics(17, 0);
     path.filter = PixelFilterKind::gaussian;
-    expect_path_kernels_match(path_scene_file("bench/cornell.json", 256, 256), path);
+    expect_path_kernels_match(testing::scene_file_at("bench/cornell.json", 256, 256), path);
 }
 
 TEST(PathKernels, ConstantEnvironmentLightMatchesThePathTracer) {
     // Light from the whole sky: sampled by the cosine, met by escaping rays, weighed by MIS.
-    Scene scene = path_scene_file("teapot.json", 48, 36);
+    Scene scene = testing::scene_file_at("teapot.json", 48, 36);
     scene.lights.push_back(EnvironmentLight{.radiance = {0.3f, 0.4f, 0.6f}});
     expect_path_kernels_match(scene, camera_caustics(4));
 }
 
 TEST(PathKernels, CheckerTexturesMatchThePathTracer) {
-    Scene scene = path_scene_file("cornell-glass.json", 32, 32);
+    Scene scene = testing::scene_file_at("cornell-glass.json", 32, 32);
     scene.materials[0].texture = CheckerTexture{
         .size = 100.0f, .color_a = {0.1f, 0.1f, 0.1f}, .color_b = {0.9f, 0.9f, 0.9f}};
     expect_path_kernels_match(scene, camera_caustics(4));
 }
 
 TEST(PathKernels, SameImageForAnyThreadCount) {
-    const Scene scene = path_scene_file("cornell-glass.json", 32, 32);
+    const Scene scene = testing::scene_file_at("cornell-glass.json", 32, 32);
     const PathSettings path = camera_caustics(4);
     Framebuffer one, two;
     {
@@ -153,7 +120,7 @@ TEST(PathKernels, SameImageForAnyThreadCount) {
 }
 
 TEST(PathKernels, StatsCountTheRaysAndPaths) {
-    const Scene scene = path_scene_file("bench/cornell.json", 16, 16);
+    const Scene scene = testing::scene_file_at("bench/cornell.json", 16, 16);
     RenderStats kernels_stats, reference_stats;
     RenderSettings settings;
     settings.stats = &kernels_stats;
@@ -166,12 +133,12 @@ TEST(PathKernels, StatsCountTheRaysAndPaths) {
 }
 
 TEST(PathKernels, ScenesAndSettingsTheKernelsLackAreRefusedByName) {
-    const Scene cornell = path_scene_file("bench/cornell.json", 8, 8);
+    const Scene cornell = testing::scene_file_at("bench/cornell.json", 8, 8);
     EXPECT_EQ(path_kernel_refusal(cornell, {}), "");
     Scene sky = cornell;
     sky.lights.push_back(EnvironmentLight{});
     EXPECT_EQ(path_kernel_refusal(sky, {}), "");
-    const Scene mapped = path_scene_file("environment.json", 8, 8);
+    const Scene mapped = testing::scene_file_at("environment.json", 8, 8);
     EXPECT_NE(path_kernel_refusal(mapped, {}).find("environment maps"), std::string::npos);
     EXPECT_THROW(render_path_kernels(mapped, Film(mapped.camera), {}, {}, ExecutionDevice::cpu),
                  InputError);
@@ -192,9 +159,9 @@ TEST(PathKernels, ScenesAndSettingsTheKernelsLackAreRefusedByName) {
 // onto other branches: the means agree within their noise, most pixels within 1e-3.
 TEST(PathKernels, CudaGridMatchesTheCpuRun) {
     if (!find_cuda_devices().problem.empty()) GTEST_SKIP() << find_cuda_devices().problem;
-    for (const Scene& scene :
-         {path_scene_file("bench/cornell.json", 64, 64), path_scene_file("teapot.json", 64, 48),
-          path_scene_file("area-light.json", 64, 48)}) {
+    for (const Scene& scene : {testing::scene_file_at("bench/cornell.json", 64, 64),
+                               testing::scene_file_at("teapot.json", 64, 48),
+                               testing::scene_file_at("area-light.json", 64, 48)}) {
         RenderSettings settings;
         settings.aov_buffers = true;
         const PathSettings path = camera_caustics(16);
@@ -202,7 +169,7 @@ TEST(PathKernels, CudaGridMatchesTheCpuRun) {
             render_path_kernels(scene, Film(scene.camera), settings, path, ExecutionDevice::cpu);
         const Framebuffer gpu =
             render_path_kernels(scene, Film(scene.camera), settings, path, ExecutionDevice::cuda);
-        const PathDifferences d = compare_paths(gpu, cpu);
+        const testing::KernelDifferences d = testing::compare_kernel_render(gpu, cpu, 0.0f);
         EXPECT_EQ(d.id, 0u);
         double cpu_mean = 0.0, gpu_mean = 0.0;
         size_t close = 0;
@@ -223,16 +190,9 @@ TEST(PathKernels, CudaGridMatchesTheCpuRun) {
 }
 
 TEST(PathKernels, CudaWithoutADeviceSaysSoInOneLine) {
-    if (find_cuda_devices().problem.empty()) GTEST_SKIP() << "a CUDA device is present";
-    const Scene scene = path_scene_file("bench/cornell.json", 8, 8);
-    try {
-        render_path_kernels(scene, Film(scene.camera), {}, {}, ExecutionDevice::cuda);
-        FAIL() << "rendered on a CUDA device that is not there";
-    } catch (const InputError& e) {
-        const std::string message = e.what();
-        EXPECT_NE(message.find("no CUDA device"), std::string::npos) << message;
-        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    }
+    const Scene scene = testing::scene_file_at("bench/cornell.json", 8, 8);
+    testing::expect_no_device_in_one_line(
+        [&] { render_path_kernels(scene, Film(scene.camera), {}, {}, ExecutionDevice::cuda); });
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "../../io/scene_test_util.h"
+#include "../../support/kernel_comparison.h"
 #include "hikari/core/error.h"
 #include "hikari/io/scene/scene_json.h"
 
@@ -49,44 +50,6 @@ Scene glass_and_mirror(int width, int height, bool checker = false) {
       ]})");
 }
 
-/// A scene file of scenes/, at `width` × `height`.
-Scene scene_file(const std::string& name, int width, int height) {
-    std::vector<std::string> warnings;
-    Scene scene = load_scene_file(std::string(HIKARI_SOURCE_DIR) + "/scenes/" + name, warnings);
-    scene.camera.width = width;
-    scene.camera.height = height;
-    return scene;
-}
-
-/// Pixels whose colour differs from the reference by more than `tolerance` in some channel
-/// (relative to max(1, |reference|)), and pixels whose id, depth or normal differ.
-struct Differences {
-    size_t colour = 0, id = 0, depth = 0, normal = 0;
-    float largest = 0;  ///< the largest colour difference
-};
-
-Differences compare(const Framebuffer& kernels, const Framebuffer& reference, float tolerance) {
-    Differences d;
-    const auto& a = kernels.film.linear().pixels;
-    const auto& b = reference.film.linear().pixels;
-    EXPECT_EQ(a.size(), b.size());
-    for (size_t i = 0; i < a.size() && i < b.size(); ++i) {
-        float worst = 0.0f;
-        for (int c = 0; c < 3; ++c)
-            worst =
-                std::max(worst, std::abs(a[i][c] - b[i][c]) / std::max(1.0f, std::abs(b[i][c])));
-        d.largest = std::max(d.largest, worst);
-        d.colour += worst > tolerance ? 1 : 0;
-        if (!reference.id.empty()) {
-            d.id += kernels.id[i] != reference.id[i] ? 1 : 0;
-            const float da = kernels.depth[i], db = reference.depth[i];
-            d.depth += (da != db && !(std::isinf(da) && std::isinf(db))) ? 1 : 0;
-            d.normal += kernels.normal[i] != reference.normal[i] ? 1 : 0;
-        }
-    }
-    return d;
-}
-
 /// The kernels on the CPU and render_whitted agree on every pixel of `scene`: colours within
 /// `tolerance` (1e-5: the sums' order), ids, depths and normals exactly.
 void expect_kernels_match(const Scene& scene, const WhittedSettings& whitted = {},
@@ -94,7 +57,8 @@ void expect_kernels_match(const Scene& scene, const WhittedSettings& whitted = {
     const Framebuffer reference = render_whitted(scene, Film(scene.camera), {}, whitted);
     const Framebuffer kernels =
         render_whitted_kernels(scene, Film(scene.camera), {}, whitted, ExecutionDevice::cpu);
-    const Differences d = compare(kernels, reference, tolerance);
+    const testing::KernelDifferences d =
+        testing::compare_kernel_render(kernels, reference, tolerance);
     EXPECT_EQ(d.colour, 0u) << "largest difference " << d.largest;
     EXPECT_EQ(d.id, 0u);
     EXPECT_EQ(d.depth, 0u);
@@ -102,7 +66,7 @@ void expect_kernels_match(const Scene& scene, const WhittedSettings& whitted = {
 }
 
 TEST(WhittedKernels, AssignmentSphereMatchesTheRayTracer) {
-    expect_kernels_match(scene_file("assignment.json", 96, 72));
+    expect_kernels_match(testing::scene_file_at("assignment.json", 96, 72));
 }
 
 TEST(WhittedKernels, MirrorAndGlassMatchTheRayTracer) {
@@ -121,12 +85,12 @@ TEST(WhittedKernels, DeepTreesMatchTheRayTracer) {
 }
 
 TEST(WhittedKernels, MeshesThroughTheWideBvhMatchTheRayTracer) {
-    expect_kernels_match(scene_file("teapot.json", 120, 90));
+    expect_kernels_match(testing::scene_file_at("teapot.json", 120, 90));
 }
 
 TEST(WhittedKernels, ShadowsAndSpotLightsMatchTheRayTracer) {
-    expect_kernels_match(scene_file("shadows.json", 100, 75));
-    expect_kernels_match(scene_file("light-spot.json", 100, 75));
+    expect_kernels_match(testing::scene_file_at("shadows.json", 100, 75));
+    expect_kernels_match(testing::scene_file_at("light-spot.json", 100, 75));
 }
 
 TEST(WhittedKernels, NoShadowsAndJitteredSamplesMatchTheRayTracer) {
@@ -168,13 +132,14 @@ TEST(WhittedKernels, ScenesTheKernelsLackAreRefusedByName) {
 // the GPU's rounding of sqrt, pow and cos (its libm is not glibc's).
 TEST(WhittedKernels, CudaGridMatchesTheCpuRun) {
     if (!find_cuda_devices().problem.empty()) GTEST_SKIP() << find_cuda_devices().problem;
-    for (const Scene& scene : {glass_and_mirror(160, 90, true), scene_file("teapot.json", 120, 90),
-                               scene_file("shadows.json", 100, 75)}) {
+    for (const Scene& scene :
+         {glass_and_mirror(160, 90, true), testing::scene_file_at("teapot.json", 120, 90),
+          testing::scene_file_at("shadows.json", 100, 75)}) {
         const Framebuffer cpu =
             render_whitted_kernels(scene, Film(scene.camera), {}, {}, ExecutionDevice::cpu);
         const Framebuffer gpu =
             render_whitted_kernels(scene, Film(scene.camera), {}, {}, ExecutionDevice::cuda);
-        const Differences d = compare(gpu, cpu, 1e-3f);
+        const testing::KernelDifferences d = testing::compare_kernel_render(gpu, cpu, 1e-3f);
         EXPECT_EQ(d.colour, 0u) << "largest difference " << d.largest;
         // A hit exactly on a shared edge may go to either triangle under other rounding: none of
         // these scenes has one at a pixel centre, so the ids are held exact.
@@ -183,16 +148,9 @@ TEST(WhittedKernels, CudaGridMatchesTheCpuRun) {
 }
 
 TEST(WhittedKernels, CudaWithoutADeviceSaysSoInOneLine) {
-    if (find_cuda_devices().problem.empty()) GTEST_SKIP() << "a CUDA device is present";
     const Scene scene = glass_and_mirror(8, 8);
-    try {
-        render_whitted_kernels(scene, Film(scene.camera), {}, {}, ExecutionDevice::cuda);
-        FAIL() << "rendered on a CUDA device that is not there";
-    } catch (const InputError& e) {
-        const std::string message = e.what();
-        EXPECT_NE(message.find("no CUDA device"), std::string::npos) << message;
-        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    }
+    testing::expect_no_device_in_one_line(
+        [&] { render_whitted_kernels(scene, Film(scene.camera), {}, {}, ExecutionDevice::cuda); });
 }
 
 }  // namespace
