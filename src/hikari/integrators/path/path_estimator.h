@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "hikari/bvh/surface_hit.h"
 #include "hikari/core/host_device.h"
 #include "hikari/core/sobol.h"
 #include "hikari/scene/material.h"
@@ -27,6 +28,19 @@ HIKARI_HD inline float power_heuristic(float a, float b) {
 inline float energy_scale(const Material& m) {
     const float total = scattered_fraction(m.kd, m.ks, m.reflectivity, m.transparency);
     return total > 1.0f ? 1.0f / total : 1.0f;
+}
+
+/// Where a path scatters at `hit`, met by a ray along `direction` on its `front` side: the
+/// normals turned to the side the ray came from (the shading normal kept on the geometric
+/// normal's side), and whether the ray enters the surface.
+HIKARI_HD inline ScatterFrame scatter_frame_at(const SurfaceHit& hit, Vec3 direction, bool front) {
+    ScatterFrame at;
+    at.to_eye = -direction;
+    at.entering = front;
+    at.geometric_normal = front ? hit.geometric_normal : -hit.geometric_normal;
+    at.normal = dot(hit.shading_normal, at.geometric_normal) < 0.0f ? -hit.shading_normal
+                                                                    : hit.shading_normal;
+    return at;
 }
 
 /// A pixel's seed: its index hashed, so neighbouring pixels' sequences are unrelated.

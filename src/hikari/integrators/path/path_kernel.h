@@ -174,12 +174,7 @@ struct ShadePaths {
         const Vec2 u_direction = path.sampler.next_2d();
         const float u_roulette = path.sampler.next_1d();
 
-        ScatterFrame at;
-        at.to_eye = -ray.direction;
-        at.entering = front;
-        at.geometric_normal = front ? hit.geometric_normal : -hit.geometric_normal;
-        at.normal = dot(hit.shading_normal, at.geometric_normal) < 0.0f ? -hit.shading_normal
-                                                                        : hit.shading_normal;
+        const ScatterFrame at = scatter_frame_at(hit, ray.direction, front);
         const Scattering bsdf(material_at(hit, at), wave.scale[hit.material]);
         if (bsdf.black()) return;
         /* next-event estimation: a shadow ray for stage 4 */

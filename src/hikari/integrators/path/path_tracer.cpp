@@ -103,12 +103,7 @@ class PathIntegrator {
             const Vec2 u_direction = sampler.next_2d();
             const float u_roulette = sampler.next_1d();
 
-            ScatterFrame at;
-            at.to_eye = -ray.direction;
-            at.entering = front;
-            at.geometric_normal = front ? hit.geometric_normal : -hit.geometric_normal;
-            at.normal = dot(hit.shading_normal, at.geometric_normal) < 0.0f ? -hit.shading_normal
-                                                                            : hit.shading_normal;
+            const ScatterFrame at = scatter_frame_at(hit, ray.direction, front);
             const Scattering bsdf(material_at(hit, at), m_scale[hit.material]);
             if (bsdf.black()) break;
             if (bsdf.smooth() && !m_emitters.empty())
