@@ -39,6 +39,13 @@ def _memory_limit(gib):
         set_max_memory(before)
 
 
+def _no_bools(**values):
+    """TypeError for a bool given as a count (True is 1 to Python, never what was meant)."""
+    for name, value in values.items():
+        if isinstance(value, (bool, _np.bool_)):
+            raise TypeError(f"{name}: expected a whole number, not {value!r}")
+
+
 class Image(_np.ndarray):
     """A rendered image: a NumPy array (float32, linear values) that shows itself in Jupyter."""
 
@@ -147,6 +154,7 @@ class Scene:
         max_memory: the memory limit in GiB for this render, as --max-memory (every buffer it
         makes counts, with the scene's); InputError when it would need more.
         """
+        _no_bools(width=width, height=height, threads=threads)
         with _memory_limit(max_memory):
             array = self._session.render(method, width, height, aov, camera, threads, progress,
                                          **method_options)

@@ -110,6 +110,9 @@ def test_values_json_cannot_hold_are_input_errors_naming_their_path():
     for call, named in cases:
         with pytest.raises(hikari.InputError, match=re.escape(named)):
             call()
+    for flag in [dict(width=True), dict(height=False), dict(threads=True)]:
+        with pytest.raises(TypeError, match="not"):
+            scene.render(**flag)
     cyclic = []
     cyclic.append(cyclic)
     with pytest.raises(hikari.InputError, match="nested deeper"):
