@@ -1,5 +1,6 @@
 """Ctrl-C (KeyboardInterrupt) stops every long call of the module, not only renders: loading a
-large mesh, and the depth sort's explanation of it; the scene and the module stay usable."""
+large mesh, the depth sort, its explanation and the hidden-line drawing of it; the scene and the
+module stay usable."""
 
 import os
 import signal
@@ -59,9 +60,10 @@ def test_ctrl_c_stops_loading_and_the_next_load_runs(large_mesh):
     assert hikari.Scene.load(large_mesh).info["triangles"] == 2_000_000
 
 
-def test_ctrl_c_stops_an_explanation_and_a_depth_sort(large_mesh):
+def test_ctrl_c_stops_an_explanation_a_depth_sort_and_hidden_lines(large_mesh):
     scene = hikari.Scene.load(large_mesh)
     assert interrupted_after(0.3, lambda: hikari.explain(scene, "depthsort", width=32,
                                                          height=24)) < 5.0
     assert interrupted_after(0.3, lambda: scene.render("depthsort", width=32, height=24)) < 5.0
+    assert interrupted_after(0.3, lambda: scene.render("hiddenline", width=32, height=24)) < 5.0
     assert scene.render("zbuffer", width=16).shape == (12, 16, 3)

@@ -7,6 +7,7 @@
 
 #include <tbb/blocked_range.h>
 
+#include "hikari/core/cancel.h"
 #include "hikari/core/error.h"
 #include "hikari/core/parallel.h"
 #include "hikari/frame/render_settings.h"
@@ -53,7 +54,8 @@ inline uint64_t owned_pixels(int width, int height, const RenderControl* control
 /// task arena; with a share in `control`, for this process's tiles only (frame/tile_share.h).
 /// Reports each finished tile to `control` (unless `report_tiles` is false: a caller that loops
 /// over the image several times counts its own work) and throws Interrupted once all running
-/// tiles are done when `control->cancel` is set.
+/// tiles are done when `control->cancel` is set, or when the process is asked to stop
+/// (core/cancel.h: SIGINT, Ctrl-C in Python), which also stops loops run without a control.
 template <class TileFn>
 void for_each_tile(int width, int height, RenderControl* control, TileFn&& fn,
                    bool report_tiles = true) {
@@ -64,7 +66,8 @@ void for_each_tile(int width, int height, RenderControl* control, TileFn&& fn,
     hikari::parallel_for(tbb::blocked_range<int64_t>(0, count, 1),
                          [&](const tbb::blocked_range<int64_t>& range) {
                              for (int64_t t = range.begin(); t != range.end(); ++t) {
-                                 if (control && control->cancel.load(std::memory_order_relaxed))
+                                 if ((control && control->cancel.load(std::memory_order_relaxed)) ||
+                                     cancel_requested())
                                      return;
                                  if (share && !share->owns(t)) continue;
                                  fn(tile_at(t, width, height));
@@ -72,7 +75,7 @@ void for_each_tile(int width, int height, RenderControl* control, TileFn&& fn,
                                      control->work_done.fetch_add(1, std::memory_order_relaxed);
                              }
                          });
-    if (control && control->cancel.load()) throw Interrupted();
+    if ((control && control->cancel.load()) || cancel_requested()) throw Interrupted();
 }
 
 }  // namespace hikari

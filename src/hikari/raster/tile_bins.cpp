@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "hikari/core/cancel.h"
 #include "hikari/core/parallel.h"
 #include "hikari/frame/tiles.h"
 
@@ -104,6 +105,7 @@ void bin_triangles(std::span<const HalfSpaceTriangle> setup, std::span<const uin
         }
     };
     hikari::parallel_for(size_t{0}, bins.chunk_count, [&](size_t c) {
+        throw_if_cancelled();  // SIGINT, Ctrl-C in Python: once per chunk
         TileBins::Chunk& chunk = bins.chunks[c];
         const size_t first = c * TileBins::k_chunk_triangles;
         const size_t last = std::min(setup.size(), first + TileBins::k_chunk_triangles);

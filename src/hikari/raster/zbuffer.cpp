@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "hikari/core/build_cache.h"
+#include "hikari/core/cancel.h"
 #include "hikari/core/parallel.h"
 #include "hikari/core/ray.h"
 #include "hikari/frame/tiles.h"
@@ -74,6 +75,7 @@ void zbuffer_setup(const Triangles& triangles, int width, int height, ZBufferWor
     ws.home.resize(triangles.size());
     hikari::parallel_for(tbb::blocked_range<size_t>(0, triangles.size(), 1024),
                          [&](const tbb::blocked_range<size_t>& range) {
+                             throw_if_cancelled();  // SIGINT, Ctrl-C in Python
                              for (size_t i = range.begin(); i != range.end(); ++i)
                                  ws.home[i] =
                                      setup_half_space(triangles[i], width, height, ws.setup[i])

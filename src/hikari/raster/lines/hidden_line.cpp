@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "hikari/core/cancel.h"
 #include "hikari/core/parallel.h"
 #include "hikari/raster/lines/line_projection.h"
 #include "hikari/raster/lines/line_raster.h"
@@ -264,6 +265,7 @@ std::vector<Line> edge_lines(const Scene& scene, const LineScene& ls, const Line
     const TriangleSet& tris = ls.projected.scene.triangles;
     std::vector<std::optional<Line>> found(ls.edges.size());
     hikari::parallel_for(size_t{0}, ls.edges.size(), [&](size_t k) {
+        if (k % 4096 == 0) throw_if_cancelled();  // SIGINT, Ctrl-C in Python
         const ModelEdge& e = ls.edges[k];
         if (!(e.own || is_silhouette(e, ls.back_facing)) ||
             !edge_has_kept_face(e, ls.back_facing, lines.cull_back_faces))
@@ -297,6 +299,7 @@ std::vector<Line> intersection_lines(const Scene& scene, const LineScene& ls, co
     const std::vector<ScreenTriangle>& screen = ls.projected.triangles;
     std::vector<std::vector<Line>> found(screen.size());
     hikari::parallel_for(size_t{0}, screen.size(), [&](size_t i) {
+        if (i % 1024 == 0) throw_if_cancelled();  // SIGINT, Ctrl-C in Python
         const uint32_t f = screen[i].source;
         if (i > 0 && screen[i - 1].source == f) return;  // the first piece speaks for the face
         Vec2 lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
@@ -343,16 +346,21 @@ std::vector<Line> intersection_lines(const Scene& scene, const LineScene& ls, co
 
 LineDrawing draw_hidden_lines(const Scene& scene, const LineSettings& lines) {
     const LineScene ls = prepare_line_scene(scene, lines);
+    throw_if_cancelled();  // between the stages, each seconds long on a scanned mesh
     const std::vector<ScreenTriangle>& screen = ls.projected.triangles;
     const Context ctx = make_context(screen, scene.camera.width, scene.camera.height, lines.width);
+    throw_if_cancelled();
 
     std::vector<Line> all = edge_lines(scene, ls, lines);
+    throw_if_cancelled();
     std::vector<Line> crossings = intersection_lines(scene, ls, ctx, lines);
     all.insert(all.end(), crossings.begin(), crossings.end());
 
     std::vector<std::vector<LineSegment>> visible(all.size());
-    hikari::parallel_for(size_t{0}, all.size(),
-                         [&](size_t k) { visible_pieces(ctx, all[k], visible[k]); });
+    hikari::parallel_for(size_t{0}, all.size(), [&](size_t k) {
+        if (k % 1024 == 0) throw_if_cancelled();  // SIGINT, Ctrl-C
+        visible_pieces(ctx, all[k], visible[k]);
+    });
     LineDrawing drawing = empty_drawing(scene, lines);
     for (const std::vector<LineSegment>& v : visible)
         drawing.segments.insert(drawing.segments.end(), v.begin(), v.end());

@@ -7,6 +7,7 @@
 
 #include <tbb/enumerable_thread_specific.h>
 
+#include "hikari/core/cancel.h"
 #include "hikari/core/color.h"
 #include "hikari/core/parallel.h"
 #include "hikari/core/ray.h"
@@ -158,6 +159,7 @@ Framebuffer rasterize_lines(const LineDrawing& d, Film film, bool aov_buffers,
     tbb::enumerable_thread_specific<BandAccumulator> accumulators;
     tbb::enumerable_thread_specific<std::vector<Vec3>> rows;
     hikari::parallel_for(0, bands, [&](int band) {
+        throw_if_cancelled();  // SIGINT, Ctrl-C in Python: once per band
         const int row0 = band * k_band_rows, row1 = std::min(d.height, row0 + k_band_rows);
         const size_t n = static_cast<size_t>(row1 - row0) * d.width;
         BandAccumulator& acc = accumulators.local();

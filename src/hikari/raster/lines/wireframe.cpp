@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "hikari/core/cancel.h"
 #include "hikari/core/color.h"
 #include "hikari/core/parallel.h"
 #include "hikari/raster/lines/line_projection.h"
@@ -21,6 +22,7 @@ LineDrawing draw_wireframe(const Scene& scene, const LineSettings& lines) {
     constexpr size_t k_chunk = 8192;
     std::vector<std::vector<LineSegment>> chunks((ls.edges.size() + k_chunk - 1) / k_chunk);
     parallel_chunks(ls.edges.size(), k_chunk, [&](size_t c, size_t k0, size_t k1) {
+        throw_if_cancelled();  // SIGINT, Ctrl-C in Python: once per chunk
         for (size_t k = k0; k < k1; ++k) {
             const ModelEdge& e = ls.edges[k];
             if (!(e.own || lines.triangle_edges) ||
