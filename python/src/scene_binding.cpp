@@ -174,13 +174,24 @@ py::dict camera_dict(const Camera& c) {
 /// How work running on its own thread is asked to stop on Ctrl-C: a render through its own
 /// token, and every stage (a load, a BVH build, the depth sort, an explanation) through the
 /// process-wide request (core/cancel.h) that they poll, as the command line's SIGINT does. The
-/// request is withdrawn once the work has ended, so that the next call runs.
+/// request is withdrawn once the work has ended, so that the next call runs. A progress
+/// callback's exception concerns its own render alone: it stops the render by its token, and
+/// other threads' work goes on.
 struct Stopper {
     std::optional<CancelToken> token;
+    /// Ctrl-C: everything this process runs.
     void stop() const {
         if (token) token->cancel();
         request_cancel();
     }
+    /// A failed progress callback: this work alone where it has a token.
+    void stop_own() const {
+        if (token)
+            token->cancel();
+        else
+            request_cancel();
+    }
+    /// After the stopped work has ended.
     void settle() const { clear_cancel_request(); }
 };
 
@@ -208,12 +219,12 @@ auto run_interruptible(Work&& work, const Stopper& stopper, const std::atomic<do
             try {
                 progress(reported);
             } catch (...) {
-                stopper.stop();
+                stopper.stop_own();
                 {
                     py::gil_scoped_release unlocked;
                     future.wait();
                 }
-                stopper.settle();
+                if (!stopper.token) stopper.settle();
                 throw;
             }
         }
