@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "../support/scene_files.h"
 #include "hikari/frame/framebuffer.h"
 #include "hikari/io/scene/scene_json.h"
 
@@ -16,15 +17,6 @@ namespace hikari::testing {
 inline Scene raster_scene_from(const std::string& json) {
     std::vector<std::string> warnings;
     return parse_scene(json, "test.json", HIKARI_SOURCE_DIR, warnings);
-}
-
-/// Example scene `name` of scenes/ (e.g. "bunny.json") at a test's image size.
-inline Scene scene_file(const std::string& name, int width, int height) {
-    std::vector<std::string> warnings;
-    Scene s = load_scene_file(std::string(HIKARI_SOURCE_DIR) + "/scenes/" + name, warnings);
-    s.camera.width = width;
-    s.camera.height = height;
-    return s;
 }
 
 /// Fraction of pixels whose id buffers agree.

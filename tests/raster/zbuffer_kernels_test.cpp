@@ -29,7 +29,7 @@ using testing::parse;
 /// A scene file of scenes/, at `width` × `height`; its spheres as polygons of `segments` when
 /// that is set (else drawn exactly).
 Scene scene_file(const std::string& name, int width, int height, uint32_t segments = 0) {
-    Scene scene = testing::scene_file_at(name, width, height);
+    Scene scene = testing::scene_file(name, width, height);
     for (Sphere& s : scene.spheres) s.segments = segments;
     return scene;
 }

@@ -1,6 +1,6 @@
 #pragma once
-// What the kernel tests (issue 46: Whitted, path, Z-buffer) share: a scene file at a test size,
-// the pixel-by-pixel comparison of a kernel render with the CPU renderer's, and the check that
+// What the kernel tests (issue 46: Whitted, path, Z-buffer) share: the pixel-by-pixel comparison of
+// a kernel render with the CPU renderer's, and the check that
 // `--device cuda` without a device fails in one line.
 
 #include <gtest/gtest.h>
@@ -13,18 +13,9 @@
 #include "hikari/core/cuda_devices.h"
 #include "hikari/core/error.h"
 #include "hikari/frame/framebuffer.h"
-#include "hikari/io/scene/scene_json.h"
+#include "scene_files.h"
 
 namespace hikari::testing {
-
-/// A scene file of the repository's scenes/, at `width` × `height`.
-inline Scene scene_file_at(const std::string& name, int width, int height) {
-    std::vector<std::string> warnings;
-    Scene scene = load_scene_file(std::string(HIKARI_SOURCE_DIR) + "/scenes/" + name, warnings);
-    scene.camera.width = width;
-    scene.camera.height = height;
-    return scene;
-}
 
 /// How a kernel render differs from the reference: pixels whose colour differs by more than the
 /// tolerance in some channel (relative to max(1, |reference|)), the largest such difference, and

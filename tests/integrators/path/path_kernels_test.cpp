@@ -49,60 +49,57 @@ void expect_path_kernels_match(const Scene& scene, const PathSettings& path) {
 TEST(PathKernels, CornellBoxMatchesThePathTracer) {
     // B5's scene: emissive triangles, light sampling and BSDF sampling weighed by MIS, Russian
     // roulette after three bounces.
-    expect_path_kernels_match(testing::scene_file_at("bench/cornell.json", 40, 40),
+    expect_path_kernels_match(testing::scene_file("bench/cornell.json", 40, 40),
                               camera_caustics(8));
 }
 
 TEST(PathKernels, GlassAndMirrorSpheresMatchThePathTracer) {
     // Delta lobes: caustics through the camera paths, emitters met after mirror chains.
-    expect_path_kernels_match(testing::scene_file_at("cornell-glass.json", 32, 32),
+    expect_path_kernels_match(testing::scene_file("cornell-glass.json", 32, 32),
                               camera_caustics(8, 12));
 }
 
 TEST(PathKernels, PointAndDirectionalLightsOnAMeshMatchThePathTracer) {
     // The teapot through the wide BVH, a point and a directional light, the plane and the sky.
-    expect_path_kernels_match(testing::scene_file_at("teapot.json", 48, 36), camera_caustics(4));
-    expect_path_kernels_match(testing::scene_file_at("shadows.json", 40, 30), camera_caustics(4));
+    expect_path_kernels_match(testing::scene_file("teapot.json", 48, 36), camera_caustics(4));
+    expect_path_kernels_match(testing::scene_file("shadows.json", 40, 30), camera_caustics(4));
 }
 
 TEST(PathKernels, SpotAndAreaLightsMatchThePathTracer) {
-    expect_path_kernels_match(testing::scene_file_at("light-spot.json", 40, 30),
-                              camera_caustics(4));
+    expect_path_kernels_match(testing::scene_file("light-spot.json", 40, 30), camera_caustics(4));
     // The parallelogram light: its face met by rays, sampled by area, weighed by MIS.
-    expect_path_kernels_match(testing::scene_file_at("area-light.json", 40, 30),
-                              camera_caustics(4));
-    expect_path_kernels_match(testing::scene_file_at("soft-shadow.json", 40, 30),
-                              camera_caustics(4));
+    expect_path_kernels_match(testing::scene_file("area-light.json", 40, 30), camera_caustics(4));
+    expect_path_kernels_match(testing::scene_file("soft-shadow.json", 40, 30), camera_caustics(4));
 }
 
 TEST(PathKernels, FiltersClampAndWavesMatchThePathTracer) {
     PathSettings path = camera_caustics(3);
     path.filter = PixelFilterKind::blackman_harris;
     path.clamp = 2.0f;
-    expect_path_kernels_match(testing::scene_file_at("bench/cornell.json", 24, 24), path);
+    expect_path_kernels_match(testing::scene_file("bench/cornell.json", 24, 24), path);
     // More samples than one wave holds (2^20 paths): a wave of 16 samples of 256² pixels, then
     // the one left over, summed on in sample order.
     path = camera_caustics(17, 0);
     path.filter = PixelFilterKind::gaussian;
-    expect_path_kernels_match(testing::scene_file_at("bench/cornell.json", 256, 256), path);
+    expect_path_kernels_match(testing::scene_file("bench/cornell.json", 256, 256), path);
 }
 
 TEST(PathKernels, ConstantEnvironmentLightMatchesThePathTracer) {
     // Light from the whole sky: sampled by the cosine, met by escaping rays, weighed by MIS.
-    Scene scene = testing::scene_file_at("teapot.json", 48, 36);
+    Scene scene = testing::scene_file("teapot.json", 48, 36);
     scene.lights.push_back(EnvironmentLight{.radiance = {0.3f, 0.4f, 0.6f}});
     expect_path_kernels_match(scene, camera_caustics(4));
 }
 
 TEST(PathKernels, CheckerTexturesMatchThePathTracer) {
-    Scene scene = testing::scene_file_at("cornell-glass.json", 32, 32);
+    Scene scene = testing::scene_file("cornell-glass.json", 32, 32);
     scene.materials[0].texture = CheckerTexture{
         .size = 100.0f, .color_a = {0.1f, 0.1f, 0.1f}, .color_b = {0.9f, 0.9f, 0.9f}};
     expect_path_kernels_match(scene, camera_caustics(4));
 }
 
 TEST(PathKernels, SameImageForAnyThreadCount) {
-    const Scene scene = testing::scene_file_at("cornell-glass.json", 32, 32);
+    const Scene scene = testing::scene_file("cornell-glass.json", 32, 32);
     const PathSettings path = camera_caustics(4);
     Framebuffer one, two;
     {
@@ -120,7 +117,7 @@ TEST(PathKernels, SameImageForAnyThreadCount) {
 }
 
 TEST(PathKernels, StatsCountTheRaysAndPaths) {
-    const Scene scene = testing::scene_file_at("bench/cornell.json", 16, 16);
+    const Scene scene = testing::scene_file("bench/cornell.json", 16, 16);
     RenderStats kernels_stats, reference_stats;
     RenderSettings settings;
     settings.stats = &kernels_stats;
@@ -133,12 +130,12 @@ TEST(PathKernels, StatsCountTheRaysAndPaths) {
 }
 
 TEST(PathKernels, ScenesAndSettingsTheKernelsLackAreRefusedByName) {
-    const Scene cornell = testing::scene_file_at("bench/cornell.json", 8, 8);
+    const Scene cornell = testing::scene_file("bench/cornell.json", 8, 8);
     EXPECT_EQ(path_kernel_refusal(cornell, {}), "");
     Scene sky = cornell;
     sky.lights.push_back(EnvironmentLight{});
     EXPECT_EQ(path_kernel_refusal(sky, {}), "");
-    const Scene mapped = testing::scene_file_at("environment.json", 8, 8);
+    const Scene mapped = testing::scene_file("environment.json", 8, 8);
     EXPECT_NE(path_kernel_refusal(mapped, {}).find("environment maps"), std::string::npos);
     EXPECT_THROW(render_path_kernels(mapped, Film(mapped.camera), {}, {}, ExecutionDevice::cpu),
                  InputError);
@@ -159,9 +156,9 @@ TEST(PathKernels, ScenesAndSettingsTheKernelsLackAreRefusedByName) {
 // onto other branches: the means agree within their noise, most pixels within 1e-3.
 TEST(PathKernels, CudaGridMatchesTheCpuRun) {
     if (!find_cuda_devices().problem.empty()) GTEST_SKIP() << find_cuda_devices().problem;
-    for (const Scene& scene : {testing::scene_file_at("bench/cornell.json", 64, 64),
-                               testing::scene_file_at("teapot.json", 64, 48),
-                               testing::scene_file_at("area-light.json", 64, 48)}) {
+    for (const Scene& scene : {testing::scene_file("bench/cornell.json", 64, 64),
+                               testing::scene_file("teapot.json", 64, 48),
+                               testing::scene_file("area-light.json", 64, 48)}) {
         RenderSettings settings;
         settings.aov_buffers = true;
         const PathSettings path = camera_caustics(16);
@@ -190,7 +187,7 @@ TEST(PathKernels, CudaGridMatchesTheCpuRun) {
 }
 
 TEST(PathKernels, CudaWithoutADeviceSaysSoInOneLine) {
-    const Scene scene = testing::scene_file_at("bench/cornell.json", 8, 8);
+    const Scene scene = testing::scene_file("bench/cornell.json", 8, 8);
     testing::expect_no_device_in_one_line(
         [&] { render_path_kernels(scene, Film(scene.camera), {}, {}, ExecutionDevice::cuda); });
 }

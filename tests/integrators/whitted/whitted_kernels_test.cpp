@@ -66,7 +66,7 @@ void expect_kernels_match(const Scene& scene, const WhittedSettings& whitted = {
 }
 
 TEST(WhittedKernels, AssignmentSphereMatchesTheRayTracer) {
-    expect_kernels_match(testing::scene_file_at("assignment.json", 96, 72));
+    expect_kernels_match(testing::scene_file("assignment.json", 96, 72));
 }
 
 TEST(WhittedKernels, MirrorAndGlassMatchTheRayTracer) {
@@ -85,12 +85,12 @@ TEST(WhittedKernels, DeepTreesMatchTheRayTracer) {
 }
 
 TEST(WhittedKernels, MeshesThroughTheWideBvhMatchTheRayTracer) {
-    expect_kernels_match(testing::scene_file_at("teapot.json", 120, 90));
+    expect_kernels_match(testing::scene_file("teapot.json", 120, 90));
 }
 
 TEST(WhittedKernels, ShadowsAndSpotLightsMatchTheRayTracer) {
-    expect_kernels_match(testing::scene_file_at("shadows.json", 100, 75));
-    expect_kernels_match(testing::scene_file_at("light-spot.json", 100, 75));
+    expect_kernels_match(testing::scene_file("shadows.json", 100, 75));
+    expect_kernels_match(testing::scene_file("light-spot.json", 100, 75));
 }
 
 TEST(WhittedKernels, NoShadowsAndJitteredSamplesMatchTheRayTracer) {
@@ -133,8 +133,8 @@ TEST(WhittedKernels, ScenesTheKernelsLackAreRefusedByName) {
 TEST(WhittedKernels, CudaGridMatchesTheCpuRun) {
     if (!find_cuda_devices().problem.empty()) GTEST_SKIP() << find_cuda_devices().problem;
     for (const Scene& scene :
-         {glass_and_mirror(160, 90, true), testing::scene_file_at("teapot.json", 120, 90),
-          testing::scene_file_at("shadows.json", 100, 75)}) {
+         {glass_and_mirror(160, 90, true), testing::scene_file("teapot.json", 120, 90),
+          testing::scene_file("shadows.json", 100, 75)}) {
         const Framebuffer cpu =
             render_whitted_kernels(scene, Film(scene.camera), {}, {}, ExecutionDevice::cpu);
         const Framebuffer gpu =

@@ -9,6 +9,7 @@
 #include "hikari/core/sobol.h"
 #include "hikari/frame/tile_share.h"
 #include "hikari/geometry/ray_offset.h"
+#include "hikari/integrators/path/path_estimator.h"
 #include "hikari/shading/bsdf/lambert.h"
 
 namespace hikari {
@@ -18,8 +19,6 @@ namespace {
 constexpr float k_pi = std::numbers::pi_v<float>;
 /// Fixed-point units per unit of summed radiance (about 1.5e-5 resolution; sums up to 1.4e14).
 constexpr double k_fixed_scale = 65536.0;
-/// Vertices before Russian roulette may end a light path.
-constexpr int k_roulette_after = 3;
 /// The light paths' own sequence seed (the camera paths hash their pixel index).
 constexpr uint32_t k_light_path_seed = 0x4c696768U;
 
@@ -27,16 +26,9 @@ constexpr uint32_t k_light_path_seed = 0x4c696768U;
 float abs_dot(Vec3 a, Vec3 b) { return std::abs(dot(a, b)); }
 
 /// The frame at `hit` for a path arriving along `direction` (the path tracer's convention:
-/// normals turned toward where the path came from).
+/// normals turned toward where the path came from; path_estimator.h).
 ScatterFrame frame_at(const SurfaceHit& hit, Vec3 direction) {
-    ScatterFrame at;
-    const bool front = dot(hit.geometric_normal, direction) < 0.0f;
-    at.to_eye = -direction;
-    at.entering = front;
-    at.geometric_normal = front ? hit.geometric_normal : -hit.geometric_normal;
-    at.normal = dot(hit.shading_normal, at.geometric_normal) < 0.0f ? -hit.shading_normal
-                                                                    : hit.shading_normal;
-    return at;
+    return scatter_frame_at(hit, direction, dot(hit.geometric_normal, direction) < 0.0f);
 }
 
 /// Whether some material reflects or refracts by a delta lobe.
@@ -192,7 +184,7 @@ void CausticLightTracer::trace_path(uint64_t index, uint64_t& rays) {
                                   : 1.0f;
         beta = beta * next.weight * adjoint;
         walk = walk * next.weight * adjoint;
-        if (vertex >= k_roulette_after) {
+        if (vertex >= k_roulette_after) {  // as the camera paths (path_estimator.h)
             const float q = std::min(1.0f, max_component(walk));
             if (!(u_roulette < q)) return;
             beta = beta / q;
